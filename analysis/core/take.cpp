@@ -1,0 +1,56 @@
+#include "analysis/core/take.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace bunraku::analysis {
+
+std::optional<Eigen::Index> Take::channelIndex(std::string_view part, std::string_view dof) const
+{
+    for (std::size_t i = 0; i < channels.size(); ++i)
+        if (channels[i].part == part && channels[i].dof == dof) return Eigen::Index(i);
+    return std::nullopt;
+}
+
+std::optional<Eigen::Index> Take::channelIndex(std::string_view name) const
+{
+    const auto dot = name.rfind('.');
+    if (dot == std::string_view::npos) return std::nullopt;
+    return channelIndex(name.substr(0, dot), name.substr(dot + 1));
+}
+
+std::vector<std::string> Take::parts() const
+{
+    std::vector<std::string> result;
+    for (const auto& c : channels)
+        if (std::find(result.begin(), result.end(), c.part) == result.end()) result.push_back(c.part);
+    return result;
+}
+
+std::string Take::displayName() const
+{
+    if (!labels.function.empty())
+        return labels.function + "/" + labels.emotion + "/" + std::to_string(labels.takeIndex);
+    return labels.source.empty() ? std::string("take") : labels.source;
+}
+
+Status validateTake(const Take& take)
+{
+    const std::string name = take.displayName();
+    if (!(take.rateHz > 0.0) || !std::isfinite(take.rateHz))
+        return makeError(ErrorCode::InvalidArgument, name + ": sample rate must be a positive number");
+    if (take.values.rows() < 1)
+        return makeError(ErrorCode::InvalidArgument, name + ": a take needs at least one frame");
+    if (std::size_t(take.values.cols()) != take.channels.size())
+        return makeError(ErrorCode::InvalidArgument,
+                         name + ": " + std::to_string(take.values.cols()) + " value columns but " +
+                             std::to_string(take.channels.size()) + " channel names");
+    for (Eigen::Index f = 0; f < take.values.rows(); ++f)
+        for (Eigen::Index c = 0; c < take.values.cols(); ++c)
+            if (!std::isfinite(take.values(f, c)))
+                return makeError(ErrorCode::Numerical, name + ": non-finite value at frame " + std::to_string(f) +
+                                                           ", channel " + take.channels[std::size_t(c)].name());
+    return okStatus();
+}
+
+} // namespace bunraku::analysis

@@ -1,0 +1,41 @@
+#include "app/cli/cli.h"
+
+#include <iostream>
+
+namespace bunraku::app::cli {
+
+void printJson(const nlohmann::json& document) { std::cout << document.dump(2) << std::endl; }
+
+int runCli(int argc, char** argv)
+{
+    CLI::App app{"Bunraku Motion Workbench command line: make, inspect, convert, normalise, decompose, "
+                 "design and render motion takes.",
+                 "bunraku"};
+    app.set_version_flag("--version", std::string(BUNRAKU_VERSION));
+    app.require_subcommand(1);
+    CLI::App* experiment = app.add_subcommand("experiment", "Reproduce the thesis's experiments");
+    experiment->require_subcommand(1);
+    CommandSet commands{app, *experiment};
+    addAllCommands(commands);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::cerr << "bunraku: error: " << e.what() << "\n";
+        return e.get_exit_code() == 0 ? 2 : e.get_exit_code();
+    } catch (const CliError& e) {
+        std::cerr << "bunraku: error: " << e.what() << "\n";
+        return 1;
+    } catch (const std::exception& e) {
+        std::cerr << "bunraku: error: " << e.what() << "\n";
+        return 1;
+    }
+    return 0;
+}
+
+} // namespace bunraku::app::cli

@@ -1,0 +1,15 @@
+#include "app/cli/commands.h"
+
+namespace bunraku::app::cli {
+
+void addAllCommands(CommandSet& commands)
+{
+    addIoCommands(commands);
+    addDemoCommands(commands);
+    addNormalisationCommands(commands);
+    addDecompositionCommands(commands);
+    addMotionAxisCommands(commands);
+    addRenderCommands(commands);
+}
+
+} // namespace bunraku::app::cli

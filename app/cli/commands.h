@@ -1,0 +1,19 @@
+#pragma once
+/// One registration function per command family; each lives in its own cmd_*.cpp file.
+#include "app/cli/cli.h"
+
+namespace bunraku::app::cli {
+
+/// info, convert, preprocess (cmd_io.cpp)
+void addIoCommands(CommandSet& commands);
+/// demo (cmd_demo.cpp)
+void addDemoCommands(CommandSet& commands);
+/// normalise, experiment noise|truth (cmd_normalise.cpp)
+void addNormalisationCommands(CommandSet& commands);
+/// decompose, emotion, experiment km2o (cmd_decompose.cpp)
+void addDecompositionCommands(CommandSet& commands);
+/// axis, phase, gains, design, experiment design (cmd_axis.cpp)
+void addMotionAxisCommands(CommandSet& commands);
+/// render (cmd_render.cpp)
+void addRenderCommands(CommandSet& commands);
+} // namespace bunraku::app::cli

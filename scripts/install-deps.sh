@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Installs every build, test and run dependency of Bunraku Motion Workbench from Debian
+# bookworm's packages. Non-interactive, idempotent, safe to re-run: packages already present
+# are left alone and apt-get is only called when something is missing.
+set -euo pipefail
+
+packages=(
+  build-essential cmake ninja-build ccache pkg-config
+  qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev libqt6openglwidgets6 libgl-dev
+  libqcustomplot-dev libqcustomplot2.1-qt6
+  libeigen3-dev libglm-dev nlohmann-json3-dev libcli11-dev catch2
+  libfftw3-dev libassimp-dev libbenchmark-dev
+  xvfb xauth libgl1-mesa-dri libglx-mesa0 libegl-mesa0 mesa-utils
+  fonts-dejavu-core
+  python3 python3-numpy python3-pywt python3-statsmodels
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+echo "install-deps: installing ${missing[*]}"
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
