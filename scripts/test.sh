@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# README command 2: install the dependencies, build everything (Release, warnings as errors),
+# run every test (GUI and rendering tests under Xvfb), then build the analysis layer without Qt
+# under AddressSanitizer + UndefinedBehaviorSanitizer and run its tests.
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+jobs="$(nproc)"
+bash "$root/scripts/install-deps.sh"
+
+echo "== Release build and all tests"
+bash "$root/scripts/build.sh" "$root/build" -DCMAKE_BUILD_TYPE=Release
+(cd "$root/build" && xvfb-run -a -s "-screen 0 1920x1080x24" \
+   ctest --output-on-failure --parallel "$jobs" --timeout 900)
+
+echo "== Analysis layer under ASan + UBSan (no Qt)"
+bash "$root/scripts/build.sh" "$root/build-sanitize" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-g -O1" \
+  -DBUNRAKU_WITH_QT=OFF -DBUNRAKU_SANITIZE=ON -DBUNRAKU_BUILD_BENCHMARKS=OFF
+(cd "$root/build-sanitize" && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+   ctest --output-on-failure --parallel "$jobs" --timeout 900)
