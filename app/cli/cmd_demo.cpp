@@ -1,11 +1,72 @@
 // Subcommands: demo.
 #include "app/cli/commands.h"
 
+#include "analysis/synth/demo_corpus.h"
+#include "analysis/synth/demo_corpus_io.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
 namespace bunraku::app::cli {
+namespace {
+
+struct DemoArguments {
+    std::string output;
+    std::uint64_t seed = 1;
+    bool json = false;
+};
+
+void runDemo(const DemoArguments& arguments)
+{
+    namespace synth = analysis::synth;
+    synth::DemoOptions options;
+    options.seed = arguments.seed;
+    const synth::DemoCorpus demo = synth::generateDemoCorpus(options);
+    const std::filesystem::path folder = arguments.output;
+    unwrap(synth::writeDemoCorpus(demo, folder));
+
+    Eigen::Index frames = 0;
+    for (const auto& take : demo.corpus.takes) frames = std::max(frames, take.frameCount());
+    if (arguments.json) {
+        printJson({{"folder", folder.string()},
+                   {"truth", synth::groundTruthFolder(folder).string()},
+                   {"seed", arguments.seed},
+                   {"takes", demo.corpus.takes.size()},
+                   {"channels", demo.corpus.takes.front().channelCount()},
+                   {"frames", frames},
+                   {"rate_hz", demo.corpus.rateHz},
+                   {"functions", demo.corpus.functions()},
+                   {"emotions", demo.corpus.emotions()}});
+    } else {
+        std::cout << "wrote " << demo.corpus.takes.size() << " takes (" << frames << " frames at most, "
+                  << demo.corpus.rateHz << " Hz) to " << folder.string() << ", ground truth in "
+                  << synth::groundTruthFolder(folder).string() << "\n";
+    }
+}
+
+} // namespace
 
 void addDemoCommands(CommandSet& commands)
 {
-    (void)commands;
+    auto arguments = std::make_shared<DemoArguments>();
+    CLI::App* demo = commands.root.add_subcommand(
+        "demo", "Write the synthetic Bunraku corpus (2 functions x 3 emotions x 5 takes) and its ground truth "
+                "(DIR/truth, see docs/DEMO-CORPUS.md)");
+    demo->add_option("-o,--output", arguments->output, "Corpus folder to write (replaced when it exists)")
+        ->required()
+        ->type_name("DIR");
+    demo->add_option("--seed", arguments->seed, "Seed of the takes' randomisation")
+        ->check(CLI::Validator(
+            [](std::string& text) {
+                const bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+                return digits ? std::string() : "expected a non-negative integer, got '" + text + "'";
+            },
+            "UINT"))
+        ->capture_default_str();
+    demo->add_flag("--json", arguments->json, "Print a machine-readable summary");
+    demo->callback([arguments] { runDemo(*arguments); });
 }
 
 } // namespace bunraku::app::cli
