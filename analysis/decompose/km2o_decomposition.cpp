@@ -1,0 +1,127 @@
+#include "analysis/decompose/km2o_decomposition.h"
+
+#include <cmath>
+#include <string>
+
+namespace bunraku::analysis {
+namespace {
+
+/// The cells of one function in Decomposition::emotions order, as frames x K per channel.
+struct FunctionCells {
+    int function = 0;
+    std::vector<int> cellIndices;                 ///< into Decomposition::emotions
+    std::vector<std::vector<const Take*>> takes;  ///< per cell
+};
+
+struct Evaluation {
+    Decomposition components;
+    Eigen::MatrixXd cellErrorPercent;
+};
+
+Result<Evaluation> evaluate(const Corpus& corpus, const Decomposition& layout, const std::vector<FunctionCells>& families,
+                            const ExogenousOptions& reading)
+{
+    Evaluation out;
+    out.components = layout;
+    const Eigen::Index channels = Eigen::Index(layout.channels.size());
+    const Eigen::Index frames = layout.frameCount();
+    out.cellErrorPercent = Eigen::MatrixXd::Zero(channels, Eigen::Index(layout.emotions.size()));
+    std::vector<Eigen::MatrixXd> cells;
+    for (const auto& family : families) {
+        cells.assign(family.takes.size(), Eigen::MatrixXd());
+        for (Eigen::Index ch = 0; ch < channels; ++ch) {
+            for (std::size_t j = 0; j < family.takes.size(); ++j) {
+                auto& m = cells[j];
+                m.resize(frames, Eigen::Index(family.takes[j].size()));
+                for (std::size_t k = 0; k < family.takes[j].size(); ++k) m.col(Eigen::Index(k)) = family.takes[j][k]->values.col(ch);
+            }
+            auto est = estimateExogenousInputs(cells, reading);
+            if (!est)
+                return makeError(est.error().code, "KM2O decomposition, channel " + layout.channels[std::size_t(ch)].name() +
+                                                       ", function '" + layout.functions[std::size_t(family.function)].function +
+                                                       "': " + est.error().message);
+            out.components.functions[std::size_t(family.function)].values.col(ch) = est->functionComponent;
+            for (std::size_t j = 0; j < family.cellIndices.size(); ++j) {
+                const int cell = family.cellIndices[j];
+                out.components.emotions[std::size_t(cell)].values.col(ch) = est->emotionComponents.col(Eigen::Index(j));
+                const Eigen::VectorXd reconstruction = est->functionComponent + est->emotionComponents.col(Eigen::Index(j));
+                const double p = relativeError(reconstruction, est->cellMeans.col(Eigen::Index(j)));
+                out.cellErrorPercent(ch, cell) = std::isfinite(p) ? 100.0 * p : 0.0; // all-zero mean: nothing to miss
+            }
+        }
+    }
+    (void)corpus;
+    return out;
+}
+
+} // namespace
+
+Result<Km2oDecomposition> decomposeKm2o(const Corpus& corpus, const Km2oDecompositionOptions& options, const RunControl& control)
+{
+    auto layout = decomposeLeastSquares(corpus); // checks the corpus, gives the cell order and means
+    if (!layout) return layout.error();
+    const Eigen::Index frames = layout->frameCount();
+    const int maxM = maxCorrelationLength(frames);
+    auto outOfRange = [&](int m) {
+        return makeError(ErrorCode::InvalidArgument, "KM2O: correlation length M = " + std::to_string(m) + " outside 1..M_max = " +
+                                                         std::to_string(maxM) + " (M_max = floor(3 sqrt(T+1)) - 1, T = " +
+                                                         std::to_string(frames - 1) + ", thesis eq. 4.30)");
+    };
+    if (options.correlationLength < 0 || options.correlationLength > maxM) return outOfRange(options.correlationLength);
+    if (options.lastCandidateLength < 0 || options.lastCandidateLength > maxM) return outOfRange(options.lastCandidateLength);
+
+    std::vector<FunctionCells> families;
+    for (std::size_t i = 0; i < layout->functions.size(); ++i) {
+        FunctionCells family;
+        family.function = int(i);
+        for (std::size_t c = 0; c < layout->emotions.size(); ++c) {
+            const auto& cell = layout->emotions[c];
+            if (cell.function != layout->functions[i].function) continue;
+            auto takes = corpus.cell(cell.function, cell.emotion);
+            if (takes.size() < 2)
+                return makeError(ErrorCode::InvalidArgument, "KM2O decomposition: cell " + cell.function + "/" + cell.emotion +
+                                                                 " has " + std::to_string(takes.size()) +
+                                                                 " take(s); the diff series need K >= 2 (eq. 4.35)");
+            family.cellIndices.push_back(int(c));
+            family.takes.push_back(std::move(takes));
+        }
+        families.push_back(std::move(family));
+    }
+
+    Km2oDecomposition result;
+    if (options.correlationLength > 0) {
+        result.candidateLengths = {options.correlationLength};
+    } else {
+        const int last = options.lastCandidateLength > 0 ? options.lastCandidateLength : maxM;
+        for (int m = 1; m <= last; ++m) result.candidateLengths.push_back(m);
+    }
+    double bestError = 0.0;
+    for (std::size_t index = 0; index < result.candidateLengths.size(); ++index) {
+        if (control.cancelled()) return makeError(ErrorCode::Cancelled, "KM2O decomposition cancelled");
+        ExogenousOptions reading = options.reading;
+        reading.correlationLength = result.candidateLengths[index];
+        auto evaluation = evaluate(corpus, *layout, families, reading);
+        if (!evaluation) return evaluation.error();
+        const double meanError = evaluation->cellErrorPercent.size() > 0 ? evaluation->cellErrorPercent.mean() : 0.0;
+        result.meanErrorPercent.push_back(meanError);
+        if (index == 0 || meanError < bestError) {
+            bestError = meanError;
+            result.correlationLength = reading.correlationLength;
+            result.components = std::move(evaluation->components);
+            result.cellErrorPercent = std::move(evaluation->cellErrorPercent);
+        }
+        control.report(double(index + 1) / double(result.candidateLengths.size()));
+    }
+    result.meanCellErrorPercent = bestError;
+    // eta = x - y - z with the KM2O components.
+    for (auto& eta : result.components.fluctuations) {
+        const Take* take = corpus.find(eta.labels.function, eta.labels.emotion, eta.labels.takeIndex);
+        const int cell = result.components.cellIndex(eta.labels.function, eta.labels.emotion);
+        const auto* y = result.components.function(eta.labels.function);
+        if (take && y && cell >= 0)
+            eta.values = take->values - y->values - result.components.emotions[std::size_t(cell)].values;
+    }
+    return result;
+}
+
+} // namespace bunraku::analysis

@@ -1,0 +1,61 @@
+#pragma once
+/// Function / emotion / fluctuation decomposition of a corpus by least squares (thesis 4.3.1,
+/// eqs. 4.1-4.8): x_k^{ij}(t) = y^i(t) + z^{ij}(t) + eta_k^{ij}(t) with z^{i,neutral} = 0, so
+/// y^i = mean_k x_k^{i,neutral}, z^{ij} = mean_k x_k^{ij} - y^i, eta = x - y - z; per channel.
+/// The neutral emotion is Corpus::neutralEmotion (labels are data).
+
+#include "analysis/core/corpus.h"
+#include "analysis/core/result.h"
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace bunraku::analysis {
+
+/// y^i: one per function.
+struct FunctionComponent {
+    std::string function;
+    Eigen::MatrixXd values; ///< frames x channels
+};
+
+/// z^{ij}: one per function x emotion cell (zero for the neutral emotion).
+struct EmotionComponent {
+    std::string function;
+    std::string emotion;
+    Eigen::MatrixXd values; ///< frames x channels
+};
+
+/// eta_k^{ij}: one per take, in corpus order.
+struct FluctuationComponent {
+    TakeLabels labels;
+    Eigen::MatrixXd values; ///< frames x channels
+};
+
+/// The components of a corpus; every matrix is frames x channels with the corpus's layout.
+struct Decomposition {
+    double rateHz = 5.0;
+    std::vector<Channel> channels;
+    std::string neutralEmotion;
+    std::vector<FunctionComponent> functions;     ///< in Corpus::functions() order
+    std::vector<EmotionComponent> emotions;       ///< function-major, Corpus::emotions() order, cells with takes only
+    std::vector<FluctuationComponent> fluctuations;
+    /// Mean of the takes of each cell, same order as `emotions` (x_mean^{ij}, eq. 4.22).
+    std::vector<Eigen::MatrixXd> cellMeans;
+
+    const FunctionComponent* function(const std::string& name) const;
+    const EmotionComponent* emotion(const std::string& function, const std::string& emotion) const;
+    /// Index into `emotions`/`cellMeans`, -1 when absent.
+    int cellIndex(const std::string& function, const std::string& emotion) const;
+    Eigen::Index frameCount() const { return functions.empty() ? 0 : functions.front().values.rows(); }
+};
+
+/// The shared checks of every decomposition: a valid corpus, all takes with the same frame
+/// count (pad or normalise first), and a neutral-emotion cell for every function.
+Status checkDecomposable(const Corpus& corpus);
+
+/// Least-squares decomposition (eqs. 4.4-4.8).
+Result<Decomposition> decomposeLeastSquares(const Corpus& corpus);
+
+} // namespace bunraku::analysis
