@@ -1,5 +1,0 @@
-if(EXISTS "/work/main/build/tests/analysis/core/tests_analysis_core_tests-b12d07c.cmake")
-  include("/work/main/build/tests/analysis/core/tests_analysis_core_tests-b12d07c.cmake")
-else()
-  add_test(tests_analysis_core_NOT_BUILT-b12d07c tests_analysis_core_NOT_BUILT-b12d07c)
-endif()
