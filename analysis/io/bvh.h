@@ -1,0 +1,85 @@
+#pragma once
+/// BVH (Biovision hierarchy) files: parsing of HIERARCHY and MOTION and forward kinematics to
+/// the world pose of every joint. Units and axes are the file's own here; bvh_import.h converts
+/// to the workbench convention. Format notes: docs/FORMATS.md.
+
+#include "analysis/core/pose.h"
+#include "analysis/core/result.h"
+
+#include <Eigen/Core>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace bunraku::analysis::io {
+
+enum class BvhChannel { Xposition, Yposition, Zposition, Xrotation, Yrotation, Zrotation };
+
+/// "Xposition" ... "Zrotation".
+const char* bvhChannelName(BvhChannel channel);
+
+/// One ROOT/JOINT or End Site of the hierarchy.
+struct BvhJoint {
+    std::string name;          ///< End Sites are named "<parent>_End"
+    int parent = -1;           ///< index into BvhSkeleton::joints, -1 for a root
+    Eigen::Vector3d offset = Eigen::Vector3d::Zero(); ///< file units, in the parent's frame
+    std::vector<BvhChannel> channels; ///< in file order, 0 to 6 of them (usually 3 or 6)
+    int firstChannel = 0;      ///< column of its first channel in BvhMotion::values
+    bool endSite = false;
+};
+
+struct BvhSkeleton {
+    std::vector<BvhJoint> joints; ///< parents precede children (file order)
+    int channelCount = 0;
+
+    /// Index of the joint (or End Site) with this name, -1 when absent.
+    int find(const std::string& name) const;
+    /// Number of joints that are not End Sites.
+    int jointCount() const;
+    int endSiteCount() const;
+};
+
+struct BvhMotion {
+    /// frames x channels, rows = time, file units and degrees.
+    Eigen::MatrixXd values;
+    double frameTime = 0.0; ///< seconds
+};
+
+struct BvhFile {
+    BvhSkeleton skeleton;
+    BvhMotion motion;
+    std::string source;
+};
+
+/// Parses BVH text: ROOT/JOINT/End Site at any depth, OFFSET, CHANNELS with 0 to 6 channels
+/// in any order, MOTION with Frames and Frame Time. Tolerates CRLF, tabs, trailing spaces and
+/// scientific notation. Errors: "source:line: what was expected"; NaN/Inf are rejected.
+Result<BvhFile> parseBvh(const std::string& text, const std::string& sourceName);
+Result<BvhFile> readBvh(const std::filesystem::path& file);
+
+/// How position channels of a joint combine with its OFFSET.
+enum class BvhPositionMode {
+    /// Position channels, when a joint has them, are its whole local translation (OFFSET is the
+    /// rest value). Exporters that write 6 channels on every joint (Bandai, many others) mean this.
+    ReplaceOffset,
+    /// local translation = OFFSET + position channels.
+    AddToOffset,
+};
+
+struct BvhKinematicsOptions {
+    BvhPositionMode positionMode = BvhPositionMode::ReplaceOffset;
+};
+
+/// parent_T_joint of every joint at one frame: translation = OFFSET and/or position channels,
+/// rotation = the rotation channels applied in the order listed (intrinsic: R = R1 * R2 * R3).
+std::vector<RigidTransform> bvhLocalPoses(const BvhFile& file, Eigen::Index frame,
+                                          const BvhKinematicsOptions& options = {});
+/// file_T_joint (world poses in the file's axes and units) of every joint at one frame.
+std::vector<RigidTransform> bvhWorldPoses(const BvhFile& file, Eigen::Index frame,
+                                          const BvhKinematicsOptions& options = {});
+
+/// BVH text for a file structure (inverse of parseBvh; values written with full precision).
+std::string formatBvh(const BvhFile& file);
+
+} // namespace bunraku::analysis::io

@@ -1,0 +1,300 @@
+#include "analysis/io/corpus_io.h"
+
+#include "analysis/io/atomic_file.h"
+#include "analysis/io/text_scan.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <set>
+
+namespace bunraku::analysis::io {
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+std::string sanitise(const std::string& text)
+{
+    std::string out;
+    for (char c : text) {
+        const bool keep = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '-';
+        out += keep ? c : '-';
+    }
+    return out.empty() ? std::string("take") : out;
+}
+
+/// "." + leaf + marker + unique suffix (built stepwise: GCC 12 warns falsely on the one-liner).
+std::string hiddenName(const std::string& leaf, const char* marker);
+
+std::string tempSuffix()
+{
+    static std::atomic<unsigned> counter{0};
+    return std::to_string(std::chrono::steady_clock::now().time_since_epoch().count()) + "-" +
+           std::to_string(counter.fetch_add(1));
+}
+
+std::string hiddenName(const std::string& leaf, const char* marker)
+{
+    std::string name = ".";
+    name += leaf;
+    name += marker;
+    name += tempSuffix();
+    return name;
+}
+
+/// 1-based line of a byte offset in text.
+long lineOfOffset(const std::string& text, std::size_t offset)
+{
+    offset = std::min(offset, text.size());
+    return 1 + long(std::count(text.begin(), text.begin() + std::ptrdiff_t(offset), '\n'));
+}
+
+struct ManifestReader {
+    std::string file;
+
+    Error error(const std::string& where, const std::string& what) const
+    {
+        return makeError(ErrorCode::Parse, file + ": " + where + ": " + what);
+    }
+};
+
+Result<std::string> stringField(const ManifestReader& reader, const json& object, const char* key, const std::string& where,
+                                bool required = true)
+{
+    const auto it = object.find(key);
+    if (it == object.end()) {
+        if (!required) return std::string();
+        return reader.error(where, std::string("missing \"") + key + "\" (a string)");
+    }
+    if (!it->is_string()) return reader.error(where, std::string("\"") + key + "\" must be a string");
+    return it->get<std::string>();
+}
+
+Result<double> numberField(const ManifestReader& reader, const json& object, const char* key, const std::string& where)
+{
+    const auto it = object.find(key);
+    if (it == object.end()) return reader.error(where, std::string("missing \"") + key + "\" (a number)");
+    if (!it->is_number()) return reader.error(where, std::string("\"") + key + "\" must be a number");
+    const double value = it->get<double>();
+    if (!std::isfinite(value)) return reader.error(where, std::string("\"") + key + "\" must be finite");
+    return value;
+}
+
+json manifestOf(const Corpus& corpus, const std::vector<std::string>& files)
+{
+    json channels = json::array();
+    for (const auto& c : corpus.takes.front().channels)
+        channels.push_back({{"name", c.name()}, {"part", c.part}, {"dof", c.dof}, {"unit", c.unit}});
+    json takes = json::array();
+    for (std::size_t i = 0; i < corpus.takes.size(); ++i) {
+        const Take& take = corpus.takes[i];
+        json entry = {{"function", take.labels.function},
+                      {"emotion", take.labels.emotion},
+                      {"take", take.labels.takeIndex},
+                      {"file", files[i]},
+                      {"frames", take.frameCount()}};
+        if (!take.labels.source.empty()) entry["source"] = take.labels.source;
+        takes.push_back(entry);
+    }
+    return json{{"format", kCorpusFormatName},
+                {"version", kCorpusFormatVersion},
+                {"name", corpus.name},
+                {"rate_hz", corpus.rateHz},
+                {"units", {{"position", "cm"}, {"angle", "deg"}, {"time", "s"}}},
+                {"convention", corpus.convention},
+                {"neutral_emotion", corpus.neutralEmotion},
+                {"channels", channels},
+                {"takes", takes}};
+}
+
+} // namespace
+
+bool isCorpusFolder(const fs::path& folder)
+{
+    std::error_code ec;
+    return fs::is_directory(folder, ec) && fs::is_regular_file(folder / "corpus.json", ec);
+}
+
+Result<Corpus> readCorpus(const fs::path& folder)
+{
+    std::error_code ec;
+    if (!fs::is_directory(folder, ec)) return makeError(ErrorCode::NotFound, folder.string() + ": no such corpus folder");
+    const fs::path manifestPath = folder / "corpus.json";
+    auto text = readTextFile(manifestPath);
+    if (!text) return text.error();
+    const ManifestReader reader{manifestPath.string()};
+
+    json manifest;
+    try {
+        manifest = json::parse(*text);
+    } catch (const json::parse_error& e) {
+        return parseError(reader.file, lineOfOffset(*text, e.byte), std::string("invalid JSON: ") + e.what());
+    }
+    if (!manifest.is_object()) return reader.error("top level", "expected a JSON object");
+    auto format = stringField(reader, manifest, "format", "top level");
+    if (!format) return format.error();
+    if (*format != kCorpusFormatName)
+        return reader.error("\"format\"", "expected \"" + std::string(kCorpusFormatName) + "\", found \"" + *format + "\"");
+    auto version = numberField(reader, manifest, "version", "top level");
+    if (!version) return version.error();
+    if (*version != kCorpusFormatVersion)
+        return makeError(ErrorCode::Unsupported, reader.file + ": corpus format version " + nlohmann::json(*version).dump() +
+                                                     " is not supported (expected " + std::to_string(kCorpusFormatVersion) + ")");
+
+    Corpus corpus;
+    auto name = stringField(reader, manifest, "name", "top level", false);
+    if (!name) return name.error();
+    corpus.name = *name;
+    auto rate = numberField(reader, manifest, "rate_hz", "top level");
+    if (!rate) return rate.error();
+    if (!(*rate > 0.0)) return reader.error("\"rate_hz\"", "expected a positive sample rate");
+    corpus.rateHz = *rate;
+    if (manifest.contains("convention")) {
+        auto convention = stringField(reader, manifest, "convention", "top level");
+        if (!convention) return convention.error();
+        corpus.convention = *convention;
+    }
+    if (manifest.contains("neutral_emotion")) {
+        auto neutral = stringField(reader, manifest, "neutral_emotion", "top level");
+        if (!neutral) return neutral.error();
+        corpus.neutralEmotion = *neutral;
+    }
+
+    std::vector<Channel> channels;
+    const auto channelsIt = manifest.find("channels");
+    if (channelsIt == manifest.end() || !channelsIt->is_array())
+        return reader.error("top level", "missing \"channels\" (an array)");
+    for (std::size_t i = 0; i < channelsIt->size(); ++i) {
+        const json& entry = (*channelsIt)[i];
+        const std::string where = "channels[" + std::to_string(i) + "]";
+        if (!entry.is_object()) return reader.error(where, "expected an object {part, dof, unit}");
+        auto part = stringField(reader, entry, "part", where);
+        if (!part) return part.error();
+        auto dof = stringField(reader, entry, "dof", where);
+        if (!dof) return dof.error();
+        auto unit = stringField(reader, entry, "unit", where, false);
+        if (!unit) return unit.error();
+        channels.push_back(Channel{*part, *dof, *unit});
+    }
+
+    const auto takesIt = manifest.find("takes");
+    if (takesIt == manifest.end() || !takesIt->is_array()) return reader.error("top level", "missing \"takes\" (an array)");
+    for (std::size_t i = 0; i < takesIt->size(); ++i) {
+        const json& entry = (*takesIt)[i];
+        const std::string where = "takes[" + std::to_string(i) + "]";
+        if (!entry.is_object()) return reader.error(where, "expected an object {function, emotion, take, file, frames}");
+        TakeCsvOptions options;
+        options.rateHz = corpus.rateHz;
+        auto function = stringField(reader, entry, "function", where);
+        if (!function) return function.error();
+        auto emotion = stringField(reader, entry, "emotion", where);
+        if (!emotion) return emotion.error();
+        auto index = numberField(reader, entry, "take", where);
+        if (!index) return index.error();
+        auto file = stringField(reader, entry, "file", where);
+        if (!file) return file.error();
+        auto source = stringField(reader, entry, "source", where, false);
+        if (!source) return source.error();
+        const fs::path relative(*file);
+        if (relative.empty() || relative.is_absolute() || *file.value().begin() == '.')
+            return reader.error(where, "\"file\" must be a file name inside the corpus folder, found \"" + *file + "\"");
+        if (*index != std::floor(*index) || *index < 0.0 || *index > 1e9)
+            return reader.error(where, "\"take\" must be a whole number from 0 (unknown) upwards");
+        options.labels = TakeLabels{*function, *emotion, int(*index), *source};
+        auto take = readTakeCsv(folder / relative, options);
+        if (!take) return take.error();
+        if (source->empty()) take->labels.source = *file;
+        if (take->channels.size() != channels.size())
+            return makeError(ErrorCode::Parse, (folder / relative).string() + ": " + std::to_string(take->channels.size()) +
+                                                   " channels, but corpus.json lists " + std::to_string(channels.size()));
+        for (std::size_t c = 0; c < channels.size(); ++c) {
+            if (take->channels[c].name() != channels[c].name())
+                return makeError(ErrorCode::Parse, (folder / relative).string() + ":1: column " + std::to_string(c + 2) +
+                                                       " is " + take->channels[c].name() + ", corpus.json expects " +
+                                                       channels[c].name());
+            take->channels[c].unit = channels[c].unit;
+        }
+        if (entry.contains("frames")) {
+            auto frames = numberField(reader, entry, "frames", where);
+            if (!frames) return frames.error();
+            if (*frames != double(take->frameCount()))
+                return makeError(ErrorCode::Parse, (folder / relative).string() + ": " + std::to_string(take->frameCount()) +
+                                                       " frames, but corpus.json says " + nlohmann::json(*frames).dump());
+        }
+        corpus.takes.push_back(std::move(*take));
+    }
+    if (corpus.takes.empty()) return reader.error("\"takes\"", "expected at least one take");
+    if (auto valid = validateCorpus(corpus); !valid)
+        return makeError(valid.error().code, folder.string() + ": " + valid.error().message);
+    return corpus;
+}
+
+Status writeCorpus(const Corpus& corpus, const fs::path& folder)
+{
+    if (corpus.takes.empty()) return makeError(ErrorCode::InvalidArgument, folder.string() + ": the corpus has no takes");
+    if (auto valid = validateCorpus(corpus); !valid)
+        return makeError(valid.error().code, folder.string() + ": " + valid.error().message);
+
+    std::error_code ec;
+    const fs::path target = fs::absolute(folder, ec).lexically_normal();
+    fs::path parent = target.parent_path();
+    std::string leaf = target.filename().string();
+    if (leaf.empty()) { // "out/" normalises to "out/" with an empty filename
+        leaf = target.parent_path().filename().string();
+        parent = target.parent_path().parent_path();
+    }
+    const fs::path destination = parent / leaf;
+    if (fs::exists(destination, ec)) {
+        if (!fs::is_directory(destination, ec))
+            return makeError(ErrorCode::Io, destination.string() + ": exists and is not a folder");
+        if (!fs::is_empty(destination, ec) && !isCorpusFolder(destination))
+            return makeError(ErrorCode::Io, destination.string() + ": refusing to replace a non-empty folder that is not a corpus");
+    }
+    fs::create_directories(parent, ec);
+    if (ec) return makeError(ErrorCode::Io, parent.string() + ": cannot create folder: " + ec.message());
+
+    const fs::path temp = parent / hiddenName(leaf, ".tmp-");
+    fs::create_directory(temp, ec);
+    if (ec) return makeError(ErrorCode::Io, destination.string() + ": cannot create a temporary folder beside it: " + ec.message());
+    const auto fail = [&](Error error) -> Status {
+        std::error_code ignored;
+        fs::remove_all(temp, ignored);
+        return error;
+    };
+
+    std::vector<std::string> files;
+    std::set<std::string> used;
+    for (const Take& take : corpus.takes) {
+        const std::string base = sanitise(take.labels.function) + "_" + sanitise(take.labels.emotion) + "_" +
+                                 std::to_string(take.labels.takeIndex);
+        std::string name = base + ".csv";
+        for (int n = 2; used.count(name) != 0; ++n) name = base + "-" + std::to_string(n) + ".csv";
+        used.insert(name);
+        files.push_back(name);
+        if (auto written = writeTakeCsv(take, temp / name); !written) return fail(written.error());
+    }
+    if (auto written = writeFileAtomically(temp / "corpus.json", manifestOf(corpus, files).dump(2) + "\n"); !written)
+        return fail(written.error());
+
+    const fs::path old = parent / hiddenName(leaf, ".old-");
+    const bool hadOld = fs::exists(destination, ec);
+    if (hadOld) {
+        fs::rename(destination, old, ec);
+        if (ec) return fail(makeError(ErrorCode::Io, destination.string() + ": cannot move the old corpus aside: " + ec.message()));
+    }
+    fs::rename(temp, destination, ec);
+    if (ec) {
+        std::error_code ignored;
+        if (hadOld) fs::rename(old, destination, ignored);
+        return fail(makeError(ErrorCode::Io, destination.string() + ": cannot move the new corpus in place: " + ec.message()));
+    }
+    if (hadOld) fs::remove_all(old, ec);
+    return okStatus();
+}
+
+} // namespace bunraku::analysis::io

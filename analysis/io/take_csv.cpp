@@ -1,0 +1,176 @@
+#include "analysis/io/take_csv.h"
+
+#include "analysis/io/atomic_file.h"
+#include "analysis/io/text_scan.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <set>
+
+namespace bunraku::analysis::io {
+
+namespace {
+
+using detail::NumberStatus;
+
+std::string unitForDof(std::string_view dof)
+{
+    if (dof == "x" || dof == "y" || dof == "z") return "cm";
+    if (dof == "yaw" || dof == "pitch" || dof == "roll") return "deg";
+    return "";
+}
+
+char detectSeparator(std::string_view header)
+{
+    const auto count = [&](char c) { return std::count(header.begin(), header.end(), c); };
+    const long commas = count(','), semicolons = count(';'), tabs = count('\t');
+    if (commas == 0 && semicolons == 0 && tabs == 0) return ' ';
+    if (commas >= semicolons && commas >= tabs) return ',';
+    return semicolons >= tabs ? ';' : '\t';
+}
+
+std::vector<std::string_view> fieldsOf(std::string_view line, char separator)
+{
+    if (separator == ' ') return detail::splitWhitespace(line);
+    return detail::splitFields(line, separator);
+}
+
+bool isTimeColumn(std::string_view name) { return name == "time_s" || name == "time" || name == "t"; }
+
+void appendNumber(std::string& out, double value)
+{
+    char buffer[64];
+    const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value);
+    out.append(buffer, ec == std::errc() ? end : buffer);
+}
+
+} // namespace
+
+Result<Take> parseTakeCsv(const std::string& text, const std::string& sourceName, const TakeCsvOptions& options)
+{
+    const auto lines = detail::splitLines(text);
+    std::size_t index = 0;
+    const auto skippable = [](std::string_view line) {
+        const auto t = detail::trim(line);
+        return t.empty() || t.front() == '#';
+    };
+    while (index < lines.size() && skippable(lines[index].text)) ++index;
+    if (index == lines.size()) return parseError(sourceName, 0, "empty file, expected a header line `time_s,part.dof,...`");
+
+    const detail::TextLine headerLine = lines[index++];
+    const char separator = detectSeparator(headerLine.text);
+    const auto header = fieldsOf(detail::trim(headerLine.text), separator);
+    const bool hasTime = !header.empty() && isTimeColumn(header.front());
+    Take take;
+    std::set<std::string> seen;
+    for (std::size_t c = hasTime ? 1 : 0; c < header.size(); ++c) {
+        const std::string_view name = header[c];
+        const auto dot = name.rfind('.');
+        const std::string where = "column " + std::to_string(c + 1) + " " + detail::quoted(name);
+        if (dot == std::string_view::npos || dot == 0 || dot + 1 == name.size())
+            return parseError(sourceName, headerLine.number,
+                              where + ": expected a channel name `part.dof` (e.g. head.x)" +
+                                  (isTimeColumn(name) ? " (the time column must come first)" : ""));
+        if (!seen.insert(std::string(name)).second)
+            return parseError(sourceName, headerLine.number, where + ": channel named twice");
+        const std::string dof(name.substr(dot + 1));
+        take.channels.push_back(Channel{std::string(name.substr(0, dot)), dof, unitForDof(dof)});
+    }
+    if (take.channels.empty())
+        return parseError(sourceName, headerLine.number, "expected at least one channel column `part.dof` in the header");
+
+    std::vector<double> times;
+    std::vector<long> rowLines;
+    std::vector<double> data;
+    const std::size_t width = header.size();
+    for (; index < lines.size(); ++index) {
+        const auto& line = lines[index];
+        if (skippable(line.text)) continue;
+        const auto fields = fieldsOf(detail::trim(line.text), separator);
+        if (fields.size() != width)
+            return parseError(sourceName, line.number,
+                              "expected " + std::to_string(width) + " fields like the header, found " +
+                                  std::to_string(fields.size()));
+        for (std::size_t c = 0; c < width; ++c) {
+            const auto parsed = detail::parseNumber(fields[c]);
+            const std::string column = "column " + std::to_string(c + 1) + " (" + std::string(header[c]) + ")";
+            if (parsed.status == NumberStatus::NotANumber)
+                return parseError(sourceName, line.number, column + ": expected a number, found " + detail::quoted(fields[c]));
+            if (parsed.status == NumberStatus::NonFinite)
+                return parseError(sourceName, line.number, column + ": non-finite value " + detail::quoted(fields[c]) + " (NaN/Inf are not allowed)");
+            if (hasTime && c == 0) times.push_back(parsed.value);
+            else data.push_back(parsed.value);
+        }
+        rowLines.push_back(line.number);
+    }
+    const std::size_t frames = rowLines.size();
+    if (frames == 0) return parseError(sourceName, headerLine.number, "expected data rows after the header, found none");
+
+    double rate = options.rateHz.value_or(0.0);
+    if (options.rateHz && !(*options.rateHz > 0.0 && std::isfinite(*options.rateHz)))
+        return makeError(ErrorCode::InvalidArgument, sourceName + ": the sample rate must be a positive number");
+    if (hasTime && frames >= 2) {
+        const double step = (times.back() - times.front()) / double(frames - 1);
+        if (!(step > 0.0)) return parseError(sourceName, rowLines[1], "time_s must increase from row to row");
+        for (std::size_t f = 1; f < frames; ++f) {
+            const double d = times[f] - times[f - 1];
+            if (std::fabs(d - step) > options.timeTolerance * step)
+                return parseError(sourceName, rowLines[f],
+                                  "time_s is not uniform: step " + std::to_string(d) + " s, expected " +
+                                      std::to_string(step) + " s");
+        }
+        if (!options.rateHz) {
+            rate = 1.0 / step;
+            // Times written with finite precision: snap to a rate with few decimals when that close.
+            const double snapped = std::round(rate * 1e6) / 1e6;
+            if (std::fabs(snapped - rate) <= 1e-9 * rate) rate = snapped;
+        }
+    } else if (!options.rateHz) {
+        if (!hasTime) return parseError(sourceName, headerLine.number, "no time_s column: expected one, or a sample rate option");
+        rate = 5.0; // one frame: the rate cannot be measured
+    }
+
+    take.rateHz = rate;
+    take.values.resize(Eigen::Index(frames), Eigen::Index(take.channels.size()));
+    for (std::size_t f = 0; f < frames; ++f)
+        for (std::size_t c = 0; c < take.channels.size(); ++c)
+            take.values(Eigen::Index(f), Eigen::Index(c)) = data[f * take.channels.size() + c];
+    take.labels = options.labels;
+    if (take.labels.source.empty()) take.labels.source = sourceName;
+    return take;
+}
+
+Result<Take> readTakeCsv(const std::filesystem::path& file, const TakeCsvOptions& options)
+{
+    auto text = readTextFile(file);
+    if (!text) return text.error();
+    return parseTakeCsv(*text, file.string(), options);
+}
+
+std::string formatTakeCsv(const Take& take)
+{
+    std::string out = "time_s";
+    for (const auto& channel : take.channels) {
+        out += ',';
+        out += channel.name();
+    }
+    out += "\n";
+    for (Eigen::Index f = 0; f < take.frameCount(); ++f) {
+        appendNumber(out, take.timeOfFrame(f));
+        for (Eigen::Index c = 0; c < take.channelCount(); ++c) {
+            out += ',';
+            appendNumber(out, take.values(f, c));
+        }
+        out += '\n';
+    }
+    return out;
+}
+
+Status writeTakeCsv(const Take& take, const std::filesystem::path& file)
+{
+    if (auto valid = validateTake(take); !valid) return makeError(valid.error().code, file.string() + ": " + valid.error().message);
+    return writeFileAtomically(file, formatTakeCsv(take));
+}
+
+} // namespace bunraku::analysis::io

@@ -1,0 +1,46 @@
+#include "analysis/io/take_reader.h"
+
+#include "analysis/io/bvh_export.h"
+
+#include <algorithm>
+#include <cctype>
+
+namespace bunraku::analysis::io {
+
+TakeFileFormat takeFileFormat(const std::filesystem::path& file)
+{
+    std::string extension = file.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    if (extension == ".csv") return TakeFileFormat::Csv;
+    if (extension == ".bvh") return TakeFileFormat::Bvh;
+    if (extension == ".txt" || extension == ".fastrak" || extension == ".fst") return TakeFileFormat::Fastrak;
+    return TakeFileFormat::Unknown;
+}
+
+Result<Take> readTakeFile(const std::filesystem::path& file, const ImportOptions& options)
+{
+    switch (takeFileFormat(file)) {
+    case TakeFileFormat::Csv: return readTakeCsv(file, options.csv);
+    case TakeFileFormat::Bvh: {
+        auto bvh = readBvh(file);
+        if (!bvh) return bvh.error();
+        return options.bvhLayout == BvhTakeLayout::AllJoints ? bvhToJointTake(*bvh, options.bvh) : bvhToPuppetTake(*bvh, options.bvh);
+    }
+    case TakeFileFormat::Fastrak: return readFastrak(file, options.fastrak);
+    case TakeFileFormat::Unknown: break;
+    }
+    return makeError(ErrorCode::Unsupported,
+                     file.string() + ": unknown take file type '" + file.extension().string() + "' (expected .csv, .bvh, .txt, .fastrak or .fst)");
+}
+
+Status writeTakeFile(const Take& take, const std::filesystem::path& file)
+{
+    switch (takeFileFormat(file)) {
+    case TakeFileFormat::Csv: return writeTakeCsv(take, file);
+    case TakeFileFormat::Bvh: return writeTakeBvh(take, file);
+    default: break;
+    }
+    return makeError(ErrorCode::Unsupported, file.string() + ": cannot write '" + file.extension().string() + "' (expected .csv or .bvh)");
+}
+
+} // namespace bunraku::analysis::io

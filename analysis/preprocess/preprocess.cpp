@@ -1,0 +1,233 @@
+#include "analysis/preprocess/preprocess.h"
+
+#include "analysis/core/puppet_layout.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace bunraku::analysis::preprocess {
+
+namespace {
+
+bool isAngleChannel(const Channel& channel) { return channel.unit == "deg"; }
+
+/// Index into corpus.takes of the reference take of the cell (function, emotion), -1 if empty.
+int cellReference(const Corpus& corpus, const std::string& function, const std::string& emotion, int referenceIndex)
+{
+    int best = -1;
+    for (std::size_t i = 0; i < corpus.takes.size(); ++i) {
+        const auto& labels = corpus.takes[i].labels;
+        if (labels.function != function || labels.emotion != emotion) continue;
+        if (labels.takeIndex == referenceIndex) return int(i);
+        if (best < 0 || labels.takeIndex < corpus.takes[std::size_t(best)].labels.takeIndex) best = int(i);
+    }
+    return best;
+}
+
+/// Index of the position reference of a function: the reference take of its reference emotion.
+int functionReference(const Corpus& corpus, const std::string& function, const PreprocessOptions& options)
+{
+    std::vector<std::string> candidates;
+    if (!options.referenceEmotion.empty()) candidates.push_back(options.referenceEmotion);
+    candidates.push_back(corpus.neutralEmotion);
+    for (const auto& emotion : corpus.emotions()) candidates.push_back(emotion);
+    for (const auto& emotion : candidates) {
+        const int index = cellReference(corpus, function, emotion, options.referenceTakeIndex);
+        if (index >= 0) return index;
+    }
+    return -1;
+}
+
+Error cancelled() { return makeError(ErrorCode::Cancelled, "preprocessing cancelled"); }
+
+} // namespace
+
+Eigen::Index padToLength(Take& take, Eigen::Index frames)
+{
+    const Eigen::Index old = take.frameCount();
+    if (old >= frames || old == 0) return 0;
+    Eigen::MatrixXd padded(frames, take.channelCount());
+    padded.topRows(old) = take.values;
+    padded.bottomRows(frames - old) = take.values.row(old - 1).replicate(frames - old, 1);
+    take.values = std::move(padded);
+    return frames - old;
+}
+
+int unwrapDegrees(Eigen::Ref<Eigen::VectorXd> column)
+{
+    int wraps = 0;
+    double offset = 0.0;
+    for (Eigen::Index t = 1; t < column.size(); ++t) {
+        const double raw = column[t] + offset;
+        const double step = raw - column[t - 1];
+        const double turns = std::round(step / 360.0);
+        if (turns != 0.0) {
+            offset -= 360.0 * turns;
+            wraps += int(std::fabs(turns));
+        }
+        column[t] += offset;
+    }
+    return wraps;
+}
+
+int unwrapAngles(Take& take)
+{
+    int wraps = 0;
+    for (Eigen::Index c = 0; c < take.channelCount(); ++c)
+        if (isAngleChannel(take.channels[std::size_t(c)])) wraps += unwrapDegrees(take.values.col(c));
+    return wraps;
+}
+
+Eigen::VectorXd summedSpeed(const Take& take)
+{
+    const Eigen::Index frames = take.frameCount();
+    Eigen::VectorXd speed = Eigen::VectorXd::Zero(frames);
+    if (frames < 2) return speed;
+    const auto parts = sixDofParts(take);
+    for (Eigen::Index t = 1; t < frames; ++t) {
+        double sum = 0.0;
+        if (!parts.empty()) {
+            for (const auto& part : parts)
+                sum += (take.values.row(t).segment(part.firstChannel, 3) - take.values.row(t - 1).segment(part.firstChannel, 3)).norm();
+        } else {
+            sum = (take.values.row(t) - take.values.row(t - 1)).cwiseAbs().sum();
+        }
+        speed[t] = sum;
+    }
+    return speed;
+}
+
+Eigen::Index onsetFrame(const Eigen::VectorXd& speed, double fraction)
+{
+    if (speed.size() == 0) return 0;
+    const double peak = speed.maxCoeff();
+    if (!(peak > 0.0)) return 0;
+    for (Eigen::Index t = 0; t < speed.size(); ++t)
+        if (speed[t] >= fraction * peak) return t;
+    return 0;
+}
+
+int crossCorrelationShift(const Eigen::VectorXd& signal, const Eigen::VectorXd& reference, int maxShift)
+{
+    const Eigen::Index n = signal.size(), m = reference.size();
+    if (n == 0 || m == 0) return 0;
+    const Eigen::VectorXd a = signal.array() - signal.mean();
+    const Eigen::VectorXd b = reference.array() - reference.mean();
+    double best = -std::numeric_limits<double>::infinity();
+    int bestShift = 0;
+    for (int s = -maxShift; s <= maxShift; ++s) {
+        // Overlap: reference t in [t0, t1), signal index t + s.
+        const Eigen::Index t0 = std::max<Eigen::Index>(0, -s);
+        const Eigen::Index t1 = std::min<Eigen::Index>(m, n - s);
+        if (t1 - t0 < 2) continue;
+        const auto x = a.segment(t0 + s, t1 - t0);
+        const auto y = b.segment(t0, t1 - t0);
+        const double norm = x.norm() * y.norm();
+        if (!(norm > 0.0)) continue;
+        const double score = x.dot(y) / norm;
+        if (score > best + 1e-12 || (std::fabs(score - best) <= 1e-12 && std::abs(s) < std::abs(bestShift))) {
+            best = score;
+            bestShift = s;
+        }
+    }
+    return bestShift;
+}
+
+int estimateStartShift(const Take& take, const Take& reference, const PreprocessOptions& options)
+{
+    const Eigen::VectorXd speed = summedSpeed(take);
+    const Eigen::VectorXd referenceSpeed = summedSpeed(reference);
+    if (options.alignMethod == StartAlignMethod::Onset)
+        return int(onsetFrame(speed, options.onsetFraction) - onsetFrame(referenceSpeed, options.onsetFraction));
+    return crossCorrelationShift(speed, referenceSpeed, options.maxShiftFrames);
+}
+
+void shiftTake(Take& take, int shift)
+{
+    const Eigen::Index frames = take.frameCount();
+    if (shift == 0 || frames == 0) return;
+    Eigen::MatrixXd shifted(frames, take.channelCount());
+    for (Eigen::Index t = 0; t < frames; ++t) {
+        const Eigen::Index source = std::clamp<Eigen::Index>(t + shift, 0, frames - 1);
+        shifted.row(t) = take.values.row(source);
+    }
+    take.values = std::move(shifted);
+}
+
+Result<PreprocessResult> preprocessCorpus(const Corpus& corpus, const PreprocessOptions& options, const RunControl& control)
+{
+    if (auto valid = validateCorpus(corpus); !valid) return valid.error();
+    if (!(options.onsetFraction > 0.0 && options.onsetFraction <= 1.0))
+        return makeError(ErrorCode::InvalidArgument, "onset fraction must be in (0, 1]");
+    if (options.maxShiftFrames < 0) return makeError(ErrorCode::InvalidArgument, "the maximum shift must not be negative");
+    PreprocessResult result{corpus, {}};
+    Corpus& out = result.corpus;
+    auto& reports = result.report.takes;
+    for (const Take& take : out.takes) {
+        TakeReport report;
+        report.take = take.displayName();
+        report.positionOffsets.assign(sixDofParts(take).size(), Eigen::Vector3d::Zero());
+        reports.push_back(report);
+    }
+
+    if (options.unwrap)
+        for (std::size_t i = 0; i < out.takes.size(); ++i) reports[i].anglesUnwrapped = unwrapAngles(out.takes[i]);
+    if (control.cancelled()) return cancelled();
+    control.report(0.25);
+
+    if (options.pad) {
+        Eigen::Index longest = 0;
+        for (const Take& take : out.takes) longest = std::max(longest, take.frameCount());
+        for (std::size_t i = 0; i < out.takes.size(); ++i) reports[i].framesPadded = padToLength(out.takes[i], longest);
+        result.report.paddedFrames = longest;
+    }
+    if (control.cancelled()) return cancelled();
+    control.report(0.5);
+
+    if (options.alignStart) {
+        std::map<std::pair<std::string, std::string>, int> references;
+        for (const auto& function : out.functions())
+            for (const auto& emotion : out.emotions()) {
+                const int ref = cellReference(out, function, emotion, options.referenceTakeIndex);
+                if (ref >= 0) references[{function, emotion}] = ref;
+            }
+        const std::vector<Take> before = out.takes; // shifts are estimated on unshifted takes
+        for (std::size_t i = 0; i < out.takes.size(); ++i) {
+            const int ref = references.at({out.takes[i].labels.function, out.takes[i].labels.emotion});
+            if (ref == int(i)) {
+                reports[i].isTimeReference = true;
+                continue;
+            }
+            const int shift = estimateStartShift(before[i], before[std::size_t(ref)], options);
+            shiftTake(out.takes[i], shift);
+            reports[i].shiftFrames = shift;
+        }
+    }
+    if (control.cancelled()) return cancelled();
+    control.report(0.75);
+
+    if (options.alignPosition) {
+        for (const auto& function : out.functions()) {
+            const int ref = functionReference(out, function, options);
+            if (ref < 0) continue;
+            const Eigen::RowVectorXd start = out.takes[std::size_t(ref)].values.row(0);
+            for (std::size_t i = 0; i < out.takes.size(); ++i) {
+                Take& take = out.takes[i];
+                if (take.labels.function != function) continue;
+                reports[i].isPositionReference = int(i) == ref;
+                const auto parts = sixDofParts(take);
+                for (std::size_t p = 0; p < parts.size(); ++p) {
+                    const Eigen::Index c = parts[p].firstChannel;
+                    const Eigen::Vector3d offset = (start.segment(c, 3) - take.values.row(0).segment(c, 3)).transpose();
+                    take.values.middleCols(c, 3).rowwise() += offset.transpose();
+                    reports[i].positionOffsets[p] = offset;
+                }
+            }
+        }
+    }
+    control.report(1.0);
+    return result;
+}
+
+} // namespace bunraku::analysis::preprocess
