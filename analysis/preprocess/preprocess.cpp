@@ -155,6 +155,34 @@ void shiftTake(Take& take, int shift)
     take.values = std::move(shifted);
 }
 
+int matchAngleBranches(Take& take, const Take& reference)
+{
+    int turns = 0;
+    for (Eigen::Index c = 0; c < take.channelCount(); ++c) {
+        const Channel& channel = take.channels[std::size_t(c)];
+        if (!isAngleChannel(channel) || take.frameCount() == 0) continue;
+        const auto r = reference.channelIndex(channel.part, channel.dof);
+        if (!r || reference.frameCount() == 0) continue;
+        const double k = std::round((reference.values(0, *r) - take.values(0, c)) / 360.0);
+        if (k == 0.0) continue;
+        take.values.col(c).array() += 360.0 * k;
+        turns += int(std::abs(k));
+    }
+    return turns;
+}
+
+double alignStartHeading(Take& take, const Take& reference, const std::string& headingPart)
+{
+    const auto own = take.channelIndex(headingPart, "yaw");
+    const auto ref = reference.channelIndex(headingPart, "yaw");
+    if (!own || !ref || take.frameCount() == 0 || reference.frameCount() == 0) return 0.0;
+    const double offset = reference.values(0, *ref) - take.values(0, *own);
+    for (Eigen::Index c = 0; c < take.channelCount(); ++c)
+        if (take.channels[std::size_t(c)].dof == "yaw" && isAngleChannel(take.channels[std::size_t(c)]))
+            take.values.col(c).array() += offset;
+    return offset;
+}
+
 Result<PreprocessResult> preprocessCorpus(const Corpus& corpus, const PreprocessOptions& options, const RunControl& control)
 {
     if (auto valid = validateCorpus(corpus); !valid) return valid.error();
@@ -206,6 +234,21 @@ Result<PreprocessResult> preprocessCorpus(const Corpus& corpus, const Preprocess
     }
     if (control.cancelled()) return cancelled();
     control.report(0.75);
+
+    if (options.unwrap || options.alignHeading) {
+        for (const auto& function : out.functions()) {
+            const int ref = functionReference(out, function, options);
+            if (ref < 0) continue;
+            const Take reference = out.takes[std::size_t(ref)];
+            for (std::size_t i = 0; i < out.takes.size(); ++i) {
+                Take& take = out.takes[i];
+                if (take.labels.function != function || int(i) == ref) continue;
+                if (options.unwrap) reports[i].branchTurns = matchAngleBranches(take, reference);
+                if (options.alignHeading)
+                    reports[i].headingOffsetDeg = alignStartHeading(take, reference, options.headingPart);
+            }
+        }
+    }
 
     if (options.alignPosition) {
         for (const auto& function : out.functions()) {

@@ -3,8 +3,14 @@
 /// (2) unwrap angles (the thesis remapped to 0..360; we unwrap), (3) align the start times of the
 /// K takes of each function x emotion cell to the cell's reference take, (4) translate each take
 /// so each part's first-frame position equals that of its function's reference take.
-/// Steps run in the order unwrap, pad, align start, align position; each is optional and
-/// reported per take.
+/// Two steps the thesis implies but does not name: after unwrapping, every angle channel is
+/// moved by whole turns so its first value lies within 180 deg of the function's reference take
+/// (the thesis's 0..360 remapping kept all takes on one branch; per-take unwrapping does not),
+/// and (5) the whole-body heading is aligned: all yaw channels of a take are offset so the
+/// heading part's (default the shoulder's) start yaw equals the reference's; relative yaw
+/// (a head turned away) is kept.
+/// Steps run in the order unwrap, pad, align start, align position and heading; each is
+/// optional and reported per take.
 
 #include "analysis/core/corpus.h"
 #include "analysis/core/result.h"
@@ -31,6 +37,9 @@ struct PreprocessOptions {
     bool unwrap = true;
     bool alignStart = true;
     bool alignPosition = true;
+    bool alignHeading = true;
+    /// The part whose start yaw defines the whole-body heading.
+    std::string headingPart = "shoulder";
     StartAlignMethod alignMethod = StartAlignMethod::Onset;
     double onsetFraction = 0.1;
     int maxShiftFrames = 30;
@@ -50,6 +59,8 @@ struct TakeReport {
     bool isTimeReference = false;
     bool isPositionReference = false;
     std::vector<Eigen::Vector3d> positionOffsets; ///< cm added per 6-DOF part (sixDofParts order)
+    int branchTurns = 0;             ///< whole turns added to angle channels to meet the reference's branch
+    double headingOffsetDeg = 0.0;   ///< degrees added to every yaw channel
 };
 
 struct PreprocessReport {
@@ -74,6 +85,12 @@ Eigen::Index padToLength(Take& take, Eigen::Index frames);
 int unwrapDegrees(Eigen::Ref<Eigen::VectorXd> column);
 /// Unwraps every angle channel (unit "deg"); returns the total number of wraps removed.
 int unwrapAngles(Take& take);
+/// Moves each angle channel of `take` by whole turns so its first value is within 180 deg of
+/// the same channel of `reference`; returns the number of turns added (absolute, summed).
+int matchAngleBranches(Take& take, const Take& reference);
+/// Adds to every yaw channel the difference of the heading part's start yaw, reference minus
+/// take; returns that offset in degrees (0 when the part has no yaw channel).
+double alignStartHeading(Take& take, const Take& reference, const std::string& headingPart);
 /// Summed speed per frame (length frames): sum over 6-DOF parts of the position speed (cm/frame),
 /// or when the take has none, the sum of absolute differences of all channels. speed(0) = 0.
 Eigen::VectorXd summedSpeed(const Take& take);

@@ -268,7 +268,8 @@ void runConvert(const ConvertArguments& arguments)
 struct PreprocessArguments {
     std::string input;
     std::string output;
-    bool noPad = false, noUnwrap = false, noAlignStart = false, noAlignPosition = false;
+    bool noPad = false, noUnwrap = false, noAlignStart = false, noAlignPosition = false, noAlignHeading = false;
+    std::string headingPart = "shoulder";
     std::string method = "onset";
     int referenceTake = 1;
     int maxShift = 30;
@@ -285,6 +286,8 @@ void runPreprocess(const PreprocessArguments& arguments)
     options.unwrap = !arguments.noUnwrap;
     options.alignStart = !arguments.noAlignStart;
     options.alignPosition = !arguments.noAlignPosition;
+    options.alignHeading = !arguments.noAlignHeading;
+    options.headingPart = arguments.headingPart;
     options.alignMethod = arguments.method == "xcorr" ? pre::StartAlignMethod::CrossCorrelation : pre::StartAlignMethod::Onset;
     options.referenceTakeIndex = arguments.referenceTake;
     options.maxShiftFrames = arguments.maxShift;
@@ -310,11 +313,13 @@ void runPreprocess(const PreprocessArguments& arguments)
                              {"shift_frames", r.shiftFrames},
                              {"time_reference", r.isTimeReference},
                              {"position_reference", r.isPositionReference},
-                             {"position_offsets", offsets}});
+                             {"position_offsets", offsets},
+                             {"branch_turns", r.branchTurns},
+                             {"heading_offset_deg", r.headingOffsetDeg}});
         }
         printJson({{"input", arguments.input},
                    {"output", arguments.output},
-                   {"steps", {{"pad", options.pad}, {"unwrap", options.unwrap}, {"align_start", options.alignStart}, {"align_position", options.alignPosition}}},
+                   {"steps", {{"pad", options.pad}, {"unwrap", options.unwrap}, {"align_start", options.alignStart}, {"align_position", options.alignPosition}, {"align_heading", options.alignHeading}}},
                    {"align_method", arguments.method},
                    {"takes", result.corpus.takes.size()},
                    {"channels", result.corpus.takes.front().channelCount()},
@@ -326,6 +331,7 @@ void runPreprocess(const PreprocessArguments& arguments)
     std::cout << "preprocessed " << report.takes.size() << " takes into " << arguments.output << " (steps:"
               << (options.unwrap ? " unwrap" : "") << (options.pad ? " pad" : "")
               << (options.alignStart ? " align-start(" + arguments.method + ")" : std::string()) << (options.alignPosition ? " align-position" : "")
+              << (options.alignHeading ? " align-heading(" + options.headingPart + ")" : std::string())
               << ")\n";
     std::cout << "  " << std::left << std::setw(28) << "take" << std::right << std::setw(8) << "padded" << std::setw(10) << "unwraps"
               << std::setw(8) << "shift" << "  reference\n";
@@ -371,6 +377,10 @@ void addIoCommands(CommandSet& commands)
         preprocess->add_flag("--no-unwrap", arguments->noUnwrap, "Do not unwrap angles");
         preprocess->add_flag("--no-align-start", arguments->noAlignStart, "Do not align start times");
         preprocess->add_flag("--no-align-position", arguments->noAlignPosition, "Do not align start positions");
+        preprocess->add_flag("--no-align-heading", arguments->noAlignHeading,
+                             "Do not align the whole-body heading (start yaw of the heading part)");
+        preprocess->add_option("--heading-part", arguments->headingPart, "Part whose start yaw is the whole-body heading")
+            ->capture_default_str();
         preprocess->add_option("--align-method", arguments->method,
                                "Start-time alignment: onset (summed speed crosses a fraction of its peak) or xcorr "
                                "(cross-correlation of summed speed)")

@@ -184,3 +184,37 @@ TEST_CASE("preprocessing rejects invalid corpora and options and honours cancell
     control.stop = stop.get_token();
     CHECK(preprocessCorpus(corpus, {}, control).error().code == ErrorCode::Cancelled);
 }
+
+TEST_CASE("angle channels are brought onto the reference's branch and headings are aligned")
+{
+    Corpus corpus;
+    corpus.takes.push_back(movingTake(40, 5.0, "greeting", "none", 1));
+    corpus.takes.push_back(movingTake(40, 5.0, "greeting", "none", 2));
+    corpus.takes.push_back(movingTake(40, 5.0, "greeting", "friendly", 1));
+    // Take 2 turned by 170 deg as a whole (every yaw channel) and its head yaw one turn up.
+    Take& turned = corpus.takes[1];
+    for (int p = 0; p < kPuppetPartCount; ++p) turned.values.col(p * 6 + 3).array() += 170.0;
+    turned.values.col(3).array() += 360.0;
+    // The friendly take's head is turned 40 deg away relative to its body: that must survive.
+    corpus.takes[2].values.col(3).array() -= 40.0;
+
+    PreprocessOptions options;
+    options.alignStart = false;
+    options.alignPosition = false;
+    auto result = preprocessCorpus(corpus, options);
+    REQUIRE(result.ok());
+    const auto& out = result->corpus;
+    const auto& report = result->report.takes;
+    CHECK(report[1].branchTurns == 1);
+    CHECK(report[1].headingOffsetDeg == Approx(-170.0));
+    for (int p = 0; p < kPuppetPartCount; ++p)
+        CHECK((out.takes[1].values.col(p * 6 + 3) - out.takes[0].values.col(p * 6 + 3)).cwiseAbs().maxCoeff() < 1e-9);
+    CHECK(report[2].headingOffsetDeg == Approx(0.0).margin(1e-12));
+    CHECK(out.takes[2].values(0, 3) == Approx(out.takes[0].values(0, 3) - 40.0));
+
+    options.alignHeading = false;
+    auto kept = preprocessCorpus(corpus, options);
+    REQUIRE(kept.ok());
+    CHECK(kept->report.takes[1].headingOffsetDeg == 0.0);
+    CHECK(kept->corpus.takes[1].values(0, 9) == Approx(corpus.takes[1].values(0, 9)));
+}
