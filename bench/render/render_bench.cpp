@@ -1,0 +1,172 @@
+// Frame time of the 3D view: two puppets of the demo corpus with their motion axes and orbits
+// at 1280x720, offscreen (Xvfb + llvmpipe). Each iteration advances the frame (CPU poses and
+// uniforms only) and draws; glFinish makes the GPU's work part of the time. Per-frame times are
+// collected so the median and 95th percentile can be reported (target: 60 fps = 16.7 ms).
+#include "analysis/synth/demo_corpus.h"
+#include "render/offscreen_renderer.h"
+#include "render/take_scene.h"
+
+#include <benchmark/benchmark.h>
+
+#include <QGuiApplication>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <vector>
+
+using namespace bunraku;
+
+namespace {
+
+struct Stage {
+    std::unique_ptr<render::OffscreenRenderer> offscreen;
+    render::SceneContent scene;
+};
+
+/// The renderers outlive no QGuiApplication: main() frees them before it returns.
+std::unique_ptr<Stage> g_stages[3][2];
+
+Stage& stage(int takes, int multisampled = 1)
+{
+    auto& slot = g_stages[takes][multisampled];
+    if (!slot) {
+        slot = std::make_unique<Stage>();
+        const auto demo = analysis::synth::generateDemoCorpus();
+        std::vector<analysis::Take> chosen{*demo.corpus.find("greeting", "none", 1)};
+        if (takes > 1) chosen.push_back(*demo.corpus.find("greeting", "friendly", 1));
+        slot->scene = render::makeTakeScene(analysis::defaultBodyDescription(), chosen).value();
+        auto created = render::OffscreenRenderer::create(render::OffscreenOptions{multisampled != 0 ? 4 : 0});
+        if (!created.ok()) {
+            std::fprintf(stderr, "bench_render: %s\n", created.error().message.c_str());
+            std::exit(1);
+        }
+        slot->offscreen = std::move(created).value();
+        if (!slot->offscreen->setScene(slot->scene).ok()) std::exit(1);
+        render::SceneVisibility all;
+        all.orbitVisibility = render::OrbitVisibility::Always;
+        slot->offscreen->renderer().setVisibility(all);
+    }
+    return *slot;
+}
+
+void reportPercentiles(benchmark::State& state, std::vector<double>& milliseconds)
+{
+    if (milliseconds.empty()) return;
+    std::sort(milliseconds.begin(), milliseconds.end());
+    const auto at = [&](double q) { return milliseconds[std::size_t(q * double(milliseconds.size() - 1))]; };
+    state.counters["median_ms"] = at(0.5);
+    state.counters["p95_ms"] = at(0.95);
+    state.counters["fps_median"] = 1000.0 / at(0.5);
+}
+
+/// Frame time of a full scene (puppets, axes, orbits, grid, partner) at WxH.
+void drawFrames(benchmark::State& state, int takes)
+{
+    Stage& s = stage(takes, int(state.range(2)));
+    const QSize size(int(state.range(0)), int(state.range(1)));
+    render::Camera camera;
+    camera.angleDeg = 300.0f;
+    camera.elevationDeg = 15.0f;
+    camera.distance = 300.0f;
+    camera.target = {0.0f, 0.0f, 60.0f};
+    const Eigen::Index frames = s.scene.takes.front().take.frameCount();
+    std::vector<double> milliseconds;
+    Eigen::Index frame = 0;
+    s.offscreen->draw(camera, size); // allocate the framebuffer outside the timing
+    s.offscreen->finish();
+    for (auto _ : state) {
+        const auto start = std::chrono::steady_clock::now();
+        s.offscreen->makeCurrent();
+        s.offscreen->renderer().setFrame(frame);
+        camera.angleDeg += 0.5f; // the camera moves too: the take roots follow the screen's right
+        s.offscreen->draw(camera, size);
+        s.offscreen->finish();
+        milliseconds.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+        frame = (frame + 1) % frames;
+    }
+    reportPercentiles(state, milliseconds);
+}
+
+void BM_TwoPuppetsAxesOrbits(benchmark::State& state) { drawFrames(state, 2); }
+
+/// The floor under every frame time: clearing and finishing an empty frame (everything hidden).
+void BM_EmptyFrame(benchmark::State& state)
+{
+    Stage& s = stage(2, 0);
+    const render::SceneVisibility shown = s.offscreen->renderer().visibility();
+    render::SceneVisibility none;
+    none.puppet = none.axis = none.orbits = none.grid = none.partner = false;
+    s.offscreen->renderer().setVisibility(none);
+    const QSize size(1280, 720);
+    render::Camera camera;
+    for (auto _ : state) {
+        s.offscreen->draw(camera, size);
+        s.offscreen->finish();
+    }
+    s.offscreen->renderer().setVisibility(shown);
+}
+void BM_OnePuppetAxisOrbits(benchmark::State& state) { drawFrames(state, 1); }
+
+/// The CPU side of a frame alone: poses of both takes (worldPartPoses).
+void BM_SetFrameTwoTakes(benchmark::State& state)
+{
+    Stage& s = stage(2);
+    const Eigen::Index frames = s.scene.takes.front().take.frameCount();
+    Eigen::Index frame = 0;
+    for (auto _ : state) {
+        s.offscreen->renderer().setFrame(frame);
+        frame = (frame + 1) % frames;
+    }
+}
+
+/// Picking: an ID pass and a one-pixel read back.
+void BM_PickTwoPuppets(benchmark::State& state)
+{
+    Stage& s = stage(2);
+    const QSize size(1280, 720);
+    render::Camera camera;
+    camera.target = {0.0f, 0.0f, 60.0f};
+    camera.distance = 300.0f;
+    for (auto _ : state) benchmark::DoNotOptimize(s.offscreen->pick(camera, size, QPoint(640, 360)));
+}
+
+/// A screenshot: draw and read back into a QImage (what `bunraku render` does per frame).
+void BM_ScreenshotTwoPuppets(benchmark::State& state)
+{
+    Stage& s = stage(2);
+    const QSize size(1280, 720);
+    render::Camera camera;
+    camera.target = {0.0f, 0.0f, 60.0f};
+    camera.distance = 300.0f;
+    for (auto _ : state) benchmark::DoNotOptimize(s.offscreen->render(camera, size));
+}
+
+} // namespace
+
+// Arguments: width, height, multisampling (0 = none, 1 = 4x).
+BENCHMARK(BM_TwoPuppetsAxesOrbits)
+    ->ArgNames({"w", "h", "msaa4"})
+    ->Args({1280, 720, 0})
+    ->Args({1280, 720, 1})
+    ->Args({640, 360, 1})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(300);
+BENCHMARK(BM_OnePuppetAxisOrbits)->ArgNames({"w", "h", "msaa4"})->Args({1280, 720, 0})->Unit(benchmark::kMillisecond)->Iterations(300);
+BENCHMARK(BM_EmptyFrame)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SetFrameTwoTakes)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_PickTwoPuppets)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ScreenshotTwoPuppets)->Unit(benchmark::kMillisecond);
+
+int main(int argc, char** argv)
+{
+    QGuiApplication application(argc, argv);
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    for (auto& row : g_stages)
+        for (auto& stageSlot : row) stageSlot.reset();
+    return 0;
+}

@@ -1,0 +1,125 @@
+#pragma once
+/// The 3D view's OpenGL 3.3 core renderer (thesis 6: the workbench's live replacement for the
+/// LightWave scenes). It draws into whatever framebuffer is bound: a QOpenGLWidget's, or the
+/// OffscreenRenderer's framebuffer object for tests, screenshots and frame sequences.
+///
+/// Cost model: setScene uploads every buffer once; setFrame / setTime only recompute the poses
+/// on the CPU, and render() sends them as uniforms: no GPU buffer is (re)allocated per frame.
+/// Every method that touches OpenGL needs the context it was initialised in to be current.
+
+#include "analysis/body/body_pose.h"
+#include "analysis/core/result.h"
+#include "render/camera.h"
+#include "render/gpu_mesh.h"
+#include "render/scene.h"
+
+#include <QImage>
+#include <QOpenGLExtraFunctions>
+#include <QPoint>
+#include <QSize>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+class QOpenGLContext;
+class QOpenGLShaderProgram;
+class QOpenGLFramebufferObject;
+
+namespace bunraku::render {
+
+/// What lies under a screen point.
+struct PickResult {
+    int takeSlot = 0;  ///< 0 = the first take, 1 = the second
+    int partIndex = 0; ///< index into BodyDescription::parts
+    std::string partName;
+};
+
+class Renderer {
+public:
+    Renderer();
+    ~Renderer(); ///< frees GL objects only if release() was not called and a context is current
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    /// Compiles the shaders (:/shaders/scene.*); needs a current OpenGL 3.3 core context.
+    analysis::Status initialize();
+    bool isInitialized() const { return m_gl != nullptr; }
+    /// Frees every GL object; call with the context current before it goes away.
+    void release();
+
+    /// Validates (validateScene) and uploads the scene: puppet meshes, orbits, grid, markers.
+    /// Resets the frame to 0. Layout options that shape buffers (grid, point sizes) are read here.
+    analysis::Status setScene(const SceneContent& scene, const LayoutOptions& layout = {});
+    bool hasScene() const;
+    int takeCount() const;
+
+    void setVisibility(const SceneVisibility& visibility) { m_visibility = visibility; }
+    const SceneVisibility& visibility() const { return m_visibility; }
+    /// Separation and centring only (buffers are not rebuilt).
+    void setLayout(const LayoutOptions& layout) { m_layout = layout; }
+    const LayoutOptions& layout() const { return m_layout; }
+
+    /// Shows frame `frame` of every take (clamped to each take's length).
+    void setFrame(Eigen::Index frame);
+    /// Shows the frame nearest `seconds` in every take.
+    void setTime(double seconds);
+    Eigen::Index frame(int takeSlot) const;
+
+    /// Draws the scene into the bound framebuffer over a viewport of `size` pixels.
+    void render(const Camera& camera, QSize size);
+    /// The body part under `pixel` (from the top-left), by an ID pass into a private
+    /// framebuffer; nullopt over the background or when the puppet is hidden.
+    std::optional<PickResult> pick(const Camera& camera, QSize size, QPoint pixel);
+    /// The ID pass as an image: red = 1 + partIndex + 32 * takeSlot, 0 for the background.
+    QImage partIdImage(const Camera& camera, QSize size);
+    /// Decodes one pixel of partIdImage.
+    std::optional<PickResult> decodePartId(QRgb pixel) const;
+
+    // CPU-side placement (what render() uses), for picking by the caller, tests and overlays.
+    /// world_T_take of a slot under this camera (slotRoot).
+    glm::mat4 takeRoot(int takeSlot, const Camera& camera) const;
+    /// Displayed world_T_part of every body part at the current frame (take root included).
+    std::vector<glm::mat4> displayedPartTransforms(int takeSlot, const Camera& camera) const;
+    /// Displayed world_T_axis at the current frame, nullopt without an axis.
+    std::optional<glm::mat4> displayedAxisTransform(int takeSlot, const Camera& camera) const;
+    /// Displayed sensor positions (cm) at `frame`, one per 6-DOF part of the take.
+    std::vector<glm::vec3> displayedSensorPositions(int takeSlot, Eigen::Index frame, const Camera& camera) const;
+    /// Height (cm) of the floor grid: just under the lowest point of the puppets at frame 0.
+    float floorHeight() const { return m_floorHeight; }
+    /// A camera that frames the scene: angle 340 deg (the puppet's left front), elevation 15 deg,
+    /// looking at the puppets' middle height, far enough back for one or two puppets.
+    Camera framingCamera() const;
+
+private:
+    struct Slot;
+    void drawScene(const Camera& camera, QSize size, bool partIds);
+    void setModel(const glm::mat4& model);
+    void setColour(const glm::vec3& colour, bool vertexColour, bool lit);
+    QOpenGLFramebufferObject& pickFramebuffer(QSize size);
+    void releaseSceneBuffers();
+
+    QOpenGLContext* m_context = nullptr;
+    QOpenGLExtraFunctions* m_gl = nullptr;
+    std::unique_ptr<QOpenGLShaderProgram> m_program;
+    std::unique_ptr<QOpenGLFramebufferObject> m_pickFramebuffer;
+    struct Uniforms {
+        int model = -1, viewProjection = -1, normalMatrix = -1, colour = -1, useVertexColour = -1, lit = -1,
+            lightPosition = -1;
+    } m_uniforms;
+
+    analysis::BodyDescription m_body;
+    std::vector<std::string> m_partNames;
+    std::vector<GpuMesh> m_partMeshes; ///< one per body part, in the part frame
+    std::vector<Slot> m_slots;
+    GpuMesh m_grid;
+    GpuMesh m_box;    ///< unit cube for the axis bars
+    GpuMesh m_sphere; ///< unit sphere for the orbits' moving points
+    GpuMesh m_partner;
+    float m_floorHeight = 0.0f;
+    SceneVisibility m_visibility;
+    LayoutOptions m_layout;
+};
+
+} // namespace bunraku::render

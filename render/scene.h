@@ -1,0 +1,99 @@
+#pragma once
+/// What the 3D view shows (thesis 6): up to two takes, each with a puppet built from the body
+/// description, its motion axis and the orbits of its sensors, plus a floor grid and a marker
+/// for the partner. Plain data and the CPU-side layout rules; the Renderer uploads it.
+
+#include "analysis/body/body_description.h"
+#include "analysis/core/pose.h"
+#include "analysis/core/result.h"
+#include "analysis/core/take.h"
+#include "render/camera.h"
+#include "render/mesh.h"
+
+#include <glm/glm.hpp>
+
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace bunraku::render {
+
+inline constexpr int kMaxTakeSlots = 2;
+/// Body parts the picking IDs can tell apart (renderer.h).
+inline constexpr std::size_t kMaxBodyParts = 31;
+
+/// One take on stage.
+struct TakeSlot {
+    analysis::Take take;
+    /// world_T_axis per frame (one per take frame): the motion axis, origin at the centre of
+    /// mass, x front-back, z the long axis (thesis 5.2.1). Empty: no axis for this take.
+    std::vector<analysis::RigidTransform> world_T_axis;
+};
+
+struct SceneContent {
+    analysis::BodyDescription body;
+    /// Meshes loaded from files (mesh_file.h) that replace a body part's primitives, by body
+    /// part name; vertices in the part (sensor) frame, cm.
+    std::map<std::string, Mesh> partMeshes;
+    /// One or two takes: two are placed side by side (see slotRoot).
+    std::vector<TakeSlot> takes;
+};
+
+enum class OrbitVisibility {
+    WhenPuppetHidden, ///< as in the thesis: orbits replace the puppet
+    Always,
+};
+
+/// Which objects are drawn; any combination.
+struct SceneVisibility {
+    bool puppet = true;
+    bool axis = true;
+    bool orbits = true;
+    bool grid = true;
+    bool partner = true;
+    OrbitVisibility orbitVisibility = OrbitVisibility::WhenPuppetHidden;
+
+    /// True when orbits are drawn given the puppet's visibility.
+    bool orbitsDrawn() const { return orbits && (orbitVisibility == OrbitVisibility::Always || !puppet); }
+};
+
+struct LayoutOptions {
+    float separation = 70.0f;      ///< cm between the two puppets' centres, along the screen's right
+    bool centreTakes = true;       ///< move each take's centre (takeCentre) to the origin
+    float partnerDistance = 110.0f; ///< cm from a take's centre along +x (towards the partner)
+    float gridHalfExtent = 200.0f; ///< cm
+    float gridSpacing = 20.0f;     ///< cm
+    float axisBarLength = 30.0f;   ///< cm, each bar from the centre of mass along +x, +y, +z
+    float axisBarThickness = 1.6f; ///< cm
+    float orbitPointRadius = 1.6f; ///< cm, the moving point on each orbit
+};
+
+/// Checks 1..2 takes, a body of 1..kMaxBodyParts parts, every take valid and able to drive the body (bindBody), axis poses one per
+/// frame when given, part meshes named after body parts.
+analysis::Status validateScene(const SceneContent& scene);
+
+/// Where a take stands: the mean position over the take of `centrePart`'s sensor (the puppet's
+/// shoulder: its mirror frame) in x and y, z = 0. Without that part, the mean of every 6-DOF
+/// part's sensor.
+glm::vec3 takeCentre(const analysis::Take& take, std::string_view centrePart = "shoulder");
+
+/// world_T_take for take `slotIndex` of `slotCount`: the take's centre (when centring) moved to
+/// the origin, then, with two takes, the first shifted half the separation to the screen's left
+/// and the second to its right, whatever the camera's angle (thesis Fig. 6.18).
+glm::mat4 slotRoot(const glm::vec3& centre, int slotIndex, int slotCount, const Camera& camera,
+                   const LayoutOptions& options);
+
+/// The frame shown at `seconds` (nearest, clamped to the take).
+Eigen::Index frameAtTime(const analysis::Take& take, double seconds);
+
+/// The 4x4 matrix of a rigid transform (cm).
+glm::mat4 toMatrix(const analysis::RigidTransform& a_T_b);
+
+/// Display colour of the orbit of sensor `sensorIndex` (0..) of take `slotIndex`.
+glm::vec3 orbitColour(int slotIndex, int sensorIndex);
+
+/// Colours of the motion axis bars: x red, y green, z blue.
+glm::vec3 axisColour(int axis);
+
+} // namespace bunraku::render

@@ -1,0 +1,129 @@
+// `bunraku render` end to end: the built command line writes PNGs of the demo corpus, and bad
+// input fails with one line and a non-zero exit. Skips (with a warning) when the command line
+// has not been built in this build tree.
+#include "render/take_scene.h"
+#include "analysis/core/puppet_layout.h"
+#include "tests/support/test_paths.h"
+
+#include <catch2/catch.hpp>
+
+#include <QImage>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <set>
+#include <sys/wait.h>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+using namespace bunraku;
+
+namespace {
+
+std::filesystem::path cliPath() { return std::filesystem::path(BUNRAKU_BINARY_DIR) / "bin" / "bunraku"; }
+
+/// Runs the command line; returns the exit code and what it printed on standard error.
+/// A path in single quotes for the shell.
+std::string quoted(const std::filesystem::path& path)
+{
+    std::ostringstream text;
+    text << '\'' << path.string() << '\'';
+    return text.str();
+}
+
+/// Runs the command line; returns the exit code and what it printed on standard error.
+std::pair<int, std::string> runCli(const std::string& arguments, const std::filesystem::path& dir)
+{
+    const auto errors = dir / "stderr.txt";
+    std::ostringstream command;
+    command << quoted(cliPath()) << ' ' << arguments << " 2> " << quoted(errors) << " > " << quoted(dir / "stdout.txt");
+    const int status = std::system(command.str().c_str());
+    std::ifstream file(errors);
+    std::stringstream text;
+    text << file.rdbuf();
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
+}
+
+int distinctColours(const QImage& image)
+{
+    std::set<QRgb> colours;
+    for (int y = 0; y < image.height(); y += 3)
+        for (int x = 0; x < image.width(); x += 3) colours.insert(image.pixel(x, y));
+    return int(colours.size());
+}
+
+} // namespace
+
+TEST_CASE("bunraku render writes a PNG of a demo take and a frame sequence", "[render][cli]")
+{
+    if (!std::filesystem::exists(cliPath())) {
+        WARN("skipped: " << cliPath() << " is not built");
+        return;
+    }
+    const auto dir = test::scratchDir("render_cli");
+    const auto [code, errors] = runCli("render demo:greeting/friendly/2 --take-b demo:greeting/hostile/2 --frame 30 "
+                                       "--camera 90 --size 320x200 --show puppet,axis,orbits,grid -o " +
+                                           quoted(dir / "two.png"),
+                                       dir);
+    INFO(errors);
+    REQUIRE(code == 0);
+    const QImage image(QString::fromStdString((dir / "two.png").string()));
+    REQUIRE(image.size() == QSize(320, 200));
+    CHECK(distinctColours(image) > 20); // shaded puppets, not a blank frame
+
+    const auto [sequenceCode, sequenceErrors] =
+        runCli("render demo:serving-tea/none/1 --frames 3:5 --size 64x48 -o " + quoted(dir / "seq"), dir);
+    INFO(sequenceErrors);
+    REQUIRE(sequenceCode == 0);
+    for (const char* name : {"frame_00000.png", "frame_00001.png", "frame_00002.png"})
+        CHECK(QImage(QString::fromStdString((dir / "seq" / name).string())).size() == QSize(64, 48));
+    CHECK_FALSE(std::filesystem::exists(dir / "seq" / "frame_00003.png"));
+}
+
+TEST_CASE("bunraku render rejects bad input with a one-line error", "[render][cli]")
+{
+    if (!std::filesystem::exists(cliPath())) {
+        WARN("skipped: " << cliPath() << " is not built");
+        return;
+    }
+    const auto dir = test::scratchDir("render_cli_errors");
+    const std::string out = " -o " + quoted(dir / "x.png");
+    const std::string demo = "render demo:greeting/none/1";
+    for (const std::string& arguments :
+         {"render demo:greeting/sleepy/1" + out, demo + " --size 10" + out, demo + " --frame 100000" + out,
+          demo + " --show puppet,kimono" + out, "render " + quoted(dir / "absent.csv") + out}) {
+        const auto [code, errors] = runCli(arguments, dir);
+        INFO(arguments << "\n" << errors);
+        CHECK(code != 0);
+        CHECK(errors.find("bunraku: error: ") != std::string::npos);
+        CHECK_FALSE(std::filesystem::exists(dir / "x.png"));
+    }
+}
+
+TEST_CASE("a take scene carries the motion axis of every take, one pose per frame", "[render][scene]")
+{
+    analysis::Take take;
+    take.channels = analysis::puppetChannels();
+    take.values = Eigen::MatrixXd::Zero(4, analysis::kPuppetChannelCount);
+    for (Eigen::Index f = 0; f < 4; ++f) {
+        take.values(f, 2) = 103.0;       // head z
+        take.values(f, 8) = 100.0;       // shoulder z
+        take.values(f, 13) = -13.0;      // arm y
+        take.values(f, 14) = 95.0;       // arm z
+        take.values(f, 19) = -13.0;      // hand y
+        take.values(f, 20) = 67.0 + f;   // hand z
+    }
+    const auto scene = render::makeTakeScene(analysis::defaultBodyDescription(), {take, take});
+    REQUIRE(scene.ok());
+    REQUIRE(scene->takes.size() == 2);
+    for (const auto& slot : scene->takes) {
+        REQUIRE(slot.world_T_axis.size() == 4);
+        // A symmetric upright puppet: the centre of mass is on its sagittal plane, axis z up.
+        CHECK(slot.world_T_axis[0].translation.y() == Approx(0.0).margin(0.5));
+        CHECK((slot.world_T_axis[0].rotation * Eigen::Vector3d::UnitZ()).z() > 0.9);
+    }
+    const auto tooMany = render::makeTakeScene(analysis::defaultBodyDescription(), {take, take, take});
+    CHECK_FALSE(tooMany.ok());
+}
