@@ -1,11 +1,454 @@
-// Subcommands: axis, phase, gains, design, experiment design.
+// Subcommands: axis, phase, gains, design, experiment design (thesis chapter 5).
 #include "app/cli/commands.h"
 
+#include "analysis/axis/axis_channels.h"
+#include "analysis/axis/inertia_axis.h"
+#include "analysis/body/body_description.h"
+#include "analysis/core/puppet_layout.h"
+#include "analysis/design/design_experiment.h"
+#include "analysis/design/motion_design.h"
+#include "analysis/io/corpus_io.h"
+#include "analysis/io/take_csv.h"
+#include "analysis/io/take_reader.h"
+#include "analysis/normalise/average_take.h"
+#include "analysis/preprocess/preprocess.h"
+#include "analysis/synth/demo_corpus.h"
+#include "analysis/synth/demo_corpus_io.h"
+
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+
 namespace bunraku::app::cli {
+namespace {
+
+namespace an = bunraku::analysis;
+
+/// Options every chapter-5 command shares: which body and how its axis x is chosen.
+struct AxisArguments {
+    std::string body;
+    std::string frontBack = "shoulder";
+    double spacing = 1.0;
+};
+
+void addAxisOptions(CLI::App* command, AxisArguments& arguments)
+{
+    command->add_option("--body", arguments.body, "Body description JSON (default: the shipped Bunraku puppet)")
+        ->check(CLI::ExistingFile);
+    command->add_option("--front-back", arguments.frontBack,
+                        "Axis x: 'shoulder' (the shoulder's facing, default) or 'principal' (thesis-literal principal axis)")
+        ->check(CLI::IsMember({"shoulder", "principal"}));
+    command->add_option("--spacing", arguments.spacing, "Mass point lattice step, cm (default 1)")
+        ->check(CLI::PositiveNumber);
+}
+
+an::AxisOptions axisOptions(const AxisArguments& arguments)
+{
+    an::AxisOptions options;
+    options.massPoints.spacing = arguments.spacing;
+    options.frontBack = arguments.frontBack == "principal" ? an::FrontBackAxis::Principal : an::FrontBackAxis::ShoulderForward;
+    return options;
+}
+
+an::AxisModel axisModel(const AxisArguments& arguments)
+{
+    const an::BodyDescription body =
+        arguments.body.empty() ? an::defaultBodyDescription() : unwrap(an::loadBodyDescription(arguments.body));
+    return an::makeAxisModel(body, axisOptions(arguments));
+}
+
+an::MotionAxis motionAxis(const an::AxisModel& model, const an::Take& take, const AxisArguments& arguments)
+{
+    an::MotionAxis axis = unwrap(an::computeMotionAxis(model, take, axisOptions(arguments)));
+    if (const std::string report = axis.degeneracyReport(); !report.empty())
+        std::cerr << "bunraku: warning: " << take.displayName() << ": " << report << "\n";
+    return axis;
+}
+
+/// The emotional -> functional warp sampled per emotional frame, and its inverse per functional frame.
+Eigen::VectorXd functionalToEmotional(const an::WarpCurve& curve, Eigen::Index functionalFrames)
+{
+    return an::invertMonotone(an::sampleWarp(curve), functionalFrames);
+}
+
+// ---- axis ---------------------------------------------------------------------------------
+
+struct AxisCommandArguments {
+    std::string take;
+    std::string output;
+    bool coordinates = false;
+    bool json = false;
+    AxisArguments axis;
+};
+
+void runAxis(const AxisCommandArguments& arguments)
+{
+    const an::Take take = unwrap(an::io::readTakeFile(arguments.take));
+    const an::AxisModel model = axisModel(arguments.axis);
+    const an::MotionAxis axis = motionAxis(model, take, arguments.axis);
+    an::Take out = an::axisTake(axis);
+    if (arguments.coordinates) {
+        out.channels = an::axisCoordinateChannels();
+        out.values = an::axisCoordinates(axis.world_T_axis);
+    }
+    unwrap(an::io::writeTakeCsv(out, arguments.output));
+    if (arguments.json) {
+        nlohmann::json degenerate = nlohmann::json::array();
+        for (const an::DegenerateFrame& frame : axis.degenerateFrames)
+            if (frame.affectsAxis) degenerate.push_back(frame.frame);
+        printJson({{"take", take.displayName()},
+                   {"frames", axis.frameCount()},
+                   {"mass_g", axis.totalMass},
+                   {"channels", [&] {
+                        std::vector<std::string> names;
+                        for (const an::Channel& c : out.channels) names.push_back(c.name());
+                        return names;
+                    }()},
+                   {"degenerate_frames", degenerate},
+                   {"output", arguments.output}});
+        return;
+    }
+    std::cout << "axis of " << take.displayName() << ": " << axis.frameCount() << " frames, body mass "
+              << std::fixed << std::setprecision(0) << axis.totalMass << " g -> " << arguments.output << "\n";
+}
+
+// ---- phase --------------------------------------------------------------------------------
+
+struct PhaseArguments {
+    int tau = 4;
+    int tcmp = 30;
+    int maxScale = 16;
+    double approximationWeight = 8.0;
+    std::string path = "greedy";
+    std::string weighting = "none";
+    int spacing = 8;
+};
+
+void addPhaseOptions(CLI::App* command, PhaseArguments& arguments)
+{
+    command->add_option("--tau", arguments.tau, "Half window tau, frames (default 4)")->check(CLI::NonNegativeNumber);
+    command->add_option("--tcmp", arguments.tcmp, "Search band T_cmp, frames (default 30)")->check(CLI::NonNegativeNumber);
+    command->add_option("--max-scale", arguments.maxScale, "Scales 1..N (default 16)")->check(CLI::PositiveNumber);
+    command->add_option("--weight", arguments.approximationWeight, "Approximation weight M (default 8)")
+        ->check(CLI::NonNegativeNumber);
+    command->add_option("--path", arguments.path, "greedy (thesis, default) or optimal")
+        ->check(CLI::IsMember({"greedy", "optimal"}));
+    command->add_option("--weighting", arguments.weighting, "none (thesis, default) or standardise")
+        ->check(CLI::IsMember({"none", "standardise"}));
+    command->add_option("--control-spacing", arguments.spacing, "Frames between warp control points (default 8)")
+        ->check(CLI::PositiveNumber);
+}
+
+an::PhaseOptions phaseOptions(const PhaseArguments& arguments)
+{
+    an::PhaseOptions options;
+    options.match.tau = arguments.tau;
+    options.match.searchBand = arguments.tcmp;
+    options.match.scales = an::integerScales(arguments.maxScale);
+    options.match.approximationWeight = arguments.approximationWeight;
+    options.match.path = arguments.path == "optimal" ? an::PathMethod::Optimal : an::PathMethod::Greedy;
+    options.match.weighting = arguments.weighting == "standardise" ? an::ChannelWeighting::Standardise : an::ChannelWeighting::None;
+    options.controlPointSpacing = arguments.spacing;
+    return options;
+}
+
+struct PhaseCommandArguments {
+    std::string reference;
+    std::string sample;
+    std::string output;
+    bool json = false;
+    AxisArguments axis;
+    PhaseArguments phase;
+};
+
+void runPhase(const PhaseCommandArguments& arguments)
+{
+    const an::Take reference = unwrap(an::io::readTakeFile(arguments.reference));
+    const an::Take sample = unwrap(an::io::readTakeFile(arguments.sample));
+    const an::AxisModel model = axisModel(arguments.axis);
+    const Eigen::MatrixXd functional = an::axisCoordinates(motionAxis(model, reference, arguments.axis).world_T_axis);
+    const Eigen::MatrixXd emotional = an::axisCoordinates(motionAxis(model, sample, arguments.axis).world_T_axis);
+    const an::PhaseResult phase = unwrap(an::extractPhase(functional, emotional, phaseOptions(arguments.phase)));
+    unwrap(an::writeWarpCsv(phase.curve, arguments.output));
+    const Eigen::VectorXd identity = Eigen::VectorXd::LinSpaced(phase.emotionalToFunctional.size(), 0.0,
+                                                                 double(phase.emotionalToFunctional.size() - 1));
+    const double meanShift = (phase.emotionalToFunctional - identity).cwiseAbs().mean();
+    if (arguments.json) {
+        nlohmann::json points = nlohmann::json::array();
+        for (const an::WarpPoint& p : phase.curve.points) points.push_back({p.output, p.source});
+        printJson({{"reference", reference.displayName()},
+                   {"sample", sample.displayName()},
+                   {"control_points", points},
+                   {"correspondence", std::vector<int>(phase.correspondence.data(),
+                                                       phase.correspondence.data() + phase.correspondence.size())},
+                   {"mean_abs_shift_frames", meanShift},
+                   {"cost", phase.cost},
+                   {"output", arguments.output}});
+        return;
+    }
+    std::cout << "phase of " << sample.displayName() << " against " << reference.displayName() << ": "
+              << phase.curve.points.size() << " control points, mean |shift| " << std::fixed << std::setprecision(2)
+              << meanShift << " frames -> " << arguments.output << "\n";
+}
+
+// ---- gains --------------------------------------------------------------------------------
+
+struct GainsCommandArguments {
+    std::string reference;
+    std::string sample;
+    std::string warp;
+    std::string phrases;
+    std::string output;
+    bool json = false;
+    AxisArguments axis;
+};
+
+void runGains(const GainsCommandArguments& arguments)
+{
+    const an::Take reference = unwrap(an::io::readTakeFile(arguments.reference));
+    const an::Take sample = unwrap(an::io::readTakeFile(arguments.sample));
+    const an::WarpCurve warp = unwrap(an::readWarpCsv(arguments.warp));
+    const an::AxisModel model = axisModel(arguments.axis);
+    const Eigen::MatrixXd functional = an::axisCoordinates(motionAxis(model, reference, arguments.axis).world_T_axis);
+    const Eigen::MatrixXd emotional = an::axisCoordinates(motionAxis(model, sample, arguments.axis).world_T_axis);
+    const std::vector<Eigen::Index> boundaries = arguments.phrases.empty()
+                                                     ? an::suggestPhraseBoundaries(functional)
+                                                     : unwrap(an::parsePhraseBoundaries(arguments.phrases, functional.rows()));
+    an::WarpCurve curve = warp;
+    curve.outputFrames = emotional.rows();
+    const an::GainSet gains =
+        unwrap(an::extractGainsWithWarp(functional, emotional, functionalToEmotional(curve, functional.rows()), boundaries));
+    unwrap(an::writeGainsJson(gains, arguments.output));
+    std::vector<std::string> reasons;
+    for (const an::PhraseGains& phrase : gains.phrases)
+        for (const an::DofGain& gain : phrase.dofs)
+            if (!gain.reason.empty()) reasons.push_back(gain.reason);
+    if (arguments.json) {
+        printJson({{"phrases", boundaries}, {"notes", reasons}, {"output", arguments.output}});
+        return;
+    }
+    std::cout << gains.phrases.size() << " phrases (boundaries";
+    for (Eigen::Index b : boundaries) std::cout << " " << b;
+    std::cout << (arguments.phrases.empty() ? ", suggested at minima of the axis speed" : "") << ") -> " << arguments.output
+              << "\n";
+    for (const std::string& reason : reasons) std::cout << "  note: " << reason << "\n";
+}
+
+// ---- design -------------------------------------------------------------------------------
+
+struct DesignCommandArguments {
+    std::string take;
+    std::string warp;
+    std::string gains;
+    std::string output;
+    std::string axisOutput;
+    bool json = false;
+    AxisArguments axis;
+};
+
+void runDesign(const DesignCommandArguments& arguments)
+{
+    const an::Take take = unwrap(an::io::readTakeFile(arguments.take));
+    const an::AxisModel model = axisModel(arguments.axis);
+    const an::DesignBasis basis = unwrap(an::prepareDesign(model, take, axisOptions(arguments.axis)));
+    const an::WarpCurve warp = arguments.warp.empty() ? an::identityWarp(take.frameCount()) : unwrap(an::readWarpCsv(arguments.warp));
+    if (!warp.points.empty() && warp.points.back().source > double(take.frameCount() - 1) + 1e-9)
+        throw CliError(arguments.warp + ": the warp reaches source frame " + std::to_string(warp.points.back().source) +
+                       " but " + arguments.take + " has " + std::to_string(take.frameCount()) + " frames");
+    an::GainSet gains;
+    if (!arguments.gains.empty()) {
+        gains = unwrap(an::readGainsJson(arguments.gains));
+        if (gains.dofNames.size() != an::kAxisDofCount) throw CliError(arguments.gains + ": expected gains for the 6 axis DOF");
+        if (!gains.phrases.empty() && gains.phrases.back().end != take.frameCount() - 1)
+            throw CliError(arguments.gains + ": the phrases end at frame " + std::to_string(gains.phrases.back().end) + " but " +
+                           arguments.take + " ends at " + std::to_string(take.frameCount() - 1));
+    }
+    const an::DesignedMotion designed = an::designMotion(basis, warp, gains);
+    unwrap(an::io::writeTakeFile(designed.take, arguments.output));
+    if (!arguments.axisOutput.empty()) {
+        an::MotionAxis axis;
+        axis.world_T_axis = designed.world_T_axis;
+        axis.rateHz = designed.take.rateHz;
+        axis.labels = designed.take.labels;
+        unwrap(an::io::writeTakeCsv(an::axisTake(axis), arguments.axisOutput));
+    }
+    if (arguments.json) {
+        printJson({{"frames", designed.take.frameCount()}, {"phrases", gains.phrases.size()}, {"output", arguments.output}});
+        return;
+    }
+    std::cout << "designed " << designed.take.frameCount() << " frames from " << take.displayName() << " -> " << arguments.output
+              << "\n";
+}
+
+// ---- experiment design --------------------------------------------------------------------
+
+struct ExperimentArguments {
+    std::string corpus;
+    std::string means = "truth";
+    bool json = false;
+    AxisArguments axis;
+    PhaseArguments phase;
+};
+
+an::Take puppetTake(const Eigen::MatrixXd& motion, const std::string& function, const std::string& emotion, double rateHz)
+{
+    an::Take take;
+    take.values = motion;
+    take.rateHz = rateHz;
+    take.channels = an::puppetChannels();
+    take.labels = {function, emotion, 0, "ground-truth cell motion"};
+    return take;
+}
+
+void runExperiment(const ExperimentArguments& arguments)
+{
+    const std::filesystem::path truthFolder = an::synth::groundTruthFolder(arguments.corpus);
+    const an::synth::DemoGroundTruth truth = [&] {
+        auto read = an::synth::readGroundTruth(truthFolder);
+        if (!read.ok())
+            throw CliError("no ground truth for " + arguments.corpus + " (expected " + truthFolder.string() +
+                           ", written by `bunraku demo`): " + read.error().message);
+        return std::move(read).value();
+    }();
+    an::Corpus corpus;
+    if (arguments.means == "measured") corpus = unwrap(an::preprocess::preprocessCorpus(unwrap(an::io::readCorpus(arguments.corpus)))).corpus;
+
+    const an::AxisModel model = axisModel(arguments.axis);
+    an::ExtractionOptions options;
+    options.phase = phaseOptions(arguments.phase);
+    nlohmann::json cells = nlohmann::json::array();
+    if (!arguments.json)
+        std::cout << "function      emotion     axis err  undesigned  phase |err| frames  amplitude err  phrases\n";
+    for (const an::synth::CellTruth& cellTruth : truth.cells) {
+        const an::synth::FunctionTruth* function = truth.function(cellTruth.function);
+        if (!function) throw CliError("ground truth has no function " + cellTruth.function);
+        an::DesignCell cell;
+        cell.function = cellTruth.function;
+        cell.emotion = cellTruth.emotion;
+        if (arguments.means == "truth") {
+            cell.functional = puppetTake(function->motion, cell.function, truth.neutralEmotion, truth.rateHz);
+            cell.emotional = puppetTake(cellTruth.motion, cell.function, cell.emotion, truth.rateHz);
+            cell.trueEmotionalToFunctional = cellTruth.phaseWarp;
+        } else {
+            const auto neutralTakes = corpus.cell(cell.function, truth.neutralEmotion);
+            const auto emotionalTakes = corpus.cell(cell.function, cell.emotion);
+            if (neutralTakes.empty() || emotionalTakes.empty())
+                throw CliError(arguments.corpus + " has no takes for " + cell.function + "/" + cell.emotion);
+            cell.functional = unwrap(an::averageTake(neutralTakes));
+            cell.emotional = unwrap(an::averageTake(emotionalTakes));
+            // truth: emotional base take frame -> functional base take frame
+            auto map = an::synth::trueCorrespondence(truth, emotionalTakes.front()->labels, neutralTakes.front()->labels);
+            if (map.ok()) cell.trueEmotionalToFunctional = *map;
+        }
+        const an::DesignCellResult result = unwrap(an::evaluateDesignCell(model, cell, options, axisOptions(arguments.axis)));
+        // amplitude alone: the gains against the emotional axis phase-adjusted by the true warp
+        double amplitudeError = std::nan("");
+        if (cell.trueEmotionalToFunctional.size() > 0) {
+            const Eigen::MatrixXd functional =
+                an::axisCoordinates(unwrap(an::computeMotionAxis(model, cell.functional, axisOptions(arguments.axis))).world_T_axis);
+            const Eigen::MatrixXd emotional =
+                an::axisCoordinates(unwrap(an::computeMotionAxis(model, cell.emotional, axisOptions(arguments.axis))).world_T_axis);
+            const Eigen::VectorXd trueInverse = an::invertMonotone(cell.trueEmotionalToFunctional, functional.rows());
+            amplitudeError = an::relativeError(an::applyGains(functional, result.parameters.gains),
+                                               an::resampleRows(emotional, trueInverse));
+        }
+        cells.push_back({{"function", result.function},
+                         {"emotion", result.emotion},
+                         {"axis_relative_error", result.axisRelativeError},
+                         {"undesigned_relative_error", result.functionalRelativeError},
+                         {"dof_relative_error", std::vector<double>(result.dofRelativeError.data(),
+                                                                    result.dofRelativeError.data() + result.dofRelativeError.size())},
+                         {"phase_mean_abs_error_frames", result.phaseMeanAbsErrorFrames},
+                         {"amplitude_relative_error", amplitudeError},
+                         {"phrase_boundaries", result.boundaries}});
+        if (!arguments.json)
+            std::cout << std::left << std::setw(14) << result.function << std::setw(12) << result.emotion << std::right
+                      << std::fixed << std::setprecision(4) << std::setw(8) << result.axisRelativeError << std::setw(12)
+                      << result.functionalRelativeError << std::setprecision(2) << std::setw(20) << result.phaseMeanAbsErrorFrames
+                      << std::setprecision(4) << std::setw(15) << amplitudeError << std::setw(9) << result.boundaries.size() - 1
+                      << "\n";
+    }
+    if (arguments.json) printJson({{"means", arguments.means}, {"cells", cells}});
+}
+
+} // namespace
 
 void addMotionAxisCommands(CommandSet& commands)
 {
-    (void)commands;
+    {
+        auto arguments = std::make_shared<AxisCommandArguments>();
+        CLI::App* command = commands.root.add_subcommand(
+            "axis", "Motion axis of a take (thesis 5.2.1): principal axes of inertia of the posed body per frame, "
+                    "written as the thesis's 6 axis channels");
+        command->add_option("TAKE", arguments->take, "Take file (.csv, .bvh, FASTRAK text)")->required()->check(CLI::ExistingFile);
+        command->add_option("-o,--output", arguments->output, "Axis take CSV")->required()->type_name("FILE");
+        command->add_flag("--coordinates", arguments->coordinates,
+                          "Write the axis coordinates (centre + continuous rotation vector) instead of the thesis channels");
+        command->add_flag("--json", arguments->json, "Print a machine-readable summary");
+        addAxisOptions(command, arguments->axis);
+        command->callback([arguments] { runAxis(*arguments); });
+    }
+    {
+        auto arguments = std::make_shared<PhaseCommandArguments>();
+        CLI::App* command = commands.root.add_subcommand(
+            "phase", "Phase component (thesis 5.3): match the sample's (emotional) axis to the reference's (functional) "
+                     "on all 6 DOF; writes the warp curve (emotional frame -> functional frame control points)");
+        command->add_option("--reference", arguments->reference, "Functional take")->required()->check(CLI::ExistingFile);
+        command->add_option("--sample", arguments->sample, "Emotional take")->required()->check(CLI::ExistingFile);
+        command->add_option("-o,--output", arguments->output, "Warp curve CSV")->required()->type_name("FILE");
+        command->add_flag("--json", arguments->json, "Print a machine-readable summary");
+        addAxisOptions(command, arguments->axis);
+        addPhaseOptions(command, arguments->phase);
+        command->callback([arguments] { runPhase(*arguments); });
+    }
+    {
+        auto arguments = std::make_shared<GainsCommandArguments>();
+        CLI::App* command = commands.root.add_subcommand(
+            "gains", "Amplitude component (thesis 5.4): per phrase and axis DOF the gains g0, g1 of the functional axis "
+                     "against the phase-adjusted emotional axis");
+        command->add_option("--reference", arguments->reference, "Functional take")->required()->check(CLI::ExistingFile);
+        command->add_option("--sample", arguments->sample, "Emotional take")->required()->check(CLI::ExistingFile);
+        command->add_option("--warp", arguments->warp, "Warp curve CSV from `bunraku phase`")->required()->check(CLI::ExistingFile);
+        command->add_option("--phrases", arguments->phrases,
+                            "Phrase boundaries in functional frames, e.g. 0,40,105 (default: minima of the axis speed)");
+        command->add_option("-o,--output", arguments->output, "Gains JSON")->required()->type_name("FILE");
+        command->add_flag("--json", arguments->json, "Print a machine-readable summary");
+        addAxisOptions(command, arguments->axis);
+        command->callback([arguments] { runGains(*arguments); });
+    }
+    {
+        auto arguments = std::make_shared<DesignCommandArguments>();
+        CLI::App* command = commands.root.add_subcommand(
+            "design", "Motion design (thesis 5.5): scale the functional take's axis per phrase, recombine with its "
+                      "relative motion and warp time");
+        command->add_option("TAKE", arguments->take, "Functional take")->required()->check(CLI::ExistingFile);
+        command->add_option("--warp", arguments->warp, "Warp curve CSV (default: identity)")->check(CLI::ExistingFile);
+        command->add_option("--gains", arguments->gains, "Gains JSON (default: no scaling)")->check(CLI::ExistingFile);
+        command->add_option("-o,--output", arguments->output, "Designed take (.csv or .bvh)")->required()->type_name("FILE");
+        command->add_option("--axis-output", arguments->axisOutput, "Also write the designed axis take (CSV)");
+        command->add_flag("--json", arguments->json, "Print a machine-readable summary");
+        addAxisOptions(command, arguments->axis);
+        command->callback([arguments] { runDesign(*arguments); });
+    }
+    {
+        auto arguments = std::make_shared<ExperimentArguments>();
+        CLI::App* command = commands.experiment.add_subcommand(
+            "design", "Thesis 5.5 on the synthetic corpus: per function and emotion extract phase and gains between the "
+                      "functional and emotional means, design from the functional mean, compare with the measured axis "
+                      "(eq. 5.18 relative error) and the phase with the ground truth");
+        command->add_option("CORPUS", arguments->corpus, "Demo corpus folder (with truth/ from `bunraku demo`)")
+            ->required()
+            ->check(CLI::ExistingDirectory);
+        command->add_option("--means", arguments->means,
+                            "'truth': the noiseless cell motions (default), 'measured': averages of the preprocessed takes")
+            ->check(CLI::IsMember({"truth", "measured"}));
+        command->add_flag("--json", arguments->json, "Print a machine-readable summary");
+        addAxisOptions(command, arguments->axis);
+        addPhaseOptions(command, arguments->phase);
+        command->callback([arguments] { runExperiment(*arguments); });
+    }
 }
 
 } // namespace bunraku::app::cli

@@ -1,0 +1,84 @@
+#pragma once
+/// Motion design (thesis 5.5): from a functional (no emotion) take, 1) its axis and relative
+/// motion, 2) per-phrase gains on the axis, 3) axis and relative motion recombined, 4) time
+/// warped by the edited correspondence curve. The expensive part (axis, relative motion) is
+/// prepared once in a DesignBasis; designMotion re-synthesises in well under a millisecond
+/// for a 106-frame take, so an editor can re-run it on every control-point drag.
+/// extractDesign gives the defaults from a measured emotional take: designing with them
+/// reproduces that take's axis.
+
+#include "analysis/axis/axis_channels.h"
+#include "analysis/axis/inertia_axis.h"
+#include "analysis/axis/relative_motion.h"
+#include "analysis/core/result.h"
+#include "analysis/core/run_control.h"
+#include "analysis/core/take.h"
+#include "analysis/design/phase_extraction.h"
+#include "analysis/design/phrase_gains.h"
+#include "analysis/design/warp_curve.h"
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace bunraku::analysis {
+
+/// What design needs from the functional take, computed once.
+struct DesignBasis {
+    Take functional;             ///< the source take (layout of the output)
+    MotionAxis axis;             ///< its motion axis
+    Eigen::MatrixXd coordinates; ///< frames x 6 axis coordinates (axis_channels.h)
+    RelativeMotion relative;     ///< parts in the axis frame
+};
+
+Result<DesignBasis> prepareDesign(const AxisModel& model, const Take& functional, const AxisOptions& options = {},
+                                  const RunControl& control = {});
+
+struct DesignedMotion {
+    Take take;                                ///< the designed take, functional's channels, warp's frames
+    Eigen::MatrixXd axisCoordinates;          ///< output frames x 6: the designed axis
+    std::vector<RigidTransform> world_T_axis; ///< the designed axis per output frame
+};
+
+/// thesis 5.5 steps 2-4: gains on the axis coordinates per phrase (functional time), recombined
+/// with the relative motion, then output frame u shows functional time warp(u) (axis
+/// coordinates and part positions interpolated linearly, rotations by slerp). An empty gain set
+/// scales nothing; the warp must be valid (validateWarpCurve) or the identity is used.
+DesignedMotion designMotion(const DesignBasis& basis, const WarpCurve& warp, const GainSet& gains);
+
+struct ExtractionOptions {
+    PhaseOptions phase;
+    GainOptions gains;
+    /// Phrase boundaries in functional frames (0 ... last); empty = suggestPhraseBoundaries.
+    std::vector<Eigen::Index> boundaries;
+    PhraseOptions phrases;
+    /// Extra rounds of phase matching against the functional axis with the gains of the
+    /// previous round applied: amplitude differences (a hostile bow half as deep) otherwise
+    /// mislead the shape matching. 0 = the thesis's single pass.
+    int refinementPasses = 2;
+};
+
+struct DesignParameters {
+    PhaseResult phase;
+    Eigen::MatrixXd emotionalOnFunctionalTime; ///< the phase-adjusted emotional axis (Fig. 5.14)
+    GainSet gains;
+};
+
+/// Phase then amplitude components of emotional against functional (frames x 6 axis coordinates
+/// each): the design parameters that turn the functional axis into the emotional one. Phrase
+/// boundaries are suggested on the functional axis when not given; with refinementPasses > 0
+/// the phase is re-matched against the gain-adjusted functional axis and the gains re-extracted.
+Result<DesignParameters> extractDesign(const Eigen::MatrixXd& functional, const Eigen::MatrixXd& emotional,
+                                       const ExtractionOptions& options = {}, const RunControl& control = {});
+
+/// Gains of a known phase: the emotional axis resampled at `functionalToEmotional` (one
+/// emotional frame per functional frame) compared with the functional axis per phrase.
+Result<GainSet> extractGainsWithWarp(const Eigen::MatrixXd& functional, const Eigen::MatrixXd& emotional,
+                                     const Eigen::VectorXd& functionalToEmotional,
+                                     const std::vector<Eigen::Index>& boundaries, const GainOptions& options = {});
+
+/// Relative error of thesis eq. 5.18's form: sqrt(sum |designed - measured|^2) / sqrt(sum |measured|^2)
+/// over all frames and columns (rows beyond the shorter are ignored).
+double relativeError(const Eigen::MatrixXd& designed, const Eigen::MatrixXd& measured);
+
+} // namespace bunraku::analysis

@@ -1,0 +1,182 @@
+#include "analysis/design/warp_curve.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+namespace bunraku::analysis {
+
+Status validateWarpCurve(const WarpCurve& curve)
+{
+    if (curve.points.size() < 2) return makeError(ErrorCode::InvalidArgument, "a warp curve needs at least 2 control points");
+    for (std::size_t i = 0; i < curve.points.size(); ++i) {
+        const WarpPoint& p = curve.points[i];
+        if (!std::isfinite(p.output) || !std::isfinite(p.source))
+            return makeError(ErrorCode::InvalidArgument, "warp point " + std::to_string(i) + " is not finite");
+        if (i > 0 && p.output <= curve.points[i - 1].output)
+            return makeError(ErrorCode::InvalidArgument, "warp point " + std::to_string(i) + ": output frames must increase");
+        if (i > 0 && p.source < curve.points[i - 1].source)
+            return makeError(ErrorCode::InvalidArgument,
+                             "warp point " + std::to_string(i) + ": source frames must not decrease (time cannot run backwards)");
+    }
+    return okStatus();
+}
+
+WarpCurve identityWarp(Eigen::Index frames, int spacing)
+{
+    Eigen::VectorXd samples = Eigen::VectorXd::LinSpaced(frames, 0.0, double(frames - 1));
+    return warpCurveFromSamples(samples, spacing);
+}
+
+namespace {
+
+/// parseError's message built with a stream (GCC 12's -Wrestrict misfires on its inlined
+/// string concatenation at -O3).
+Error parseFailure(const std::string& file, long line, const std::string& what)
+{
+    std::ostringstream message;
+    message << file;
+    if (line > 0) message << ':' << line;
+    message << ": " << what;
+    return Error{ErrorCode::Parse, message.str()};
+}
+
+/// Fritsch-Carlson tangents: averaged secants, zero at flat stretches and local extrema, then
+/// shrunk interval by interval so that alpha^2 + beta^2 <= 9 (shrinking keeps earlier intervals valid).
+std::vector<double> monotoneTangents(const std::vector<WarpPoint>& p)
+{
+    const std::size_t n = p.size();
+    std::vector<double> secant(n > 1 ? n - 1 : 0), m(n, 0.0);
+    for (std::size_t i = 0; i + 1 < n; ++i) secant[i] = (p[i + 1].source - p[i].source) / (p[i + 1].output - p[i].output);
+    if (n < 2) return m;
+    m[0] = secant[0];
+    m[n - 1] = secant[n - 2];
+    for (std::size_t i = 1; i + 1 < n; ++i)
+        m[i] = (secant[i - 1] <= 0.0 || secant[i] <= 0.0) ? 0.0 : 0.5 * (secant[i - 1] + secant[i]);
+    for (std::size_t i = 0; i + 1 < n; ++i) {
+        if (secant[i] <= 0.0) {
+            m[i] = m[i + 1] = 0.0;
+            continue;
+        }
+        const double a = m[i] / secant[i], b = m[i + 1] / secant[i];
+        const double r = a * a + b * b;
+        if (r > 9.0) {
+            const double t = 3.0 / std::sqrt(r);
+            m[i] = t * a * secant[i];
+            m[i + 1] = t * b * secant[i];
+        }
+    }
+    return m;
+}
+
+double evaluateWithTangents(const std::vector<WarpPoint>& p, const std::vector<double>& m, double x)
+{
+    if (p.empty()) return x;
+    if (p.size() == 1 || x <= p.front().output) return p.front().source;
+    if (x >= p.back().output) return p.back().source;
+    const auto upper = std::upper_bound(p.begin(), p.end(), x, [](double v, const WarpPoint& q) { return v < q.output; });
+    const std::size_t k = std::size_t(upper - p.begin()) - 1; // p[k].output <= x < p[k+1].output
+    const double h = p[k + 1].output - p[k].output;
+    const double s = (x - p[k].output) / h;
+    const double s2 = s * s, s3 = s2 * s;
+    return (2 * s3 - 3 * s2 + 1) * p[k].source + (s3 - 2 * s2 + s) * h * m[k] + (-2 * s3 + 3 * s2) * p[k + 1].source +
+           (s3 - s2) * h * m[k + 1];
+}
+
+} // namespace
+
+double evaluateWarp(const WarpCurve& curve, double x)
+{
+    return evaluateWithTangents(curve.points, monotoneTangents(curve.points), x);
+}
+
+Eigen::VectorXd sampleWarp(const WarpCurve& curve)
+{
+    Eigen::Index frames = curve.outputFrames;
+    if (frames <= 0 && !curve.points.empty()) frames = Eigen::Index(std::floor(curve.points.back().output)) + 1;
+    Eigen::VectorXd samples(std::max<Eigen::Index>(frames, 0));
+    const std::vector<double> tangents = monotoneTangents(curve.points);
+    for (Eigen::Index f = 0; f < samples.size(); ++f) samples[f] = evaluateWithTangents(curve.points, tangents, double(f));
+    // guard against rounding: never decreasing
+    for (Eigen::Index f = 1; f < samples.size(); ++f) samples[f] = std::max(samples[f], samples[f - 1]);
+    return samples;
+}
+
+WarpCurve moveControlPoint(const WarpCurve& curve, std::size_t index, const WarpPoint& proposed, double minimumGap)
+{
+    WarpCurve moved = curve;
+    if (index >= moved.points.size()) return moved;
+    auto& p = moved.points;
+    WarpPoint point = proposed;
+    const bool first = index == 0, last = index + 1 == p.size();
+    if (first || last) {
+        point.output = p[index].output;
+    } else {
+        const double low = p[index - 1].output + minimumGap, high = p[index + 1].output - minimumGap;
+        point.output = low <= high ? std::clamp(point.output, low, high) : 0.5 * (p[index - 1].output + p[index + 1].output);
+    }
+    const double lowSource = first ? -std::numeric_limits<double>::infinity() : p[index - 1].source;
+    const double highSource = last ? std::numeric_limits<double>::infinity() : p[index + 1].source;
+    point.source = std::clamp(point.source, lowSource, std::max(lowSource, highSource));
+    p[index] = point;
+    return moved;
+}
+
+WarpCurve warpCurveFromSamples(const Eigen::VectorXd& sourceOfOutput, int spacing)
+{
+    WarpCurve curve;
+    curve.outputFrames = sourceOfOutput.size();
+    const Eigen::Index last = sourceOfOutput.size() - 1;
+    if (last < 0) return curve;
+    spacing = std::max(1, spacing);
+    double previous = -std::numeric_limits<double>::infinity();
+    for (Eigen::Index f = 0; f <= last; f += spacing) {
+        if (f != 0 && last - f < spacing / 2) break; // avoid a sliver before the last point
+        previous = std::max(previous, sourceOfOutput[f]);
+        curve.points.push_back({double(f), previous});
+    }
+    if (curve.points.empty() || curve.points.back().output < double(last))
+        curve.points.push_back({double(last), std::max(previous, sourceOfOutput[last])});
+    return curve;
+}
+
+Status writeWarpCsv(const WarpCurve& curve, const std::filesystem::path& file)
+{
+    std::ofstream stream(file);
+    if (!stream) return makeError(ErrorCode::Io, file.string() + ": cannot write the warp curve");
+    stream.precision(17);
+    stream << "output_frame,source_frame\n";
+    for (const WarpPoint& p : curve.points) stream << p.output << ',' << p.source << '\n';
+    stream.flush();
+    if (!stream) return makeError(ErrorCode::Io, file.string() + ": writing the warp curve failed");
+    return okStatus();
+}
+
+Result<WarpCurve> readWarpCsv(const std::filesystem::path& file)
+{
+    std::ifstream stream(file);
+    if (!stream) return makeError(ErrorCode::Io, file.string() + ": cannot open the warp curve");
+    WarpCurve curve;
+    std::string line;
+    long lineNumber = 0;
+    while (std::getline(stream, line)) {
+        ++lineNumber;
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        if (line.empty()) continue;
+        if (lineNumber == 1 && line.find_first_not_of("0123456789.,-+eE ") != std::string::npos) continue; // header
+        std::istringstream fields(line);
+        WarpPoint point;
+        char comma = 0;
+        if (!(fields >> point.output >> comma >> point.source) || comma != ',')
+            return parseFailure(file.string(), lineNumber, "expected \"output_frame,source_frame\" (two numbers)");
+        curve.points.push_back(point);
+    }
+    if (!curve.points.empty()) curve.outputFrames = Eigen::Index(std::floor(curve.points.back().output)) + 1;
+    if (Status valid = validateWarpCurve(curve); !valid.ok())
+        return makeError(ErrorCode::Parse, file.string() + ": " + valid.error().message);
+    return curve;
+}
+
+} // namespace bunraku::analysis

@@ -1,0 +1,56 @@
+#pragma once
+/// The time-correspondence curve of a design (thesis Fig. 5.13, 5.5): for each output
+/// (emotional) frame, the source (functional) frame it shows. Edited through control points and
+/// evaluated by monotone cubic interpolation (Fritsch & Carlson 1980), so the curve never runs
+/// backwards however the points are dragged (moveControlPoint clamps between the neighbours).
+
+#include "analysis/core/result.h"
+
+#include <Eigen/Core>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace bunraku::analysis {
+
+struct WarpPoint {
+    double output = 0.0; ///< frame of the designed (emotional) take
+    double source = 0.0; ///< frame of the functional take it shows
+    bool operator==(const WarpPoint&) const = default;
+};
+
+/// Control points with strictly increasing `output` and non-decreasing `source`.
+struct WarpCurve {
+    std::vector<WarpPoint> points;
+    /// Frames of the designed take (the last output frame + 1 by default).
+    Eigen::Index outputFrames = 0;
+};
+
+/// Checks at least 2 points, finite values, output strictly increasing, source non-decreasing.
+Status validateWarpCurve(const WarpCurve& curve);
+
+/// The identity curve over `frames` frames with a point every `spacing` frames.
+WarpCurve identityWarp(Eigen::Index frames, int spacing = 8);
+
+/// Source frame at output frame x: Fritsch-Carlson monotone cubic through the points, constant
+/// beyond the first and last point.
+double evaluateWarp(const WarpCurve& curve, double output);
+/// Source frame for each output frame 0..outputFrames-1.
+Eigen::VectorXd sampleWarp(const WarpCurve& curve);
+
+/// The curve with point `index` moved towards `proposed`, clamped so output stays strictly
+/// between the neighbours (by `minimumGap` frames) and source between the neighbours' sources;
+/// the first and last points keep their output frame.
+WarpCurve moveControlPoint(const WarpCurve& curve, std::size_t index, const WarpPoint& proposed, double minimumGap = 0.5);
+
+/// Control points summarising a dense monotone map (one source frame per output frame): one
+/// every `spacing` frames plus the last frame.
+WarpCurve warpCurveFromSamples(const Eigen::VectorXd& sourceOfOutput, int spacing = 8);
+
+/// CSV "output_frame,source_frame" with a header, one control point per line.
+Status writeWarpCsv(const WarpCurve& curve, const std::filesystem::path& file);
+/// Parse errors name the file, line and what was expected; the curve is validated.
+Result<WarpCurve> readWarpCsv(const std::filesystem::path& file);
+
+} // namespace bunraku::analysis

@@ -1,0 +1,96 @@
+// Motion axis and design speed (issue 5 targets): axis of 106 frames < 1 ms, re-synthesis after
+// one control-point move < 2 ms, axis of 100,000 frames < 200 ms. Results: docs/performance/axis.md.
+#include "analysis/axis/axis_channels.h"
+#include "analysis/axis/inertia_axis.h"
+#include "analysis/core/puppet_layout.h"
+#include "analysis/design/motion_design.h"
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+
+namespace {
+
+using namespace bunraku::analysis;
+
+/// A puppet take of `frames` frames: the body sways and bows, each part wiggles.
+Take swayingTake(Eigen::Index frames)
+{
+    static const Eigen::Vector3d rest[4] = {{0, 0, 103}, {0, 0, 100}, {0, -13, 98}, {0, -13, 70}};
+    Take take;
+    take.channels = puppetChannels();
+    take.values.resize(frames, kPuppetChannelCount);
+    for (Eigen::Index f = 0; f < frames; ++f) {
+        const double t = double(f);
+        const RigidTransform body{Eigen::Quaterniond(Eigen::AngleAxisd(0.3 * std::sin(t / 9.0), Eigen::Vector3d::UnitZ()) *
+                                                     Eigen::AngleAxisd(0.25 * std::sin(t / 13.0) + 0.1, Eigen::Vector3d::UnitY())),
+                                  Eigen::Vector3d(5.0 * std::sin(t / 11.0), 3.0 * std::cos(t / 7.0), 2.0 * std::sin(t / 5.0))};
+        for (int p = 0; p < kPuppetPartCount; ++p) {
+            const RigidTransform wiggle{Eigen::Quaterniond(Eigen::AngleAxisd(0.25 * std::sin((t + 7 * p) / 6.0),
+                                                                             Eigen::Vector3d(0.2, 1.0, 0.3).normalized())),
+                                        rest[p]};
+            setPartPose(take, f, p * kDofCount, body * wiggle);
+        }
+    }
+    return take;
+}
+
+const AxisModel& model()
+{
+    static const AxisModel m = makeAxisModel(defaultBodyDescription());
+    return m;
+}
+
+void axisOfTake(benchmark::State& state)
+{
+    const Take take = swayingTake(state.range(0));
+    for (auto _ : state) {
+        auto axis = computeMotionAxis(model(), take);
+        benchmark::DoNotOptimize(axis);
+    }
+    state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+BENCHMARK(axisOfTake)->Arg(106)->Arg(100000)->Unit(benchmark::kMillisecond);
+
+/// What an editor does on a control-point drag: move one point, re-synthesise the take.
+void redesignAfterDrag(benchmark::State& state)
+{
+    const Take take = swayingTake(106);
+    const DesignBasis basis = prepareDesign(model(), take).value();
+    const GainSet gains = extractGains(basis.coordinates, basis.coordinates * 1.1, {0, 40, 70, 105},
+                                       {"x", "y", "z", "rx", "ry", "rz"}).value();
+    WarpCurve warp = identityWarp(106, 8);
+    double offset = 0.0;
+    for (auto _ : state) {
+        offset = offset > 3.0 ? -3.0 : offset + 0.5;
+        warp = moveControlPoint(warp, 6, {warp.points[6].output, 48.0 + offset});
+        DesignedMotion designed = designMotion(basis, warp, gains);
+        benchmark::DoNotOptimize(designed);
+    }
+}
+BENCHMARK(redesignAfterDrag)->Unit(benchmark::kMillisecond);
+
+/// The one-off cost the basis saves on every drag: axis + relative motion of the functional take.
+void prepareDesignBasis(benchmark::State& state)
+{
+    const Take take = swayingTake(106);
+    for (auto _ : state) {
+        auto basis = prepareDesign(model(), take);
+        benchmark::DoNotOptimize(basis);
+    }
+}
+BENCHMARK(prepareDesignBasis)->Unit(benchmark::kMillisecond);
+
+/// Sampling the shipped body's mass points and moments (once per body description).
+void makeModel(benchmark::State& state)
+{
+    for (auto _ : state) {
+        AxisModel m = makeAxisModel(defaultBodyDescription());
+        benchmark::DoNotOptimize(m);
+    }
+}
+BENCHMARK(makeModel)->Unit(benchmark::kMillisecond);
+
+} // namespace
+
+BENCHMARK_MAIN();

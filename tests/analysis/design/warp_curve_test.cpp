@@ -1,0 +1,82 @@
+#include "analysis/design/warp_curve.h"
+
+#include "tests/support/test_paths.h"
+
+#include <catch2/catch.hpp>
+
+#include <fstream>
+#include <random>
+
+using namespace bunraku::analysis;
+
+TEST_CASE("a warp curve through collinear points is that line")
+{
+    WarpCurve curve;
+    curve.points = {{0, 3}, {10, 8}, {30, 18}, {50, 28}};
+    for (double x = 0; x <= 50; x += 0.7) CHECK(evaluateWarp(curve, x) == Approx(3 + 0.5 * x));
+    CHECK(evaluateWarp(curve, -5) == 3.0);
+    CHECK(evaluateWarp(curve, 80) == 28.0);
+    // passes through every control point
+    curve.points = {{0, 0}, {10, 2}, {20, 19}, {30, 20}, {50, 60}};
+    for (const WarpPoint& p : curve.points) CHECK(evaluateWarp(curve, p.output) == Approx(p.source));
+}
+
+TEST_CASE("dragging control points never makes time run backwards")
+{
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> jump(-40.0, 40.0);
+    WarpCurve curve = identityWarp(106, 8);
+    REQUIRE(validateWarpCurve(curve).ok());
+    for (int drag = 0; drag < 300; ++drag) {
+        const std::size_t index = std::size_t(random() % curve.points.size());
+        const WarpPoint& p = curve.points[index];
+        curve = moveControlPoint(curve, index, {p.output + jump(random), p.source + jump(random)});
+        REQUIRE(validateWarpCurve(curve).ok());
+        const Eigen::VectorXd samples = sampleWarp(curve);
+        REQUIRE(samples.size() == 106);
+        for (double x = 0; x < 105; x += 0.25) REQUIRE(evaluateWarp(curve, x + 0.25) >= evaluateWarp(curve, x) - 1e-12);
+    }
+}
+
+TEST_CASE("moving a control point is clamped between its neighbours")
+{
+    const WarpCurve curve{{{0, 0}, {10, 10}, {20, 20}}, 21};
+    const WarpCurve moved = moveControlPoint(curve, 1, {35, -4});
+    CHECK(moved.points[1].output == Approx(19.5));
+    CHECK(moved.points[1].source == 0.0);
+    const WarpCurve end = moveControlPoint(curve, 2, {40, 30});
+    CHECK(end.points[2].output == 20.0); // ends keep their frame
+    CHECK(end.points[2].source == 30.0);
+}
+
+TEST_CASE("a dense map is summarised by control points it passes through")
+{
+    Eigen::VectorXd samples(106);
+    for (int i = 0; i < 106; ++i) samples[i] = 105.0 * std::pow(i / 105.0, 1.3);
+    const WarpCurve curve = warpCurveFromSamples(samples, 8);
+    REQUIRE(validateWarpCurve(curve).ok());
+    CHECK(curve.points.front().output == 0.0);
+    CHECK(curve.points.back().output == 105.0);
+    const Eigen::VectorXd back = sampleWarp(curve);
+    CHECK((back - samples).cwiseAbs().maxCoeff() < 0.3);
+}
+
+TEST_CASE("warp curves round-trip through CSV and bad files are reported with their line")
+{
+    const auto dir = bunraku::test::scratchDir("warp-csv");
+    const WarpCurve curve{{{0, 0}, {8, 5.5}, {20, 21.25}}, 21};
+    REQUIRE(writeWarpCsv(curve, dir / "warp.csv").ok());
+    const auto read = readWarpCsv(dir / "warp.csv");
+    REQUIRE(read.ok());
+    CHECK(read->points == curve.points);
+    CHECK(read->outputFrames == 21);
+
+    std::ofstream(dir / "bad.csv") << "output_frame,source_frame\n0,0\n5;3\n";
+    const auto bad = readWarpCsv(dir / "bad.csv");
+    REQUIRE_FALSE(bad.ok());
+    CHECK(bad.error().message.find("bad.csv:3") != std::string::npos);
+    std::ofstream(dir / "backwards.csv") << "output_frame,source_frame\n0,0\n5,3\n9,2\n";
+    const auto backwards = readWarpCsv(dir / "backwards.csv");
+    REQUIRE_FALSE(backwards.ok());
+    CHECK(backwards.error().message.find("backwards") != std::string::npos);
+}
