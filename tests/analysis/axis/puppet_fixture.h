@@ -1,7 +1,8 @@
 #pragma once
 /// Synthetic puppet takes for the body, axis and design tests: the 4 sensor parts at a rest
-/// pose (shoulder 100 cm up, head above it, arm hanging at the right shoulder, hand below it),
-/// moved by a whole-body rigid motion and small per-part wiggles.
+/// pose (shoulder 100 cm up, head above it, arm hanging at the right shoulder, hand below it;
+/// sensor placements as resources/puppet/bunraku_puppet.json describes them), moved by a
+/// whole-body rigid motion and small per-part wiggles.
 
 #include "analysis/core/pose.h"
 #include "analysis/core/puppet_layout.h"
@@ -15,8 +16,13 @@ namespace bunraku::test {
 /// world_T_part of part p (0 head, 1 shoulder, 2 arm, 3 hand) at rest.
 inline analysis::RigidTransform restPose(int part)
 {
-    static const Eigen::Vector3d positions[4] = {{0, 0, 103}, {0, 0, 100}, {0, -13, 98}, {0, -13, 70}};
-    return analysis::RigidTransform{Eigen::Quaterniond::Identity(), positions[part]};
+    // head sensor 7 cm above and 3 cm in front of the neck joint (8 cm above the shoulder
+    // sensor); the arm and hand frames run along the bone (x), here hanging down: pitch 90.
+    static const Eigen::Vector3d positions[4] = {{4, 0, 115}, {0, 0, 100}, {0, -9, 89}, {0, -9, 75}};
+    const bool limb = part >= 2;
+    return analysis::RigidTransform{limb ? Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 2.0, Eigen::Vector3d::UnitY()))
+                                         : Eigen::Quaterniond::Identity(),
+                                    positions[part]};
 }
 
 /// A 24-channel puppet take of `frames` frames: frame f shows body(f) * part(f, p) * rest(p).
