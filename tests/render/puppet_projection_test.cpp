@@ -145,9 +145,10 @@ TEST_CASE("a mesh loaded from a file replaces its part's primitives where the pa
     camera.angleDeg = 270.0f;
     camera.elevationDeg = 0.0f;
     camera.distance = 200.0f;
-    camera.target = {0.0f, 0.0f, 100.0f};
-    const QImage ids = offscreen->partIdImage(camera, size);
     const auto head = analysis::partPose(scene.takes[0].take, 0, 0);
+    // Level with the cube's centre, so that neither its top nor its bottom face shows.
+    camera.target = {0.0f, 0.0f, float(head.translation.z()) + 8.0f};
+    const QImage ids = offscreen->partIdImage(camera, size);
     // The cube's front face (x = +8 cm) seen head-on: its corners bound the head's pixels.
     const auto corner = [&](double y, double z) {
         const Eigen::Vector3d p = head.apply(Eigen::Vector3d(8.0, y, z));

@@ -55,9 +55,12 @@ inline analysis::Take spreadArmsTake(Eigen::Index frames, const Eigen::Vector3d&
 {
     return puppetTake(frames, [origin](Eigen::Index) {
         const double x = origin.x(), y = origin.y(), z = origin.z();
-        return std::array<PartPose, 4>{PartPose{x, y, z + 3.0, 0, 0, 0}, PartPose{x, y, z, 0, 0, 0},
-                                       PartPose{x, y - 15.0, z - 5.0, 0, 0, -90.0},
-                                       PartPose{x, y - 45.0, z - 5.0, 0, 0, -90.0}};
+        // Parts spread apart so that no part hides another from the front: the head 22 cm above
+        // the shoulder sensor, the right arm (bone along local x) straight out to the right
+        // (yaw -90) clear of the shoulder board, the hand just beyond the arm's end.
+        return std::array<PartPose, 4>{PartPose{x + 4.0, y, z + 22.0, 0, 0, 0}, PartPose{x, y, z, 0, 0, 0},
+                                       PartPose{x, y - 27.0, z - 1.0, -90.0, 0, 0},
+                                       PartPose{x, y - 43.0, z - 1.0, -90.0, 0, 0}};
     });
 }
 

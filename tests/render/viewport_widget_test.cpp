@@ -44,7 +44,7 @@ TEST_CASE("the viewport shows the puppet and a click on its head picks the head"
 
     // The head's face, where the camera projects it (in widget pixels: device ratio 1 under Xvfb).
     const auto world_T_head = viewport.renderer()->displayedPartTransforms(0, viewport.camera())[0];
-    const glm::vec3 face = glm::vec3(world_T_head * glm::vec4(0.5f, 0.0f, 6.5f, 1.0f));
+    const glm::vec3 face = glm::vec3(world_T_head * glm::vec4(-2.0f, 0.0f, -0.5f, 1.0f));
     const QSize pixels(int(viewport.width() * viewport.devicePixelRatioF()),
                        int(viewport.height() * viewport.devicePixelRatioF()));
     const QPointF pixel = viewport.camera().project(face, pixels).pixel / viewport.devicePixelRatioF();
