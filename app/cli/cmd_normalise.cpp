@@ -1,11 +1,415 @@
-// Subcommands: normalise, experiment noise, experiment truth.
+// Subcommands: normalise, experiment noise, experiment truth (thesis chapter 3).
 #include "app/cli/commands.h"
 
+#include "analysis/io/corpus_io.h"
+#include "analysis/io/take_csv.h"
+#include "analysis/normalise/average_take.h"
+#include "analysis/normalise/noise_experiment.h"
+#include "analysis/normalise/take_normalisation.h"
+#include "analysis/normalise/truth_experiment.h"
+#include "analysis/normalise/variance_evaluation.h"
+#include "analysis/preprocess/preprocess.h"
+#include "analysis/synth/demo_corpus.h"
+#include "analysis/synth/demo_corpus_io.h"
+
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
 namespace bunraku::app::cli {
+namespace {
+
+namespace an = bunraku::analysis;
+
+struct MatchArguments {
+    int tau = 4;
+    int tcmp = 20;
+    std::string scales = "1:16";
+    std::string coupling = "method2";
+    std::string path = "greedy";
+    std::string weighting = "none";
+    std::string level = "first-frame";
+    double approximationWeight = 0.0;
+};
+
+struct NormaliseArguments {
+    std::string corpus;
+    std::string function;
+    std::string emotion;
+    std::string reference;
+    std::vector<int> exclude;
+    int base = 0;
+    std::string output;
+    bool json = false;
+    bool noPreprocess = false;
+    MatchArguments match;
+};
+
+// "1:16", "2:2:16" (first:step:last) or "1,2,4,8".
+std::vector<double> parseScales(const std::string& text)
+{
+    std::vector<double> values;
+    std::string token;
+    std::istringstream parts(text);
+    auto number = [&](const std::string& s) {
+        try {
+            std::size_t used = 0;
+            const double value = std::stod(s, &used);
+            if (used != s.size()) throw std::invalid_argument(s);
+            return value;
+        } catch (const std::exception&) {
+            throw CliError("--scales: '" + s + "' is not a number (expected FIRST:LAST, FIRST:STEP:LAST or a comma list)");
+        }
+    };
+    if (text.find(':') != std::string::npos) {
+        std::vector<double> fields;
+        while (std::getline(parts, token, ':')) fields.push_back(number(token));
+        if (fields.size() < 2 || fields.size() > 3) throw CliError("--scales: expected FIRST:LAST or FIRST:STEP:LAST, got '" + text + "'");
+        const double first = fields[0];
+        const double step = fields.size() == 3 ? fields[1] : 1.0;
+        const double last = fields.back();
+        if (!(step > 0) || last < first) throw CliError("--scales: '" + text + "' is an empty range");
+        for (double s = first; s <= last + 1e-9; s += step) values.push_back(s);
+        return values;
+    }
+    while (std::getline(parts, token, ',')) values.push_back(number(token));
+    if (values.empty()) throw CliError("--scales: no scales in '" + text + "'");
+    return values;
+}
+
+an::NormaliseOptions normaliseOptions(const MatchArguments& arguments)
+{
+    an::NormaliseOptions options;
+    options.coupling = arguments.coupling;
+    options.match.tau = arguments.tau;
+    options.match.searchBand = arguments.tcmp;
+    options.match.scales = parseScales(arguments.scales);
+    options.match.approximationWeight = arguments.approximationWeight;
+    options.match.path = arguments.path == "optimal" ? an::PathMethod::Optimal : an::PathMethod::Greedy;
+    options.match.weighting = arguments.weighting == "standardise" ? an::ChannelWeighting::Standardise : an::ChannelWeighting::None;
+    options.match.level = arguments.level == "none" ? an::LevelAlignment::None : an::LevelAlignment::FirstFrame;
+    return options;
+}
+
+void addMatchOptions(CLI::App* command, MatchArguments& arguments)
+{
+    command->add_option("--tau", arguments.tau, "Half window tau, frames (thesis 3.5.2)")->capture_default_str();
+    command->add_option("--tcmp", arguments.tcmp, "Search band T_cmp, frames (thesis 3.5.1)")->capture_default_str();
+    command->add_option("--scales", arguments.scales, "Wavelet scales: FIRST:LAST, FIRST:STEP:LAST or a comma list")
+        ->capture_default_str();
+    command->add_option("--coupling", arguments.coupling,
+                        "Channels sharing one correspondence: independent, method1, method2, per-part, per-coordinate, "
+                        "all, or sets like arm.x+hand.x;head.x+shoulder.x")
+        ->capture_default_str();
+    command->add_option("--path", arguments.path, "Correspondence path: greedy (thesis scan) or optimal (dynamic programming)")
+        ->check(CLI::IsMember({"greedy", "optimal"}))
+        ->capture_default_str();
+    command->add_option("--weighting", arguments.weighting, "Channel weighting: none or standardise")
+        ->check(CLI::IsMember({"none", "standardise"}))
+        ->capture_default_str();
+    command->add_option("--level", arguments.level, "Level alignment before the transform: first-frame or none")
+        ->check(CLI::IsMember({"first-frame", "none"}))
+        ->capture_default_str();
+    command->add_option("--approximation-weight", arguments.approximationWeight,
+                        "Weight M of the approximation term (thesis eq. 5.17; 0 = off)")
+        ->capture_default_str();
+}
+
+std::string takeFileName(const an::Take& take)
+{
+    std::string name = take.labels.function + "_" + take.labels.emotion + "_" + std::to_string(take.labels.takeIndex);
+    for (char& c : name)
+        if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-')) c = '-';
+    return name;
+}
+
+void writeText(const std::filesystem::path& file, const std::string& text)
+{
+    std::ofstream out(file);
+    out << text;
+    if (!out) throw CliError("cannot write " + file.string());
+}
+
+void runNormalise(const NormaliseArguments& arguments)
+{
+    an::Corpus corpus = unwrap(an::io::readCorpus(arguments.corpus));
+    // Thesis 2.2 first (pad, unwrap, align start times and start positions), unless told not to.
+    if (!arguments.noPreprocess) corpus = unwrap(an::preprocess::preprocessCorpus(corpus)).corpus;
+    const std::vector<const an::Take*> raw = corpus.cell(arguments.function, arguments.emotion);
+    if (raw.empty()) {
+        std::string cells;
+        for (const auto& f : corpus.functions())
+            for (const auto& e : corpus.emotions())
+                if (!corpus.cell(f, e).empty()) cells += (cells.empty() ? "" : ", ") + f + "/" + e;
+        throw CliError("no takes for " + arguments.function + "/" + arguments.emotion + " in " + arguments.corpus
+                       + " (cells: " + cells + ")");
+    }
+    // Angles continuous (thesis 2.2 step 2) also when preprocessing is off.
+    std::vector<an::Take> takes;
+    for (const an::Take* take : raw) {
+        takes.push_back(*take);
+        an::preprocess::unwrapAngles(takes.back());
+    }
+    std::vector<const an::Take*> cell;
+    for (const auto& take : takes) cell.push_back(&take);
+    auto indexOfTake = [&](int takeIndex, const std::string& what) {
+        for (std::size_t k = 0; k < cell.size(); ++k)
+            if (cell[k]->labels.takeIndex == takeIndex) return int(k);
+        throw CliError(what + ": the cell has no take " + std::to_string(takeIndex));
+    };
+
+    const an::NormaliseOptions options = normaliseOptions(arguments.match);
+    const an::ReferenceSuggestion suggestion = unwrap(an::suggestReference(cell));
+    an::Take reference;
+    std::string referenceName;
+    if (arguments.reference.empty() || arguments.reference == "average") {
+        if (arguments.reference.empty() && !arguments.exclude.empty())
+            throw CliError("--exclude applies to --reference average");
+        if (arguments.reference.empty()) {
+            reference = *cell[std::size_t(suggestion.takeIndex)];
+            referenceName = "take " + std::to_string(reference.labels.takeIndex) + " (suggested)";
+        } else {
+            an::AverageOptions average;
+            average.normalise = options;
+            average.baseTake = arguments.base > 0 ? indexOfTake(arguments.base, "--base") : suggestion.takeIndex;
+            for (int k : arguments.exclude) {
+                average.excludedTakes.push_back(indexOfTake(k, "--exclude"));
+                if (average.excludedTakes.back() == average.baseTake)
+                    throw CliError("take " + std::to_string(k) + " is the base of the average; choose another with --base");
+            }
+            reference = unwrap(an::averageTake(cell, average));
+            referenceName = std::to_string(cell.size() - average.excludedTakes.size()) + "ave";
+        }
+    } else {
+        int index = 0;
+        try {
+            index = std::stoi(arguments.reference);
+        } catch (const std::exception&) {
+            throw CliError("--reference: expected a take index or 'average', got '" + arguments.reference + "'");
+        }
+        reference = *cell[std::size_t(indexOfTake(index, "--reference"))];
+        referenceName = "take " + std::to_string(index);
+    }
+
+    const std::vector<an::TakeNormalisation> normalised = unwrap(an::normaliseTakes(reference, cell, options));
+    std::vector<const an::Take*> normalisedTakes;
+    for (const auto& one : normalised) normalisedTakes.push_back(&one.normalised);
+    const an::VarianceTable table = unwrap(an::varianceTable(reference, cell, normalisedTakes));
+
+    const std::filesystem::path folder = arguments.output;
+    std::error_code error;
+    std::filesystem::create_directories(folder, error);
+    if (error) throw CliError("cannot create " + folder.string() + ": " + error.message());
+    std::vector<std::string> files;
+    unwrap(an::io::writeTakeCsv(reference, folder / "reference.csv"));
+    files.push_back("reference.csv");
+    for (std::size_t k = 0; k < normalised.size(); ++k) {
+        const std::string stem = takeFileName(*cell[k]);
+        unwrap(an::io::writeTakeCsv(normalised[k].normalised, folder / (stem + "_normalised.csv")));
+        std::ostringstream csv;
+        csv << "t_ref";
+        for (const auto& name : normalised[k].coupling.names) csv << "," << name;
+        csv << "\n";
+        for (Eigen::Index t = 0; t < reference.frameCount(); ++t) {
+            csv << t;
+            for (const auto& match : normalised[k].matches) csv << "," << match.correspondence[t];
+            csv << "\n";
+        }
+        writeText(folder / (stem + "_correspondence.csv"), csv.str());
+        files.push_back(stem + "_normalised.csv");
+        files.push_back(stem + "_correspondence.csv");
+    }
+    std::ostringstream variance;
+    variance << std::setprecision(10) << "take,stage,total";
+    for (const auto& name : table.channelNames) variance << "," << name;
+    variance << "\n";
+    for (std::size_t k = 0; k < table.takeNames.size(); ++k) {
+        for (int stage = 0; stage < 2; ++stage) {
+            const Eigen::MatrixXd& values = stage == 0 ? table.before : table.after;
+            variance << cell[k]->labels.takeIndex << "," << (stage == 0 ? "raw" : "normalised") << ","
+                     << (stage == 0 ? table.totalBefore : table.totalAfter)[Eigen::Index(k)];
+            for (Eigen::Index c = 0; c < values.cols(); ++c) variance << "," << values(Eigen::Index(k), c);
+            variance << "\n";
+        }
+    }
+    writeText(folder / "variance.csv", variance.str());
+    files.push_back("variance.csv");
+
+    nlohmann::json takesJson = nlohmann::json::array();
+    for (std::size_t k = 0; k < normalised.size(); ++k) {
+        takesJson.push_back({{"take", cell[k]->labels.takeIndex},
+                             {"cost", normalised[k].cost},
+                             {"variance_raw", table.totalBefore[Eigen::Index(k)]},
+                             {"variance_normalised", table.totalAfter[Eigen::Index(k)]},
+                             {"outlier", bool(suggestion.outlier[k])}});
+    }
+    const nlohmann::json summary{{"function", arguments.function},
+                                 {"emotion", arguments.emotion},
+                                 {"reference", referenceName},
+                                 {"suggested_reference", cell[std::size_t(suggestion.takeIndex)]->labels.takeIndex},
+                                 {"suggestion", suggestion.reason},
+                                 {"coupling", options.coupling},
+                                 {"path", arguments.match.path},
+                                 {"tau", options.match.tau},
+                                 {"tcmp", options.match.searchBand},
+                                 {"scales", options.match.scales},
+                                 {"takes", takesJson},
+                                 {"variance_raw_total", table.totalBefore.sum()},
+                                 {"variance_normalised_total", table.totalAfter.sum()},
+                                 {"output", folder.string()},
+                                 {"files", files}};
+    writeText(folder / "summary.json", summary.dump(2) + "\n");
+    if (arguments.json) {
+        printJson(summary);
+        return;
+    }
+    std::cout << "normalised " << normalised.size() << " takes of " << arguments.function << "/" << arguments.emotion
+              << " to " << referenceName << " (" << options.coupling << ", " << arguments.match.path << ")\n"
+              << "take   variance raw   normalised\n";
+    for (std::size_t k = 0; k < normalised.size(); ++k)
+        std::cout << std::setw(4) << cell[k]->labels.takeIndex << std::setw(15) << std::setprecision(6)
+                  << table.totalBefore[Eigen::Index(k)] << std::setw(13) << table.totalAfter[Eigen::Index(k)]
+                  << (suggestion.outlier[k] ? "  (outlier)" : "") << "\n";
+    std::cout << "wrote " << files.size() + 1 << " files to " << folder.string() << "\n";
+}
+
+nlohmann::json methodsJson(const std::vector<an::MethodError>& methods)
+{
+    nlohmann::json out = nlohmann::json::array();
+    for (const auto& method : methods)
+        out.push_back({{"name", method.name},
+                       {"mean_abs_error_frames", method.meanAbsErrorFrames},
+                       {"max_abs_error_frames", method.maxAbsErrorFrames},
+                       {"scales", method.scales}});
+    return out;
+}
+
+void runNoise(bool json)
+{
+    const an::NoiseExperimentOptions thesis;
+    const an::NoiseExperimentResult result = unwrap(an::runNoiseExperiment(thesis));
+    an::NoiseExperimentOptions constrained = thesis;
+    constrained.path = an::PathMethod::Optimal;
+    constrained.tau = 4;
+    const an::NoiseExperimentResult modern = unwrap(an::runNoiseExperiment(constrained));
+    if (json) {
+        printJson({{"methods", methodsJson(result.methods)},
+                   {"setup",
+                    {{"frames", thesis.frames},
+                     {"reference_frequency", thesis.referenceFrequency},
+                     {"sample_frequency", thesis.sampleFrequency},
+                     {"phase_shift_rad", thesis.phaseShiftRadians},
+                     {"noise_amplitude", thesis.noiseAmplitude},
+                     {"noise_frequency", thesis.noiseFrequency},
+                     {"tau", thesis.tau},
+                     {"tcmp", thesis.searchBand},
+                     {"path", "independent (thesis 3.3/3.4 single-frame matching)"}}},
+                   {"with_time_constraint", {{"path", "optimal"}, {"tau", constrained.tau}, {"methods", methodsJson(modern.methods)}}}});
+        return;
+    }
+    std::cout << "thesis 3.4: sine 0.025 cycles/frame; sample 1.1x, phase -0.4 rad, + 0.4 sin at 4x as noise\n"
+              << "mean |error| vs the true warp, frames (single-frame matching, T_cmp 20):\n";
+    for (const auto& method : result.methods)
+        std::cout << "  " << std::left << std::setw(26) << method.name << std::right << std::fixed << std::setprecision(3)
+                  << method.meanAbsErrorFrames << "\n";
+    std::cout << "with windows (tau 4) and the optimal monotone path:\n";
+    for (const auto& method : modern.methods)
+        std::cout << "  " << std::left << std::setw(26) << method.name << std::right << std::fixed << std::setprecision(3)
+                  << method.meanAbsErrorFrames << "\n";
+}
+
+struct TruthArguments {
+    std::string corpus;
+    int reference = 0;
+    bool json = false;
+    MatchArguments match;
+};
+
+void runTruth(const TruthArguments& arguments)
+{
+    const an::Corpus corpus = unwrap(an::io::readCorpus(arguments.corpus));
+    const std::filesystem::path truthFolder = an::synth::groundTruthFolder(arguments.corpus);
+    auto truth = an::synth::readGroundTruth(truthFolder);
+    if (!truth.ok())
+        throw CliError("no ground truth for " + arguments.corpus + " (expected " + truthFolder.string()
+                       + ", written by `bunraku demo`): " + truth.error().message);
+    an::TruthExperimentOptions options;
+    options.normalise = normaliseOptions(arguments.match);
+    options.referenceTakeIndex = arguments.reference;
+    const an::TruthExperimentResult result = unwrap(an::runTruthExperiment(corpus, *truth, options));
+    const an::TruthMethodResult* optimal = nullptr;
+    for (const auto& method : result.methods)
+        if (method.name == "wavelet-optimal") optimal = &method;
+    if (arguments.json) {
+        nlohmann::json methods = nlohmann::json::array();
+        for (const auto& method : result.methods)
+            methods.push_back({{"name", method.name},
+                               {"mean_abs_error_frames", method.meanAbsErrorFrames},
+                               {"max_abs_error_frames", method.maxAbsErrorFrames},
+                               {"arm_hand_within_range", method.armHandWithinRange},
+                               {"arm_hand_max_excess_cm", method.armHandMaxExcessCm}});
+        printJson({{"methods", methods},
+                   {"cells", result.cells},
+                   {"pairs", result.pairs},
+                   {"coupling", options.normalise.coupling},
+                   {"arm_hand_together", optimal && optimal->armHandWithinRange >= 0.99}});
+        return;
+    }
+    std::cout << result.cells << " cells, " << result.pairs << " take pairs per method (coupling "
+              << options.normalise.coupling << ")\n"
+              << "method                        mean |err|  max |err|  arm-hand in range\n";
+    for (const auto& method : result.methods)
+        std::cout << std::left << std::setw(30) << method.name << std::right << std::fixed << std::setprecision(3)
+                  << std::setw(10) << method.meanAbsErrorFrames << std::setw(11) << method.maxAbsErrorFrames
+                  << std::setw(18) << method.armHandWithinRange << "\n";
+}
+
+} // namespace
 
 void addNormalisationCommands(CommandSet& commands)
 {
-    (void)commands;
+    {
+        auto arguments = std::make_shared<NormaliseArguments>();
+        CLI::App* command = commands.root.add_subcommand(
+            "normalise", "Normalise the takes of one function x emotion cell in time by wavelet matching (thesis ch. 3): "
+                         "writes the normalised takes, correspondences, the reference and the variance table");
+        command->add_option("CORPUS", arguments->corpus, "Corpus folder")->required()->check(CLI::ExistingDirectory);
+        command->add_option("--function", arguments->function, "Function label, e.g. greeting")->required();
+        command->add_option("--emotion", arguments->emotion, "Emotion label, e.g. none")->required();
+        command->add_option("--reference", arguments->reference,
+                            "Reference: a take index, or 'average' (thesis 3.7); default the suggested take (3.6.1)");
+        command->add_option("--exclude", arguments->exclude, "Take index left out of the average (e.g. the outlier: 4ave)");
+        command->add_option("--base", arguments->base, "Base take of the average (default the suggested reference)");
+        command->add_option("-o,--output", arguments->output, "Output folder")->required()->type_name("DIR");
+        command->add_flag("--no-preprocess", arguments->noPreprocess,
+                          "Use the takes as stored (default: thesis 2.2 preprocessing first, as `bunraku preprocess`)");
+        command->add_flag("--json", arguments->json, "Print a machine-readable summary");
+        addMatchOptions(command, arguments->match);
+        command->callback([arguments] { runNormalise(*arguments); });
+    }
+    {
+        auto json = std::make_shared<bool>(false);
+        CLI::App* command = commands.experiment.add_subcommand(
+            "noise", "Thesis 3.4: wavelet matching below the noise band vs with it vs amplitude matching");
+        command->add_flag("--json", *json, "Print a machine-readable summary");
+        command->callback([json] { runNoise(*json); });
+    }
+    {
+        auto arguments = std::make_shared<TruthArguments>();
+        CLI::App* command = commands.experiment.add_subcommand(
+            "truth", "Normalise every take of the synthetic corpus to its cell's reference and compare the "
+                     "correspondences with the ground truth (greedy, optimal, amplitude DTW)");
+        command->add_option("CORPUS", arguments->corpus, "Demo corpus folder (with truth/ from `bunraku demo`)")
+            ->required()
+            ->check(CLI::ExistingDirectory);
+        command->add_option("--reference", arguments->reference, "Reference take index in every cell (default: suggested)");
+        command->add_flag("--json", arguments->json, "Print a machine-readable summary");
+        addMatchOptions(command, arguments->match);
+        command->callback([arguments] { runTruth(*arguments); });
+    }
 }
 
 } // namespace bunraku::app::cli

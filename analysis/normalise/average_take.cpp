@@ -1,0 +1,91 @@
+#include "analysis/normalise/average_take.h"
+
+#include <algorithm>
+#include <string>
+
+namespace bunraku::analysis {
+
+namespace {
+
+// y at x = 0..count-1 from a curve with non-decreasing abscissae, linear between points,
+// clamped beyond the ends; of several points on one abscissa the first is used.
+Eigen::VectorXd resampleMonotone(const Eigen::VectorXd& abscissa, const Eigen::VectorXd& ordinate, Eigen::Index count)
+{
+    Eigen::VectorXd out(count);
+    const Eigen::Index n = abscissa.size();
+    Eigen::Index k = 0;
+    for (Eigen::Index t = 0; t < count; ++t) {
+        const double x = double(t);
+        if (x <= abscissa[0]) {
+            out[t] = ordinate[0];
+            continue;
+        }
+        if (x >= abscissa[n - 1]) {
+            out[t] = ordinate[n - 1];
+            continue;
+        }
+        while (k + 1 < n && abscissa[k + 1] < x) ++k; // abscissa[k] < x <= abscissa[k + 1]
+        const double span = abscissa[k + 1] - abscissa[k];
+        const double f = span > 0 ? (x - abscissa[k]) / span : 1.0;
+        out[t] = ordinate[k] + f * (ordinate[k + 1] - ordinate[k]);
+    }
+    return out;
+}
+
+} // namespace
+
+Result<Take> averageTake(const std::vector<const Take*>& takes, const AverageOptions& options, const RunControl& control)
+{
+    const int count = int(takes.size());
+    if (count == 0) return makeError(ErrorCode::InvalidArgument, "average take: no takes given");
+    if (options.baseTake < 0 || options.baseTake >= count)
+        return makeError(ErrorCode::InvalidArgument, "average take: base take index " + std::to_string(options.baseTake)
+                                                         + " is not in 0.." + std::to_string(count - 1));
+    std::vector<bool> included(std::size_t(count), true);
+    for (int excluded : options.excludedTakes) {
+        if (excluded < 0 || excluded >= count)
+            return makeError(ErrorCode::InvalidArgument, "average take: excluded take index " + std::to_string(excluded)
+                                                             + " is not in 0.." + std::to_string(count - 1));
+        if (excluded == options.baseTake)
+            return makeError(ErrorCode::InvalidArgument, "average take: the base take cannot be excluded");
+        included[std::size_t(excluded)] = false;
+    }
+    const Take& base = *takes[std::size_t(options.baseTake)];
+    std::vector<const Take*> others;
+    std::string members = std::to_string(base.labels.takeIndex);
+    for (int k = 0; k < count; ++k) {
+        if (k == options.baseTake || !included[std::size_t(k)]) continue;
+        others.push_back(takes[std::size_t(k)]);
+        members.push_back(',');
+        members.append(std::to_string(takes[std::size_t(k)]->labels.takeIndex));
+    }
+    auto normalised = normaliseTakes(base, others, options.normalise, control);
+    if (!normalised) return normalised.error();
+
+    // Thesis 3.7: t_bar = mean_k t_k, x_bar = mean_k x_k(t_k), the base contributing t_b itself.
+    const Eigen::Index frames = base.frameCount();
+    const double members_count = double(others.size() + 1);
+    Take average;
+    average.channels = base.channels;
+    average.rateHz = base.rateHz;
+    average.labels = base.labels;
+    average.labels.takeIndex = 0;
+    average.labels.source = "average of takes " + members + " (base " + std::to_string(base.labels.takeIndex) + ")";
+    average.values.resize(frames, base.channelCount());
+    const Eigen::VectorXd baseTimes = Eigen::VectorXd::LinSpaced(frames, 0.0, double(frames - 1));
+    for (Eigen::Index c = 0; c < base.channelCount(); ++c) {
+        Eigen::VectorXd time = baseTimes;
+        Eigen::VectorXd value = base.values.col(c);
+        for (const auto& one : *normalised) {
+            time += one.correspondence.col(c).cast<double>();
+            value += one.normalised.values.col(c);
+        }
+        time /= members_count;
+        value /= members_count;
+        average.values.col(c) = resampleMonotone(time, value, frames);
+    }
+    control.report(1.0);
+    return average;
+}
+
+} // namespace bunraku::analysis

@@ -1,0 +1,29 @@
+#pragma once
+/// The average take of a cell (thesis 3.7): with one take as base, find in every other take the
+/// frame corresponding to each base frame, average times and values, and resample the averaged
+/// curve onto the base's frames. Used as a better reference ("5ave": all takes; "4ave": without
+/// the outlier).
+
+#include "analysis/core/result.h"
+#include "analysis/core/run_control.h"
+#include "analysis/core/take.h"
+#include "analysis/normalise/take_normalisation.h"
+
+#include <vector>
+
+namespace bunraku::analysis {
+
+struct AverageOptions {
+    int baseTake = 0;               ///< index into the takes (thesis: k = 1)
+    std::vector<int> excludedTakes; ///< indices left out of the average (never the base)
+    NormaliseOptions normalise;     ///< how takes are matched to the base
+};
+
+/// For each channel: t_bar(t_b) = mean_k t_k(t_b), x_bar(t_b) = mean_k x_k(t_k(t_b)) over the base
+/// and the included takes; the curve (t_bar, x_bar) linearly interpolated at t = 0..T_base
+/// (clamped at the ends). Labels: the base's function/emotion, take index 0, source
+/// "average of takes ...". InvalidArgument for a bad base or excluded index.
+Result<Take> averageTake(const std::vector<const Take*>& takes, const AverageOptions& options = {},
+                         const RunControl& control = {});
+
+} // namespace bunraku::analysis

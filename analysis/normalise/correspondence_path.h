@@ -1,0 +1,68 @@
+#pragma once
+/// Correspondence paths through a banded cost: for every reference frame t_ref one sample frame
+/// t_smp in t_ref +- T_cmp, never running backwards (thesis 3.5.3). Greedy is the thesis's scan;
+/// Optimal is dynamic programming over the same band and constraint.
+
+#include "analysis/core/result.h"
+#include "analysis/normalise/wavelet_matching.h"
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace bunraku::analysis {
+
+/// Window costs in the band: row t_ref, column j <-> sample frame t_ref - searchBand + j.
+/// Cells whose sample frame lies outside 0..sampleFrames-1 are ignored.
+struct BandCost {
+    Eigen::MatrixXd cost; ///< reference frames x (2 * searchBand + 1)
+    int searchBand = 20;
+    Eigen::Index sampleFrames = 0;
+};
+
+/// Feeds band rows one at a time (so long takes never hold the whole band) and keeps what the
+/// chosen PathMethod needs: the choices so far (greedy, independent) or int16 back-pointers
+/// (optimal: 2 bytes x frames x (2 T_cmp + 1)). Rows must have 2 * searchBand + 1 entries.
+class PathBuilder {
+public:
+    PathBuilder(int searchBand, Eigen::Index referenceFrames, Eigen::Index sampleFrames, PathMethod method);
+    /// The lowest sample frame the next row may choose (greedy: the previous choice) - lets the
+    /// caller skip computing costs left of it. Always within the band.
+    Eigen::Index firstUsefulSample() const;
+    /// Adds row t_ref (= number of rows added so far).
+    void addRow(const double* costRow);
+    /// The path and its summed cost; call after every reference frame was added.
+    Eigen::VectorXi finish(double* totalCost = nullptr);
+
+private:
+    int m_band;
+    Eigen::Index m_referenceFrames;
+    Eigen::Index m_sampleFrames;
+    PathMethod m_method;
+    bool m_optimal;
+    Eigen::Index m_row = 0;
+    // greedy and independent
+    Eigen::VectorXi m_greedy;
+    double m_greedyCost = 0;
+    // optimal
+    std::vector<double> m_previous, m_current, m_prefixMin;
+    std::vector<std::int16_t> m_prefixArg;
+    std::vector<std::int16_t> m_back;
+};
+
+/// Thesis 3.5.3: for t_ref = 0, 1, ... choose the cheapest t_smp >= the previous choice (ties to
+/// the earliest). Reproduces the plateaus-then-jump of Table 3.3.
+Eigen::VectorXi greedyPath(const BandCost& band);
+/// The non-decreasing path in the band minimising the summed cost (ties to the earliest).
+Eigen::VectorXi optimalPath(const BandCost& band);
+/// Summed cost of a path through the band (infinity when it leaves the band or the sample).
+double pathCost(const BandCost& band, const Eigen::VectorXi& path);
+
+/// A sub-frame monotone warp from an integer correspondence: each plateau (several t_ref on one
+/// t_smp) and each jump is spread linearly between the midpoints of consecutive runs, so the
+/// warp is non-decreasing and passes through every run's centre. Frames, same length.
+Eigen::VectorXd smoothWarp(const Eigen::VectorXi& correspondence);
+
+} // namespace bunraku::analysis

@@ -1,0 +1,33 @@
+#pragma once
+/// The matching engine shared by the wavelet matcher and the amplitude baseline: per-frame
+/// feature vectors of a reference and a sample, a window cost
+/// cost(t_ref, t_smp) = sum_{s=-tau..tau} |f_ref(t_ref + s) - f_smp(t_smp + s)|^2 (thesis 3.5.2)
+/// in the band |t_smp - t_ref| <= T_cmp, and a greedy or optimal non-decreasing path.
+/// The band is streamed row by row: memory is O(frames x band) bytes for the optimal path's
+/// back-pointers (2 bytes a cell) and O(window x band) for the costs.
+
+#include "analysis/core/result.h"
+#include "analysis/core/run_control.h"
+#include "analysis/normalise/wavelet_matching.h"
+
+#include <Eigen/Core>
+
+namespace bunraku::analysis {
+
+/// frames x features, one row per frame (row-major so a frame's features are contiguous).
+using FeatureMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+struct FeatureMatchOptions {
+    int tau = 4;
+    int searchBand = 20;
+    PathMethod path = PathMethod::Greedy;
+};
+
+/// Window indices beyond either end replicate the edge frame (the thesis leaves the ends
+/// open; replicating keeps every window full without inventing motion). InvalidArgument for
+/// tau < 0, searchBand < 0 or > 16000, empty or mismatched features, a reference longer than
+/// the sample plus the band (no admissible path); Cancelled via control.
+Result<MatchResult> matchFeatures(const FeatureMatrix& reference, const FeatureMatrix& sample,
+                                  const FeatureMatchOptions& options, const RunControl& control = {});
+
+} // namespace bunraku::analysis

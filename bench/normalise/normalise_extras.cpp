@@ -1,0 +1,122 @@
+// Measurements Google Benchmark does not make (docs/performance/normalise.md):
+//   bench_normalise_extras memory N   peak RSS of normalising one N-frame x 24-channel pair
+//                                     (T_cmp 240, scales 1..16, method 2, optimal path)
+//   bench_normalise_extras pywt       our CWT of 100,000 samples at scales 1..16 against Debian
+//                                     python3-pywt's, measured in the same run, as ratios
+#include "analysis/normalise/take_normalisation.h"
+#include "analysis/wavelet/cwt.h"
+#include "bench/normalise/long_takes.h"
+
+#include <algorithm>
+#include <chrono>
+#include <ctime>
+#include <functional>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace bunraku::analysis;
+
+namespace {
+
+long statusKilobytes(const std::string& key)
+{
+    std::ifstream status("/proc/self/status");
+    std::string line;
+    while (std::getline(status, line))
+        if (line.rfind(key + ":", 0) == 0) return std::stol(line.substr(key.size() + 1));
+    return -1;
+}
+
+double seconds(const std::chrono::steady_clock::time_point& start)
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+int memory(long frames)
+{
+    const Take reference = bunraku::bench::longTake(frames, 0.0, 1.0, 1);
+    const Take sample = bunraku::bench::longTake(frames, 190.0, 7919.0, 2);
+    const long before = statusKilobytes("VmHWM");
+    NormaliseOptions options;
+    options.match.searchBand = 240;
+    options.match.path = PathMethod::Optimal;
+    const auto start = std::chrono::steady_clock::now();
+    const std::clock_t cpuStart = std::clock();
+    auto result = normaliseTake(reference, sample, options);
+    const double cpu = double(std::clock() - cpuStart) / CLOCKS_PER_SEC;
+    const double wall = seconds(start);
+    if (!result) {
+        std::fprintf(stderr, "%s\n", result.error().message.c_str());
+        return 1;
+    }
+    std::printf("frames %ld: wall %.3f s, cpu %.3f s, peak RSS %ld kB (inputs alone %ld kB)\n", frames, wall, cpu,
+                statusKilobytes("VmHWM"), before);
+    return 0;
+}
+
+double medianSeconds(const std::function<void()>& work, int repeats)
+{
+    std::vector<double> times;
+    for (int i = 0; i < repeats; ++i) {
+        const auto start = std::chrono::steady_clock::now();
+        work();
+        times.push_back(seconds(start));
+    }
+    std::sort(times.begin(), times.end());
+    return times[times.size() / 2];
+}
+
+int pywt()
+{
+    std::mt19937 random(5);
+    std::normal_distribution<double> normal;
+    Eigen::VectorXd signal(100000);
+    for (auto& v : signal) v = normal(random);
+    std::map<std::string, double> ours;
+    for (const std::string name : {"sym3", "mexh"}) {
+        CwtOptions options;
+        options.wavelet = *waveletByName(name);
+        for (auto method : {CwtMethod::Direct, CwtMethod::Fft}) {
+            options.method = method;
+            const CwtFilterBank bank = *makeCwtFilterBank(integerScales(16), options);
+            ours[name + (method == CwtMethod::Direct ? "-direct" : "-fft")] =
+                medianSeconds([&] { auto r = cwt(signal, bank); (void)r; }, 7);
+        }
+    }
+    const std::string script = std::string(BUNRAKU_SOURCE_DIR) + "/scripts/bench_pywt_cwt.py";
+    FILE* pipe = popen(("/usr/bin/python3 " + script + " 100000 7").c_str(), "r");
+    if (!pipe) return 1;
+    std::map<std::string, double> theirs;
+    char name[64];
+    double value = 0;
+    while (std::fscanf(pipe, "%63s %lf", name, &value) == 2) theirs[name] = value;
+    if (pclose(pipe) != 0 || theirs.empty()) {
+        std::fprintf(stderr, "/usr/bin/python3 %s failed (python3-pywt missing?)\n", script.c_str());
+        return 1;
+    }
+    std::printf("CWT of 100,000 samples, scales 1..16, medians of 7 (seconds)\n");
+    for (const auto& [key, time] : ours) std::printf("  ours %-12s %.4f\n", key.c_str(), time);
+    for (const auto& [key, time] : theirs) std::printf("  pywt %-12s %.4f\n", key.c_str(), time);
+    const double bestMexh = std::min(theirs["mexh-conv"], theirs["mexh-fft"]);
+    std::printf("ratio pywt/ours: sym3 legacy %.2f (vs our direct), mexh %.2f (pywt's best vs our best)\n",
+                theirs["sym3-legacy"] / ours["sym3-direct"],
+                bestMexh / std::min(ours["mexh-direct"], ours["mexh-fft"]));
+    return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    const std::string command = argc > 1 ? argv[1] : "";
+    if (command == "memory" && argc > 2) return memory(std::atol(argv[2]));
+    if (command == "pywt") return pywt();
+    std::fprintf(stderr, "usage: %s memory FRAMES | pywt\n", argv[0]);
+    return 2;
+}

@@ -1,0 +1,155 @@
+#include "analysis/normalise/correspondence_path.h"
+#include "analysis/normalise/feature_matching.h"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <random>
+
+using namespace bunraku::analysis;
+
+namespace {
+
+// A band whose cell (t, u) costs cost(t, u); cells outside the sample are left at +inf.
+BandCost makeBand(Eigen::Index referenceFrames, Eigen::Index sampleFrames, int searchBand,
+                  const std::function<double(Eigen::Index, Eigen::Index)>& cost)
+{
+    BandCost band;
+    band.searchBand = searchBand;
+    band.sampleFrames = sampleFrames;
+    band.cost = Eigen::MatrixXd::Constant(referenceFrames, 2 * searchBand + 1, std::numeric_limits<double>::infinity());
+    for (Eigen::Index t = 0; t < referenceFrames; ++t)
+        for (Eigen::Index j = 0; j < band.cost.cols(); ++j) {
+            const Eigen::Index u = t - searchBand + j;
+            if (u >= 0 && u < sampleFrames) band.cost(t, j) = cost(t, u);
+        }
+    return band;
+}
+
+bool nonDecreasingInBand(const Eigen::VectorXi& path, int searchBand, Eigen::Index sampleFrames)
+{
+    for (Eigen::Index t = 0; t < path.size(); ++t) {
+        if (path[t] < 0 || path[t] >= sampleFrames || std::abs(path[t] - t) > searchBand) return false;
+        if (t > 0 && path[t] < path[t - 1]) return false;
+    }
+    return true;
+}
+
+} // namespace
+
+TEST_CASE("greedy reproduces the plateau-then-jump of thesis Table 3.3", "[path]")
+{
+    // Every frame's best sample frame is itself, except frame 96, whose best is 102 (a look-alike
+    // event), and frames 103..105, whose best is 106. The thesis's forward scan may not go back
+    // after 96 -> 102, so 96..102 all take 102, then 103 and 104 jump to 106 (Table 3.3).
+    auto target = [](Eigen::Index t) -> Eigen::Index { return t >= 103 && t <= 105 ? 106 : t; };
+    const BandCost band = makeBand(110, 110, 20, [&](Eigen::Index t, Eigen::Index u) {
+        if (t == 96) return u == 102 ? 0.0 : 1.0;
+        return double(std::abs(u - target(t)));
+    });
+    const Eigen::VectorXi greedy = greedyPath(band);
+    const std::vector<int> table33{102, 102, 102, 102, 102, 102, 102, 106, 106};
+    for (int i = 0; i < 9; ++i) CHECK(greedy[96 + i] == table33[std::size_t(i)]);
+    CHECK(greedy[95] == 95);
+    CHECK(nonDecreasingInBand(greedy, 20, 110));
+
+    // The optimal path does not get trapped: it pays 1 at frame 96 and follows the diagonal.
+    const Eigen::VectorXi optimal = optimalPath(band);
+    CHECK(optimal[97] == 97);
+    CHECK(optimal[101] == 101);
+    CHECK(pathCost(band, optimal) < pathCost(band, greedy));
+}
+
+TEST_CASE("the optimal path never costs more than the greedy one", "[path]")
+{
+    std::mt19937 random(42);
+    std::uniform_real_distribution<double> uniform(0.0, 1.0);
+    for (int trial = 0; trial < 200; ++trial) {
+        const Eigen::Index referenceFrames = 5 + Eigen::Index(uniform(random) * 60);
+        const Eigen::Index sampleFrames = std::max<Eigen::Index>(1, referenceFrames + Eigen::Index(uniform(random) * 20) - 8);
+        const int searchBand = 1 + int(uniform(random) * 12);
+        if (referenceFrames - 1 - searchBand > sampleFrames - 1) continue;
+        const BandCost band = makeBand(referenceFrames, sampleFrames, searchBand, [&](Eigen::Index, Eigen::Index) { return uniform(random); });
+        const Eigen::VectorXi greedy = greedyPath(band);
+        const Eigen::VectorXi optimal = optimalPath(band);
+        INFO("trial " << trial);
+        REQUIRE(nonDecreasingInBand(greedy, searchBand, sampleFrames));
+        REQUIRE(nonDecreasingInBand(optimal, searchBand, sampleFrames));
+        CHECK(pathCost(band, optimal) <= pathCost(band, greedy) + 1e-12);
+    }
+}
+
+TEST_CASE("the optimal path is the cheapest of all non-decreasing paths (exhaustive check)", "[path]")
+{
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> uniform(0.0, 1.0);
+    for (int trial = 0; trial < 30; ++trial) {
+        const Eigen::Index frames = 6;
+        const int searchBand = 2;
+        const BandCost band = makeBand(frames, frames, searchBand, [&](Eigen::Index, Eigen::Index) { return uniform(random); });
+        double best = std::numeric_limits<double>::infinity();
+        Eigen::VectorXi path(frames);
+        std::function<void(Eigen::Index)> search = [&](Eigen::Index t) {
+            if (t == frames) {
+                best = std::min(best, pathCost(band, path));
+                return;
+            }
+            for (Eigen::Index u = 0; u < frames; ++u) {
+                path[t] = int(u);
+                search(t + 1);
+            }
+        };
+        search(0);
+        CHECK(pathCost(band, optimalPath(band)) == Approx(best).epsilon(1e-12));
+    }
+}
+
+TEST_CASE("the smooth warp is monotone and passes through the centre of every run", "[path]")
+{
+    Eigen::VectorXi correspondence(10);
+    correspondence << 0, 2, 2, 2, 3, 6, 6, 7, 9, 9;
+    const Eigen::VectorXd warp = smoothWarp(correspondence);
+    for (Eigen::Index t = 1; t < warp.size(); ++t) CHECK(warp[t] >= warp[t - 1]);
+    CHECK(warp[2] == Approx(2.0)); // centre of the run 1..3
+    CHECK(warp[4] == Approx(3.0));
+    CHECK(warp[1] < 2.0);          // spread linearly towards the previous run
+    CHECK(warp[3] > 2.0);
+    CHECK(warp[5] == Approx(5.0)); // halfway between run centres 4 (3) and 5.5 (6)
+    CHECK(warp[0] == 0.0);
+    CHECK(warp[9] == Approx(9.0));
+}
+
+TEST_CASE("the streamed matcher equals the paths through the full window-cost band", "[path]")
+{
+    // Window costs written out from their definition (thesis eq. 3.21; window indices beyond the
+    // ends replicate the edge frame), then both paths; the streamed matcher (running window
+    // sums, skipped entries for greedy) must choose the same frames.
+    std::mt19937 random(3);
+    std::normal_distribution<double> normal;
+    for (int trial = 0; trial < 20; ++trial) {
+        const Eigen::Index referenceFrames = 40 + trial * 13;
+        const Eigen::Index sampleFrames = referenceFrames + (trial % 5) - 2;
+        const int tau = trial % 4;
+        const int searchBand = 3 + trial % 7;
+        FeatureMatrix reference(referenceFrames, 5), sample(sampleFrames, 5);
+        for (Eigen::Index i = 0; i < reference.size(); ++i) reference.data()[i] = normal(random);
+        for (Eigen::Index i = 0; i < sample.size(); ++i) sample.data()[i] = normal(random);
+        auto clampRow = [](Eigen::Index i, Eigen::Index n) { return std::clamp<Eigen::Index>(i, 0, n - 1); };
+        const BandCost band = makeBand(referenceFrames, sampleFrames, searchBand, [&](Eigen::Index t, Eigen::Index u) {
+            double sum = 0.0;
+            for (int s = -tau; s <= tau; ++s)
+                sum += (reference.row(clampRow(t + s, referenceFrames)) - sample.row(clampRow(u + s, sampleFrames))).squaredNorm();
+            return sum;
+        });
+        for (auto path : {PathMethod::Greedy, PathMethod::Optimal}) {
+            auto streamed = matchFeatures(reference, sample, {tau, searchBand, path});
+            REQUIRE(streamed.ok());
+            const Eigen::VectorXi expected = path == PathMethod::Greedy ? greedyPath(band) : optimalPath(band);
+            INFO("trial " << trial << (path == PathMethod::Greedy ? " greedy" : " optimal"));
+            CHECK(streamed->correspondence == expected);
+            CHECK(streamed->cost == Approx(pathCost(band, expected)).epsilon(1e-9));
+        }
+    }
+}

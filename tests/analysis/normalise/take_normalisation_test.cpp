@@ -1,0 +1,208 @@
+#include "analysis/normalise/average_take.h"
+#include "analysis/normalise/coupling.h"
+#include "analysis/normalise/take_normalisation.h"
+#include "analysis/normalise/variance_evaluation.h"
+
+#include "tests/analysis/normalise/synthetic_takes.h"
+
+#include <catch2/catch.hpp>
+
+using namespace bunraku::analysis;
+using bunraku::test::sineWarp;
+using bunraku::test::warpedTake;
+
+namespace {
+
+// A thesis-like cell: 5 takes of 106 frames, take 4 unwarped, take 1 late and with an extra
+// event (the outlier), the others warped differently; mild measurement noise everywhere.
+std::vector<Take> makeCell()
+{
+    std::vector<Take> takes;
+    takes.push_back(warpedTake([](double u) { return u - 6.0 + 4.0 * std::sin(u / 30.0); }, 106, 1, 0.3, 1, 11));
+    takes.push_back(warpedTake(sineWarp(7.0, 106, 1.0), 106, 2, 0.3, 0, 12));
+    takes.push_back(warpedTake(sineWarp(-6.0, 106, -1.0), 106, 3, 0.3, 0, 13));
+    takes.push_back(warpedTake([](double u) { return u; }, 106, 4, 0.3, 0, 14));
+    takes.push_back(warpedTake(sineWarp(5.0, 106, 2.0), 106, 5, 0.3, 0, 15));
+    return takes;
+}
+
+std::vector<const Take*> pointers(const std::vector<Take>& takes)
+{
+    std::vector<const Take*> out;
+    for (const auto& take : takes) out.push_back(&take);
+    return out;
+}
+
+Take puppetTake()
+{
+    return warpedTake([](double u) { return u; }, 106, 1);
+}
+
+} // namespace
+
+TEST_CASE("coupling presets group the puppet channels as thesis 3.6 and 3.9 describe", "[coupling]")
+{
+    const Take take = puppetTake();
+    CHECK(couplingFor(take, "independent")->sets.size() == 24);
+    CHECK(couplingFor(take, "all")->sets.size() == 1);
+    CHECK(couplingFor(take, "per-part")->sets.size() == 4);
+    CHECK(couplingFor(take, "per-coordinate")->sets.size() == 6);
+
+    const Coupling method1 = *couplingFor(take, "method1");
+    CHECK(method1.sets.size() == 6 + 12); // arm+hand per coordinate; head, shoulder alone
+    CHECK(method1.sets[0] == std::vector<Eigen::Index>{puppetChannel(2, Dof::X), puppetChannel(3, Dof::X)});
+    CHECK(method1.names[0] == "arm+hand.x");
+
+    const Coupling method2 = *couplingFor(take, "method2");
+    REQUIRE(method2.sets.size() == 12);
+    CHECK(method2.sets[0] == std::vector<Eigen::Index>{puppetChannel(0, Dof::X), puppetChannel(1, Dof::X)});
+    CHECK(method2.sets[1] == std::vector<Eigen::Index>{puppetChannel(2, Dof::X), puppetChannel(3, Dof::X)});
+    CHECK(method2.names[11] == "arm+hand.roll");
+
+    // Every preset covers every channel exactly once.
+    for (const auto& preset : couplingPresetNames()) {
+        std::vector<int> seen(24, 0);
+        const Coupling coupling = *couplingFor(take, preset);
+        for (const auto& set : coupling.sets)
+            for (auto c : set) ++seen[std::size_t(c)];
+        INFO(preset);
+        CHECK(std::all_of(seen.begin(), seen.end(), [](int n) { return n == 1; }));
+    }
+}
+
+TEST_CASE("explicit couplings are parsed and bad ones are clear errors", "[coupling]")
+{
+    const Take take = puppetTake();
+    const Coupling coupling = *couplingFor(take, "arm.x+hand.x;head.yaw+head.pitch+head.roll");
+    REQUIRE(coupling.sets.size() == 2 + 19);
+    CHECK(coupling.sets[1].size() == 3);
+    auto unknown = couplingFor(take, "arm.x+knee.x");
+    REQUIRE_FALSE(unknown.ok());
+    CHECK(unknown.error().code == ErrorCode::NotFound);
+    CHECK(unknown.error().message.find("knee.x") != std::string::npos);
+    CHECK(couplingFor(take, "arm.x+arm.x").error().message.find("twice") != std::string::npos);
+    CHECK(couplingFor(take, "method3").error().message.find("method2") != std::string::npos);
+
+    Take axis;
+    axis.channels = sixDofChannels("axis");
+    axis.values = Eigen::MatrixXd::Zero(10, 6);
+    CHECK(couplingFor(axis, "method2").error().message.find("head") != std::string::npos);
+    CHECK(couplingFor(axis, "all")->sets.size() == 1);
+}
+
+TEST_CASE("normalising a take gives coupled channels one correspondence", "[normalise]")
+{
+    const std::vector<Take> cell = makeCell();
+    NormaliseOptions options;
+    auto result = normaliseTake(cell[3], cell[1], options);
+    REQUIRE(result.ok());
+    CHECK(result->normalised.frameCount() == 106);
+    CHECK(result->normalised.channels == cell[3].channels);
+    CHECK(result->matches.size() == 12);
+    for (int q = 0; q < 6; ++q) {
+        CHECK(result->correspondence.col(puppetChannel(0, Dof(q))) == result->correspondence.col(puppetChannel(1, Dof(q))));
+        CHECK(result->correspondence.col(puppetChannel(2, Dof(q))) == result->correspondence.col(puppetChannel(3, Dof(q))));
+    }
+    // x_nor(t) = x_smp(t_smp(t)).
+    const Eigen::Index t = 50;
+    const int u = result->correspondence(t, 7);
+    CHECK(result->normalised.values(t, 7) == cell[1].values(u, 7));
+
+    Take missing = cell[1];
+    missing.channels[5].dof = "twist";
+    auto error = normaliseTake(cell[3], missing, options);
+    REQUIRE_FALSE(error.ok());
+    CHECK(error.error().message.find("head.roll") != std::string::npos);
+}
+
+TEST_CASE("normalisation lowers every take's variance but the outlier's, as in thesis 3.8", "[normalise][evaluation]")
+{
+    const std::vector<Take> cell = makeCell();
+    NormaliseOptions options;
+    options.match.path = PathMethod::Optimal;
+    auto normalised = normaliseTakes(cell[3], pointers(cell), options);
+    REQUIRE(normalised.ok());
+    std::vector<const Take*> normalisedTakes;
+    for (const auto& one : *normalised) normalisedTakes.push_back(&one.normalised);
+    auto table = varianceTable(cell[3], pointers(cell), normalisedTakes);
+    REQUIRE(table.ok());
+    CHECK(table->takeNames.size() == 5);
+    CHECK(table->before.cols() == 24);
+    CHECK(table->totalBefore[3] == 0.0); // the reference itself
+    CHECK(table->totalAfter[3] == 0.0);
+    for (int k : {1, 2, 4}) {
+        INFO("take " << k + 1 << ": before " << table->totalBefore[k] << " after " << table->totalAfter[k]);
+        CHECK(table->totalAfter[k] < 0.5 * table->totalBefore[k]);
+    }
+    // The outlier keeps its extra event: it stays the farthest from the reference.
+    CHECK(table->totalAfter[0] > table->totalAfter.segment(1, 4).maxCoeff());
+}
+
+TEST_CASE("the average take without the outlier is a better reference than one take", "[normalise][average]")
+{
+    const std::vector<Take> cell = makeCell();
+    AverageOptions options;
+    options.baseTake = 3;
+    options.excludedTakes = {0}; // "4ave"
+    options.normalise.match.path = PathMethod::Optimal;
+    auto average = averageTake(pointers(cell), options);
+    REQUIRE(average.ok());
+    CHECK(average->frameCount() == 106);
+    CHECK(average->labels.takeIndex == 0);
+    CHECK(average->labels.source.find("average") != std::string::npos);
+
+    // Thesis 3.7: the average take follows the mean timing of its members. Truth: for base
+    // frame t_b, t_bar = mean_k psi_k(t_b) (psi_k the true correspondence of take k), value
+    // template(t_b); resampled at integer t.
+    std::vector<bunraku::test::Warp> members{[](double u) { return u; }, sineWarp(7.0, 106, 1.0),
+                                             sineWarp(-6.0, 106, -1.0), sineWarp(5.0, 106, 2.0)};
+    std::vector<Eigen::VectorXd> psi;
+    for (const auto& phi : members) psi.push_back(bunraku::test::trueCorrespondence(phi, 106, 106));
+    Eigen::VectorXd meanTime = Eigen::VectorXd::Zero(106);
+    for (const auto& one : psi) meanTime += one / double(psi.size());
+    // Invert t_b -> t_bar at integer t by linear interpolation, then sample the template there.
+    Take truth = warpedTake([](double u) { return u; }, 106, 0);
+    for (Eigen::Index t = 0; t < 106; ++t) {
+        double base = 0;
+        if (t <= meanTime[0]) base = 0;
+        else if (t >= meanTime[105]) base = 105;
+        else {
+            Eigen::Index k = 0;
+            while (meanTime[k + 1] < double(t)) ++k;
+            base = double(k) + (double(t) - meanTime[k]) / (meanTime[k + 1] - meanTime[k]);
+        }
+        for (int c = 0; c < 24; ++c) truth.values(t, c) = bunraku::test::templateValue(c, base);
+    }
+    // Interior (the ends are clamped and see the CWT's zero padding): the average is close to
+    // the truth - much closer than the base take, which keeps its own timing.
+    const double averageError = squaredDifference(truth, *average).sum();
+    const double baseError = squaredDifference(truth, cell[3]).sum();
+    INFO("average " << averageError << " base " << baseError);
+    CHECK(averageError < 0.5 * baseError);
+
+    // 5ave (all takes) lets the outlier's extra event in: farther from the 4-take truth.
+    options.excludedTakes.clear();
+    auto all = averageTake(pointers(cell), options);
+    REQUIRE(all.ok());
+    CHECK(squaredDifference(truth, *all).sum() > averageError);
+
+    // Bad indices are clear errors.
+    options.baseTake = 7;
+    CHECK(averageTake(pointers(cell), options).error().message.find("base take") != std::string::npos);
+    options.baseTake = 3;
+    options.excludedTakes = {3};
+    CHECK_FALSE(averageTake(pointers(cell), options).ok());
+}
+
+TEST_CASE("the reference suggestion avoids the late outlier (thesis 3.6.1)", "[evaluation]")
+{
+    const std::vector<Take> cell = makeCell();
+    auto suggestion = suggestReference(pointers(cell));
+    REQUIRE(suggestion.ok());
+    CHECK(suggestion->outlier[0]);
+    CHECK_FALSE(suggestion->outlier[3]);
+    CHECK(suggestion->takeIndex != 0);
+    CHECK(suggestion->startFrame[0] > suggestion->startFrame[3]);
+    CHECK(suggestion->reason.find("outliers") != std::string::npos);
+    CHECK_FALSE(suggestReference({}).ok());
+}
