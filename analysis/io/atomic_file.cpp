@@ -8,16 +8,19 @@
 
 namespace bunraku::analysis::io {
 
-namespace {
-
-std::string uniqueSuffix()
+std::string temporarySiblingName(std::string_view leaf, std::string_view marker)
 {
     static std::atomic<unsigned> counter{0};
     const auto now = std::chrono::steady_clock::now().time_since_epoch().count();
-    return std::to_string(now) + "-" + std::to_string(counter.fetch_add(1));
+    // Built stepwise: GCC 12 warns falsely (-Wrestrict) on one concatenation expression.
+    std::string name = ".";
+    name += leaf;
+    name += marker;
+    name += std::to_string(now);
+    name += '-';
+    name += std::to_string(counter.fetch_add(1));
+    return name;
 }
-
-} // namespace
 
 Status writeFileAtomically(const std::filesystem::path& file, std::string_view content)
 {
@@ -28,11 +31,7 @@ Status writeFileAtomically(const std::filesystem::path& file, std::string_view c
         return makeError(ErrorCode::Io, file.string() + ": cannot write, folder " + folder.string() + " does not exist");
     if (fs::is_directory(file, ec))
         return makeError(ErrorCode::Io, file.string() + ": cannot write, a folder of that name exists");
-    std::string tempName = ".";
-    tempName += file.filename().string();
-    tempName += ".tmp-";
-    tempName += uniqueSuffix();
-    const fs::path temp = folder / tempName;
+    const fs::path temp = folder / temporarySiblingName(file.filename().string(), ".tmp-");
     {
         std::ofstream out(temp, std::ios::binary | std::ios::trunc);
         if (!out) return makeError(ErrorCode::Io, file.string() + ": cannot create a temporary file in " + folder.string());

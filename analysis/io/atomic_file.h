@@ -10,6 +10,9 @@
 
 namespace bunraku::analysis::io {
 
+/// "." + leaf + marker + a suffix unique in this process and time: the name of a hidden
+/// temporary sibling of `leaf` (a file or folder that is renamed over `leaf` when complete).
+std::string temporarySiblingName(std::string_view leaf, std::string_view marker);
 /// Writes `content` to `file` atomically (temp file in the same folder + rename).
 Status writeFileAtomically(const std::filesystem::path& file, std::string_view content);
 /// The whole file as text, or an Io error naming the file.

@@ -1,9 +1,9 @@
 #include "analysis/io/bvh.h"
 
 #include "analysis/io/atomic_file.h"
+#include "analysis/io/text_format.h"
 #include "analysis/io/text_scan.h"
 
-#include <charconv>
 #include <cmath>
 
 namespace bunraku::analysis::io {
@@ -36,13 +36,6 @@ int axisOf(BvhChannel c)
     case BvhChannel::Yposition: case BvhChannel::Yrotation: return 1;
     default: return 2;
     }
-}
-
-void appendNumber(std::string& out, double value)
-{
-    char buffer[64];
-    const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value);
-    out.append(buffer, ec == std::errc() ? end : buffer);
 }
 
 /// Line-based parser state for the HIERARCHY section.
@@ -352,7 +345,7 @@ std::string formatBvh(const BvhFile& file)
         out += indent + "  OFFSET";
         for (int a = 0; a < 3; ++a) {
             out += ' ';
-            appendNumber(out, joint.offset[a]);
+            appendShortestNumber(out, joint.offset[a]);
         }
         out += "\n";
         if (!joint.endSite) {
@@ -364,12 +357,12 @@ std::string formatBvh(const BvhFile& file)
     }
     closeUntil(-1);
     out += "MOTION\nFrames: " + std::to_string(file.motion.values.rows()) + "\nFrame Time: ";
-    appendNumber(out, file.motion.frameTime);
+    appendShortestNumber(out, file.motion.frameTime);
     out += "\n";
     for (Eigen::Index f = 0; f < file.motion.values.rows(); ++f) {
         for (Eigen::Index c = 0; c < file.motion.values.cols(); ++c) {
             if (c > 0) out += ' ';
-            appendNumber(out, file.motion.values(f, c));
+            appendShortestNumber(out, file.motion.values(f, c));
         }
         out += "\n";
     }

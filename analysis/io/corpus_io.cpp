@@ -1,13 +1,12 @@
 #include "analysis/io/corpus_io.h"
 
 #include "analysis/io/atomic_file.h"
+#include "analysis/io/text_format.h"
 #include "analysis/io/text_scan.h"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <atomic>
-#include <chrono>
 #include <cmath>
 #include <set>
 
@@ -18,33 +17,11 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
+/// A label usable in a file name; never empty.
 std::string sanitise(const std::string& text)
 {
-    std::string out;
-    for (char c : text) {
-        const bool keep = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '-';
-        out += keep ? c : '-';
-    }
-    return out.empty() ? std::string("take") : out;
-}
-
-/// "." + leaf + marker + unique suffix (built stepwise: GCC 12 warns falsely on the one-liner).
-std::string hiddenName(const std::string& leaf, const char* marker);
-
-std::string tempSuffix()
-{
-    static std::atomic<unsigned> counter{0};
-    return std::to_string(std::chrono::steady_clock::now().time_since_epoch().count()) + "-" +
-           std::to_string(counter.fetch_add(1));
-}
-
-std::string hiddenName(const std::string& leaf, const char* marker)
-{
-    std::string name = ".";
-    name += leaf;
-    name += marker;
-    name += tempSuffix();
-    return name;
+    const std::string safe = fileSafeLabel(text);
+    return safe.empty() ? std::string("take") : safe;
 }
 
 /// 1-based line of a byte offset in text.
@@ -201,8 +178,11 @@ Result<Corpus> readCorpus(const fs::path& folder)
         auto source = stringField(reader, entry, "source", where, false);
         if (!source) return source.error();
         const fs::path relative(*file);
-        if (relative.empty() || relative.is_absolute() || *file.value().begin() == '.')
+        const bool climbs = std::any_of(relative.begin(), relative.end(), [](const fs::path& part) { return part == ".."; });
+        if (relative.empty() || relative.is_absolute() || *file.value().begin() == '.' || climbs)
             return reader.error(where, "\"file\" must be a file name inside the corpus folder, found \"" + *file + "\"");
+        if (!fs::is_regular_file(folder / relative, ec))
+            return reader.error(where, "\"file\": no such take file \"" + *file + "\" in " + folder.string());
         if (*index != std::floor(*index) || *index < 0.0 || *index > 1e9)
             return reader.error(where, "\"take\" must be a whole number from 0 (unknown) upwards");
         options.labels = TakeLabels{*function, *emotion, int(*index), *source};
@@ -258,7 +238,7 @@ Status writeCorpus(const Corpus& corpus, const fs::path& folder)
     fs::create_directories(parent, ec);
     if (ec) return makeError(ErrorCode::Io, parent.string() + ": cannot create folder: " + ec.message());
 
-    const fs::path temp = parent / hiddenName(leaf, ".tmp-");
+    const fs::path temp = parent / temporarySiblingName(leaf, ".tmp-");
     fs::create_directory(temp, ec);
     if (ec) return makeError(ErrorCode::Io, destination.string() + ": cannot create a temporary folder beside it: " + ec.message());
     const auto fail = [&](Error error) -> Status {
@@ -281,7 +261,7 @@ Status writeCorpus(const Corpus& corpus, const fs::path& folder)
     if (auto written = writeFileAtomically(temp / "corpus.json", manifestOf(corpus, files).dump(2) + "\n"); !written)
         return fail(written.error());
 
-    const fs::path old = parent / hiddenName(leaf, ".old-");
+    const fs::path old = parent / temporarySiblingName(leaf, ".old-");
     const bool hadOld = fs::exists(destination, ec);
     if (hadOld) {
         fs::rename(destination, old, ec);

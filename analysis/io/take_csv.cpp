@@ -1,10 +1,10 @@
 #include "analysis/io/take_csv.h"
 
 #include "analysis/io/atomic_file.h"
+#include "analysis/io/text_format.h"
 #include "analysis/io/text_scan.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <set>
 
@@ -37,13 +37,6 @@ std::vector<std::string_view> fieldsOf(std::string_view line, char separator)
 }
 
 bool isTimeColumn(std::string_view name) { return name == "time_s" || name == "time" || name == "t"; }
-
-void appendNumber(std::string& out, double value)
-{
-    char buffer[64];
-    const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value);
-    out.append(buffer, ec == std::errc() ? end : buffer);
-}
 
 } // namespace
 
@@ -111,14 +104,17 @@ Result<Take> parseTakeCsv(const std::string& text, const std::string& sourceName
     if (options.rateHz && !(*options.rateHz > 0.0 && std::isfinite(*options.rateHz)))
         return makeError(ErrorCode::InvalidArgument, sourceName + ": the sample rate must be a positive number");
     if (hasTime && frames >= 2) {
+        for (std::size_t f = 1; f < frames; ++f)
+            if (!(times[f] > times[f - 1]))
+                return parseError(sourceName, rowLines[f], "time_s must increase from row to row: " + detail::shortText(times[f]) +
+                                                               " s follows " + detail::shortText(times[f - 1]) + " s");
         const double step = (times.back() - times.front()) / double(frames - 1);
-        if (!(step > 0.0)) return parseError(sourceName, rowLines[1], "time_s must increase from row to row");
         for (std::size_t f = 1; f < frames; ++f) {
             const double d = times[f] - times[f - 1];
             if (std::fabs(d - step) > options.timeTolerance * step)
                 return parseError(sourceName, rowLines[f],
-                                  "time_s is not uniform: step " + std::to_string(d) + " s, expected " +
-                                      std::to_string(step) + " s");
+                                  "time_s is not uniform: step " + detail::shortText(d) + " s, expected " +
+                                      detail::shortText(step) + " s");
         }
         if (!options.rateHz) {
             rate = 1.0 / step;
@@ -157,10 +153,10 @@ std::string formatTakeCsv(const Take& take)
     }
     out += "\n";
     for (Eigen::Index f = 0; f < take.frameCount(); ++f) {
-        appendNumber(out, take.timeOfFrame(f));
+        appendShortestNumber(out, take.timeOfFrame(f));
         for (Eigen::Index c = 0; c < take.channelCount(); ++c) {
             out += ',';
-            appendNumber(out, take.values(f, c));
+            appendShortestNumber(out, take.values(f, c));
         }
         out += '\n';
     }

@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <string>
 
@@ -92,10 +93,27 @@ std::optional<long> parseInteger(std::string_view token)
     return value;
 }
 
+std::string shortText(double value)
+{
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%g", value);
+    return buffer;
+}
+
 std::string quoted(std::string_view token)
 {
+    static constexpr char hex[] = "0123456789abcdef";
     std::string out = "'";
-    out += token.substr(0, 40);
+    for (const char c : token.substr(0, 40)) {
+        const auto byte = static_cast<unsigned char>(c);
+        if (byte >= 0x20 && byte < 0x7f) {
+            out += c;
+        } else {
+            out += "\\x";
+            out += hex[byte >> 4];
+            out += hex[byte & 0xf];
+        }
+    }
     if (token.size() > 40) out += "...";
     out += '\'';
     return out;

@@ -35,7 +35,10 @@ ParsedNumber parseNumber(std::string_view token);
 /// Parses the whole token as an int.
 std::optional<long> parseInteger(std::string_view token);
 
-/// "'token'" with the token shortened to 40 characters, for messages.
+/// A number for messages: 6 significant digits (%g).
+std::string shortText(double value);
+/// "'token'" with the token shortened to 40 characters, for messages; bytes outside printable
+/// ASCII are written as \xNN so binary junk cannot garble the one-line message.
 std::string quoted(std::string_view token);
 
 } // namespace bunraku::analysis::io::detail

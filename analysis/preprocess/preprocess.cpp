@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 
 namespace bunraku::analysis::preprocess {
@@ -37,6 +38,37 @@ int functionReference(const Corpus& corpus, const std::string& function, const P
         if (index >= 0) return index;
     }
     return -1;
+}
+
+/// Index of the heading reference of a function: among its takes with a yaw channel on the
+/// heading part, the one whose start heading is nearest (summed circular distance) to all the
+/// others', so that a reference take that is itself turned (e.g. by 180 deg) cannot turn the
+/// whole function; ties keep `fallback` (the function's position reference). -1 without such takes.
+int headingReference(const Corpus& corpus, const std::string& function, const std::string& headingPart, int fallback)
+{
+    std::vector<int> candidates;
+    std::vector<double> headings;
+    for (std::size_t i = 0; i < corpus.takes.size(); ++i) {
+        const Take& take = corpus.takes[i];
+        if (take.labels.function != function || take.frameCount() == 0) continue;
+        const auto yaw = take.channelIndex(headingPart, "yaw");
+        if (!yaw) continue;
+        candidates.push_back(int(i));
+        headings.push_back(take.values(0, *yaw));
+    }
+    int best = -1;
+    double bestSpread = std::numeric_limits<double>::infinity();
+    for (std::size_t a = 0; a < candidates.size(); ++a) {
+        double spread = 0.0;
+        for (double other : headings) spread += std::fabs(std::remainder(other - headings[a], 360.0));
+        const bool better = spread < bestSpread - 1e-9 ||
+                            (std::fabs(spread - bestSpread) <= 1e-9 && candidates[a] == fallback);
+        if (better) {
+            bestSpread = spread;
+            best = candidates[a];
+        }
+    }
+    return best;
 }
 
 Error cancelled() { return makeError(ErrorCode::Cancelled, "preprocessing cancelled"); }
@@ -176,7 +208,8 @@ double alignStartHeading(Take& take, const Take& reference, const std::string& h
     const auto own = take.channelIndex(headingPart, "yaw");
     const auto ref = reference.channelIndex(headingPart, "yaw");
     if (!own || !ref || take.frameCount() == 0 || reference.frameCount() == 0) return 0.0;
-    const double offset = reference.values(0, *ref) - take.values(0, *own);
+    // The physical turn, within (-180, 180]: the branch is matched afterwards by whole turns.
+    const double offset = std::remainder(reference.values(0, *ref) - take.values(0, *own), 360.0);
     for (Eigen::Index c = 0; c < take.channelCount(); ++c)
         if (take.channels[std::size_t(c)].dof == "yaw" && isAngleChannel(take.channels[std::size_t(c)]))
             take.values.col(c).array() += offset;
@@ -237,15 +270,20 @@ Result<PreprocessResult> preprocessCorpus(const Corpus& corpus, const Preprocess
 
     if (options.unwrap || options.alignHeading) {
         for (const auto& function : out.functions()) {
-            const int ref = functionReference(out, function, options);
+            const int positionRef = functionReference(out, function, options);
+            const int headingRef = headingReference(out, function, options.headingPart, positionRef);
+            const int ref = headingRef >= 0 ? headingRef : positionRef;
             if (ref < 0) continue;
             const Take reference = out.takes[std::size_t(ref)];
+            if (options.alignHeading && headingRef >= 0) reports[std::size_t(ref)].isHeadingReference = true;
             for (std::size_t i = 0; i < out.takes.size(); ++i) {
                 Take& take = out.takes[i];
                 if (take.labels.function != function || int(i) == ref) continue;
-                if (options.unwrap) reports[i].branchTurns = matchAngleBranches(take, reference);
+                // Heading first, then whole turns: every angle channel ends within 180 deg of the
+                // reference's, whichever branch the turn left it on.
                 if (options.alignHeading)
                     reports[i].headingOffsetDeg = alignStartHeading(take, reference, options.headingPart);
+                if (options.unwrap) reports[i].branchTurns = matchAngleBranches(take, reference);
             }
         }
     }

@@ -8,9 +8,11 @@
 /// (the thesis's 0..360 remapping kept all takes on one branch; per-take unwrapping does not),
 /// and (5) the whole-body heading is aligned: all yaw channels of a take are offset so the
 /// heading part's (default the shoulder's) start yaw equals the reference's; relative yaw
-/// (a head turned away) is kept.
-/// Steps run in the order unwrap, pad, align start, align position and heading; each is
-/// optional and reported per take.
+/// (a head turned away) is kept. For these two steps the reference is the function's take whose
+/// start heading is nearest to all the others' (a circular medoid; ties: the position
+/// reference), so a turned reference take cannot turn the whole function.
+/// Steps run in the order unwrap, pad, align start, heading and angle branches, align position;
+/// each is optional and reported per take.
 
 #include "analysis/core/corpus.h"
 #include "analysis/core/result.h"
@@ -60,7 +62,8 @@ struct TakeReport {
     bool isPositionReference = false;
     std::vector<Eigen::Vector3d> positionOffsets; ///< cm added per 6-DOF part (sixDofParts order)
     int branchTurns = 0;             ///< whole turns added to angle channels to meet the reference's branch
-    double headingOffsetDeg = 0.0;   ///< degrees added to every yaw channel
+    double headingOffsetDeg = 0.0;   ///< degrees added to every yaw channel, in (-180, 180]
+    bool isHeadingReference = false; ///< the function's heading (and angle branch) reference
 };
 
 struct PreprocessReport {
@@ -89,7 +92,8 @@ int unwrapAngles(Take& take);
 /// the same channel of `reference`; returns the number of turns added (absolute, summed).
 int matchAngleBranches(Take& take, const Take& reference);
 /// Adds to every yaw channel the difference of the heading part's start yaw, reference minus
-/// take; returns that offset in degrees (0 when the part has no yaw channel).
+/// take, taken within (-180, 180]; returns that offset in degrees (0 when the part has no yaw
+/// channel). Follow with matchAngleBranches to put every channel on the reference's branch.
 double alignStartHeading(Take& take, const Take& reference, const std::string& headingPart);
 /// Summed speed per frame (length frames): sum over 6-DOF parts of the position speed (cm/frame),
 /// or when the take has none, the sum of absolute differences of all channels. speed(0) = 0.

@@ -3,6 +3,8 @@
 #include "analysis/synth/demo_corpus.h"
 
 #include "analysis/core/puppet_layout.h"
+#include "analysis/io/atomic_file.h"
+#include "analysis/io/text_format.h"
 
 #include <nlohmann/json.hpp>
 
@@ -20,44 +22,13 @@ using nlohmann::json;
 constexpr const char* kFormatName = "bunraku-demo-truth";
 constexpr int kFormatVersion = 1;
 
-std::string formatNumber(double value)
-{
-    char buffer[64];
-    const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value); // shortest round trip
-    return ec == std::errc() ? std::string(buffer, end) : std::string("nan");
-}
-
-std::string safeName(std::string name)
-{
-    for (char& c : name)
-        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') c = '-';
-    return name;
-}
-
+/// Creates the file's folder, then writes it atomically (io::writeFileAtomically).
 Status writeAtomically(const fs::path& file, const std::string& content)
 {
     std::error_code ec;
     fs::create_directories(file.parent_path(), ec);
     if (ec) return makeError(ErrorCode::Io, file.parent_path().string() + ": cannot create folder: " + ec.message());
-    const fs::path temporary = file.string() + ".tmp";
-    {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        if (!out) return makeError(ErrorCode::Io, file.string() + ": cannot open for writing");
-        out << content;
-        out.flush();
-        if (!out) {
-            out.close();
-            fs::remove(temporary, ec);
-            return makeError(ErrorCode::Io, file.string() + ": write failed");
-        }
-    }
-    fs::rename(temporary, file, ec);
-    if (ec) {
-        std::error_code ignored;
-        fs::remove(temporary, ignored);
-        return makeError(ErrorCode::Io, file.string() + ": cannot rename into place: " + ec.message());
-    }
-    return okStatus();
+    return io::writeFileAtomically(file, content);
 }
 
 /// A CSV: header line `columns`, then one row per matrix row, first column the frame index.
@@ -73,7 +44,7 @@ std::string matrixCsv(const std::vector<std::string>& columns, const Eigen::Matr
         text += std::to_string(r);
         for (Eigen::Index c = 0; c < values.cols(); ++c) {
             text += ',';
-            text += formatNumber(values(r, c));
+            io::appendShortestNumber(text, values(r, c));
         }
         text += "\n";
     }
@@ -216,7 +187,7 @@ Status writeGroundTruth(const DemoGroundTruth& truth, const std::filesystem::pat
     std::vector<std::pair<fs::path, std::string>> files;
     manifest["functions"] = json::array();
     for (const auto& f : truth.functions) {
-        const std::string file = "functions/" + safeName(f.function) + "_y.csv";
+        const std::string file = "functions/" + io::fileSafeLabel(f.function) + "_y.csv";
         manifest["functions"].push_back({{"function", f.function},
                                          {"phrases", f.phraseNames},
                                          {"phrase_boundaries", f.phraseBoundaries},
@@ -226,7 +197,7 @@ Status writeGroundTruth(const DemoGroundTruth& truth, const std::filesystem::pat
     }
     manifest["cells"] = json::array();
     for (const auto& c : truth.cells) {
-        const std::string stem = "cells/" + safeName(c.function) + "_" + safeName(c.emotion);
+        const std::string stem = "cells/" + io::fileSafeLabel(c.function) + "_" + io::fileSafeLabel(c.emotion);
         manifest["cells"].push_back({{"function", c.function},
                                      {"emotion", c.emotion},
                                      {"phrase_boundaries", c.phraseBoundaries},
@@ -243,7 +214,7 @@ Status writeGroundTruth(const DemoGroundTruth& truth, const std::filesystem::pat
     }
     manifest["takes"] = json::array();
     for (const auto& t : truth.takes) {
-        const std::string file = "takes/" + safeName(t.labels.function) + "_" + safeName(t.labels.emotion) + "_" +
+        const std::string file = "takes/" + io::fileSafeLabel(t.labels.function) + "_" + io::fileSafeLabel(t.labels.emotion) + "_" +
                                  std::to_string(t.labels.takeIndex) + "_warp.csv";
         manifest["takes"].push_back({{"function", t.labels.function},
                                      {"emotion", t.labels.emotion},

@@ -7,15 +7,16 @@
 #include "analysis/decompose/km2o_experiment.h"
 #include "analysis/decompose/least_squares.h"
 #include "analysis/decompose/spectrum.h"
+#include "analysis/io/atomic_file.h"
 #include "analysis/io/corpus_io.h"
 #include "analysis/io/take_csv.h"
+#include "analysis/io/text_format.h"
 #include "analysis/preprocess/preprocess.h"
 #include "analysis/synth/demo_corpus.h"
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -27,15 +28,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using namespace bunraku::analysis;
-
-/// File-name-safe label: characters outside [A-Za-z0-9_-] become '-'.
-std::string safe(const std::string& label)
-{
-    std::string out = label;
-    for (char& c : out)
-        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-') c = '-';
-    return out;
-}
 
 struct CorpusInput {
     std::string path;
@@ -52,11 +44,25 @@ Corpus loadCorpus(const CorpusInput& input)
     for (auto& take : corpus.takes) {
         if (take.frameCount() == longest) continue;
         if (!input.pad)
-            throw CliError("take " + take.displayName() + " has " + std::to_string(take.frameCount()) + " frames, the longest " +
+            throw CliError(input.path + ": take " + take.displayName() + " has " + std::to_string(take.frameCount()) + " frames, the longest " +
                            std::to_string(longest) + ": pad with --pad (thesis 2.2) or time-normalise the corpus first");
         preprocess::padToLength(take, longest);
     }
     return corpus;
+}
+
+/// Runs `work`; an error that does not name the corpus folder gets it in front, so every
+/// message says which input it is about.
+template <class Work>
+auto aboutCorpus(const std::string& path, Work&& work)
+{
+    try {
+        return work();
+    } catch (const CliError& error) {
+        const std::string message = error.what();
+        if (message.find(path) != std::string::npos) throw;
+        throw CliError(path + ": " + message);
+    }
 }
 
 enum class Method { LeastSquares, Km2o };
@@ -110,12 +116,8 @@ Take asTake(const Decomposition& d, const Eigen::MatrixXd& values, TakeLabels la
     return take;
 }
 
-void writeText(const fs::path& file, const std::string& text)
-{
-    std::ofstream out(file);
-    out << text;
-    if (!out) throw CliError("cannot write " + file.string());
-}
+/// Atomic (temporary file + rename): a failure leaves any previous file untouched.
+void writeText(const fs::path& file, const std::string& text) { unwrap(io::writeFileAtomically(file, text)); }
 
 std::string spectraCsv(const Decomposition& d, bool useWelch)
 {
@@ -221,6 +223,7 @@ struct DecomposeArgs {
 
 void runDecompose(const DecomposeArgs& args)
 {
+    if (args.armaTableOrder.size() != 2) throw CliError("--arma-table takes two orders: p q");
     const Corpus corpus = loadCorpus(args.corpus);
     DecomposeSettings settings;
     settings.method = args.method == "km2o" ? Method::Km2o : Method::LeastSquares;
@@ -228,42 +231,40 @@ void runDecompose(const DecomposeArgs& args)
     nlohmann::json summary;
     summary["corpus"] = args.corpus.path;
     summary["method"] = args.method;
-    const Outcome outcome = decompose(corpus, settings);
+    const Outcome outcome = aboutCorpus(args.corpus.path, [&] { return decompose(corpus, settings); });
     const Decomposition& d = outcome.components;
 
+    // Every output is computed before anything is written: bad input writes nothing.
     const fs::path out = args.output;
-    std::error_code ec;
-    fs::create_directories(out, ec);
-    if (ec) throw CliError("cannot create " + out.string() + ": " + ec.message());
-    std::vector<std::string> files;
-    auto write = [&](const Take& take, const std::string& name) {
-        unwrap(io::writeTakeCsv(take, out / name));
-        files.push_back(name);
+    std::vector<std::pair<std::string, std::string>> outputs; // file name, content
+    auto addTake = [&](const Take& take, const std::string& name) {
+        if (auto valid = validateTake(take); !valid) throw CliError(name + ": " + valid.error().message);
+        outputs.emplace_back(name, io::formatTakeCsv(take));
     };
-    for (const auto& f : d.functions) write(asTake(d, f.values, {f.function, "", 0, "y"}), "y_" + safe(f.function) + ".csv");
-    for (const auto& z : d.emotions)
-        write(asTake(d, z.values, {z.function, z.emotion, 0, "z"}), "z_" + safe(z.function) + "_" + safe(z.emotion) + ".csv");
-    for (const auto& eta : d.fluctuations)
-        write(asTake(d, eta.values, eta.labels), "eta_" + safe(eta.labels.function) + "_" + safe(eta.labels.emotion) + "_" +
-                                                     std::to_string(eta.labels.takeIndex) + ".csv");
-    writeText(out / "spectra_periodogram.csv", spectraCsv(d, false));
-    writeText(out / "spectra_welch.csv", spectraCsv(d, true));
-    const ArmaOrderSearch search = args.armaSearch == "all" ? ArmaOrderSearch::AllPairs : ArmaOrderSearch::EqualOrders;
-    writeText(out / "arma_takes.csv", armaTakesCsv(d, search, args.armaMaxOrder));
-    if (args.armaTableOrder.size() != 2) throw CliError("--arma-table takes two orders: p q");
-    writeText(out / "arma_table.csv", armaTableCsv(d, args.armaTableOrder[0], args.armaTableOrder[1]));
-    for (const char* name : {"spectra_periodogram.csv", "spectra_welch.csv", "arma_takes.csv", "arma_table.csv"})
-        files.emplace_back(name);
+    aboutCorpus(args.corpus.path, [&] {
+        for (const auto& f : d.functions)
+            addTake(asTake(d, f.values, {f.function, "", 0, "y"}), "y_" + io::fileSafeLabel(f.function) + ".csv");
+        for (const auto& z : d.emotions)
+            addTake(asTake(d, z.values, {z.function, z.emotion, 0, "z"}),
+                    "z_" + io::fileSafeLabel(z.function) + "_" + io::fileSafeLabel(z.emotion) + ".csv");
+        for (const auto& eta : d.fluctuations)
+            addTake(asTake(d, eta.values, eta.labels), "eta_" + io::fileSafeLabel(eta.labels.function) + "_" +
+                                                           io::fileSafeLabel(eta.labels.emotion) + "_" +
+                                                           std::to_string(eta.labels.takeIndex) + ".csv");
+        outputs.emplace_back("spectra_periodogram.csv", spectraCsv(d, false));
+        outputs.emplace_back("spectra_welch.csv", spectraCsv(d, true));
+        const ArmaOrderSearch search = args.armaSearch == "all" ? ArmaOrderSearch::AllPairs : ArmaOrderSearch::EqualOrders;
+        outputs.emplace_back("arma_takes.csv", armaTakesCsv(d, search, args.armaMaxOrder));
+        outputs.emplace_back("arma_table.csv", armaTableCsv(d, args.armaTableOrder[0], args.armaTableOrder[1]));
+    });
     if (outcome.km2o) {
         const Km2oDecomposition& km2o = *outcome.km2o;
-        writeText(out / "km2o_errors.csv", km2oErrorCsv(km2o));
+        outputs.emplace_back("km2o_errors.csv", km2oErrorCsv(km2o));
         std::ostringstream byM;
         byM << "M,mean_P_percent\n";
         for (std::size_t i = 0; i < km2o.candidateLengths.size(); ++i)
             byM << km2o.candidateLengths[i] << ',' << km2o.meanErrorPercent[i] << '\n';
-        writeText(out / "km2o_by_M.csv", byM.str());
-        files.emplace_back("km2o_errors.csv");
-        files.emplace_back("km2o_by_M.csv");
+        outputs.emplace_back("km2o_by_M.csv", byM.str());
         summary["M"] = km2o.correlationLength;
         summary["candidate_M"] = km2o.candidateLengths;
         summary["mean_P_percent_by_M"] = km2o.meanErrorPercent;
@@ -278,6 +279,8 @@ void runDecompose(const DecomposeArgs& args)
         summary["truth"] = truthErrors(d, truth);
         summary["truth_folder"] = truthFolder.string();
     }
+    std::vector<std::string> files;
+    for (const auto& [name, content] : outputs) files.push_back(name);
     summary["functions"] = nlohmann::json::array();
     for (const auto& f : d.functions) summary["functions"].push_back(f.function);
     summary["cells"] = nlohmann::json::array();
@@ -286,7 +289,12 @@ void runDecompose(const DecomposeArgs& args)
     summary["channels"] = d.channels.size();
     summary["files"] = files;
     summary["output"] = out.string();
-    writeText(out / "summary.json", summary.dump(2) + "\n");
+    outputs.emplace_back("summary.json", summary.dump(2) + "\n");
+
+    std::error_code ec;
+    fs::create_directories(out, ec);
+    if (ec) throw CliError("cannot create " + out.string() + ": " + ec.message());
+    for (const auto& [name, content] : outputs) writeText(out / name, content);
     if (args.json) {
         printJson(summary);
     } else {
@@ -314,9 +322,10 @@ void runEmotion(const EmotionArgs& args)
     DecomposeSettings settings;
     settings.method = args.method == "km2o" ? Method::Km2o : Method::LeastSquares;
     settings.correlationLength = args.correlationLength;
-    const Outcome outcome = decompose(corpus, settings);
+    const Outcome outcome = aboutCorpus(args.corpus.path, [&] { return decompose(corpus, settings); });
     const Decomposition& d = outcome.components;
-    const Take take = unwrap(weightEmotion(d, args.function, args.emotion, args.weight));
+    const Take take =
+        aboutCorpus(args.corpus.path, [&] { return unwrap(weightEmotion(d, args.function, args.emotion, args.weight)); });
     unwrap(io::writeTakeCsv(take, args.output));
     std::cout << "wrote " << args.output << ": " << args.function << "/" << args.emotion << " with emotion weight a = " << args.weight
               << " (" << take.frameCount() << " frames)\n";
@@ -401,8 +410,9 @@ void addDecompositionCommands(CommandSet& commands)
         ->check(CLI::IsMember({"equal", "all"}));
     dec->add_option("--arma-max-order", decomposeArgs->armaMaxOrder, "Largest ARMA order for FPE selection")
         ->check(CLI::Range(0, 4));
-    dec->add_option("--arma-table", decomposeArgs->armaTableOrder, "ARMA(p,q) averaged per cell (Table 4.1)")
-        ->expected(2);
+    dec->add_option("--arma-table", decomposeArgs->armaTableOrder, "ARMA(p,q) averaged per cell (Table 4.1), each 0..4")
+        ->expected(2)
+        ->check(CLI::Range(0, 4));
     dec->add_flag("--pad", decomposeArgs->corpus.pad, "Pad takes to the longest by repeating the last frame");
     dec->add_flag("--json", decomposeArgs->json, "Print a JSON summary");
     dec->callback([decomposeArgs] { runDecompose(*decomposeArgs); });

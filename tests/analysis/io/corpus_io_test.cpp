@@ -144,7 +144,7 @@ TEST_CASE("corpus reader errors name the file and what was expected")
         bunraku::test::writeText(manifestPath, changed.dump());
         auto corpus = readCorpus(dir / "c");
         REQUIRE_FALSE(corpus.ok());
-        CHECK_THAT(corpus.error().message, Contains("missing.csv"));
+        CHECK_THAT(corpus.error().message, Contains("corpus.json: takes[2]") && Contains("missing.csv"));
     }
     SECTION("a frame count that disagrees with the CSV")
     {
@@ -170,6 +170,18 @@ TEST_CASE("corpus reader errors name the file and what was expected")
         auto corpus = readCorpus(dir / "c");
         REQUIRE_FALSE(corpus.ok());
         CHECK_THAT(corpus.error().message, Contains("takes[0]"));
+    }
+    SECTION("a take file path that climbs out through a subfolder is refused")
+    {
+        std::filesystem::create_directories(dir / "c" / "sub");
+        std::filesystem::copy_file(dir / "c" / "greeting_none_1.csv", dir / "escape.csv",
+                                   std::filesystem::copy_options::overwrite_existing);
+        auto changed = manifest;
+        changed["takes"][0]["file"] = "sub/../../escape.csv";
+        bunraku::test::writeText(manifestPath, changed.dump());
+        auto corpus = readCorpus(dir / "c");
+        REQUIRE_FALSE(corpus.ok());
+        CHECK_THAT(corpus.error().message, Contains("corpus.json: takes[0]") && Contains("inside the corpus folder"));
     }
     SECTION("a missing folder")
     {

@@ -94,6 +94,19 @@ TEST_CASE("csv errors name the file, line and column")
         REQUIRE_FALSE(take.ok());
         CHECK_THAT(take.error().message, Contains("time.csv:4") && Contains("not uniform"));
     }
+    SECTION("a time column that goes back names the line where it does")
+    {
+        auto take = parseTakeCsv("time_s,head.x\n0,1\n0.2,1\n0.1,1\n", "back.csv");
+        REQUIRE_FALSE(take.ok());
+        CHECK_THAT(take.error().message, Contains("back.csv:4") && Contains("increase") && Contains("0.1 s follows 0.2 s"));
+    }
+    SECTION("binary junk in a message is escaped, never printed raw")
+    {
+        auto take = parseTakeCsv("time_s,\x1b[2J\xffq\n0,1\n", "junk.csv");
+        REQUIRE_FALSE(take.ok());
+        CHECK_THAT(take.error().message, Contains("junk.csv:1") && Contains("\\x1b[2J\\xffq"));
+        for (const char c : take.error().message) CHECK((static_cast<unsigned char>(c) >= 0x20 && static_cast<unsigned char>(c) < 0x7f));
+    }
     SECTION("no time column and no rate")
     {
         auto take = parseTakeCsv("head.x\n1\n", "norate.csv");

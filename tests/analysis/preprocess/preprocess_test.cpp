@@ -218,3 +218,32 @@ TEST_CASE("angle channels are brought onto the reference's branch and headings a
     CHECK(kept->report.takes[1].headingOffsetDeg == 0.0);
     CHECK(kept->corpus.takes[1].values(0, 9) == Approx(corpus.takes[1].values(0, 9)));
 }
+
+TEST_CASE("a reference take that is itself turned round does not turn the other takes")
+{
+    Corpus corpus;
+    for (const std::string emotion : {"none", "friendly"})
+        for (int k = 1; k <= 3; ++k) corpus.takes.push_back(movingTake(40, 5.0, "greeting", emotion, k));
+    // The position reference (none, take 1) faces the other way: every yaw channel + 179 deg.
+    for (int p = 0; p < kPuppetPartCount; ++p) corpus.takes[0].values.col(p * 6 + 3).array() += 179.0;
+    // Another take turned by a few degrees, on the other branch (-360).
+    for (int p = 0; p < kPuppetPartCount; ++p) corpus.takes[4].values.col(p * 6 + 3).array() += 3.0 - 360.0;
+
+    PreprocessOptions options;
+    options.alignStart = false;
+    auto result = preprocessCorpus(corpus, options);
+    REQUIRE(result.ok());
+    const auto& report = result->report.takes;
+    CHECK(report[0].isPositionReference);
+    CHECK_FALSE(report[0].isHeadingReference);
+    CHECK(report[0].headingOffsetDeg == Approx(-179.0));
+    CHECK(report[4].headingOffsetDeg == Approx(-3.0));
+    for (std::size_t i = 0; i < corpus.takes.size(); ++i) {
+        INFO("take " << i);
+        if (i != 0 && i != 4) CHECK(report[i].headingOffsetDeg == Approx(0.0).margin(1e-12));
+        // Every take now has the untouched takes' yaw, on their branch.
+        for (int p = 0; p < kPuppetPartCount; ++p)
+            CHECK((result->corpus.takes[i].values.col(p * 6 + 3) - corpus.takes[1].values.col(p * 6 + 3)).cwiseAbs().maxCoeff() <
+                  1e-9);
+    }
+}

@@ -1,0 +1,175 @@
+// Malformed inputs through the real executable: every one must give exactly one error line that
+// names the file (and the line where there is one), a non-zero exit, and never a crash or hang.
+#include "tests/cli/cli_files.h"
+#include "tests/cli/cli_runner.h"
+#include "tests/support/test_paths.h"
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+using bunraku::test::isOneLineError;
+using bunraku::test::runBunraku;
+using bunraku::test::writeText;
+
+namespace {
+
+const std::string kBvh = "HIERARCHY\n"
+                         "ROOT Hips\n{\n  OFFSET 0 0 0\n  CHANNELS 6 Xposition Yposition Zposition Zrotation Xrotation Yrotation\n"
+                         "  JOINT Chest\n  {\n    OFFSET 0 10 0\n    CHANNELS 3 Zrotation Xrotation Yrotation\n"
+                         "    End Site\n    {\n      OFFSET 0 5 0\n    }\n  }\n}\n"
+                         "MOTION\nFrames: 2\nFrame Time: 0.2\n"
+                         "0 0 0 0 0 0 0 0 0\n"
+                         "1 2 3 10 20 30 5 6 7\n";
+
+std::string replaced(std::string text, const std::string& from, const std::string& to)
+{
+    const auto at = text.find(from);
+    REQUIRE(at != std::string::npos);
+    return text.replace(at, from.size(), to);
+}
+
+struct BadInput {
+    std::string name;     ///< file name in the scratch folder
+    std::string content;
+    std::string location; ///< must appear in the message, e.g. "name.bvh:20"
+};
+
+} // namespace
+
+TEST_CASE("bunraku info and convert reject malformed take files with one line naming file and line", "[cli]")
+{
+    const auto dir = bunraku::test::scratchDir("cli-malformed");
+    std::string junk;
+    for (int i = 0; i < 3000; ++i) junk += char((i * 7919 + 13) % 256);
+    const std::vector<BadInput> inputs = {
+        {"truncated.bvh", kBvh.substr(0, 200), "truncated.bvh:"},
+        {"wrong-count.bvh", replaced(kBvh, "1 2 3 10 20 30 5 6 7", "1 2 3 10 20 30 5 6"), "wrong-count.bvh:20"},
+        {"huge-frames.bvh", replaced(kBvh, "Frames: 2", "Frames: 2000000000"), "huge-frames.bvh:17"},
+        {"overflow-frames.bvh", replaced(kBvh, "Frames: 2", "Frames: 99999999999999999999999"), "overflow-frames.bvh:17"},
+        {"nan.bvh", replaced(kBvh, "1 2 3 10", "1 2 3 nan"), "nan.bvh:20"},
+        {"seven-channels.bvh", replaced(kBvh, "CHANNELS 3", "CHANNELS 7"), "seven-channels.bvh:9"},
+        {"empty.bvh", "", "empty.bvh"},
+        {"junk.bvh", junk, "junk.bvh:1"},
+        {"backwards.csv", "time_s,head.x,head.y\n0,1,2\n0.2,1,2\n0.1,1,2\n", "backwards.csv:4"},
+        {"nan.csv", "time_s,head.x,head.y\n0,1,2\n0.2,NaN,2\n", "nan.csv:3"},
+        {"short-row.csv", "time_s,head.x,head.y\n0,1,2\n0.2,1\n", "short-row.csv:3"},
+        {"empty.csv", "", "empty.csv"},
+        {"junk.csv", junk, "junk.csv:"},
+        {"nan.txt", "1 1 2 3 4 5 nan\n", "nan.txt:1"},
+    };
+    for (const auto& input : inputs) {
+        const auto file = writeText(dir / input.name, input.content);
+        for (const std::vector<std::string>& command :
+             {std::vector<std::string>{"info", file.string(), "--json"},
+              std::vector<std::string>{"convert", file.string(), "-o", (dir / "out.csv").string()}}) {
+            const auto run = runBunraku(command);
+            INFO(command.front() << " " << input.name << ": " << run.err);
+            CHECK(isOneLineError(run.exitCode, run.err));
+            CHECK(run.err.find(input.location) != std::string::npos);
+        }
+    }
+    CHECK_FALSE(std::filesystem::exists(dir / "out.csv")); // nothing written on failure
+}
+
+TEST_CASE("corpus commands reject a manifest pointing to missing or inconsistent take files", "[cli]")
+{
+    const auto dir = bunraku::test::scratchDir("cli-malformed-corpus");
+    const auto corpus = dir / "corpus";
+    REQUIRE(runBunraku({"demo", "-o", corpus.string()}).exitCode == 0);
+    const auto manifestFile = corpus / "corpus.json";
+    const auto manifest = nlohmann::json::parse(bunraku::test::readTextFile(manifestFile));
+    const std::string firstFile = manifest["takes"][0]["file"];
+
+    SECTION("a missing take file")
+    {
+        auto changed = manifest;
+        changed["takes"][3]["file"] = "no-such-take.csv";
+        writeText(manifestFile, changed.dump(1));
+    }
+    SECTION("a take with fewer frames than the manifest says")
+    {
+        auto text = bunraku::test::readTextFile(corpus / firstFile);
+        text.erase(text.rfind('\n', text.size() - 2) + 1); // drop the last row
+        writeText(corpus / firstFile, text);
+    }
+    SECTION("a take whose header lists other channels")
+    {
+        auto text = bunraku::test::readTextFile(corpus / firstFile);
+        writeText(corpus / firstFile, replaced(text, "head.x", "head.q"));
+    }
+    SECTION("a NaN inside a take file")
+    {
+        auto text = bunraku::test::readTextFile(corpus / firstFile);
+        const auto secondRow = text.find('\n', text.find('\n') + 1) + 1;
+        text.replace(text.find(',', secondRow) + 1, 0, "nan");
+        writeText(corpus / firstFile, text);
+    }
+    SECTION("invalid JSON")
+    {
+        writeText(manifestFile, "{\n  \"format\": \"bunraku-corpus\",\n  oops\n}\n");
+    }
+    const auto out = dir / "out";
+    for (const std::vector<std::string>& command :
+         {std::vector<std::string>{"info", corpus.string()},
+          std::vector<std::string>{"preprocess", corpus.string(), "-o", out.string()},
+          std::vector<std::string>{"decompose", corpus.string(), "--pad", "--method", "ls", "-o", out.string()},
+          std::vector<std::string>{"emotion", corpus.string(), "--pad", "--function", "greeting", "--emotion", "friendly", "--weight",
+                                   "1", "-o", (dir / "e.csv").string()}}) {
+        const auto run = runBunraku(command);
+        INFO(command.front() << ": " << run.err);
+        CHECK(isOneLineError(run.exitCode, run.err));
+        CHECK(run.err.find(corpus.string()) != std::string::npos);
+    }
+    CHECK_FALSE(std::filesystem::exists(out));
+    CHECK_FALSE(std::filesystem::exists(dir / "e.csv"));
+}
+
+TEST_CASE("decompose and emotion reject bad options with one line and write nothing", "[cli]")
+{
+    const auto dir = bunraku::test::scratchDir("cli-bad-options");
+    const auto corpus = dir / "corpus";
+    REQUIRE(runBunraku({"demo", "-o", corpus.string()}).exitCode == 0);
+    const auto out = dir / "out";
+    const auto badOrder = runBunraku({"decompose", corpus.string(), "--pad", "--method", "ls", "--arma-table", "-1", "2", "-o",
+                                      out.string()});
+    CHECK(isOneLineError(badOrder.exitCode, badOrder.err));
+    CHECK(badOrder.err.find("--arma-table") != std::string::npos);
+    // The remaining errors all name the corpus folder they are about.
+    const std::vector<std::vector<std::string>> commands = {
+        {"decompose", corpus.string(), "--method", "ls", "-o", out.string()}, // unequal lengths without --pad
+        {"decompose", corpus.string(), "--pad", "--method", "km2o", "--M", "-3", "-o", out.string()},
+        {"decompose", corpus.string(), "--pad", "--method", "km2o", "--M", "1000", "-o", out.string()},
+        {"emotion", corpus.string(), "--pad", "--function", "greeting", "--emotion", "friendly", "--weight", "4", "-o", out.string() + ".csv"},
+        {"emotion", corpus.string(), "--pad", "--function", "greeting", "--emotion", "furious", "--weight", "1", "-o", out.string() + ".csv"},
+    };
+    for (const auto& command : commands) {
+        const auto run = runBunraku(command);
+        INFO(run.err);
+        CHECK(isOneLineError(run.exitCode, run.err));
+        CHECK(run.err.find(corpus.string()) != std::string::npos);
+    }
+    CHECK_FALSE(std::filesystem::exists(out));
+    CHECK_FALSE(std::filesystem::exists(out.string() + ".csv"));
+}
+
+TEST_CASE("decompose of a corpus too short for spectra fails before writing anything", "[cli]")
+{
+    const auto dir = bunraku::test::scratchDir("cli-one-frame");
+    const auto corpus = dir / "corpus";
+    REQUIRE(runBunraku({"demo", "-o", corpus.string()}).exitCode == 0);
+    std::filesystem::remove_all(corpus / "truth");
+    auto manifest = nlohmann::json::parse(bunraku::test::readTextFile(corpus / "corpus.json"));
+    for (auto& take : manifest["takes"]) { // keep the header and the first frame of every take
+        const auto file = corpus / take["file"].get<std::string>();
+        const auto text = bunraku::test::readTextFile(file);
+        writeText(file, text.substr(0, text.find('\n', text.find('\n') + 1) + 1));
+        take["frames"] = 1;
+    }
+    writeText(corpus / "corpus.json", manifest.dump(1));
+    const auto out = dir / "out";
+    const auto run = runBunraku({"decompose", corpus.string(), "--method", "ls", "-o", out.string()});
+    INFO(run.err);
+    CHECK(isOneLineError(run.exitCode, run.err));
+    CHECK(run.err.find(corpus.string()) != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(out));
+}

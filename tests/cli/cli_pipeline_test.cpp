@@ -1,0 +1,166 @@
+// The command line end to end: BVH conversion round trips, demo -> preprocess -> decompose ->
+// emotion, and the atomic replacement of output files.
+#include "tests/cli/cli_files.h"
+#include "tests/cli/cli_runner.h"
+#include "tests/support/test_paths.h"
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+
+using bunraku::test::readNumericCsv;
+using bunraku::test::runBunraku;
+using nlohmann::json;
+
+namespace {
+
+/// Largest difference of two numeric CSVs of equal shape; angle columns (`.yaw`, `.pitch`,
+/// `.roll`) compared modulo 360 degrees.
+double largestDifference(const bunraku::test::NumericCsv& a, const bunraku::test::NumericCsv& b)
+{
+    REQUIRE(a.header == b.header);
+    REQUIRE(a.rows.size() == b.rows.size());
+    double largest = 0.0;
+    for (std::size_t r = 0; r < a.rows.size(); ++r) {
+        REQUIRE(a.rows[r].size() == b.rows[r].size());
+        for (std::size_t c = 0; c < a.rows[r].size(); ++c) {
+            const std::string& name = a.header[c];
+            const bool angle = name.size() > 4 && (name.ends_with(".yaw") || name.ends_with(".pitch") || name.ends_with(".roll"));
+            double d = a.rows[r][c] - b.rows[r][c];
+            if (angle) d = std::remainder(d, 360.0);
+            largest = std::max(largest, std::fabs(d));
+        }
+    }
+    return largest;
+}
+
+json runJson(const std::vector<std::string>& arguments)
+{
+    const auto run = runBunraku(arguments);
+    INFO(arguments.front() << ": " << run.err);
+    REQUIRE(run.exitCode == 0);
+    return json::parse(run.out);
+}
+
+} // namespace
+
+TEST_CASE("bunraku convert takes a bandai BVH to CSV and back to BVH without changing the take", "[cli]")
+{
+    const auto source = bunraku::test::bandaiDir() / "bye_normal_001.bvh";
+    if (!std::filesystem::exists(source)) {
+        WARN("skipped: " << source << " is absent (shared Bandai data not installed)");
+        return;
+    }
+    const auto dir = bunraku::test::scratchDir("cli-convert");
+    const auto info = runJson({"info", source.string(), "--json"});
+    CHECK(info.at("format") == "bvh");
+    CHECK(info.at("joint_count").get<int>() > 4);
+
+    const auto csv = dir / "bye.csv";
+    const auto converted = runJson({"convert", source.string(), "-o", csv.string(), "--json"});
+    CHECK(converted.at("output_format") == "csv");
+    CHECK(converted.at("channels") == 24);
+    CHECK(converted.at("frames") == info.at("frames"));
+
+    const auto csvInfo = runJson({"info", csv.string(), "--json"});
+    CHECK(csvInfo.at("frames") == info.at("frames"));
+    CHECK(csvInfo.at("channels") == 24);
+    CHECK(csvInfo.at("rate_hz").get<double>() == Approx(info.at("rate_hz").get<double>()).epsilon(1e-6));
+
+    const auto bvh = dir / "bye-puppet.bvh";
+    runJson({"convert", csv.string(), "-o", bvh.string(), "--json"});
+    const auto back = dir / "bye-back.csv";
+    runJson({"convert", bvh.string(), "-o", back.string(), "--json"});
+    // 1e-6 cm / 1e-6 deg (issue 2), relative to the shortest-round-trip numbers written.
+    CHECK(largestDifference(readNumericCsv(csv), readNumericCsv(back)) < 1e-6);
+}
+
+TEST_CASE("demo, preprocess and least-squares decompose run end to end against the ground truth", "[cli]")
+{
+    const auto dir = bunraku::test::scratchDir("cli-pipeline");
+    const auto demo = dir / "demo", pre = dir / "pre", out = dir / "ls";
+    runJson({"demo", "-o", demo.string(), "--seed", "3", "--json"});
+    const auto report = runJson({"preprocess", demo.string(), "-o", pre.string(), "--json"});
+    CHECK(report.at("takes") == 30);
+    CHECK(report.at("channels") == 24);
+    int shifted = 0, turned = 0;
+    for (const auto& take : report.at("report")) {
+        shifted += take.at("shift_frames").get<int>() != 0 ? 1 : 0;
+        turned += std::fabs(take.at("heading_offset_deg").get<double>()) > 90.0 ? 1 : 0;
+    }
+    CHECK(shifted > 0);
+    CHECK(turned > 0); // one take per cell has its yaw offset by about 180 deg
+
+    CHECK(report.at("truth_copied") == true); // the preprocessed corpus keeps the demo's ground truth
+    const auto summary = runJson({"decompose", pre.string(), "--method", "ls", "-o", out.string(), "--json"});
+    REQUIRE(summary.contains("truth"));
+    CHECK(summary.at("functions").size() == 2);
+    CHECK(summary.at("cells").size() == 6);
+    CHECK(summary.at("frames") == report.at("frames"));
+    for (const auto& file : summary.at("files")) CHECK(std::filesystem::exists(out / file.get<std::string>()));
+    // Preprocessing aligned the takes: the function estimate is close to the true y^i.
+    for (const auto& [function, error] : summary.at("truth").at("y").items()) {
+        INFO(function);
+        CHECK(error.at("relative_error_percent").get<double>() < 5.0);
+    }
+    // z^{i,none} = 0 by hypothesis 4; the other cells' z is close to the truth.
+    for (const auto& [cell, error] : summary.at("truth").at("z").items()) {
+        INFO(cell);
+        CHECK(error.at("rms").get<double>() < 10.0);
+    }
+}
+
+TEST_CASE("bunraku emotion with weight 0 gives y and with weight 1 gives y + z", "[cli]")
+{
+    const auto dir = bunraku::test::scratchDir("cli-emotion");
+    const auto demo = dir / "demo", out = dir / "ls";
+    runJson({"demo", "-o", demo.string(), "--seed", "5", "--json"});
+    runJson({"decompose", demo.string(), "--pad", "--method", "ls", "-o", out.string(), "--json"});
+    const auto zero = dir / "a0.csv", one = dir / "a1.csv";
+    for (const auto& [weight, file] : {std::pair{"0", zero}, std::pair{"1", one}}) {
+        const auto run = runBunraku({"emotion", demo.string(), "--pad", "--function", "serving-tea", "--emotion", "hostile",
+                                     "--weight", weight, "-o", file.string()});
+        INFO(run.err);
+        REQUIRE(run.exitCode == 0);
+    }
+    const auto y = readNumericCsv(out / "y_serving-tea.csv");
+    const auto z = readNumericCsv(out / "z_serving-tea_hostile.csv");
+    CHECK(largestDifference(readNumericCsv(zero), y) == 0.0);
+    auto sum = y;
+    for (std::size_t r = 0; r < sum.rows.size(); ++r)
+        for (std::size_t c = 1; c < sum.rows[r].size(); ++c) sum.rows[r][c] += z.rows[r][c];
+    CHECK(largestDifference(readNumericCsv(one), sum) < 1e-9);
+}
+
+TEST_CASE("decompose replaces its output files instead of rewriting them in place", "[cli]")
+{
+    const auto dir = bunraku::test::scratchDir("cli-atomic");
+    const auto demo = dir / "demo", out = dir / "ls";
+    runJson({"demo", "-o", demo.string(), "--json"});
+    // An older summary.json shared with another name (a hard link): an atomic write (temporary
+    // file + rename) leaves the other name's content alone; writing in place would change it.
+    std::filesystem::create_directories(out);
+    const auto keep = bunraku::test::writeText(dir / "kept.json", "{\"old\": true}\n");
+    std::filesystem::create_hard_link(keep, out / "summary.json");
+    std::filesystem::create_hard_link(keep, out / "arma_table.csv");
+    runJson({"decompose", demo.string(), "--pad", "--method", "ls", "-o", out.string(), "--json"});
+    CHECK(bunraku::test::readTextFile(keep) == "{\"old\": true}\n");
+    CHECK(json::parse(bunraku::test::readTextFile(out / "summary.json")).at("method") == "ls");
+    for (const auto& entry : std::filesystem::directory_iterator(out))
+        CHECK(entry.path().filename().string().rfind(".", 0) != 0); // no temporary files left
+}
+
+TEST_CASE("preprocessing a demo corpus in place keeps its ground truth and leaves no temporary folders", "[cli]")
+{
+    const auto dir = bunraku::test::scratchDir("cli-preprocess-in-place");
+    const auto demo = dir / "demo";
+    runJson({"demo", "-o", demo.string(), "--json"});
+    const auto report = runJson({"preprocess", demo.string(), "-o", demo.string(), "--json"});
+    CHECK(report.at("truth_copied") == true);
+    CHECK(std::filesystem::is_regular_file(demo / "truth" / "truth.json"));
+    for (const auto& entry : std::filesystem::directory_iterator(dir))
+        CHECK(entry.path().filename().string().rfind(".", 0) != 0);
+    const auto summary = runJson({"decompose", demo.string(), "--method", "ls", "-o", (dir / "ls").string(), "--json"});
+    CHECK(summary.contains("truth"));
+}
