@@ -5,13 +5,12 @@
 #include "analysis/axis/inertia_axis.h"
 #include "analysis/body/body_description.h"
 #include "analysis/core/puppet_layout.h"
+#include "analysis/design/design_corpus.h"
 #include "analysis/design/design_experiment.h"
 #include "analysis/design/motion_design.h"
 #include "analysis/io/corpus_io.h"
 #include "analysis/io/take_csv.h"
 #include "analysis/io/take_reader.h"
-#include "analysis/normalise/average_take.h"
-#include "analysis/preprocess/preprocess.h"
 #include "analysis/synth/demo_corpus.h"
 #include "analysis/synth/demo_corpus_io.h"
 
@@ -286,21 +285,11 @@ void runDesign(const DesignCommandArguments& arguments)
 
 struct ExperimentArguments {
     std::string corpus;
-    std::string means = "truth";
+    std::string means = "measured";
     bool json = false;
     AxisArguments axis;
     PhaseArguments phase;
 };
-
-an::Take puppetTake(const Eigen::MatrixXd& motion, const std::string& function, const std::string& emotion, double rateHz)
-{
-    an::Take take;
-    take.values = motion;
-    take.rateHz = rateHz;
-    take.channels = an::puppetChannels();
-    take.labels = {function, emotion, 0, "ground-truth cell motion"};
-    return take;
-}
 
 void runExperiment(const ExperimentArguments& arguments)
 {
@@ -312,48 +301,33 @@ void runExperiment(const ExperimentArguments& arguments)
                            ", written by `bunraku demo`): " + read.error().message);
         return std::move(read).value();
     }();
+    an::DesignCorpusOptions corpusOptions;
     an::Corpus corpus;
-    if (arguments.means == "measured") corpus = unwrap(an::preprocess::preprocessCorpus(unwrap(an::io::readCorpus(arguments.corpus)))).corpus;
+    if (arguments.means == "measured") {
+        corpus = unwrap(an::io::readCorpus(arguments.corpus));
+    } else {
+        corpusOptions.means = an::DesignMeans::Truth;
+    }
+    const std::vector<an::SyntheticDesignCell> designCells = unwrap(an::syntheticDesignCells(corpus, truth, corpusOptions));
 
     const an::AxisModel model = axisModel(arguments.axis);
     an::ExtractionOptions options;
     options.phase = phaseOptions(arguments.phase);
     nlohmann::json cells = nlohmann::json::array();
     if (!arguments.json)
-        std::cout << "function      emotion     axis err  undesigned  phase |err| frames  amplitude err  phrases\n";
-    for (const an::synth::CellTruth& cellTruth : truth.cells) {
-        const an::synth::FunctionTruth* function = truth.function(cellTruth.function);
-        if (!function) throw CliError("ground truth has no function " + cellTruth.function);
-        an::DesignCell cell;
-        cell.function = cellTruth.function;
-        cell.emotion = cellTruth.emotion;
-        if (arguments.means == "truth") {
-            cell.functional = puppetTake(function->motion, cell.function, truth.neutralEmotion, truth.rateHz);
-            cell.emotional = puppetTake(cellTruth.motion, cell.function, cell.emotion, truth.rateHz);
-            cell.trueEmotionalToFunctional = cellTruth.phaseWarp;
-        } else {
-            const auto neutralTakes = corpus.cell(cell.function, truth.neutralEmotion);
-            const auto emotionalTakes = corpus.cell(cell.function, cell.emotion);
-            if (neutralTakes.empty() || emotionalTakes.empty())
-                throw CliError(arguments.corpus + " has no takes for " + cell.function + "/" + cell.emotion);
-            cell.functional = unwrap(an::averageTake(neutralTakes));
-            cell.emotional = unwrap(an::averageTake(emotionalTakes));
-            // truth: emotional base take frame -> functional base take frame
-            auto map = an::synth::trueCorrespondence(truth, emotionalTakes.front()->labels, neutralTakes.front()->labels);
-            if (map.ok()) cell.trueEmotionalToFunctional = *map;
-        }
+        std::cout << "function      emotion     axis err  undesigned  phase |err| frames  amplitude err  phrases  "
+                     "mean vs truth (fun/emo)\n";
+    for (const an::SyntheticDesignCell& designCell : designCells) {
+        const an::DesignCell& cell = designCell.cell;
         const an::DesignCellResult result = unwrap(an::evaluateDesignCell(model, cell, options, axisOptions(arguments.axis)));
         // amplitude alone: the gains against the emotional axis phase-adjusted by the true warp
-        double amplitudeError = std::nan("");
-        if (cell.trueEmotionalToFunctional.size() > 0) {
-            const Eigen::MatrixXd functional =
-                an::axisCoordinates(unwrap(an::computeMotionAxis(model, cell.functional, axisOptions(arguments.axis))).world_T_axis);
-            const Eigen::MatrixXd emotional =
-                an::axisCoordinates(unwrap(an::computeMotionAxis(model, cell.emotional, axisOptions(arguments.axis))).world_T_axis);
-            const Eigen::VectorXd trueInverse = an::invertMonotone(cell.trueEmotionalToFunctional, functional.rows());
-            amplitudeError = an::relativeError(an::applyGains(functional, result.parameters.gains),
-                                               an::resampleRows(emotional, trueInverse));
-        }
+        const Eigen::MatrixXd functional =
+            an::axisCoordinates(unwrap(an::computeMotionAxis(model, cell.functional, axisOptions(arguments.axis))).world_T_axis);
+        const Eigen::MatrixXd emotional =
+            an::axisCoordinates(unwrap(an::computeMotionAxis(model, cell.emotional, axisOptions(arguments.axis))).world_T_axis);
+        const Eigen::VectorXd trueInverse = an::invertMonotone(cell.trueEmotionalToFunctional, functional.rows());
+        const double amplitudeError =
+            an::relativeError(an::applyGains(functional, result.parameters.gains), an::resampleRows(emotional, trueInverse));
         cells.push_back({{"function", result.function},
                          {"emotion", result.emotion},
                          {"axis_relative_error", result.axisRelativeError},
@@ -362,13 +336,16 @@ void runExperiment(const ExperimentArguments& arguments)
                                                                     result.dofRelativeError.data() + result.dofRelativeError.size())},
                          {"phase_mean_abs_error_frames", result.phaseMeanAbsErrorFrames},
                          {"amplitude_relative_error", amplitudeError},
+                         {"functional_mean_truth_error", designCell.functionalMean.truthShapeError},
+                         {"emotional_mean_truth_error", designCell.emotionalMean.truthShapeError},
                          {"phrase_boundaries", result.boundaries}});
         if (!arguments.json)
             std::cout << std::left << std::setw(14) << result.function << std::setw(12) << result.emotion << std::right
                       << std::fixed << std::setprecision(4) << std::setw(8) << result.axisRelativeError << std::setw(12)
                       << result.functionalRelativeError << std::setprecision(2) << std::setw(20) << result.phaseMeanAbsErrorFrames
                       << std::setprecision(4) << std::setw(15) << amplitudeError << std::setw(9) << result.boundaries.size() - 1
-                      << "\n";
+                      << std::setw(10) << designCell.functionalMean.truthShapeError << " / "
+                      << designCell.emotionalMean.truthShapeError << "\n";
     }
     if (arguments.json) printJson({{"means", arguments.means}, {"cells", cells}});
 }
@@ -442,7 +419,8 @@ void addMotionAxisCommands(CommandSet& commands)
             ->required()
             ->check(CLI::ExistingDirectory);
         command->add_option("--means", arguments->means,
-                            "'truth': the noiseless cell motions (default), 'measured': averages of the preprocessed takes")
+                            "'measured' (default): the preprocessed takes of each cell averaged by the thesis 3.7 average take; "
+                            "'truth': the ground truth's noiseless cell motions")
             ->check(CLI::IsMember({"truth", "measured"}));
         command->add_flag("--json", arguments->json, "Print a machine-readable summary");
         addAxisOptions(command, arguments->axis);

@@ -1,0 +1,226 @@
+#include "app/design_controller.h"
+
+#include "app/commands.h"
+#include "app/parameters.h"
+
+#include "analysis/axis/axis_channels.h"
+#include "analysis/body/body_description.h"
+
+#include <QCoreApplication>
+#include <QElapsedTimer>
+
+
+namespace bunraku::app {
+namespace {
+
+/// The axis model of the default body, built once (it is the same for every take).
+const analysis::AxisModel& defaultAxisModel()
+{
+    static const analysis::AxisModel model = analysis::makeAxisModel(analysis::defaultBodyDescription());
+    return model;
+}
+
+QString gainKey(int phrase, int dof) { return QStringLiteral("%1/%2").arg(phrase).arg(dof); }
+
+} // namespace
+
+analysis::WarpCurve warpFromVariant(const QVariant& value)
+{
+    analysis::WarpCurve curve;
+    for (const QVariant& entry : value.toList()) {
+        const QVariantList pair = entry.toList();
+        if (pair.size() == 2) curve.points.push_back({pair[0].toDouble(), pair[1].toDouble()});
+    }
+    if (!curve.points.empty()) curve.outputFrames = Eigen::Index(std::floor(curve.points.back().output)) + 1;
+    return curve;
+}
+
+QVariant warpToVariant(const analysis::WarpCurve& curve)
+{
+    QVariantList list;
+    for (const auto& point : curve.points) list.append(QVariant(QVariantList{point.output, point.source}));
+    return list;
+}
+
+DesignController::DesignController(Document& document, QObject* parent) : QObject(parent), m_document(document)
+{
+    m_recomputer = new Recomputer(
+        document, [this] { return snapshot(); }, [this](const JobOutput& output) { accept(output); }, this, 20,
+        [this] { return m_inputSerial; });
+    m_recomputer->setObjectName(tr("Design preparation"));
+    connect(&document, &Document::corpusChanged, this, [this] {
+        m_prepared.reset();
+        m_designed.reset();
+        m_sourceId.clear();
+        m_targetId.clear();
+        resolveInputs();
+    });
+    connect(&document, &Document::selectionChanged, this, [this](TakeSlot slot) {
+        if (slot == TakeSlot::A) resolveInputs();
+    });
+    connect(&document, &Document::parameterChanged, this, [this](const QString& key) {
+        if (key == parameters::kDesignWarp || key == parameters::kDesignGains) redesign();
+    });
+}
+
+void DesignController::resolveInputs()
+{
+    const auto& corpus = m_document.corpus();
+    const QString idA = m_document.selectedId(TakeSlot::A);
+    const TakePointer takeA = m_document.take(idA);
+    if (!takeA || !idA.startsWith(QStringLiteral("corpus/"))) return; // keep the current design inputs
+    const std::string& function = takeA->labels.function;
+    QString source;
+    QString target;
+    for (std::size_t i = 0; i < corpus.takes.size(); ++i) {
+        const auto& labels = corpus.takes[i].labels;
+        if (labels.function != function) continue;
+        if (labels.emotion == corpus.neutralEmotion && source.isEmpty()) source = Document::corpusTakeId(i);
+        if (labels.emotion != corpus.neutralEmotion && target.isEmpty()) target = Document::corpusTakeId(i);
+    }
+    if (takeA->labels.emotion != corpus.neutralEmotion) target = idA;
+    if (source.isEmpty()) source = idA;
+    if (source == m_sourceId && target == m_targetId) return;
+    m_sourceId = source;
+    m_targetId = target;
+    ++m_inputSerial;
+    m_recomputer->schedule();
+}
+
+Job DesignController::snapshot()
+{
+    const TakePointer source = m_document.take(m_sourceId);
+    if (!source) return {};
+    const TakePointer target = m_document.take(m_targetId);
+    const QString sourceId = m_sourceId;
+    const QString targetId = m_targetId;
+    return [source, target, sourceId, targetId](const analysis::RunControl& control) -> JobOutput {
+        const auto& model = defaultAxisModel();
+        auto basis = analysis::prepareDesign(model, *source, {}, control);
+        if (!basis) return {{}, QString::fromStdString(basis.error().message)};
+        auto prepared = std::make_shared<Prepared>();
+        prepared->sourceId = sourceId;
+        prepared->targetId = targetId;
+        prepared->boundaries = analysis::suggestPhraseBoundaries(basis->coordinates);
+        if (target && !control.cancelled()) {
+            auto targetBasis = analysis::prepareDesign(model, *target, {}, control);
+            if (targetBasis) {
+                analysis::ExtractionOptions options;
+                options.boundaries = prepared->boundaries;
+                auto extracted = analysis::extractDesign(basis->coordinates, targetBasis->coordinates, options, control);
+                if (extracted) prepared->extracted = std::move(extracted).value();
+            }
+        }
+        if (control.cancelled()) return {{}, QStringLiteral("cancelled")};
+        prepared->basis = std::make_shared<const analysis::DesignBasis>(std::move(basis).value());
+        return {std::shared_ptr<const Prepared>(std::move(prepared)), {}};
+    };
+}
+
+void DesignController::accept(const JobOutput& output)
+{
+    if (!output.value.has_value()) return;
+    m_prepared = std::any_cast<std::shared_ptr<const Prepared>>(output.value);
+    emit prepared();
+    redesign();
+}
+
+analysis::WarpCurve DesignController::warpCurve() const
+{
+    analysis::WarpCurve curve = warpFromVariant(m_document.parameter(parameters::kDesignWarp));
+    if (analysis::validateWarpCurve(curve).ok()) return curve;
+    const Eigen::Index frames = m_prepared ? m_prepared->basis->functional.frameCount() : 0;
+    return frames > 1 ? analysis::identityWarp(frames) : analysis::WarpCurve{};
+}
+
+analysis::GainSet DesignController::gains() const
+{
+    if (!m_prepared) return {};
+    std::vector<std::string> names;
+    for (const auto& channel : analysis::axisCoordinateChannels()) names.push_back(channel.name());
+    if (m_prepared->extracted) names = m_prepared->extracted->gains.dofNames;
+    analysis::GainSet set = analysis::unitGains(m_prepared->boundaries, names);
+    const QVariantMap edits = m_document.parameter(parameters::kDesignGains).toMap();
+    for (auto it = edits.begin(); it != edits.end(); ++it) {
+        const QStringList where = it.key().split('/');
+        const QVariantList values = it.value().toList();
+        if (where.size() != 2 || values.size() != 2) continue;
+        const auto phrase = std::size_t(where[0].toInt());
+        const auto dof = std::size_t(where[1].toInt());
+        if (phrase >= set.phrases.size() || dof >= set.phrases[phrase].dofs.size()) continue;
+        set.phrases[phrase].dofs[dof].g0 = values[0].toDouble();
+        set.phrases[phrase].dofs[dof].g1 = values[1].toDouble();
+    }
+    return set;
+}
+
+Eigen::VectorXd DesignController::extractedWarp() const
+{
+    return m_prepared && m_prepared->extracted ? m_prepared->extracted->phase.emotionalToFunctional : Eigen::VectorXd();
+}
+
+analysis::WarpCurve DesignController::extractedCurve() const
+{
+    return m_prepared && m_prepared->extracted ? m_prepared->extracted->phase.curve : analysis::WarpCurve{};
+}
+
+void DesignController::editWarp(const analysis::WarpCurve& curve)
+{
+    if (!analysis::validateWarpCurve(curve).ok()) return;
+    changeParameter(m_document, parameters::kDesignWarp, warpToVariant(curve),
+                    QCoreApplication::translate("commands", "Move warp point"));
+}
+
+void DesignController::editGain(int phrase, int dof, double g0, double g1)
+{
+    QVariantMap edits = m_document.parameter(parameters::kDesignGains).toMap();
+    edits.insert(gainKey(phrase, dof), QVariantList{g0, g1});
+    changeParameter(m_document, parameters::kDesignGains, edits, QCoreApplication::translate("commands", "Set phrase gain"));
+}
+
+void DesignController::resetWarpToIdentity()
+{
+    changeParameter(m_document, parameters::kDesignWarp, parameters::defaultValue(parameters::kDesignWarp),
+                    QCoreApplication::translate("commands", "Reset warp to identity"));
+}
+
+void DesignController::resetWarpToExtracted()
+{
+    const analysis::WarpCurve curve = extractedCurve();
+    if (!analysis::validateWarpCurve(curve).ok()) return;
+    changeParameter(m_document, parameters::kDesignWarp, warpToVariant(curve),
+                    QCoreApplication::translate("commands", "Reset warp to extracted"));
+}
+
+void DesignController::resetGains()
+{
+    changeParameter(m_document, parameters::kDesignGains, parameters::defaultValue(parameters::kDesignGains),
+                    QCoreApplication::translate("commands", "Reset phrase gains"));
+}
+
+void DesignController::useExtractedGains()
+{
+    if (!m_prepared || !m_prepared->extracted) return;
+    QVariantMap edits;
+    const auto& phrases = m_prepared->extracted->gains.phrases;
+    for (std::size_t p = 0; p < phrases.size(); ++p)
+        for (std::size_t d = 0; d < phrases[p].dofs.size(); ++d)
+            edits.insert(gainKey(int(p), int(d)), QVariantList{phrases[p].dofs[d].g0, phrases[p].dofs[d].g1});
+    changeParameter(m_document, parameters::kDesignGains, edits, QCoreApplication::translate("commands", "Use extracted gains"));
+}
+
+void DesignController::redesign()
+{
+    if (!m_prepared) return;
+    QElapsedTimer clock;
+    clock.start();
+    analysis::DesignedMotion motion = analysis::designMotion(*m_prepared->basis, warpCurve(), gains());
+    motion.take.labels.source = "designed";
+    m_designed = std::make_shared<const analysis::Take>(std::move(motion.take));
+    m_lastMilliseconds = double(clock.nsecsElapsed()) / 1e6;
+    m_document.setLiveTake(QStringLiteral("designed"), tr("designed from %1").arg(m_document.takeLabel(m_prepared->sourceId)),
+                           m_designed, m_prepared->sourceId);
+    emit designed();
+}
+
+} // namespace bunraku::app

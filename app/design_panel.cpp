@@ -1,0 +1,94 @@
+#include "app/design_panel.h"
+
+#include "app/design_controller.h"
+#include "app/document.h"
+#include "app/parameters.h"
+
+#include "widgets/gain_table.h"
+#include "widgets/warp_curve_editor.h"
+
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QSplitter>
+#include <QVBoxLayout>
+
+namespace bunraku::app {
+
+DesignPanel::DesignPanel(Document& document, DesignController& controller, QWidget* parent)
+    : QWidget(parent), m_document(document), m_controller(controller)
+{
+    m_editor = new widgets::WarpCurveEditor(this);
+    m_gains = new widgets::GainTable(this);
+    m_inputs = new QLabel(tr("Preparing the design..."), this);
+    m_inputs->setWordWrap(true);
+    m_timing = new QLabel(this);
+    m_timing->setEnabled(false);
+    auto* showDesigned = new QPushButton(tr("Show designed as A"), this);
+    showDesigned->setObjectName("showDesigned");
+    auto* extractedGains = new QPushButton(tr("Use extracted gains"), this);
+    auto* resetGains = new QPushButton(tr("Reset gains"), this);
+
+    auto* splitter = new QSplitter(Qt::Vertical, this);
+    splitter->addWidget(m_editor);
+    splitter->addWidget(m_gains);
+    splitter->setStretchFactor(0, 3);
+    splitter->setStretchFactor(1, 2);
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(showDesigned);
+    buttons->addWidget(extractedGains);
+    buttons->addWidget(resetGains);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->addWidget(m_inputs);
+    layout->addWidget(splitter, 1);
+    layout->addLayout(buttons);
+    layout->addWidget(m_timing);
+
+    connect(m_editor, &widgets::WarpCurveEditor::dragStarted, &document, &Document::beginInteraction);
+    connect(m_editor, &widgets::WarpCurveEditor::dragFinished, &document, &Document::endInteraction);
+    connect(m_editor, &widgets::WarpCurveEditor::curveEdited, &controller, &DesignController::editWarp);
+    connect(m_editor, &widgets::WarpCurveEditor::resetToIdentityRequested, &controller, &DesignController::resetWarpToIdentity);
+    connect(m_editor, &widgets::WarpCurveEditor::resetToExtractedRequested, &controller, &DesignController::resetWarpToExtracted);
+    connect(m_gains, &widgets::GainTable::dragStarted, &document, &Document::beginInteraction);
+    connect(m_gains, &widgets::GainTable::dragFinished, &document, &Document::endInteraction);
+    connect(m_gains, &widgets::GainTable::gainEdited, &controller, &DesignController::editGain);
+    connect(extractedGains, &QPushButton::clicked, &controller, &DesignController::useExtractedGains);
+    connect(resetGains, &QPushButton::clicked, &controller, &DesignController::resetGains);
+    connect(showDesigned, &QPushButton::clicked, this, [this] {
+        m_document.selectTake(TakeSlot::A, QStringLiteral("live/designed"));
+    });
+    connect(&controller, &DesignController::prepared, this, &DesignPanel::refresh);
+    connect(&controller, &DesignController::designed, this, [this] {
+        // On every drag step: only what an edit changes (the curve, the gains, the timing).
+        m_editor->setCurve(m_controller.warpCurve());
+        const auto gains = m_controller.gains();
+        bool same = gains.phrases.size() == m_gains->gains().phrases.size();
+        for (std::size_t p = 0; same && p < gains.phrases.size(); ++p)
+            for (std::size_t d = 0; same && d < gains.phrases[p].dofs.size(); ++d)
+                same = gains.phrases[p].dofs[d].g0 == m_gains->gains().phrases[p].dofs[d].g0 &&
+                       gains.phrases[p].dofs[d].g1 == m_gains->gains().phrases[p].dofs[d].g1;
+        if (!same) m_gains->setGains(gains);
+        m_timing->setText(tr("synthesis %1 ms").arg(m_controller.lastSynthesisMilliseconds(), 0, 'f', 2));
+    });
+    connect(&document, &Document::currentTimeChanged, this,
+            [this](double seconds) { m_editor->setCurrentFrame(seconds * m_document.rateHz()); });
+}
+
+void DesignPanel::refresh()
+{
+    if (!m_controller.ready()) {
+        m_inputs->setText(tr("Preparing the design..."));
+        return;
+    }
+    m_inputs->setText(tr("Functional take: <b>%1</b>; correspondence extracted from <b>%2</b>. "
+                         "The designed take is <i>designed</i> under Derived takes.")
+                          .arg(m_document.takeLabel(m_controller.sourceId()),
+                               m_controller.targetId().isEmpty() ? tr("(none)") : m_document.takeLabel(m_controller.targetId())));
+    m_editor->setExtracted(m_controller.extractedWarp());
+    m_editor->setCurve(m_controller.warpCurve());
+    m_gains->setGains(m_controller.gains());
+    m_timing->setText(tr("synthesis %1 ms").arg(m_controller.lastSynthesisMilliseconds(), 0, 'f', 2));
+}
+
+} // namespace bunraku::app

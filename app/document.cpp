@@ -1,0 +1,208 @@
+#include "app/document.h"
+
+#include "app/parameters.h"
+
+#include <algorithm>
+
+namespace bunraku::app {
+
+Document::Document(QObject* parent) : QObject(parent), m_corpus(std::make_shared<analysis::Corpus>()) {}
+
+Document::~Document() = default;
+
+void Document::setCorpus(analysis::Corpus corpus, const QString& source,
+                         std::shared_ptr<const analysis::synth::DemoGroundTruth> truth)
+{
+    m_undo.clear();
+    m_truth = std::move(truth);
+    m_corpus = std::make_shared<const analysis::Corpus>(std::move(corpus));
+    m_corpusSource = source;
+    m_derived.clear();
+    m_parameters.clear();
+    m_importSerial = 0;
+    ++m_version;
+    m_selected[0] = m_corpus->takes.empty() ? QString() : corpusTakeId(0);
+    m_selected[1].clear();
+    m_time = 0.0;
+    emit corpusChanged();
+    emit derivedTakesChanged();
+    emit selectionChanged(TakeSlot::A);
+    emit selectionChanged(TakeSlot::B);
+    emit currentTimeChanged(m_time);
+}
+
+QString Document::corpusTakeId(std::size_t index) { return QStringLiteral("corpus/%1").arg(index); }
+
+TakePointer Document::take(const QString& id) const
+{
+    if (id.startsWith(QStringLiteral("corpus/"))) {
+        bool ok = false;
+        const auto index = id.mid(7).toULongLong(&ok);
+        if (!ok || index >= m_corpus->takes.size()) return nullptr;
+        return TakePointer(m_corpus, &m_corpus->takes[index]); // aliasing: keeps the corpus alive
+    }
+    const int index = indexOfDerived(id);
+    return index < 0 ? nullptr : m_derived[std::size_t(index)].take;
+}
+
+QString Document::takeLabel(const QString& id) const
+{
+    if (id.startsWith(QStringLiteral("corpus/"))) {
+        const TakePointer found = take(id);
+        return found ? QString::fromStdString(found->displayName()) : QString();
+    }
+    const int index = indexOfDerived(id);
+    return index < 0 ? QString() : m_derived[std::size_t(index)].label;
+}
+
+std::vector<widgets::BrowserEntry> Document::browserEntries() const
+{
+    std::vector<widgets::BrowserEntry> entries;
+    for (std::size_t i = 0; i < m_corpus->takes.size(); ++i) {
+        const auto& take = m_corpus->takes[i];
+        widgets::BrowserEntry entry;
+        entry.id = corpusTakeId(i);
+        entry.function = QString::fromStdString(take.labels.function.empty() ? "(no function)" : take.labels.function);
+        entry.emotion = QString::fromStdString(take.labels.emotion.empty() ? "(no emotion)" : take.labels.emotion);
+        entry.takeIndex = take.labels.takeIndex;
+        entry.frames = int(take.frameCount());
+        entries.push_back(entry);
+    }
+    for (const auto& derived : m_derived) {
+        widgets::BrowserEntry entry;
+        entry.id = derived.id;
+        entry.label = derived.label;
+        entry.frames = derived.take ? int(derived.take->frameCount()) : 0;
+        entry.derived = true;
+        entries.push_back(entry);
+    }
+    return entries;
+}
+
+void Document::selectTake(TakeSlot slot, const QString& id)
+{
+    if (m_selected[int(slot)] == id) return;
+    if (!id.isEmpty() && !take(id)) return;
+    if (slot == TakeSlot::A && id.isEmpty()) return;
+    m_selected[int(slot)] = id;
+    emit selectionChanged(slot);
+    setCurrentTime(m_time);
+}
+
+void Document::setCurrentTime(double seconds)
+{
+    const double clamped = std::clamp(seconds, 0.0, duration());
+    if (clamped == m_time) return;
+    m_time = clamped;
+    emit currentTimeChanged(m_time);
+}
+
+double Document::duration() const
+{
+    double longest = 0.0;
+    for (const auto& id : m_selected)
+        if (const TakePointer shown = take(id)) longest = std::max(longest, shown->duration());
+    return longest;
+}
+
+double Document::rateHz() const
+{
+    const TakePointer shown = selectedTake(TakeSlot::A);
+    return shown && shown->rateHz > 0.0 ? shown->rateHz : 5.0;
+}
+
+QVariant Document::parameter(const QString& key) const
+{
+    const auto found = m_parameters.constFind(key);
+    return found != m_parameters.constEnd() ? *found : parameters::defaultValue(key);
+}
+
+TakePointer Document::ghostOf(const QString& id) const
+{
+    const int index = indexOfDerived(id);
+    return index < 0 || m_derived[std::size_t(index)].ghostId.isEmpty() ? nullptr : take(m_derived[std::size_t(index)].ghostId);
+}
+
+void Document::setLiveTake(const QString& name, const QString& label, TakePointer take, const QString& ghostId)
+{
+    const QString id = QStringLiteral("live/") + name;
+    const int index = indexOfDerived(id);
+    if (!take) {
+        if (index < 0) return;
+        m_derived.erase(m_derived.begin() + index);
+        if (m_selected[1] == id) selectTake(TakeSlot::B, QString());
+        emit derivedTakesChanged();
+        return;
+    }
+    if (index >= 0) {
+        m_derived[std::size_t(index)].take = std::move(take);
+        m_derived[std::size_t(index)].label = label;
+        m_derived[std::size_t(index)].ghostId = ghostId;
+        emit takeChanged(id);
+        for (int slot = 0; slot < 2; ++slot)
+            if (m_selected[slot] == id) emit selectionChanged(TakeSlot(slot));
+        return;
+    }
+    m_derived.push_back(DerivedTake{id, label, std::move(take), QString(), ghostId});
+    emit derivedTakesChanged();
+}
+
+void Document::restoreParameters(const QVariantMap& values)
+{
+    QStringList changed = m_parameters.keys();
+    m_parameters.clear();
+    for (auto it = values.begin(); it != values.end(); ++it) {
+        if (it.value() != parameters::defaultValue(it.key())) m_parameters.insert(it.key(), it.value());
+        changed << it.key();
+    }
+    m_undo.clear();
+    ++m_version;
+    changed.removeDuplicates();
+    for (const auto& key : changed) emit parameterChanged(key);
+}
+
+void Document::beginInteraction() { m_interaction = ++m_interactionSerial; }
+
+void Document::endInteraction() { m_interaction = 0; }
+
+void Document::applyParameter(const QString& key, const QVariant& value)
+{
+    if (value == parameters::defaultValue(key))
+        m_parameters.remove(key);
+    else
+        m_parameters.insert(key, value);
+    ++m_version;
+    emit parameterChanged(key);
+}
+
+void Document::insertImportedTake(const DerivedTake& take, int position)
+{
+    position = std::clamp(position, 0, int(m_derived.size()));
+    m_derived.insert(m_derived.begin() + position, take);
+    ++m_version;
+    emit derivedTakesChanged();
+}
+
+void Document::removeImportedTake(const QString& id)
+{
+    const int index = indexOfDerived(id);
+    if (index < 0) return;
+    m_derived.erase(m_derived.begin() + index);
+    ++m_version;
+    for (int slot = 1; slot >= 0; --slot) {
+        if (m_selected[slot] != id) continue;
+        m_selected[slot] = slot == 0 && !m_corpus->takes.empty() ? corpusTakeId(0) : QString();
+        emit selectionChanged(TakeSlot(slot));
+    }
+    emit derivedTakesChanged();
+}
+
+int Document::indexOfDerived(const QString& id) const
+{
+    const auto found = std::find_if(m_derived.begin(), m_derived.end(), [&](const DerivedTake& d) { return d.id == id; });
+    return found == m_derived.end() ? -1 : int(found - m_derived.begin());
+}
+
+QString Document::nextImportedId() { return QStringLiteral("imported/%1").arg(++m_importSerial); }
+
+} // namespace bunraku::app

@@ -1,0 +1,135 @@
+#pragma once
+/// The workbench's model: the open corpus, the takes derived from it (imported takes, and the
+/// live results of normalisation, decomposition and design), the choice of take A and B, the
+/// current time, the analysis parameters and the undo stack (Tiled's document.h).
+///
+/// Undoable state (parameters, imported takes) changes only through the commands in
+/// app/commands.h, which emit the typed change signals below. View state (selection, time)
+/// and derived results are set directly and are never on the undo stack.
+
+#include "widgets/corpus_browser.h"
+
+#include "analysis/core/corpus.h"
+#include "analysis/core/take.h"
+#include "analysis/synth/demo_corpus.h"
+
+#include <QObject>
+#include <QString>
+#include <QUndoStack>
+#include <QVariant>
+
+#include <map>
+#include <memory>
+#include <vector>
+
+namespace bunraku::app {
+
+using widgets::TakeSlot;
+using TakePointer = std::shared_ptr<const analysis::Take>;
+
+/// A take listed under "Derived takes": imported files and live analysis results.
+struct DerivedTake {
+    QString id;    ///< "imported/<n>" or "live/<name>"
+    QString label; ///< shown in the corpus browser
+    TakePointer take;
+    QString sourcePath; ///< imported takes: the file; empty for live results
+    QString ghostId;    ///< live results: the take drawn faintly behind it (its original)
+};
+
+class Document : public QObject {
+    Q_OBJECT
+public:
+    explicit Document(QObject* parent = nullptr);
+    ~Document() override;
+
+    /// Replaces the corpus (source: "demo" or the folder read); clears derived takes, the undo
+    /// stack and the selection, then shows the first take as A. `truth` is the demo corpus's
+    /// ground truth (phrase boundaries), null for other corpora.
+    void setCorpus(analysis::Corpus corpus, const QString& source,
+                   std::shared_ptr<const analysis::synth::DemoGroundTruth> truth = nullptr);
+    /// The demo corpus's ground truth, null for other corpora.
+    const analysis::synth::DemoGroundTruth* demoTruth() const { return m_truth.get(); }
+    const analysis::Corpus& corpus() const { return *m_corpus; }
+    QString corpusSource() const { return m_corpusSource; }
+
+    /// Id of the corpus take with index `index` in corpus().takes.
+    static QString corpusTakeId(std::size_t index);
+    /// The take with `id` (corpus or derived), null when unknown.
+    TakePointer take(const QString& id) const;
+    /// The label the user sees for `id`.
+    QString takeLabel(const QString& id) const;
+    /// Corpus takes then derived takes, as the browser lists them.
+    std::vector<widgets::BrowserEntry> browserEntries() const;
+    const std::vector<DerivedTake>& derivedTakes() const { return m_derived; }
+
+    /// Shows the take `id` (empty: none, allowed for B only) in `slot`. View state.
+    void selectTake(TakeSlot slot, const QString& id);
+    QString selectedId(TakeSlot slot) const { return m_selected[int(slot)]; }
+    TakePointer selectedTake(TakeSlot slot) const { return take(m_selected[int(slot)]); }
+
+    /// Seconds; clamped to [0, duration()].
+    void setCurrentTime(double seconds);
+    double currentTime() const { return m_time; }
+    /// The longer of the shown takes, seconds.
+    double duration() const;
+    /// The frame rate of take A (Hz), 5 when none.
+    double rateHz() const;
+
+    /// The parameter `key` (see app/parameters.h), or its default.
+    QVariant parameter(const QString& key) const;
+    QVariantMap parameters() const { return m_parameters; }
+
+    /// Publishes a live analysis result under "live/<name>" (replacing the previous one).
+    /// Not undoable: results are recomputed from the parameters.
+    void setLiveTake(const QString& name, const QString& label, TakePointer take, const QString& ghostId = {});
+    /// The take drawn as a ghost behind `id` (a live result's original), null when none.
+    TakePointer ghostOf(const QString& id) const;
+
+    /// Replaces every parameter (loading a project): not undoable, clears the undo stack.
+    void restoreParameters(const QVariantMap& values);
+
+    QUndoStack* undoStack() { return &m_undo; }
+    /// Increases with every change of the model's inputs (corpus, parameters, imports); results
+    /// computed from an older version are stale.
+    quint64 version() const { return m_version; }
+
+    /// A slider or curve drag: commands pushed between beginInteraction() and
+    /// endInteraction() with the same key merge into one undo step.
+    void beginInteraction();
+    void endInteraction();
+    /// The current interaction's id, 0 when none.
+    int interactionId() const { return m_interaction; }
+
+    // --- mutators for commands only (app/commands.cpp) ---
+    void applyParameter(const QString& key, const QVariant& value);
+    void insertImportedTake(const DerivedTake& take, int position);
+    void removeImportedTake(const QString& id);
+    int indexOfDerived(const QString& id) const;
+    /// The next unused "imported/<n>" id.
+    QString nextImportedId();
+
+signals:
+    void corpusChanged();
+    void derivedTakesChanged();
+    /// The content of take `id` changed (a live result was recomputed).
+    void takeChanged(const QString& id);
+    void selectionChanged(bunraku::widgets::TakeSlot slot);
+    void currentTimeChanged(double seconds);
+    void parameterChanged(const QString& key);
+
+private:
+    std::shared_ptr<const analysis::Corpus> m_corpus;
+    QString m_corpusSource;
+    std::shared_ptr<const analysis::synth::DemoGroundTruth> m_truth;
+    std::vector<DerivedTake> m_derived;
+    QString m_selected[2];
+    double m_time = 0.0;
+    QVariantMap m_parameters;
+    QUndoStack m_undo;
+    quint64 m_version = 1;
+    int m_interaction = 0;
+    int m_interactionSerial = 0;
+    int m_importSerial = 0;
+};
+
+} // namespace bunraku::app

@@ -1,0 +1,141 @@
+#include "app/emotion_panel.h"
+
+#include "app/commands.h"
+#include "app/parameters.h"
+#include "app/recomputer.h"
+
+#include "analysis/decompose/emotion_weight.h"
+#include "analysis/decompose/least_squares.h"
+#include "analysis/preprocess/preprocess.h"
+
+#include <QComboBox>
+#include <QFormLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QSignalBlocker>
+#include <QSlider>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace bunraku::app {
+
+struct EmotionModel {
+    analysis::Decomposition decomposition;
+};
+
+namespace {
+constexpr double kSliderScale = 100.0; // slider position = a * 100
+}
+
+EmotionPanel::EmotionPanel(Document& document, QWidget* parent) : QWidget(parent), m_document(document)
+{
+    m_method = new QComboBox(this);
+    m_method->addItem(tr("least squares (thesis 4.3.1)"), QStringLiteral("least-squares"));
+    m_method->setToolTip(tr("Decomposition of the preprocessed corpus into function and emotion components"));
+    m_weight = new QSlider(Qt::Horizontal, this);
+    m_weight->setObjectName("emotionWeight");
+    m_weight->setRange(int(analysis::kMinEmotionWeight * kSliderScale), int(analysis::kMaxEmotionWeight * kSliderScale));
+    m_weight->setValue(int(kSliderScale));
+    m_weight->setToolTip(tr("a = 0: the function alone; 1: the measured emotion; > 1: emphasised (thesis eq. 4.45)"));
+    m_label = new QLabel(tr("Decomposing the corpus..."), this);
+    m_label->setWordWrap(true);
+    auto* show = new QPushButton(tr("Show weighted as A"), this);
+    auto* form = new QFormLayout;
+    form->addRow(tr("Method"), m_method);
+    form->addRow(tr("Emotion weight a"), m_weight);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->addLayout(form);
+    layout->addWidget(m_label);
+    layout->addWidget(show);
+    layout->addStretch(1);
+
+    connect(m_weight, &QSlider::sliderPressed, &document, &Document::beginInteraction);
+    connect(m_weight, &QSlider::sliderReleased, &document, &Document::endInteraction);
+    connect(m_weight, &QSlider::valueChanged, this, [this](int position) {
+        changeParameter(m_document, parameters::kEmotionWeight, position / kSliderScale,
+                        tr("Set emotion weight"));
+    });
+    connect(show, &QPushButton::clicked, this, [this] { m_document.selectTake(TakeSlot::A, QStringLiteral("live/weighted")); });
+
+    m_recomputer = new Recomputer(
+        document,
+        [this]() -> Job {
+            if (m_document.corpus().takes.empty()) return {};
+            auto corpus = std::make_shared<const analysis::Corpus>(m_document.corpus());
+            return [corpus](const analysis::RunControl& control) -> JobOutput {
+                auto prepared = analysis::preprocess::preprocessCorpus(*corpus, {}, control);
+                if (!prepared) return {{}, QString::fromStdString(prepared.error().message)};
+                auto decomposition = analysis::decomposeLeastSquares(prepared->corpus);
+                if (!decomposition) return {{}, QString::fromStdString(decomposition.error().message)};
+                return {std::make_shared<const EmotionModel>(EmotionModel{std::move(decomposition).value()}), {}};
+            };
+        },
+        [this](const JobOutput& output) {
+            if (!output.value.has_value()) {
+                m_label->setText(tr("The corpus cannot be decomposed: %1").arg(output.error));
+                return;
+            }
+            m_model = std::any_cast<std::shared_ptr<const EmotionModel>>(output.value);
+            resolveCell();
+            synthesise();
+        },
+        this, 50, [this] { return m_corpusSerial; });
+    m_recomputer->setObjectName(tr("Decomposition"));
+
+    connect(&document, &Document::corpusChanged, this, [this] {
+        m_model.reset();
+        ++m_corpusSerial;
+        m_recomputer->schedule();
+    });
+    connect(&document, &Document::selectionChanged, this, [this](TakeSlot slot) {
+        if (slot == TakeSlot::A && m_document.selectedId(TakeSlot::A).startsWith(QStringLiteral("corpus/"))) {
+            resolveCell();
+            synthesise();
+        }
+    });
+    connect(&document, &Document::parameterChanged, this, [this](const QString& key) {
+        if (key != parameters::kEmotionWeight) return;
+        const QSignalBlocker block(m_weight);
+        if (!m_weight->isSliderDown())
+            m_weight->setValue(int(std::lround(m_document.parameter(key).toDouble() * kSliderScale)));
+        synthesise();
+    });
+}
+
+EmotionPanel::~EmotionPanel() = default;
+
+void EmotionPanel::resolveCell()
+{
+    const TakePointer takeA = m_document.selectedTake(TakeSlot::A);
+    if (!m_model || !takeA || !m_document.selectedId(TakeSlot::A).startsWith(QStringLiteral("corpus/"))) return;
+    const auto& decomposition = m_model->decomposition;
+    m_function = takeA->labels.function;
+    m_emotion = takeA->labels.emotion;
+    if (m_emotion == decomposition.neutralEmotion) {
+        // The neutral emotion has z = 0: weight the first other emotion of the function instead.
+        for (const auto& component : decomposition.emotions)
+            if (component.function == m_function && component.emotion != decomposition.neutralEmotion) {
+                m_emotion = component.emotion;
+                break;
+            }
+    }
+}
+
+void EmotionPanel::synthesise()
+{
+    if (!m_model || m_function.empty()) return;
+    const double weight = m_document.parameter(parameters::kEmotionWeight).toDouble();
+    auto take = analysis::weightEmotion(m_model->decomposition, m_function, m_emotion, weight);
+    if (!take) {
+        m_label->setText(QString::fromStdString(take.error().message));
+        return;
+    }
+    m_weighted = std::make_shared<const analysis::Take>(std::move(take).value());
+    const QString label = tr("%1/%2 a=%3").arg(QString::fromStdString(m_function), QString::fromStdString(m_emotion)).arg(weight, 0, 'f', 2);
+    m_label->setText(tr("Weighted take <b>%1</b>: x = y + a z, a = %2 (the live take \"weighted\").").arg(label).arg(weight, 0, 'f', 2));
+    m_document.setLiveTake(QStringLiteral("weighted"), label, m_weighted);
+}
+
+} // namespace bunraku::app

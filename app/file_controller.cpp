@@ -1,0 +1,337 @@
+#include "app/file_controller.h"
+
+#include "app/commands.h"
+#include "app/document.h"
+#include "app/joint_map_dialog.h"
+
+#include "analysis/io/bvh.h"
+#include "analysis/io/corpus_io.h"
+#include "analysis/io/take_reader.h"
+#include "analysis/synth/demo_corpus.h"
+
+#include <QAction>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMenu>
+#include <QMessageBox>
+#include <QSettings>
+#include <QStandardPaths>
+
+#include <filesystem>
+
+namespace bunraku::app {
+namespace {
+
+constexpr int kRecentCount = 8;
+const QString kRecentKey = QStringLiteral("files/recent");
+
+std::filesystem::path toPath(const QString& file) { return std::filesystem::path(file.toStdString()); }
+
+} // namespace
+
+FileController::FileController(Document& document, QWidget* window) : QObject(window), m_document(document), m_window(window)
+{
+    m_openCorpus = new QAction(tr("&Open Corpus Folder..."), this);
+    m_openCorpus->setShortcut(QKeySequence::Open);
+    m_openDemo = new QAction(tr("Open &Demo Corpus"), this);
+    m_import = new QAction(tr("&Import Take..."), this);
+    m_import->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_I));
+    m_import->setToolTip(tr("Import a take from CSV, BVH or FASTRAK"));
+    m_exportCsv = new QAction(tr("Export Take A as &CSV..."), this);
+    m_exportBvh = new QAction(tr("Export Take A as &BVH..."), this);
+    m_openProject = new QAction(tr("Open &Project..."), this);
+    m_openProject->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_O));
+    m_save = new QAction(tr("&Save Project"), this);
+    m_save->setShortcut(QKeySequence::Save);
+    m_saveAs = new QAction(tr("Save Project &As..."), this);
+    m_saveAs->setShortcut(QKeySequence::SaveAs);
+    m_recentMenu = new QMenu(tr("Open &Recent"), window);
+
+    connect(m_openDemo, &QAction::triggered, this, [this] {
+        if (maybeSave()) openDemoCorpus();
+    });
+    connect(m_openCorpus, &QAction::triggered, this, [this] {
+        if (!maybeSave()) return;
+        const QString folder = QFileDialog::getExistingDirectory(m_window, tr("Open corpus folder"));
+        if (!folder.isEmpty()) openCorpusFolder(folder);
+    });
+    connect(m_import, &QAction::triggered, this, &FileController::chooseAndImport);
+    connect(m_exportCsv, &QAction::triggered, this, [this] { chooseAndExport(QStringLiteral(".csv")); });
+    connect(m_exportBvh, &QAction::triggered, this, [this] { chooseAndExport(QStringLiteral(".bvh")); });
+    connect(m_openProject, &QAction::triggered, this, [this] {
+        if (!maybeSave()) return;
+        const QString file = QFileDialog::getOpenFileName(m_window, tr("Open project"), {}, tr("Bunraku projects (*.json)"));
+        if (!file.isEmpty()) openProject(file);
+    });
+    connect(m_save, &QAction::triggered, this, [this] {
+        if (m_projectPath.isEmpty())
+            m_saveAs->trigger();
+        else
+            saveProject(m_projectPath);
+    });
+    connect(m_saveAs, &QAction::triggered, this, [this] {
+        QString file = QFileDialog::getSaveFileName(m_window, tr("Save project"), m_projectPath, tr("Bunraku projects (*.json)"));
+        if (file.isEmpty()) return;
+        if (!file.endsWith(QStringLiteral(".json"))) file += kProjectSuffix;
+        saveProject(file);
+    });
+
+    m_autosaveTimer.setInterval(60 * 1000);
+    connect(&m_autosaveTimer, &QTimer::timeout, this, &FileController::autosave);
+    m_autosaveTimer.start();
+    rebuildRecentMenu();
+}
+
+void FileController::setViewStateHooks(std::function<QVariantMap()> save, std::function<void(const QVariantMap&)> restore)
+{
+    m_saveView = std::move(save);
+    m_restoreView = std::move(restore);
+}
+
+void FileController::report(const QString& title, const analysis::Error& error)
+{
+    m_lastError = QString::fromStdString(error.message);
+    emit statusMessage(title + QStringLiteral(": ") + m_lastError);
+    if (m_dialogs) QMessageBox::warning(m_window, title, m_lastError);
+}
+
+bool FileController::openDemoCorpus()
+{
+    auto demo = analysis::synth::generateDemoCorpus();
+    auto truth = std::make_shared<const analysis::synth::DemoGroundTruth>(std::move(demo.truth));
+    m_document.setCorpus(std::move(demo.corpus), QStringLiteral("demo"), std::move(truth));
+    m_projectPath.clear();
+    emit statusMessage(tr("Opened the demo corpus (%1 takes)").arg(m_document.corpus().takes.size()));
+    return true;
+}
+
+bool FileController::openCorpusFolder(const QString& folder)
+{
+    auto corpus = analysis::io::readCorpus(toPath(folder));
+    if (!corpus) {
+        report(tr("Cannot open the corpus"), corpus.error());
+        return false;
+    }
+    const QString absolute = QFileInfo(folder).absoluteFilePath();
+    m_document.setCorpus(std::move(corpus).value(), absolute);
+    m_projectPath.clear();
+    addRecent(absolute);
+    emit statusMessage(tr("Opened %1 (%2 takes)").arg(absolute).arg(m_document.corpus().takes.size()));
+    return true;
+}
+
+bool FileController::openPath(const QString& path)
+{
+    const QFileInfo info(path);
+    if (info.isDir()) return openCorpusFolder(path);
+    if (path.endsWith(QStringLiteral(".json"))) return openProject(path);
+    if (!info.exists()) {
+        report(tr("Cannot open"), analysis::makeError(analysis::ErrorCode::NotFound, path.toStdString() + ": no such file or folder"));
+        return false;
+    }
+    return importTakeFile(path);
+}
+
+bool FileController::importTakeFile(const QString& file, const QString& jointMap)
+{
+    analysis::io::ImportOptions options;
+    const auto format = analysis::io::takeFileFormat(toPath(file));
+    if (format == analysis::io::TakeFileFormat::Bvh) {
+        if (!jointMap.isEmpty()) {
+            auto map = analysis::io::parseJointMap(jointMap.toStdString());
+            if (!map) {
+                report(tr("Cannot import %1").arg(QFileInfo(file).fileName()), map.error());
+                return false;
+            }
+            options.bvh.jointMap = map.value();
+        } else if (m_dialogs) {
+            auto bvh = analysis::io::readBvh(toPath(file));
+            if (!bvh) {
+                report(tr("Cannot import %1").arg(QFileInfo(file).fileName()), bvh.error());
+                return false;
+            }
+            JointMapDialog dialog(bvh->skeleton, QFileInfo(file).fileName(), m_window);
+            if (dialog.exec() != QDialog::Accepted) return false;
+            options.bvh.jointMap = dialog.jointMap();
+        }
+    }
+    auto take = analysis::io::readTakeFile(toPath(file), options);
+    if (!take) {
+        report(tr("Cannot import %1").arg(QFileInfo(file).fileName()), take.error());
+        return false;
+    }
+    const QString absolute = QFileInfo(file).absoluteFilePath();
+    auto pointer = std::make_shared<const analysis::Take>(std::move(take).value());
+    m_document.undoStack()->push(new ImportTake(&m_document, std::move(pointer), QFileInfo(file).fileName(), absolute));
+    addRecent(absolute);
+    emit statusMessage(tr("Imported %1").arg(absolute));
+    return true;
+}
+
+bool FileController::exportTake(const QString& file)
+{
+    const TakePointer take = m_document.selectedTake(TakeSlot::A);
+    if (!take) {
+        report(tr("Nothing to export"), analysis::makeError(analysis::ErrorCode::InvalidArgument, "no take is shown as A"));
+        return false;
+    }
+    if (const auto status = analysis::io::writeTakeFile(*take, toPath(file)); !status) {
+        report(tr("Cannot export"), status.error());
+        return false;
+    }
+    emit statusMessage(tr("Exported %1 to %2").arg(m_document.takeLabel(m_document.selectedId(TakeSlot::A)), file));
+    return true;
+}
+
+ProjectState FileController::captureState() const
+{
+    ProjectState state;
+    state.corpus = m_document.corpusSource();
+    for (const auto& derived : m_document.derivedTakes())
+        if (!derived.sourcePath.isEmpty()) state.imported.push_back({derived.sourcePath, derived.label});
+    state.parameters = m_document.parameters();
+    state.takeA = m_document.selectedId(TakeSlot::A);
+    state.takeB = m_document.selectedId(TakeSlot::B);
+    state.timeSeconds = m_document.currentTime();
+    if (m_saveView) state.view = m_saveView();
+    return state;
+}
+
+bool FileController::applyState(const ProjectState& state)
+{
+    const bool opened = state.corpus == QStringLiteral("demo") ? openDemoCorpus() : openCorpusFolder(state.corpus);
+    if (!opened) return false;
+    for (const auto& recipe : state.imported) {
+        analysis::io::ImportOptions options;
+        auto take = analysis::io::readTakeFile(toPath(recipe.path), options);
+        if (!take) {
+            report(tr("Cannot re-import a take of the project"), take.error());
+            continue;
+        }
+        m_document.insertImportedTake(
+            DerivedTake{m_document.nextImportedId(), recipe.label,
+                        std::make_shared<const analysis::Take>(std::move(take).value()), recipe.path, QString()},
+            int(m_document.derivedTakes().size()));
+    }
+    m_document.restoreParameters(state.parameters);
+    m_document.selectTake(TakeSlot::A, state.takeA);
+    m_document.selectTake(TakeSlot::B, state.takeB);
+    m_document.setCurrentTime(state.timeSeconds);
+    if (m_restoreView) m_restoreView(state.view);
+    return true;
+}
+
+bool FileController::saveProject(const QString& file)
+{
+    if (const auto status = writeProject(captureState(), file); !status) {
+        report(tr("Cannot save the project"), status.error());
+        return false;
+    }
+    m_projectPath = file;
+    m_document.undoStack()->setClean();
+    QFile::remove(autosavePath());
+    addRecent(file);
+    emit statusMessage(tr("Saved %1").arg(file));
+    return true;
+}
+
+bool FileController::openProject(const QString& file)
+{
+    auto state = readProject(file);
+    if (!state) {
+        report(tr("Cannot open the project"), state.error());
+        return false;
+    }
+    if (!applyState(state.value())) return false;
+    m_projectPath = file;
+    addRecent(file);
+    emit statusMessage(tr("Opened project %1").arg(file));
+    return true;
+}
+
+QString FileController::autosavePath() const
+{
+    const QString folder = QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation);
+    return QDir(folder).filePath(QStringLiteral("autosave") + kProjectSuffix);
+}
+
+bool FileController::autosave()
+{
+    if (m_document.undoStack()->isClean()) return false;
+    QDir().mkpath(QFileInfo(autosavePath()).absolutePath());
+    return bool(writeProject(captureState(), autosavePath()));
+}
+
+void FileController::offerRecovery()
+{
+    const QString file = autosavePath();
+    if (!m_dialogs || !QFileInfo::exists(file)) return;
+    const auto answer = QMessageBox::question(
+        m_window, tr("Recover unsaved work?"),
+        tr("The workbench did not close normally last time. Recover the unsaved work from %1?").arg(file),
+        QMessageBox::Yes | QMessageBox::Discard, QMessageBox::Yes);
+    if (answer == QMessageBox::Yes && openProject(file)) {
+        m_projectPath.clear(); // the user chooses where to save it
+        return;
+    }
+    QFile::remove(file);
+}
+
+bool FileController::maybeSave()
+{
+    if (m_document.undoStack()->isClean() || !m_dialogs) return true;
+    const auto answer = QMessageBox::warning(m_window, tr("Unsaved changes"),
+                                             tr("The project has unsaved changes. Save them?"),
+                                             QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    if (answer == QMessageBox::Cancel) return false;
+    if (answer == QMessageBox::Save) {
+        m_save->trigger();
+        return m_document.undoStack()->isClean();
+    }
+    QFile::remove(autosavePath());
+    return true;
+}
+
+QStringList FileController::recentFiles() const { return QSettings().value(kRecentKey).toStringList(); }
+
+void FileController::addRecent(const QString& path)
+{
+    QStringList recent = recentFiles();
+    recent.removeAll(path);
+    recent.prepend(path);
+    while (recent.size() > kRecentCount) recent.removeLast();
+    QSettings().setValue(kRecentKey, recent);
+    rebuildRecentMenu();
+}
+
+void FileController::rebuildRecentMenu()
+{
+    m_recentMenu->clear();
+    const QStringList recent = recentFiles();
+    for (const QString& path : recent) {
+        m_recentMenu->addAction(path, this, [this, path] {
+            if (maybeSave()) openPath(path);
+        });
+    }
+    m_recentMenu->setEnabled(!recent.isEmpty());
+}
+
+void FileController::chooseAndImport()
+{
+    const QString file = QFileDialog::getOpenFileName(
+        m_window, tr("Import take"), {},
+        tr("Takes (*.csv *.bvh *.txt *.fastrak *.fst);;CSV (*.csv);;BVH (*.bvh);;FASTRAK (*.txt *.fastrak *.fst)"));
+    if (!file.isEmpty()) importTakeFile(file);
+}
+
+void FileController::chooseAndExport(const QString& suffix)
+{
+    const QString filter = suffix == QStringLiteral(".csv") ? tr("CSV (*.csv)") : tr("BVH (*.bvh)");
+    QString file = QFileDialog::getSaveFileName(m_window, tr("Export take A"), {}, filter);
+    if (file.isEmpty()) return;
+    if (!file.endsWith(suffix, Qt::CaseInsensitive)) file += suffix;
+    exportTake(file);
+}
+
+} // namespace bunraku::app

@@ -1,0 +1,103 @@
+#pragma once
+/// The File menu's actions: open a corpus (folder or the demo), import takes (CSV, BVH with a
+/// joint map dialog, FASTRAK), recent files, drag-and-drop, export of the current take (CSV,
+/// BVH), screenshots of any view, and the project file with atomic saves, autosave, recovery
+/// and the unsaved-changes prompt. Errors are shown as messages naming file, line and what was
+/// expected; nothing here throws.
+
+#include "app/project_file.h"
+
+#include "analysis/core/result.h"
+
+#include <QObject>
+#include <QString>
+#include <QStringList>
+#include <QTimer>
+
+#include <functional>
+
+class QAction;
+class QMenu;
+class QWidget;
+
+namespace bunraku::app {
+
+class Document;
+
+class FileController : public QObject {
+    Q_OBJECT
+public:
+    FileController(Document& document, QWidget* window);
+
+    /// With dialogs off (tests, --screenshot) errors go to lastError() and the status signal
+    /// instead of message boxes, and no question is asked.
+    void setDialogsEnabled(bool enabled) { m_dialogs = enabled; }
+    QString lastError() const { return m_lastError; }
+
+    /// The view state stored in projects, provided by the main window.
+    void setViewStateHooks(std::function<QVariantMap()> save, std::function<void(const QVariantMap&)> restore);
+
+    // Operations without dialogs (each returns false and reports the error on failure).
+    bool openDemoCorpus();
+    bool openCorpusFolder(const QString& folder);
+    /// Opens a corpus folder, a project file or imports a take file, by what `path` is.
+    bool openPath(const QString& path);
+    /// Imports a take; `jointMap` ("head=Head,...", may be empty) applies to BVH files.
+    bool importTakeFile(const QString& file, const QString& jointMap = {});
+    /// Writes take A (.csv or .bvh by extension).
+    bool exportTake(const QString& file);
+    bool saveProject(const QString& file);
+    bool openProject(const QString& file);
+    /// Writes the autosave file now (when there are unsaved changes).
+    bool autosave();
+    QString autosavePath() const;
+    QString projectPath() const { return m_projectPath; }
+    /// Asks to save unsaved changes; false when the user cancels.
+    bool maybeSave();
+    QStringList recentFiles() const;
+
+    QAction* openCorpusAction() const { return m_openCorpus; }
+    QAction* openDemoAction() const { return m_openDemo; }
+    QAction* importAction() const { return m_import; }
+    QAction* exportCsvAction() const { return m_exportCsv; }
+    QAction* exportBvhAction() const { return m_exportBvh; }
+    QAction* openProjectAction() const { return m_openProject; }
+    QAction* saveProjectAction() const { return m_save; }
+    QAction* saveProjectAsAction() const { return m_saveAs; }
+    QMenu* recentMenu() const { return m_recentMenu; }
+
+    /// Offers to recover an autosave left by a crash (asks only when dialogs are enabled).
+    void offerRecovery();
+
+signals:
+    void statusMessage(const QString& message);
+
+private:
+    void report(const QString& title, const analysis::Error& error);
+    void addRecent(const QString& path);
+    void rebuildRecentMenu();
+    ProjectState captureState() const;
+    bool applyState(const ProjectState& state);
+    void chooseAndImport();
+    void chooseAndExport(const QString& suffix);
+
+    Document& m_document;
+    QWidget* m_window;
+    bool m_dialogs = true;
+    QString m_lastError;
+    QString m_projectPath;
+    QTimer m_autosaveTimer;
+    std::function<QVariantMap()> m_saveView;
+    std::function<void(const QVariantMap&)> m_restoreView;
+    QAction* m_openCorpus = nullptr;
+    QAction* m_openDemo = nullptr;
+    QAction* m_import = nullptr;
+    QAction* m_exportCsv = nullptr;
+    QAction* m_exportBvh = nullptr;
+    QAction* m_openProject = nullptr;
+    QAction* m_save = nullptr;
+    QAction* m_saveAs = nullptr;
+    QMenu* m_recentMenu = nullptr;
+};
+
+} // namespace bunraku::app

@@ -1,0 +1,376 @@
+#include "app/main_window.h"
+
+#include "app/design_controller.h"
+#include "app/design_panel.h"
+#include "app/emotion_panel.h"
+#include "app/file_controller.h"
+#include "app/normalise_panel.h"
+#include "app/phrase_marks.h"
+#include "app/playback_controller.h"
+#include "app/recomputer.h"
+#include "app/viewport_panel.h"
+
+#include "widgets/corpus_browser.h"
+#include "widgets/graph_panel.h"
+#include "widgets/inspector_widget.h"
+#include "widgets/timeline_widget.h"
+#include "widgets/viewport_widget.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDir>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QProgressBar>
+#include <QSettings>
+#include <QStatusBar>
+#include <QUndoView>
+
+namespace bunraku::app {
+namespace {
+
+const QString kGeometryKey = QStringLiteral("window/geometry");
+const QString kStateKey = QStringLiteral("window/state");
+constexpr int kLayoutVersion = 1;
+
+} // namespace
+
+MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_document(new Document(this))
+{
+    setObjectName("mainWindow");
+    setAcceptDrops(true);
+    setDockNestingEnabled(true);
+    setDockOptions(AnimatedDocks | AllowNestedDocks | AllowTabbedDocks);
+    m_files = new FileController(*m_document, this);
+    m_files->setViewStateHooks([this] { return viewState(); }, [this](const QVariantMap& state) { restoreViewState(state); });
+    m_playback = new PlaybackController(*m_document, this);
+    m_status = new QLabel(this);
+    m_progress = new QProgressBar(this);
+    m_progress->setRange(0, 1000);
+    m_progress->setMaximumWidth(180);
+    m_progress->setVisible(false);
+    statusBar()->addWidget(m_status, 1);
+    statusBar()->addPermanentWidget(m_progress);
+    createViews();
+    createMenus();
+    connectDocument();
+
+    connect(m_files, &FileController::statusMessage, this, [this](const QString& message) { m_status->setText(message); });
+
+    resize(1500, 920);
+    m_defaultState = saveState(kLayoutVersion);
+    updateTitle();
+}
+
+MainWindow::~MainWindow() = default;
+
+QDockWidget* MainWindow::addDock(QWidget* widget, const QString& title, const QString& objectName, Qt::DockWidgetArea area)
+{
+    auto* dock = new QDockWidget(title, this);
+    dock->setObjectName(objectName);
+    dock->setWidget(widget);
+    dock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetClosable | QDockWidget::DockWidgetFloatable);
+    addDockWidget(area, dock);
+    m_docks.push_back(dock);
+    return dock;
+}
+
+QDockWidget* MainWindow::dock(const QString& objectName) const
+{
+    for (auto* dock : m_docks)
+        if (dock->objectName() == objectName) return dock;
+    return nullptr;
+}
+
+void MainWindow::createViews()
+{
+    m_browser = new widgets::CorpusBrowser(this);
+    m_inspector = new widgets::InspectorWidget(this);
+    m_graphs = new widgets::GraphPanel(this);
+    m_timeline = new widgets::TimelineWidget(this);
+    m_viewportPanel = new ViewportPanel(*m_document, this);
+    m_design = new DesignController(*m_document, this);
+    m_designPanel = new DesignPanel(*m_document, *m_design, this);
+    m_normalisePanel = new NormalisePanel(*m_document, this);
+    m_emotionPanel = new EmotionPanel(*m_document, this);
+    auto* history = new QUndoView(m_document->undoStack(), this);
+    history->setEmptyLabel(tr("<opened>"));
+
+    auto* corpusDock = addDock(m_browser, tr("Corpus"), "corpusDock", Qt::LeftDockWidgetArea);
+    auto* inspectorDock = addDock(m_inspector, tr("Inspector"), "inspectorDock", Qt::LeftDockWidgetArea);
+    auto* historyDock = addDock(history, tr("Undo History"), "historyDock", Qt::LeftDockWidgetArea);
+    auto* graphsDock = addDock(m_graphs, tr("Graphs"), "graphsDock", Qt::RightDockWidgetArea);
+    auto* viewDock = addDock(m_viewportPanel, tr("3D View"), "viewDock", Qt::RightDockWidgetArea);
+    auto* normaliseDock = addDock(m_normalisePanel, tr("Normalisation"), "normaliseDock", Qt::LeftDockWidgetArea);
+    auto* emotionDock = addDock(m_emotionPanel, tr("Emotion"), "emotionDock", Qt::LeftDockWidgetArea);
+    auto* designDock = addDock(m_designPanel, tr("Design"), "designDock", Qt::LeftDockWidgetArea);
+    auto* timelineDock = addDock(m_timeline, tr("Timeline"), "timelineDock", Qt::BottomDockWidgetArea);
+    splitDockWidget(viewDock, graphsDock, Qt::Horizontal);
+    splitDockWidget(corpusDock, inspectorDock, Qt::Vertical);
+    tabifyDockWidget(inspectorDock, normaliseDock);
+    tabifyDockWidget(normaliseDock, emotionDock);
+    tabifyDockWidget(emotionDock, designDock);
+    tabifyDockWidget(designDock, historyDock);
+    inspectorDock->raise();
+    timelineDock->setFeatures(timelineDock->features() & ~QDockWidget::DockWidgetVerticalTitleBar);
+    resizeDocks({corpusDock, viewDock, graphsDock}, {380, 400, 800}, Qt::Horizontal);
+    trackRecomputer(m_design->recomputer());
+    trackRecomputer(m_viewportPanel->recomputer());
+    trackRecomputer(m_normalisePanel->recomputer());
+    trackRecomputer(m_emotionPanel->recomputer());
+}
+
+void MainWindow::createMenus()
+{
+    auto* file = menuBar()->addMenu(tr("&File"));
+    file->addAction(m_files->openDemoAction());
+    file->addAction(m_files->openCorpusAction());
+    file->addMenu(m_files->recentMenu());
+    file->addSeparator();
+    file->addAction(m_files->openProjectAction());
+    file->addAction(m_files->saveProjectAction());
+    file->addAction(m_files->saveProjectAsAction());
+    file->addSeparator();
+    file->addAction(m_files->importAction());
+    file->addAction(m_files->exportCsvAction());
+    file->addAction(m_files->exportBvhAction());
+    file->addAction(tr("Save &Screenshot..."), this, &MainWindow::chooseScreenshot);
+    file->addAction(tr("Export 3D View &Frames..."), this, [this] {
+        const QString folder = QFileDialog::getExistingDirectory(this, tr("Folder for the PNG frames"));
+        if (folder.isEmpty()) return;
+        const int written = exportViewFrames(folder);
+        m_status->setText(tr("Wrote %1 frames to %2").arg(written).arg(folder));
+    });
+    file->addSeparator();
+    auto* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
+    quit->setShortcut(QKeySequence::Quit);
+
+    auto* edit = menuBar()->addMenu(tr("&Edit"));
+    auto* undo = m_document->undoStack()->createUndoAction(this, tr("&Undo"));
+    undo->setShortcut(QKeySequence::Undo);
+    auto* redo = m_document->undoStack()->createRedoAction(this, tr("&Redo"));
+    // Platform redo keys plus Ctrl+Shift+Z everywhere (on Linux it is already the platform key).
+    QList<QKeySequence> redoKeys = QKeySequence::keyBindings(QKeySequence::Redo);
+    if (!redoKeys.contains(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z))) redoKeys << QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z);
+    redo->setShortcuts(redoKeys);
+    edit->addAction(undo);
+    edit->addAction(redo);
+
+    auto* playback = menuBar()->addMenu(tr("&Playback"));
+    for (auto* action : {m_timeline->playAction(), m_timeline->stepBackAction(), m_timeline->stepForwardAction(),
+                         m_timeline->homeAction(), m_timeline->endAction(), m_timeline->loopAction()})
+        playback->addAction(action);
+
+    m_viewMenu = menuBar()->addMenu(tr("&View"));
+    for (auto* dock : m_docks) m_viewMenu->addAction(dock->toggleViewAction());
+    m_viewMenu->addSeparator();
+    m_viewMenu->addAction(tr("&Reset Layout"), this, &MainWindow::resetLayout);
+
+    auto* help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(tr("&About"), this, [this] {
+        QMessageBox::about(this, tr("About Bunraku Motion Workbench"),
+                           tr("<b>Bunraku Motion Workbench</b><p>Normalisation, emotion decomposition and design of "
+                              "puppet motion, after Hattori (2000). See docs/USER-GUIDE.md.</p>"));
+    });
+}
+
+void MainWindow::connectDocument()
+{
+    connect(m_document, &Document::corpusChanged, this, [this] {
+        refreshEntries();
+        updateTitle();
+    });
+    connect(m_document, &Document::derivedTakesChanged, this, &MainWindow::refreshEntries);
+    connect(m_document, &Document::selectionChanged, this, [this] { refreshTakes(); });
+    connect(m_document, &Document::currentTimeChanged, this, &MainWindow::refreshTime);
+    connect(m_document->undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
+
+    connect(m_browser, &widgets::CorpusBrowser::takeChosen, this,
+            [this](widgets::TakeSlot slot, const QString& id) { m_document->selectTake(slot, id); });
+    connect(m_graphs->grid(), &widgets::GraphGrid::timeScrubbed, m_document, &Document::setCurrentTime);
+    connect(m_timeline, &widgets::TimelineWidget::timeScrubbed, m_document, &Document::setCurrentTime);
+    connect(m_timeline, &widgets::TimelineWidget::playToggled, m_playback, &PlaybackController::setPlaying);
+    connect(m_playback, &PlaybackController::playingChanged, m_timeline, &widgets::TimelineWidget::setPlaying);
+    connect(m_timeline, &widgets::TimelineWidget::stepRequested, m_playback, &PlaybackController::step);
+    connect(m_timeline, &widgets::TimelineWidget::homeRequested, m_playback, &PlaybackController::goToStart);
+    connect(m_timeline, &widgets::TimelineWidget::endRequested, m_playback, &PlaybackController::goToEnd);
+    connect(m_timeline, &widgets::TimelineWidget::loopToggled, m_playback, &PlaybackController::setLooping);
+    connect(m_timeline, &widgets::TimelineWidget::speedChanged, m_playback, &PlaybackController::setSpeed);
+    m_playback->setLooping(m_timeline->looping());
+    connect(m_viewportPanel, &ViewportPanel::partPicked, m_graphs, &widgets::GraphPanel::selectPart);
+}
+
+void MainWindow::refreshEntries()
+{
+    m_browser->setEntries(m_document->browserEntries());
+    refreshTakes();
+}
+
+void MainWindow::refreshTakes()
+{
+    const TakePointer takeA = m_document->selectedTake(TakeSlot::A);
+    const TakePointer takeB = m_document->selectedTake(TakeSlot::B);
+    m_browser->setChosen(m_document->selectedId(TakeSlot::A), m_document->selectedId(TakeSlot::B));
+    m_graphs->grid()->setGhost(m_document->ghostOf(m_document->selectedId(TakeSlot::A)));
+    m_graphs->setTakes(takeA, takeB);
+    m_inspector->setTakes(takeA, takeB);
+    m_timeline->setDuration(m_document->duration(), m_document->rateHz());
+    std::vector<double> boundaries;
+    if (takeA && m_document->demoTruth()) boundaries = phraseBoundarySeconds(*m_document->demoTruth(), *takeA);
+    m_timeline->setBoundaries(std::move(boundaries));
+    refreshTime(m_document->currentTime());
+    updateTitle();
+}
+
+void MainWindow::refreshTime(double seconds)
+{
+    m_graphs->grid()->setCursorTime(seconds);
+    m_inspector->setTime(seconds);
+    m_timeline->setTime(seconds);
+}
+
+void MainWindow::updateTitle()
+{
+    const QString source = m_document->corpusSource() == QStringLiteral("demo") ? tr("demo corpus")
+                                                                               : QFileInfo(m_document->corpusSource()).fileName();
+    QString shown = m_document->takeLabel(m_document->selectedId(TakeSlot::A));
+    if (!m_document->selectedId(TakeSlot::B).isEmpty())
+        shown += tr(" vs ") + m_document->takeLabel(m_document->selectedId(TakeSlot::B));
+    setWindowTitle(tr("%1 - %2 [*] - Bunraku Motion Workbench").arg(source.isEmpty() ? tr("no corpus") : source, shown));
+    setWindowModified(!m_document->undoStack()->isClean());
+}
+
+void MainWindow::resetLayout()
+{
+    restoreState(m_defaultState, kLayoutVersion);
+    for (auto* dock : m_docks) {
+        dock->setFloating(false);
+        dock->show();
+    }
+}
+
+void MainWindow::restoreSavedLayout()
+{
+    const QSettings settings;
+    if (settings.contains(kGeometryKey)) restoreGeometry(settings.value(kGeometryKey).toByteArray());
+    if (settings.contains(kStateKey)) restoreState(settings.value(kStateKey).toByteArray(), kLayoutVersion);
+}
+
+void MainWindow::saveLayout() const
+{
+    QSettings settings;
+    settings.setValue(kGeometryKey, saveGeometry());
+    settings.setValue(kStateKey, saveState(kLayoutVersion));
+}
+
+void MainWindow::trackRecomputer(Recomputer* recomputer)
+{
+    connect(recomputer, &Recomputer::stateChanged, this, [this, recomputer](Recomputer::State state) {
+        if (state == Recomputer::State::Running)
+            m_busy.insert(recomputer);
+        else
+            m_busy.remove(recomputer);
+        m_progress->setVisible(!m_busy.isEmpty());
+        if (state == Recomputer::State::Failed) {
+            m_status->setText(tr("%1 failed: %2").arg(recomputer->objectName(), recomputer->lastError()));
+            qWarning("%s failed: %s", qPrintable(recomputer->objectName()), qPrintable(recomputer->lastError()));
+        }
+    });
+    connect(recomputer, &Recomputer::progressChanged, this,
+            [this](double fraction) { m_progress->setValue(int(fraction * 1000)); });
+}
+
+bool MainWindow::saveScreenshot(const QString& file, QWidget* widget)
+{
+    const QPixmap image = (widget ? widget : this)->grab();
+    if (!image.save(file)) {
+        m_status->setText(tr("Cannot write the screenshot %1").arg(file));
+        return false;
+    }
+    m_status->setText(tr("Saved screenshot %1").arg(file));
+    return true;
+}
+
+int MainWindow::exportViewFrames(const QString& folder)
+{
+    const TakePointer take = m_document->selectedTake(TakeSlot::A);
+    auto* view = m_viewportPanel->viewport();
+    if (!take || !view->isVisible() || !QDir().mkpath(folder)) return 0;
+    const double restore = m_document->currentTime();
+    int written = 0;
+    for (Eigen::Index frame = 0; frame < take->frameCount(); ++frame) {
+        m_document->setCurrentTime(take->timeOfFrame(frame));
+        const QImage image = view->grabFramebuffer(); // renders the current pose
+        if (image.isNull() || !image.save(QDir(folder).filePath(QStringLiteral("frame_%1.png").arg(frame, 5, 10, QLatin1Char('0')))))
+            break;
+        ++written;
+    }
+    m_document->setCurrentTime(restore);
+    return written;
+}
+
+void MainWindow::chooseScreenshot()
+{
+    QStringList views{tr("Whole window")};
+    for (auto* dock : m_docks)
+        if (dock->isVisible()) views << dock->windowTitle();
+    QString file = QFileDialog::getSaveFileName(this, tr("Save screenshot"), QStringLiteral("screenshot.png"), tr("PNG images (*.png)"));
+    if (file.isEmpty()) return;
+    if (!file.endsWith(QStringLiteral(".png"), Qt::CaseInsensitive)) file += QStringLiteral(".png");
+    // The view to grab: the dock that has focus, else the whole window.
+    QWidget* target = nullptr;
+    for (auto* dock : m_docks)
+        if (dock->isVisible() && dock->isAncestorOf(QApplication::focusWidget())) target = dock->widget();
+    saveScreenshot(file, target);
+}
+
+QVariantMap MainWindow::viewState() const
+{
+    return {{"graphLayout", int(m_graphs->grid()->graphLayout())},
+            {"twoTakeMode", int(m_graphs->grid()->twoTakeMode())},
+            {"valueScale", int(m_graphs->grid()->valueScale())},
+            {"part", m_graphs->selectedPart()},
+            {"speed", m_timeline->speed()}};
+}
+
+void MainWindow::restoreViewState(const QVariantMap& state)
+{
+    if (state.contains("graphLayout")) m_graphs->setGraphLayout(widgets::GraphLayout(state["graphLayout"].toInt()));
+    if (state.contains("twoTakeMode")) m_graphs->setTwoTakeMode(widgets::TwoTakeMode(state["twoTakeMode"].toInt()));
+    if (state.contains("valueScale")) m_graphs->setValueScale(widgets::ValueScale(state["valueScale"].toInt()));
+    if (state.contains("part")) m_graphs->selectPart(state["part"].toString());
+    if (state.contains("graphLayout")) m_graphs->setGraphLayout(widgets::GraphLayout(state["graphLayout"].toInt()));
+    if (state.contains("speed")) m_timeline->setSpeed(state["speed"].toDouble());
+}
+
+void MainWindow::closeEvent(QCloseEvent* event)
+{
+    if (!m_files->maybeSave()) {
+        event->ignore();
+        return;
+    }
+    m_playback->setPlaying(false);
+    saveLayout();
+    QFile::remove(m_files->autosavePath());
+    event->accept();
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event)
+{
+    if (event->mimeData()->hasUrls()) event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event)
+{
+    for (const QUrl& url : event->mimeData()->urls())
+        if (url.isLocalFile()) m_files->openPath(url.toLocalFile());
+    event->acceptProposedAction();
+}
+
+} // namespace bunraku::app

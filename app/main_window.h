@@ -1,0 +1,110 @@
+#pragma once
+/// The workbench window: every view is a QDockWidget (movable, closable, restorable from the
+/// View menu), the layout is saved between runs (QSettings) and "Reset layout" restores the
+/// default. It composes widgets/ over the Document; the actions live in controllers
+/// (FileController, PlaybackController) and undo commands.
+
+#include "app/document.h"
+
+#include <QMainWindow>
+#include <QSet>
+
+#include <vector>
+
+class QDockWidget;
+class QLabel;
+class QProgressBar;
+
+namespace bunraku::widgets {
+class CorpusBrowser;
+class GraphPanel;
+class InspectorWidget;
+class TimelineWidget;
+} // namespace bunraku::widgets
+
+namespace bunraku::app {
+
+class DesignController;
+class DesignPanel;
+class EmotionPanel;
+class NormalisePanel;
+class FileController;
+class PlaybackController;
+class Recomputer;
+class ViewportPanel;
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    explicit MainWindow(QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    Document& document() { return *m_document; }
+    FileController& files() { return *m_files; }
+    PlaybackController& playback() { return *m_playback; }
+    widgets::GraphPanel* graphPanel() const { return m_graphs; }
+    widgets::TimelineWidget* timeline() const { return m_timeline; }
+    widgets::InspectorWidget* inspector() const { return m_inspector; }
+    widgets::CorpusBrowser* browser() const { return m_browser; }
+    /// The 3D view dock's content.
+    ViewportPanel* viewportPanel() const { return m_viewportPanel; }
+    DesignController& design() { return *m_design; }
+    DesignPanel* designPanel() const { return m_designPanel; }
+    NormalisePanel* normalisePanel() const { return m_normalisePanel; }
+    EmotionPanel* emotionPanel() const { return m_emotionPanel; }
+    const std::vector<QDockWidget*>& docks() const { return m_docks; }
+    QDockWidget* dock(const QString& objectName) const;
+
+    /// Shows every dock in its default place.
+    void resetLayout();
+    /// Restores the saved geometry and dock layout (QSettings), if any.
+    void restoreSavedLayout();
+    void saveLayout() const;
+    /// Registers a background computation so its progress shows in the status bar.
+    void trackRecomputer(Recomputer* recomputer);
+
+    /// Grabs `widget` (the whole window when null) into an image file (PNG by extension).
+    bool saveScreenshot(const QString& file, QWidget* widget = nullptr);
+    /// Writes every frame of take A as seen in the 3D view to `folder`/frame_00000.png ...
+    /// (for a video: ffmpeg -framerate 5 -i frame_%05d.png out.mp4). Returns the frames written.
+    int exportViewFrames(const QString& folder);
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
+    void dragEnterEvent(QDragEnterEvent* event) override;
+    void dropEvent(QDropEvent* event) override;
+
+private:
+    QDockWidget* addDock(QWidget* widget, const QString& title, const QString& objectName, Qt::DockWidgetArea area);
+    void createViews();
+    void createMenus();
+    void connectDocument();
+    void refreshEntries();
+    void refreshTakes();
+    void refreshTime(double seconds);
+    void updateTitle();
+    void chooseScreenshot();
+    QVariantMap viewState() const;
+    void restoreViewState(const QVariantMap& state);
+
+    Document* m_document = nullptr;
+    FileController* m_files = nullptr;
+    PlaybackController* m_playback = nullptr;
+    widgets::GraphPanel* m_graphs = nullptr;
+    widgets::TimelineWidget* m_timeline = nullptr;
+    widgets::InspectorWidget* m_inspector = nullptr;
+    widgets::CorpusBrowser* m_browser = nullptr;
+    ViewportPanel* m_viewportPanel = nullptr;
+    DesignController* m_design = nullptr;
+    DesignPanel* m_designPanel = nullptr;
+    NormalisePanel* m_normalisePanel = nullptr;
+    EmotionPanel* m_emotionPanel = nullptr;
+    std::vector<QDockWidget*> m_docks;
+    QByteArray m_defaultState;
+    QMenu* m_viewMenu = nullptr;
+    QProgressBar* m_progress = nullptr;
+    QLabel* m_status = nullptr;
+    QSet<Recomputer*> m_busy;
+};
+
+} // namespace bunraku::app

@@ -1,0 +1,151 @@
+#include "app/viewport_panel.h"
+
+#include "app/recomputer.h"
+
+#include "widgets/viewport_widget.h"
+
+#include "analysis/axis/axis_channels.h"
+#include "analysis/axis/inertia_axis.h"
+#include "analysis/core/puppet_layout.h"
+#include "analysis/body/body_description.h"
+
+#include <QCheckBox>
+#include <QHBoxLayout>
+#include <QVBoxLayout>
+
+namespace bunraku::app {
+namespace {
+
+using AxisPoses = std::vector<std::vector<analysis::RigidTransform>>;
+
+render::SceneContent sceneOf(const std::vector<TakePointer>& takes, const AxisPoses& axes)
+{
+    render::SceneContent scene;
+    scene.body = analysis::defaultBodyDescription();
+    for (std::size_t i = 0; i < takes.size(); ++i) {
+        render::TakeSlot slot;
+        slot.take = *takes[i];
+        if (i < axes.size()) slot.world_T_axis = axes[i];
+        scene.takes.push_back(std::move(slot));
+    }
+    return scene;
+}
+
+/// The shown takes that can pose the puppet (an axis take, for one, cannot).
+std::vector<TakePointer> shownTakes(const Document& document)
+{
+    std::vector<TakePointer> takes;
+    for (TakeSlot slot : {TakeSlot::A, TakeSlot::B})
+        if (TakePointer take = document.selectedTake(slot); take && analysis::hasPuppetLayout(*take)) takes.push_back(take);
+    return takes;
+}
+
+} // namespace
+
+ViewportPanel::ViewportPanel(Document& document, QWidget* parent) : QWidget(parent), m_document(document)
+{
+    m_viewport = new widgets::ViewportWidget(this);
+    m_viewport->setObjectName("viewport");
+    m_viewport->setMinimumSize(240, 200);
+    m_puppet = new QCheckBox(tr("Puppet"), this);
+    m_axis = new QCheckBox(tr("Axis"), this);
+    m_orbits = new QCheckBox(tr("Orbits"), this);
+    m_grid = new QCheckBox(tr("Grid"), this);
+    const auto visibility = m_viewport->visibility();
+    m_puppet->setChecked(visibility.puppet);
+    m_axis->setChecked(visibility.axis);
+    m_orbits->setChecked(visibility.orbits);
+    m_grid->setChecked(visibility.grid);
+    m_orbits->setToolTip(tr("Orbits of the sensors (shown when the puppet is hidden, as in the thesis)"));
+    auto* toggles = new QHBoxLayout;
+    toggles->setContentsMargins(4, 2, 4, 0);
+    for (auto* box : {m_puppet, m_axis, m_orbits, m_grid}) {
+        toggles->addWidget(box);
+        connect(box, &QCheckBox::toggled, this, &ViewportPanel::applyVisibility);
+    }
+    toggles->addStretch(1);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(2);
+    layout->addLayout(toggles);
+    layout->addWidget(m_viewport, 1);
+
+    // The axes of the shown takes, computed off the GUI thread, then added to the scene.
+    m_axes = new Recomputer(
+        document,
+        [this]() -> Job {
+            const auto takes = shownTakes(m_document);
+            if (takes.empty()) return {};
+            return [takes](const analysis::RunControl& control) -> JobOutput {
+                static const analysis::AxisModel model = analysis::makeAxisModel(analysis::defaultBodyDescription());
+                AxisPoses axes;
+                for (const auto& take : takes) {
+                    auto axis = analysis::computeMotionAxis(model, *take, {}, control);
+                    axes.push_back(axis ? axis->world_T_axis : std::vector<analysis::RigidTransform>{});
+                }
+                return {axes, {}};
+            };
+        },
+        [this](const JobOutput& output) {
+            if (!output.value.has_value()) return;
+            const auto takes = shownTakes(m_document);
+            const auto axes = std::any_cast<AxisPoses>(output.value);
+            m_viewport->setScene(sceneOf(takes, axes));
+            m_viewport->setTime(m_document.currentTime());
+            // The motion axis of the first take is a take too: its 6 channels can be graphed.
+            if (!takes.empty() && !axes.empty() && !axes.front().empty() && takes.front() != m_axisSource) {
+                m_axisSource = takes.front(); // publish once per source take (no update loop)
+                analysis::MotionAxis axis;
+                axis.world_T_axis = axes.front();
+                axis.rateHz = takes.front()->rateHz;
+                axis.labels = takes.front()->labels;
+                auto take = std::make_shared<const analysis::Take>(analysis::axisTake(axis));
+                m_document.setLiveTake(QStringLiteral("axis"), tr("motion axis of %1").arg(QString::fromStdString(takes.front()->displayName())),
+                                       take);
+            }
+        },
+        this, 60, [this] { return m_sceneSerial; });
+    m_axes->setObjectName(tr("Motion axis"));
+
+    // Uploading a scene costs far more than posing it: rebuild at most every 40 ms.
+    m_rebuild.setSingleShot(true);
+    m_rebuild.setInterval(40);
+    connect(&m_rebuild, &QTimer::timeout, this, &ViewportPanel::rebuildScene);
+    connect(&document, &Document::selectionChanged, this, [this] {
+        if (!m_rebuild.isActive()) m_rebuild.start();
+    });
+    connect(&document, &Document::corpusChanged, this, &ViewportPanel::rebuildScene);
+    connect(&document, &Document::currentTimeChanged, m_viewport, &widgets::ViewportWidget::setTime);
+    // A body part (face, torso, ...) selects the graphs of the take part that drives it.
+    connect(m_viewport, &widgets::ViewportWidget::partPicked, this, [this](int, const QString& bodyPart) {
+        for (const auto& part : analysis::defaultBodyDescription().parts)
+            if (part.name == bodyPart.toStdString()) {
+                emit partPicked(QString::fromStdString(part.drivenBy.empty() ? part.name : part.drivenBy));
+                return;
+            }
+        emit partPicked(bodyPart);
+    });
+    rebuildScene();
+}
+
+void ViewportPanel::rebuildScene()
+{
+    const auto takes = shownTakes(m_document);
+    if (takes.empty()) return;
+    ++m_sceneSerial;
+    m_viewport->setScene(sceneOf(takes, {}));
+    m_viewport->setTime(m_document.currentTime());
+    m_axes->schedule();
+}
+
+void ViewportPanel::applyVisibility()
+{
+    auto visibility = m_viewport->visibility();
+    visibility.puppet = m_puppet->isChecked();
+    visibility.axis = m_axis->isChecked();
+    visibility.orbits = m_orbits->isChecked();
+    visibility.grid = m_grid->isChecked();
+    m_viewport->setVisibility(visibility);
+}
+
+} // namespace bunraku::app

@@ -1,0 +1,49 @@
+#pragma once
+/// The 3D view dock: the renderer's ViewportWidget showing take A (and B side by side), with
+/// toggles for the puppet, the motion axis, the orbits and the floor grid. The motion axes are
+/// computed in the background and added when ready; a click on a part selects its graphs.
+
+#include "app/document.h"
+
+#include <QTimer>
+#include <QWidget>
+
+class QCheckBox;
+
+namespace bunraku::widgets {
+class ViewportWidget;
+}
+
+namespace bunraku::app {
+
+class Recomputer;
+
+class ViewportPanel : public QWidget {
+    Q_OBJECT
+public:
+    ViewportPanel(Document& document, QWidget* parent = nullptr);
+
+    widgets::ViewportWidget* viewport() const { return m_viewport; }
+    Recomputer* recomputer() const { return m_axes; }
+
+signals:
+    /// A part of the puppet was clicked (its name in the take's channels when it has one).
+    void partPicked(const QString& part);
+
+private:
+    void rebuildScene();
+    void applyVisibility();
+
+    Document& m_document;
+    widgets::ViewportWidget* m_viewport = nullptr;
+    Recomputer* m_axes = nullptr;
+    QCheckBox* m_puppet = nullptr;
+    QCheckBox* m_axis = nullptr;
+    QCheckBox* m_orbits = nullptr;
+    QCheckBox* m_grid = nullptr;
+    quint64 m_sceneSerial = 0;
+    TakePointer m_axisSource; ///< the take whose motion axis was last published
+    QTimer m_rebuild; ///< coalesces scene rebuilds (a live take changes on every drag step)
+};
+
+} // namespace bunraku::app

@@ -1,0 +1,72 @@
+#include "tests/app/app_test_support.h"
+
+#include "app/emotion_panel.h"
+#include "app/normalise_panel.h"
+#include "app/parameters.h"
+#include "app/recomputer.h"
+
+#include <catch2/catch.hpp>
+
+#include <QSlider>
+#include <QSpinBox>
+#include <QTableWidget>
+
+using namespace bunraku;
+using app::TakeSlot;
+
+TEST_CASE("changing tau recomputes the normalised take in the background, undo restores it", "[app][normalise]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    auto* panel = window->normalisePanel();
+    auto& document = window->document();
+    REQUIRE(QTest::qWaitFor([&] { return panel->normalisedTake() && !panel->recomputer()->busy(); }, 60000));
+    const auto first = panel->normalisedTake();
+    REQUIRE(document.take(QStringLiteral("live/normalised")) == first);
+    const auto reference = document.selectedTake(TakeSlot::A);
+    REQUIRE(panel->varianceTable()->rowCount() == 5); // the cell's 5 takes
+    const Eigen::MatrixXd before = first->values;
+
+    panel->tauSpin()->setValue(0); // through the GUI: one ChangeParameter
+    REQUIRE(document.parameter(app::parameters::kNormaliseTau).toInt() == 0);
+    REQUIRE(QTest::qWaitFor([&] { return panel->normalisedTake() != first && !panel->recomputer()->busy(); }, 60000));
+    const auto second = panel->normalisedTake();
+    REQUIRE(second->frameCount() == first->frameCount());
+    REQUIRE((second->values - before).cwiseAbs().maxCoeff() > 1e-6);
+
+    document.undoStack()->undo();
+    REQUIRE(panel->tauSpin()->value() == 4);
+    REQUIRE(QTest::qWaitFor([&] { return panel->normalisedTake() != second && !panel->recomputer()->busy(); }, 60000));
+    REQUIRE((panel->normalisedTake()->values - before).cwiseAbs().maxCoeff() < 1e-12);
+}
+
+TEST_CASE("the emotion weight slider re-synthesises y + a z live as one undo step", "[app][emotion]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    auto* panel = window->emotionPanel();
+    auto& document = window->document();
+    document.selectTake(TakeSlot::A, app::Document::corpusTakeId(7)); // a friendly take
+    REQUIRE(QTest::qWaitFor([&] { return panel->ready() && panel->weightedTake(); }, 60000));
+    const Eigen::MatrixXd atOne = panel->weightedTake()->values;
+
+    auto* slider = panel->weightSlider();
+    emit slider->sliderPressed();
+    for (int position = 110; position <= 200; position += 10) slider->setValue(position);
+    emit slider->sliderReleased();
+    REQUIRE(document.undoStack()->count() == 1);
+    REQUIRE(document.parameter(app::parameters::kEmotionWeight).toDouble() == Approx(2.0));
+    const Eigen::MatrixXd atTwo = panel->weightedTake()->values;
+    REQUIRE(document.take(QStringLiteral("live/weighted"))->values == atTwo);
+
+    slider->setValue(0);
+    const Eigen::MatrixXd atZero = panel->weightedTake()->values;
+    // x(a) = y + a z is linear in a: x(2) - x(1) = x(1) - x(0) = z, and z is not zero.
+    REQUIRE(((atTwo - atOne) - (atOne - atZero)).cwiseAbs().maxCoeff() < 1e-9);
+    REQUIRE((atOne - atZero).cwiseAbs().maxCoeff() > 0.1);
+
+    document.undoStack()->undo(); // back to a = 2
+    document.undoStack()->undo(); // back to a = 1
+    REQUIRE(slider->value() == 100);
+    REQUIRE((panel->weightedTake()->values - atOne).cwiseAbs().maxCoeff() < 1e-12);
+}

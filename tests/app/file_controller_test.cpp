@@ -1,0 +1,185 @@
+#include "tests/app/app_test_support.h"
+
+#include "app/commands.h"
+#include "app/parameters.h"
+
+#include "widgets/graph_panel.h"
+#include "widgets/corpus_browser.h"
+
+#include "analysis/core/pose.h"
+#include "analysis/core/puppet_layout.h"
+#include "analysis/io/take_csv.h"
+
+#include <catch2/catch.hpp>
+
+#include <QFile>
+#include <QFileInfo>
+
+#include <fstream>
+
+using namespace bunraku;
+using app::TakeSlot;
+
+namespace {
+
+QString scratchFile(const std::string& folder, const std::string& name)
+{
+    return QString::fromStdString((test::scratchDir(folder) / name).string());
+}
+
+/// The imported takes (live results, which come and go with background work, left out).
+std::vector<app::DerivedTake> importedTakes(const app::Document& document)
+{
+    std::vector<app::DerivedTake> imported;
+    for (const auto& derived : document.derivedTakes())
+        if (!derived.sourcePath.isEmpty()) imported.push_back(derived);
+    return imported;
+}
+
+} // namespace
+
+TEST_CASE("take A exported to CSV re-imports with the same values", "[app][files]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    auto& files = window->files();
+    const auto original = window->document().selectedTake(TakeSlot::A);
+    const QString file = scratchFile("export-csv", "take.csv");
+    REQUIRE(files.exportTake(file));
+    REQUIRE(files.importTakeFile(file));
+    const auto imported = window->document().selectedTake(TakeSlot::A);
+    REQUIRE(imported != original);
+    REQUIRE(imported->channels == original->channels);
+    REQUIRE(imported->rateHz == Approx(original->rateHz));
+    REQUIRE(imported->frameCount() == original->frameCount());
+    REQUIRE((imported->values - original->values).cwiseAbs().maxCoeff() < 1e-9);
+    REQUIRE(window->browser()->takeCount() == 30 + int(window->document().derivedTakes().size()));
+    REQUIRE(importedTakes(window->document()).size() == 1);
+    REQUIRE(importedTakes(window->document()).front().sourcePath == QFileInfo(file).absoluteFilePath());
+}
+
+TEST_CASE("take A exported to BVH re-imports to the same part poses", "[app][files]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    auto& files = window->files();
+    window->document().selectTake(TakeSlot::A, app::Document::corpusTakeId(4));
+    const auto original = window->document().selectedTake(TakeSlot::A);
+    const QString file = scratchFile("export-bvh", "take.bvh");
+    REQUIRE(files.exportTake(file));
+    REQUIRE(files.importTakeFile(file, QStringLiteral("head=head,shoulder=shoulder,arm=arm,hand=hand")));
+    const auto imported = window->document().selectedTake(TakeSlot::A);
+    REQUIRE(imported->frameCount() == original->frameCount());
+    REQUIRE(imported->rateHz == Approx(original->rateHz));
+    REQUIRE(analysis::hasPuppetLayout(*imported));
+    for (Eigen::Index frame = 0; frame < original->frameCount(); frame += 7) {
+        for (int part = 0; part < analysis::kPuppetPartCount; ++part) {
+            const auto a = analysis::partPose(*original, frame, part * 6);
+            const auto b = analysis::partPose(*imported, frame, part * 6);
+            REQUIRE((a.translation - b.translation).norm() < 1e-6);
+            REQUIRE(a.rotation.angularDistance(b.rotation) < 1e-6);
+        }
+    }
+}
+
+TEST_CASE("a take file with a bad value is refused with its file and line, and nothing changes", "[app][files]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    const QString file = scratchFile("bad-import", "bad.csv");
+    {
+        std::ofstream out(file.toStdString());
+        out << "time_s,head.x\n0,1\n0.2,nan\n";
+    }
+    REQUIRE_FALSE(window->files().importTakeFile(file));
+    REQUIRE(window->files().lastError().contains(QStringLiteral("bad.csv:3")));
+    REQUIRE(importedTakes(window->document()).empty());
+    REQUIRE(window->document().undoStack()->count() == 0);
+}
+
+TEST_CASE("a saved project reopens to the same state", "[app][files]")
+{
+    const QString project = scratchFile("project", "session.bunraku.json");
+    const QString takeFile = scratchFile("project-take", "take.csv");
+    QString takeB;
+    {
+        auto window = test::demoWindow();
+        REQUIRE(window);
+        auto& document = window->document();
+        REQUIRE(window->files().exportTake(takeFile));
+        REQUIRE(window->files().importTakeFile(takeFile));
+        app::changeParameter(document, app::parameters::kNormaliseTau, 6);
+        app::changeParameter(document, app::parameters::kEmotionWeight, 1.75);
+        takeB = app::Document::corpusTakeId(12);
+        document.selectTake(TakeSlot::A, app::Document::corpusTakeId(3));
+        document.selectTake(TakeSlot::B, takeB);
+        document.setCurrentTime(5.4);
+        window->graphPanel()->selectPart(QStringLiteral("arm"));
+        window->graphPanel()->setTwoTakeMode(widgets::TwoTakeMode::SideBySide);
+        REQUIRE(window->graphPanel()->grid()->graphCount() == 12);
+        REQUIRE(window->isWindowModified());
+        REQUIRE(window->files().saveProject(project));
+        REQUIRE_FALSE(window->isWindowModified());
+    }
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    REQUIRE(window->files().openProject(project));
+    const auto& document = window->document();
+    REQUIRE(document.corpusSource() == QStringLiteral("demo"));
+    REQUIRE(document.parameter(app::parameters::kNormaliseTau).toInt() == 6);
+    REQUIRE(document.parameter(app::parameters::kEmotionWeight).toDouble() == 1.75);
+    REQUIRE(document.selectedId(TakeSlot::A) == app::Document::corpusTakeId(3));
+    REQUIRE(document.selectedId(TakeSlot::B) == takeB);
+    REQUIRE(document.currentTime() == Approx(5.4));
+    REQUIRE(importedTakes(document).size() == 1);
+    REQUIRE(importedTakes(document)[0].sourcePath == takeFile);
+    REQUIRE(window->graphPanel()->selectedPart() == QStringLiteral("arm"));
+    REQUIRE(window->graphPanel()->grid()->graphCount() == 12);
+    REQUIRE(window->files().projectPath() == project);
+    REQUIRE_FALSE(window->isWindowModified());
+}
+
+TEST_CASE("a broken project file is reported with its line and what was expected", "[app][files]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    const QString file = scratchFile("broken-project", "broken.bunraku.json");
+    {
+        std::ofstream out(file.toStdString());
+        out << "{\n  \"format\": \"bunraku-project\",\n  \"version\": 1,\n  oops\n}\n";
+    }
+    REQUIRE_FALSE(window->files().openProject(file));
+    REQUIRE(window->files().lastError().contains(QStringLiteral("broken.bunraku.json:4")));
+    {
+        std::ofstream out(file.toStdString());
+        out << "{\"format\": \"something-else\"}";
+    }
+    REQUIRE_FALSE(window->files().openProject(file));
+    REQUIRE(window->files().lastError().contains(QStringLiteral("bunraku-project")));
+    REQUIRE(window->document().corpusSource() == QStringLiteral("demo")); // unchanged
+}
+
+TEST_CASE("autosave writes the unsaved work and a saved project removes it", "[app][files]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    auto& files = window->files();
+    QFile::remove(files.autosavePath());
+    REQUIRE_FALSE(files.autosave()); // nothing to save
+    app::changeParameter(window->document(), app::parameters::kNormaliseSearchBand, 12);
+    REQUIRE(files.autosave());
+    const auto recovered = app::readProject(files.autosavePath());
+    REQUIRE(recovered.ok());
+    REQUIRE(recovered->parameters.value(app::parameters::kNormaliseSearchBand).toInt() == 12);
+    REQUIRE(files.saveProject(scratchFile("autosave-project", "p.bunraku.json")));
+    REQUIRE_FALSE(QFile::exists(files.autosavePath()));
+}
+
+TEST_CASE("opening a missing corpus folder is an error message, not a crash", "[app][files]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    REQUIRE_FALSE(window->files().openCorpusFolder(QStringLiteral("/nonexistent/corpus")));
+    REQUIRE(window->files().lastError().contains(QStringLiteral("/nonexistent/corpus")));
+    REQUIRE(window->document().corpus().takes.size() == 30);
+}

@@ -1,0 +1,141 @@
+#include "widgets/graph_grid.h"
+
+#include "widgets/take_series.h"
+
+#include "tests/widgets/synthetic_take.h"
+
+#include <catch2/catch.hpp>
+#include <qcustomplot.h>
+
+#include <QSignalSpy>
+#include <QTest>
+
+using namespace bunraku;
+using widgets::GraphLayout;
+using widgets::TwoTakeMode;
+
+namespace {
+
+void showGrid(widgets::GraphGrid& grid)
+{
+    grid.resize(900, 700);
+    grid.show();
+    REQUIRE(QTest::qWaitForWindowExposed(&grid));
+    grid.plot()->replot();
+    QCoreApplication::processEvents();
+}
+
+} // namespace
+
+TEST_CASE("every graph's cursor and moving points follow the time", "[widgets][graph_grid]")
+{
+    widgets::GraphGrid grid;
+    const auto takeA = test::syntheticPuppetTake(60);
+    const auto takeB = test::syntheticPuppetTake(40, 5.0);
+    grid.setTakes(takeA, takeB);
+    showGrid(grid);
+    REQUIRE(grid.graphCount() == 24);
+    for (double t : {0.0, 3.3, 7.9, 11.0}) {
+        grid.setCursorTime(t);
+        for (int g = 0; g < grid.graphCount(); ++g) {
+            REQUIRE(grid.graphCursorTime(g) == t);
+            const auto& cell = grid.graphCell(g);
+            const auto channel = *widgets::findChannel(*takeA, cell.part, cell.dof);
+            REQUIRE(grid.graphPointValue(g, 0).value() == Approx(*widgets::valueAt(*takeA, channel, t)));
+            // B is 39 frames = 7.8 s long: its point disappears after its end.
+            REQUIRE(grid.graphPointValue(g, 1).has_value() == (t <= takeB->duration()));
+            if (t <= takeB->duration())
+                REQUIRE(grid.graphPointValue(g, 1).value() == Approx(*widgets::valueAt(*takeB, channel, t)));
+        }
+    }
+}
+
+TEST_CASE("moving the cursor replots only the cursor layer, never the curves", "[widgets][graph_grid]")
+{
+    widgets::GraphGrid grid;
+    grid.setTakes(test::syntheticPuppetTake(60), test::syntheticPuppetTake(60, 1.0));
+    grid.setTwoTakeMode(TwoTakeMode::SideBySide);
+    showGrid(grid);
+    REQUIRE(grid.graphCount() == 48);
+    QSignalSpy fullReplots(grid.plot(), &QCustomPlot::beforeReplot);
+    for (int frame = 0; frame < 30; ++frame) grid.setCursorTime(frame / 5.0);
+    REQUIRE(fullReplots.count() == 0);
+    REQUIRE(grid.plot()->layer("cursor")->mode() == QCPLayer::lmBuffered);
+    // Changing the data does replot the curves.
+    grid.setValueScale(widgets::ValueScale::PerDof);
+    REQUIRE(fullReplots.count() == 1);
+}
+
+TEST_CASE("the two-take layouts count 48, 12, 8 and 2 graphs side by side", "[widgets][graph_grid]")
+{
+    widgets::GraphGrid grid;
+    grid.setTakes(test::syntheticPuppetTake(30), test::syntheticPuppetTake(30, 1.0));
+    const auto [layout, overlay, sideBySide] = GENERATE(table<GraphLayout, int, int>({
+        {GraphLayout::AllChannels, 24, 48},
+        {GraphLayout::OnePart, 6, 12},
+        {GraphLayout::OneDof, 4, 8},
+        {GraphLayout::Single, 1, 2},
+    }));
+    grid.setGraphLayout(layout);
+    grid.setTwoTakeMode(TwoTakeMode::Overlay);
+    REQUIRE(grid.graphCount() == overlay);
+    REQUIRE(grid.plot()->graphCount() == 2 * overlay); // A and B curves in each graph
+    grid.setTwoTakeMode(TwoTakeMode::SideBySide);
+    REQUIRE(grid.graphCount() == sideBySide);
+    REQUIRE(grid.plot()->axisRectCount() == sideBySide);
+}
+
+TEST_CASE("zooming time in one graph zooms every graph", "[widgets][graph_grid]")
+{
+    widgets::GraphGrid grid;
+    grid.setTakes(test::syntheticPuppetTake(100), nullptr);
+    showGrid(grid);
+    REQUIRE(grid.timeRange().second == Approx(99.0 / 5.0));
+    const QRect rect = grid.graphRect(5);
+    QWheelEvent wheel(QPointF(rect.center()), grid.plot()->mapToGlobal(QPointF(rect.center())), QPoint(), QPoint(0, 240),
+                      Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+    QCoreApplication::sendEvent(grid.plot(), &wheel);
+    const auto [lower, upper] = grid.timeRange();
+    REQUIRE(upper - lower < 99.0 / 5.0 * 0.9);
+    for (int g = 0; g < grid.graphCount(); ++g) {
+        const QCPRange range = grid.plot()->axisRect(g)->axis(QCPAxis::atBottom)->range();
+        REQUIRE(range.lower == Approx(lower));
+        REQUIRE(range.upper == Approx(upper));
+    }
+    grid.resetTimeRange();
+    REQUIRE(grid.timeRange().first == 0.0);
+    REQUIRE(grid.timeRange().second == Approx(99.0 / 5.0));
+}
+
+TEST_CASE("pressing and dragging in a graph scrubs the time under the mouse", "[widgets][graph_grid]")
+{
+    widgets::GraphGrid grid;
+    grid.setTakes(test::syntheticPuppetTake(100), nullptr);
+    showGrid(grid);
+    QSignalSpy scrubbed(&grid, &widgets::GraphGrid::timeScrubbed);
+    const QRect rect = grid.graphRect(13);
+    const QPoint quarter(rect.left() + rect.width() / 4, rect.center().y());
+    const QPoint threeQuarters(rect.left() + 3 * rect.width() / 4, rect.center().y());
+    QTest::mousePress(grid.plot(), Qt::LeftButton, Qt::NoModifier, quarter);
+    QMouseEvent move(QEvent::MouseMove, QPointF(threeQuarters), grid.plot()->mapToGlobal(QPointF(threeQuarters)),
+                     Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(grid.plot(), &move);
+    QTest::mouseRelease(grid.plot(), Qt::LeftButton, Qt::NoModifier, threeQuarters);
+    REQUIRE(scrubbed.count() == 2);
+    const double duration = 99.0 / 5.0;
+    REQUIRE(scrubbed[0][0].toDouble() == Approx(duration / 4).margin(duration / 50));
+    REQUIRE(scrubbed[1][0].toDouble() == Approx(3 * duration / 4).margin(duration / 50));
+}
+
+TEST_CASE("per-DOF scaling gives graphs of one DOF the same value range", "[widgets][graph_grid]")
+{
+    widgets::GraphGrid grid;
+    grid.setTakes(test::syntheticPuppetTake(60), nullptr);
+    grid.setValueScale(widgets::ValueScale::PerDof);
+    for (int g = 0; g < grid.graphCount(); ++g)
+        for (int h = 0; h < grid.graphCount(); ++h)
+            if (grid.graphCell(g).dof == grid.graphCell(h).dof) REQUIRE(grid.graphValueRange(g) == grid.graphValueRange(h));
+    grid.setValueScale(widgets::ValueScale::PerGraph);
+    // head.x (channel 0, amplitude 1) and hand.x (channel 18, amplitude 19) now differ.
+    REQUIRE(grid.graphValueRange(0) != grid.graphValueRange(12 + 6));
+}

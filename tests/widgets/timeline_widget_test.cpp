@@ -1,0 +1,63 @@
+#include "widgets/timeline_widget.h"
+
+#include "widgets/scrub_bar.h"
+
+#include <catch2/catch.hpp>
+
+#include <QAction>
+#include <QSignalSpy>
+#include <QTest>
+
+using namespace bunraku;
+
+TEST_CASE("the timeline's keys request play, steps, start and end", "[widgets][timeline]")
+{
+    widgets::TimelineWidget timeline;
+    timeline.setDuration(20.0, 5.0);
+    timeline.show();
+    REQUIRE(QTest::qWaitForWindowExposed(&timeline));
+    timeline.activateWindow();
+    QSignalSpy play(&timeline, &widgets::TimelineWidget::playToggled);
+    QSignalSpy step(&timeline, &widgets::TimelineWidget::stepRequested);
+    QSignalSpy home(&timeline, &widgets::TimelineWidget::homeRequested);
+    QSignalSpy end(&timeline, &widgets::TimelineWidget::endRequested);
+    timeline.playAction()->trigger();
+    timeline.stepForwardAction()->trigger();
+    timeline.stepBackAction()->trigger();
+    timeline.homeAction()->trigger();
+    timeline.endAction()->trigger();
+    REQUIRE(play.count() == 1);
+    REQUIRE(play[0][0].toBool());
+    REQUIRE(step.count() == 2);
+    REQUIRE(step[0][0].toInt() == 1);
+    REQUIRE(step[1][0].toInt() == -1);
+    REQUIRE(home.count() == 1);
+    REQUIRE(end.count() == 1);
+    REQUIRE(timeline.playAction()->shortcut() == QKeySequence(Qt::Key_Space));
+    REQUIRE(timeline.homeAction()->shortcut() == QKeySequence(Qt::Key_Home));
+}
+
+TEST_CASE("the speed is limited to 0.1x to 4x", "[widgets][timeline]")
+{
+    widgets::TimelineWidget timeline;
+    timeline.setSpeed(10.0);
+    REQUIRE(timeline.speed() == Approx(4.0));
+    timeline.setSpeed(0.01);
+    REQUIRE(timeline.speed() == Approx(0.1));
+}
+
+TEST_CASE("pressing the scrub bar requests the time under the mouse", "[widgets][timeline]")
+{
+    widgets::ScrubBar bar;
+    bar.resize(416, 30);
+    bar.setDuration(20.0);
+    bar.setBoundaries({4.0, 10.0});
+    bar.show();
+    REQUIRE(QTest::qWaitForWindowExposed(&bar));
+    QSignalSpy scrubbed(&bar, &widgets::ScrubBar::scrubbed);
+    QTest::mousePress(&bar, Qt::LeftButton, Qt::NoModifier, QPoint(bar.xOfTime(5.0), 15));
+    REQUIRE(scrubbed.count() == 1);
+    REQUIRE(scrubbed[0][0].toDouble() == Approx(5.0).margin(0.05));
+    REQUIRE(bar.timeAtX(bar.xOfTime(12.5)) == Approx(12.5).margin(0.05));
+    REQUIRE(bar.boundaries().size() == 2);
+}

@@ -1,0 +1,108 @@
+#include "widgets/gain_table.h"
+
+#include <QFormLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QSlider>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace bunraku::widgets {
+
+GainTable::GainTable(QWidget* parent) : QWidget(parent), m_table(new QTableWidget(this))
+{
+    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_table->setSelectionMode(QAbstractItemView::SingleSelection);
+    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    m_table->verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 6);
+    m_table->setToolTip(tr("g0: gain of the phrase's mean, g1: gain of its first harmonic (thesis eqs. 5.22, 5.23)"));
+    auto makeSlider = [this](const char* name) {
+        auto* slider = new QSlider(Qt::Horizontal, this);
+        slider->setObjectName(name);
+        slider->setRange(-200, 200);
+        slider->setEnabled(false);
+        connect(slider, &QSlider::sliderPressed, this, &GainTable::dragStarted);
+        connect(slider, &QSlider::sliderReleased, this, &GainTable::dragFinished);
+        connect(slider, &QSlider::valueChanged, this, &GainTable::sliderMoved);
+        return slider;
+    };
+    m_g0 = makeSlider("gainG0");
+    m_g1 = makeSlider("gainG1");
+    m_label = new QLabel(tr("Select a phrase and DOF"), this);
+    auto* form = new QFormLayout;
+    form->addRow(m_label);
+    form->addRow(tr("g0 (mean)"), m_g0);
+    form->addRow(tr("g1 (amplitude)"), m_g1);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(m_table, 1);
+    layout->addLayout(form);
+    connect(m_table, &QTableWidget::currentCellChanged, this, [this] { bindSliders(); });
+}
+
+double GainTable::gainOfPosition(int position) { return std::pow(2.0, position / 100.0); }
+int GainTable::positionOfGain(double gain) { return gain > 0.0 ? int(std::lround(100.0 * std::log2(gain))) : -200; }
+
+void GainTable::setGains(const analysis::GainSet& gains)
+{
+    m_gains = gains;
+    const int row = m_table->currentRow();
+    const int column = m_table->currentColumn();
+    m_binding = true;
+    m_table->setRowCount(int(gains.phrases.size()));
+    m_table->setColumnCount(int(gains.dofNames.size()));
+    QStringList headers;
+    for (const auto& name : gains.dofNames) headers << QString::fromStdString(name).remove(QStringLiteral("axis."));
+    m_table->setHorizontalHeaderLabels(headers);
+    for (int p = 0; p < int(gains.phrases.size()); ++p) {
+        const auto& phrase = gains.phrases[std::size_t(p)];
+        m_table->setVerticalHeaderItem(p, new QTableWidgetItem(tr("%1-%2").arg(phrase.begin).arg(phrase.end)));
+        for (int d = 0; d < int(phrase.dofs.size()) && d < m_table->columnCount(); ++d) {
+            const auto& gain = phrase.dofs[std::size_t(d)];
+            auto* item = new QTableWidgetItem(QStringLiteral("%1 / %2").arg(gain.g0, 0, 'f', 2).arg(gain.g1, 0, 'f', 2));
+            item->setTextAlignment(Qt::AlignCenter);
+            if (!gain.reason.empty()) item->setToolTip(QString::fromStdString(gain.reason));
+            m_table->setItem(p, d, item);
+        }
+    }
+    if (row >= 0 && row < m_table->rowCount() && column >= 0 && column < m_table->columnCount())
+        m_table->setCurrentCell(row, column);
+    m_binding = false;
+    bindSliders();
+}
+
+void GainTable::selectCell(int phrase, int dof) { m_table->setCurrentCell(phrase, dof); }
+
+void GainTable::bindSliders()
+{
+    const int p = m_table->currentRow();
+    const int d = m_table->currentColumn();
+    const bool valid = p >= 0 && d >= 0 && p < int(m_gains.phrases.size()) && d < int(m_gains.phrases[std::size_t(p)].dofs.size());
+    m_g0->setEnabled(valid);
+    m_g1->setEnabled(valid);
+    if (!valid) return;
+    const auto& gain = m_gains.phrases[std::size_t(p)].dofs[std::size_t(d)];
+    const bool wasBinding = m_binding;
+    m_binding = true;
+    if (!m_g0->isSliderDown()) m_g0->setValue(positionOfGain(gain.g0));
+    if (!m_g1->isSliderDown()) m_g1->setValue(positionOfGain(gain.g1));
+    m_binding = wasBinding;
+    m_label->setText(tr("Phrase %1, %2: g0 = %3, g1 = %4")
+                         .arg(p + 1)
+                         .arg(QString::fromStdString(m_gains.dofNames[std::size_t(d)]))
+                         .arg(gain.g0, 0, 'f', 2)
+                         .arg(gain.g1, 0, 'f', 2));
+}
+
+void GainTable::sliderMoved()
+{
+    if (m_binding) return;
+    const int p = m_table->currentRow();
+    const int d = m_table->currentColumn();
+    if (p < 0 || d < 0) return;
+    emit gainEdited(p, d, gainOfPosition(m_g0->value()), gainOfPosition(m_g1->value()));
+}
+
+} // namespace bunraku::widgets

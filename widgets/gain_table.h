@@ -1,0 +1,52 @@
+#pragma once
+/// The per-phrase gain table of a design (thesis 5.4): one row per phrase, one column per axis
+/// DOF, each cell "g0 / g1"; the selected cell's g0 and g1 are edited with two sliders on a
+/// logarithmic scale (0.25 to 4). The table never changes its own gains: it proposes edits
+/// (gainEdited) and shows what setGains gives it.
+
+#include "analysis/design/phrase_gains.h"
+
+#include <QWidget>
+
+class QLabel;
+class QSlider;
+class QTableWidget;
+
+namespace bunraku::widgets {
+
+class GainTable : public QWidget {
+    Q_OBJECT
+public:
+    explicit GainTable(QWidget* parent = nullptr);
+
+    void setGains(const analysis::GainSet& gains);
+    const analysis::GainSet& gains() const { return m_gains; }
+    /// Selects the cell of `phrase` and `dof` (binds the sliders to it).
+    void selectCell(int phrase, int dof);
+    QSlider* g0Slider() const { return m_g0; }
+    QSlider* g1Slider() const { return m_g1; }
+    QTableWidget* table() const { return m_table; }
+
+    /// Slider position <-> gain: 2^(position / 100), position in [-200, 200].
+    static double gainOfPosition(int position);
+    static int positionOfGain(double gain);
+
+signals:
+    void dragStarted();
+    void dragFinished();
+    /// The user proposes g0 and g1 for one phrase and DOF.
+    void gainEdited(int phrase, int dof, double g0, double g1);
+
+private:
+    void bindSliders();
+    void sliderMoved();
+
+    QTableWidget* m_table = nullptr;
+    QSlider* m_g0 = nullptr;
+    QSlider* m_g1 = nullptr;
+    QLabel* m_label = nullptr;
+    analysis::GainSet m_gains;
+    bool m_binding = false;
+};
+
+} // namespace bunraku::widgets

@@ -1,0 +1,376 @@
+#include "widgets/graph_grid.h"
+
+#include "widgets/take_series.h"
+
+#include <qcustomplot.h>
+
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace bunraku::widgets {
+namespace {
+
+constexpr const char* kCursorLayer = "cursor";
+
+bool sameCells(const std::vector<GraphCell>& a, const std::vector<GraphCell>& b)
+{
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const GraphCell& x, const GraphCell& y) {
+        return x.part == y.part && x.dof == y.dof && x.takes == y.takes && x.row == y.row && x.column == y.column;
+    });
+}
+
+bool drawsSlot(GraphTakes takes, int slot)
+{
+    return takes == GraphTakes::AAndB || (slot == 0 ? takes == GraphTakes::OnlyA : takes == GraphTakes::OnlyB);
+}
+
+ValueRange merged(std::optional<ValueRange> a, const ValueRange& b)
+{
+    return a ? ValueRange{std::min(a->lower, b.lower), std::max(a->upper, b.upper)} : b;
+}
+
+std::pair<double, double> padded(const ValueRange& range)
+{
+    const double span = range.upper - range.lower;
+    if (!(span > 1e-9)) return {range.lower - 1.0, range.upper + 1.0};
+    return {range.lower - 0.08 * span, range.upper + 0.08 * span};
+}
+
+} // namespace
+
+GraphGrid::GraphGrid(QWidget* parent) : QWidget(parent), m_plot(new QCustomPlot(this))
+{
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(m_plot);
+    m_plot->setObjectName("graphPlot");
+    m_plot->addLayer(kCursorLayer, m_plot->layer("axes"), QCustomPlot::limAbove);
+    m_plot->layer(kCursorLayer)->setMode(QCPLayer::lmBuffered);
+    m_plot->setInteractions(QCP::iRangeZoom);
+    m_plot->setNoAntialiasingOnDrag(true);
+    m_plot->plotLayout()->clear();
+    m_plot->plotLayout()->setRowSpacing(2);
+    m_plot->plotLayout()->setColumnSpacing(6);
+    connect(m_plot, &QCustomPlot::mousePress, this, &GraphGrid::onMousePress);
+    connect(m_plot, &QCustomPlot::mouseMove, this, &GraphGrid::onMouseMove);
+    connect(m_plot, &QCustomPlot::mouseRelease, this, &GraphGrid::onMouseRelease);
+    connect(m_plot, &QCustomPlot::mouseDoubleClick, this, [this](QMouseEvent*) { resetTimeRange(); });
+}
+
+GraphGrid::~GraphGrid() = default;
+
+const analysis::Take* GraphGrid::slotTake(int slot) const { return m_takes[slot].get(); }
+
+void GraphGrid::setTakes(std::shared_ptr<const analysis::Take> takeA, std::shared_ptr<const analysis::Take> takeB)
+{
+    const bool firstTakes = !m_takes[0];
+    m_takes[0] = std::move(takeA);
+    m_takes[1] = std::move(takeB);
+    rebuild();
+    if (firstTakes) resetTimeRange();
+}
+
+void GraphGrid::setGhost(std::shared_ptr<const analysis::Take> ghost)
+{
+    if (ghost == m_ghost) return;
+    m_ghost = std::move(ghost);
+    rebuild();
+}
+
+void GraphGrid::setGraphLayout(GraphLayout layout)
+{
+    m_options.layout = layout;
+    rebuild();
+}
+
+void GraphGrid::setTwoTakeMode(TwoTakeMode mode)
+{
+    m_options.twoTakeMode = mode;
+    rebuild();
+}
+
+void GraphGrid::setValueScale(ValueScale scale)
+{
+    m_scale = scale;
+    applyValueRanges();
+    m_plot->replot();
+}
+
+void GraphGrid::setSelectedChannel(const std::string& part, const std::string& dof)
+{
+    m_options.selectedPart = part;
+    m_options.selectedDof = dof;
+    if (m_options.layout != GraphLayout::AllChannels) rebuild();
+}
+
+void GraphGrid::rebuild()
+{
+    m_options.hasTakeB = m_takes[1] != nullptr;
+    const std::vector<GraphCell> cells = m_takes[0] ? layoutGraphs(m_takes[0]->channels, m_options) : std::vector<GraphCell>{};
+    std::vector<GraphCell> current;
+    for (const auto& graph : m_graphs) current.push_back(graph.cell);
+    const bool sameStructure = !m_graphs.empty() && sameCells(cells, current) && bool(m_ghost) == (m_graphs.front().ghost != nullptr);
+
+    if (!sameStructure) {
+        m_plot->clearItems();
+        m_plot->clearGraphs();
+        m_plot->plotLayout()->clear();
+        m_graphs.clear();
+        int lastRow = 0;
+        for (const auto& cell : cells) lastRow = std::max(lastRow, cell.row);
+        auto* margins = new QCPMarginGroup(m_plot);
+        QFont tickFont = font();
+        tickFont.setPointSizeF(std::max(6.0, tickFont.pointSizeF() - 2.0));
+        for (const auto& cell : cells) {
+            Graph graph;
+            graph.cell = cell;
+            graph.rect = new QCPAxisRect(m_plot, true);
+            m_plot->plotLayout()->addElement(cell.row, cell.column, graph.rect);
+            graph.rect->setMarginGroup(QCP::msLeft | QCP::msRight, margins);
+            graph.rect->setRangeZoom(Qt::Horizontal);
+            graph.rect->setRangeDrag(Qt::Horizontal);
+            graph.rect->setMinimumSize(60, 28);
+            auto* timeAxis = graph.rect->axis(QCPAxis::atBottom);
+            auto* valueAxis = graph.rect->axis(QCPAxis::atLeft);
+            graph.rect->axis(QCPAxis::atTop)->setVisible(false);
+            graph.rect->axis(QCPAxis::atRight)->setVisible(false);
+            timeAxis->setTickLabelFont(tickFont);
+            valueAxis->setTickLabelFont(tickFont);
+            valueAxis->ticker()->setTickCount(3);
+            // 2 s time ticks as in the thesis's graphs; tick labels only under the bottom row.
+            auto ticker = QSharedPointer<QCPAxisTickerFixed>::create();
+            ticker->setTickStep(2.0);
+            ticker->setScaleStrategy(QCPAxisTickerFixed::ssMultiples);
+            timeAxis->setTicker(ticker);
+            timeAxis->setTickLabels(cell.row == lastRow);
+            timeAxis->setRange(m_rangeLower, m_rangeUpper);
+            connect(timeAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this,
+                    [this, rect = graph.rect](const QCPRange&) { propagateTimeRange(rect); });
+
+            if (m_ghost) {
+                graph.ghost = m_plot->addGraph(timeAxis, valueAxis);
+                graph.ghost->setPen(QPen(m_colours.ghost, 1.0, Qt::DashLine));
+            }
+            for (int slot = 0; slot < 2; ++slot) {
+                if (!drawsSlot(cell.takes, slot)) continue;
+                graph.curves[slot] = m_plot->addGraph(timeAxis, valueAxis);
+                graph.curves[slot]->setPen(QPen(slot == 0 ? m_colours.takeA : m_colours.takeB, 1.4));
+            }
+
+            auto* name = new QCPItemText(m_plot);
+            name->setClipToAxisRect(false);
+            name->position->setType(QCPItemPosition::ptAxisRectRatio);
+            name->position->setAxisRect(graph.rect);
+            name->position->setCoords(0.01, 0.02);
+            name->setPositionAlignment(Qt::AlignLeft | Qt::AlignTop);
+            name->setFont(tickFont);
+            const QString label = QString::fromStdString(cell.part + "." + cell.dof);
+            name->setText(cell.takes == GraphTakes::OnlyB ? label + " (B)" : label);
+
+            m_plot->setCurrentLayer(kCursorLayer);
+            graph.cursor = new QCPItemStraightLine(m_plot);
+            graph.cursor->setClipAxisRect(graph.rect);
+            graph.cursor->setPen(QPen(QColor(0xc0, 0x20, 0x20), 1.0));
+            for (auto* position : {graph.cursor->point1, graph.cursor->point2}) position->setAxes(timeAxis, valueAxis);
+            for (int slot = 0; slot < 2; ++slot) {
+                if (!graph.curves[slot]) continue;
+                auto* point = new QCPItemTracer(m_plot);
+                point->setClipAxisRect(graph.rect);
+                point->position->setAxes(timeAxis, valueAxis);
+                point->setStyle(QCPItemTracer::tsCircle);
+                point->setSize(6.0);
+                const QColor colour = slot == 0 ? m_colours.takeA : m_colours.takeB;
+                point->setPen(QPen(colour.darker(130)));
+                point->setBrush(colour);
+                graph.points[slot] = point;
+            }
+            graph.valueText = new QCPItemText(m_plot);
+            graph.valueText->setClipToAxisRect(false);
+            graph.valueText->position->setType(QCPItemPosition::ptAxisRectRatio);
+            graph.valueText->position->setAxisRect(graph.rect);
+            graph.valueText->position->setCoords(0.99, 0.02);
+            graph.valueText->setPositionAlignment(Qt::AlignRight | Qt::AlignTop);
+            graph.valueText->setFont(tickFont);
+            m_plot->setCurrentLayer("main");
+            m_graphs.push_back(graph);
+        }
+    }
+
+    // Data: per curve, the channel of its take matched by name.
+    const QVector<double> noData;
+    for (auto& graph : m_graphs) {
+        for (int slot = 0; slot < 2; ++slot) {
+            graph.channels[slot].reset();
+            if (!graph.curves[slot]) continue;
+            const analysis::Take* take = slotTake(slot);
+            if (take) graph.channels[slot] = findChannel(*take, graph.cell.part, graph.cell.dof);
+            if (take && graph.channels[slot])
+                graph.curves[slot]->setData(frameTimes(*take), channelValues(*take, *graph.channels[slot]), true);
+            else
+                graph.curves[slot]->setData(noData, noData);
+        }
+        if (graph.ghost) {
+            graph.ghostChannel = findChannel(*m_ghost, graph.cell.part, graph.cell.dof);
+            if (graph.ghostChannel)
+                graph.ghost->setData(frameTimes(*m_ghost), channelValues(*m_ghost, *graph.ghostChannel), true);
+            else
+                graph.ghost->setData(noData, noData);
+        }
+    }
+    applyValueRanges();
+    updateCursorItems();
+    m_plot->replot();
+}
+
+void GraphGrid::applyValueRanges()
+{
+    auto graphRange = [this](const Graph& graph) {
+        std::optional<ValueRange> range;
+        for (int slot = 0; slot < 2; ++slot)
+            if (graph.curves[slot] && graph.channels[slot])
+                if (auto r = channelRange(*slotTake(slot), *graph.channels[slot])) range = merged(range, *r);
+        if (graph.ghost && graph.ghostChannel)
+            if (auto r = channelRange(*m_ghost, *graph.ghostChannel)) range = merged(range, *r);
+        return range;
+    };
+    std::map<std::string, ValueRange> perDof;
+    if (m_scale == ValueScale::PerDof) {
+        for (const auto& graph : m_graphs)
+            if (auto r = graphRange(graph)) {
+                auto found = perDof.find(graph.cell.dof);
+                perDof[graph.cell.dof] = found == perDof.end() ? *r : merged(found->second, *r);
+            }
+    }
+    for (auto& graph : m_graphs) {
+        std::optional<ValueRange> range = graphRange(graph);
+        if (m_scale == ValueScale::PerDof && perDof.count(graph.cell.dof)) range = perDof[graph.cell.dof];
+        const auto [lower, upper] = padded(range.value_or(ValueRange{0.0, 0.0}));
+        graph.rect->axis(QCPAxis::atLeft)->setRange(lower, upper);
+    }
+}
+
+void GraphGrid::updateCursorItems()
+{
+    for (auto& graph : m_graphs) {
+        graph.cursor->point1->setCoords(m_cursorTime, 0.0);
+        graph.cursor->point2->setCoords(m_cursorTime, 1.0);
+        QStringList texts;
+        for (int slot = 0; slot < 2; ++slot) {
+            if (!graph.points[slot]) continue;
+            std::optional<double> value;
+            if (graph.channels[slot]) value = valueAt(*slotTake(slot), *graph.channels[slot], m_cursorTime);
+            graph.points[slot]->setVisible(value.has_value());
+            if (value) {
+                graph.points[slot]->position->setCoords(m_cursorTime, *value);
+                const bool both = graph.points[0] && graph.points[1];
+                texts << (both ? QStringLiteral("%1 %2").arg(slot == 0 ? "A" : "B").arg(*value, 0, 'f', 1)
+                               : QString::number(*value, 'f', 1));
+            }
+        }
+        graph.valueText->setText(texts.join("  "));
+    }
+}
+
+void GraphGrid::setCursorTime(double seconds)
+{
+    m_cursorTime = seconds;
+    updateCursorItems();
+    m_plot->layer(kCursorLayer)->replot();
+}
+
+void GraphGrid::setTimeRange(double lower, double upper)
+{
+    if (!(upper > lower)) return;
+    m_rangeLower = lower;
+    m_rangeUpper = upper;
+    m_propagating = true;
+    for (auto& graph : m_graphs) graph.rect->axis(QCPAxis::atBottom)->setRange(lower, upper);
+    m_propagating = false;
+    m_plot->replot();
+    emit timeRangeChanged(lower, upper);
+}
+
+std::pair<double, double> GraphGrid::timeRange() const { return {m_rangeLower, m_rangeUpper}; }
+
+void GraphGrid::resetTimeRange()
+{
+    double duration = 0.0;
+    for (const auto& take : m_takes)
+        if (take) duration = std::max(duration, take->duration());
+    if (m_ghost) duration = std::max(duration, m_ghost->duration());
+    setTimeRange(0.0, duration > 0.0 ? duration : 1.0);
+}
+
+void GraphGrid::propagateTimeRange(QCPAxisRect* source)
+{
+    if (m_propagating) return;
+    const QCPRange range = source->axis(QCPAxis::atBottom)->range();
+    m_rangeLower = range.lower;
+    m_rangeUpper = range.upper;
+    m_propagating = true;
+    for (auto& graph : m_graphs)
+        if (graph.rect != source) graph.rect->axis(QCPAxis::atBottom)->setRange(range);
+    m_propagating = false;
+    emit timeRangeChanged(range.lower, range.upper);
+}
+
+const GraphCell& GraphGrid::graphCell(int graph) const { return m_graphs.at(std::size_t(graph)).cell; }
+
+double GraphGrid::graphCursorTime(int graph) const { return m_graphs.at(std::size_t(graph)).cursor->point1->coords().x(); }
+
+std::optional<double> GraphGrid::graphPointValue(int graph, int slot) const
+{
+    const auto* point = m_graphs.at(std::size_t(graph)).points[slot];
+    if (!point || !point->visible()) return std::nullopt;
+    return point->position->coords().y();
+}
+
+std::pair<double, double> GraphGrid::graphValueRange(int graph) const
+{
+    const QCPRange range = m_graphs.at(std::size_t(graph)).rect->axis(QCPAxis::atLeft)->range();
+    return {range.lower, range.upper};
+}
+
+QRect GraphGrid::graphRect(int graph) const
+{
+    return m_graphs.at(std::size_t(graph)).rect->rect().translated(m_plot->pos());
+}
+
+void GraphGrid::onMousePress(QMouseEvent* event)
+{
+    const QPointF position = event->position();
+    m_dragRect = m_plot->axisRectAt(position);
+    if (!m_dragRect) return;
+    auto* timeAxis = m_dragRect->axis(QCPAxis::atBottom);
+    if (event->button() == Qt::MiddleButton || (event->button() == Qt::LeftButton && event->modifiers() & Qt::ShiftModifier)) {
+        m_drag = Drag::Pan;
+        m_panAnchor = timeAxis->pixelToCoord(position.x());
+    } else if (event->button() == Qt::LeftButton) {
+        m_drag = Drag::Scrub;
+        emit timeScrubbed(timeAxis->pixelToCoord(position.x()));
+    }
+}
+
+void GraphGrid::onMouseMove(QMouseEvent* event)
+{
+    if (m_drag == Drag::None || !m_dragRect) return;
+    auto* timeAxis = m_dragRect->axis(QCPAxis::atBottom);
+    const double key = timeAxis->pixelToCoord(event->position().x());
+    if (m_drag == Drag::Scrub) {
+        emit timeScrubbed(key);
+    } else {
+        const double shift = m_panAnchor - key;
+        setTimeRange(m_rangeLower + shift, m_rangeUpper + shift);
+    }
+}
+
+void GraphGrid::onMouseRelease(QMouseEvent*)
+{
+    m_drag = Drag::None;
+    m_dragRect = nullptr;
+}
+
+} // namespace bunraku::widgets

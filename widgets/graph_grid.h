@@ -1,0 +1,130 @@
+#pragma once
+/// The synchronised graphs of one or two takes (thesis digest section 6): value against time
+/// per channel, each with a moving point and its value at the current time. All graphs live in
+/// one QCustomPlot (one axis rect per graph). The time cursor, points and values sit on their own
+/// buffered layer "cursor", so moving the time replots only that layer, never the curves.
+/// Zoom (wheel) and pan (middle or Shift+left drag) on time are shared by every graph; a left
+/// press or drag in any graph scrubs (timeScrubbed); a double click resets the time range.
+
+#include "widgets/graph_layout.h"
+
+#include "analysis/core/take.h"
+
+#include <QColor>
+#include <QWidget>
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+class QCustomPlot;
+class QCPAxisRect;
+class QCPGraph;
+class QCPItemStraightLine;
+class QCPItemTracer;
+class QCPItemText;
+class QMouseEvent;
+
+namespace bunraku::widgets {
+
+/// How the value axes are scaled.
+enum class ValueScale {
+    PerGraph, ///< each graph fits its own data
+    PerDof,   ///< graphs of the same DOF share one range (compare parts and takes)
+};
+
+/// The colours of take A, take B and the ghost (contrasting, colour-blind safe).
+struct GraphColours {
+    QColor takeA{0x1f, 0x77, 0xb4};
+    QColor takeB{0xd9, 0x5f, 0x02};
+    QColor ghost{0xa0, 0xa0, 0xa0};
+};
+
+class GraphGrid : public QWidget {
+    Q_OBJECT
+public:
+    explicit GraphGrid(QWidget* parent = nullptr);
+    ~GraphGrid() override;
+
+    /// Take A (required for any graph) and take B (may be null). Rebuilds the graphs.
+    void setTakes(std::shared_ptr<const analysis::Take> takeA, std::shared_ptr<const analysis::Take> takeB);
+    /// A take drawn faintly behind A (the original under a designed take); null hides it.
+    void setGhost(std::shared_ptr<const analysis::Take> ghost);
+    void setGraphLayout(GraphLayout layout);
+    void setTwoTakeMode(TwoTakeMode mode);
+    void setValueScale(ValueScale scale);
+    /// The part and DOF used by the OnePart, OneDof and Single layouts.
+    void setSelectedChannel(const std::string& part, const std::string& dof);
+
+    GraphLayout graphLayout() const { return m_options.layout; }
+    TwoTakeMode twoTakeMode() const { return m_options.twoTakeMode; }
+    ValueScale valueScale() const { return m_scale; }
+
+    /// Moves the time cursor (seconds) and replots only the cursor layer.
+    void setCursorTime(double seconds);
+    double cursorTime() const { return m_cursorTime; }
+    /// The shared visible time range, seconds.
+    void setTimeRange(double lower, double upper);
+    std::pair<double, double> timeRange() const;
+    /// Shows the whole of the longer take.
+    void resetTimeRange();
+
+    int graphCount() const { return int(m_graphs.size()); }
+    const GraphCell& graphCell(int graph) const;
+    /// The time (seconds) at which graph `graph` draws its cursor line.
+    double graphCursorTime(int graph) const;
+    /// The value shown by graph `graph`'s moving point of take A (slot 0) or B (slot 1), or
+    /// std::nullopt when that point is hidden (time outside the take, or no such curve).
+    std::optional<double> graphPointValue(int graph, int slot) const;
+    /// The value axis range of graph `graph`.
+    std::pair<double, double> graphValueRange(int graph) const;
+    /// The pixel rectangle of graph `graph` inside this widget (for tests and screenshots).
+    QRect graphRect(int graph) const;
+
+    QCustomPlot* plot() const { return m_plot; }
+
+signals:
+    /// The user pressed or dragged at `seconds` in a graph.
+    void timeScrubbed(double seconds);
+    /// The shared time range changed (zoom, pan or reset).
+    void timeRangeChanged(double lower, double upper);
+
+private:
+    struct Graph {
+        GraphCell cell;
+        QCPAxisRect* rect = nullptr;
+        QCPGraph* curves[2] = {nullptr, nullptr};
+        QCPGraph* ghost = nullptr;
+        std::optional<Eigen::Index> channels[2];
+        std::optional<Eigen::Index> ghostChannel;
+        QCPItemStraightLine* cursor = nullptr;
+        QCPItemTracer* points[2] = {nullptr, nullptr};
+        QCPItemText* valueText = nullptr;
+    };
+
+    void rebuild();
+    void applyValueRanges();
+    void updateCursorItems();
+    void onMousePress(QMouseEvent* event);
+    void onMouseMove(QMouseEvent* event);
+    void onMouseRelease(QMouseEvent* event);
+    void propagateTimeRange(QCPAxisRect* source);
+    const analysis::Take* slotTake(int slot) const;
+
+    QCustomPlot* m_plot = nullptr;
+    std::shared_ptr<const analysis::Take> m_takes[2];
+    std::shared_ptr<const analysis::Take> m_ghost;
+    GraphLayoutOptions m_options;
+    ValueScale m_scale = ValueScale::PerGraph;
+    GraphColours m_colours;
+    std::vector<Graph> m_graphs;
+    double m_cursorTime = 0.0;
+    double m_rangeLower = 0.0;
+    double m_rangeUpper = 1.0;
+    bool m_propagating = false;
+    enum class Drag { None, Scrub, Pan } m_drag = Drag::None;
+    QCPAxisRect* m_dragRect = nullptr;
+    double m_panAnchor = 0.0;
+};
+
+} // namespace bunraku::widgets

@@ -1,0 +1,110 @@
+#include "widgets/graph_panel.h"
+
+#include <QComboBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QSignalBlocker>
+#include <QVBoxLayout>
+
+namespace bunraku::widgets {
+namespace {
+
+void refill(QComboBox* box, const QStringList& items)
+{
+    const QString current = box->currentText();
+    const QSignalBlocker block(box);
+    box->clear();
+    box->addItems(items);
+    const int index = box->findText(current);
+    box->setCurrentIndex(index >= 0 ? index : 0);
+}
+
+} // namespace
+
+GraphPanel::GraphPanel(QWidget* parent) : QWidget(parent), m_grid(new GraphGrid(this))
+{
+    m_layout = new QComboBox(this);
+    m_layout->setObjectName("graphLayout");
+    m_layout->addItem(tr("All channels"), int(GraphLayout::AllChannels));
+    m_layout->addItem(tr("One part"), int(GraphLayout::OnePart));
+    m_layout->addItem(tr("One DOF"), int(GraphLayout::OneDof));
+    m_layout->addItem(tr("Single"), int(GraphLayout::Single));
+    m_part = new QComboBox(this);
+    m_part->setObjectName("graphPart");
+    m_dof = new QComboBox(this);
+    m_dof->setObjectName("graphDof");
+    m_mode = new QComboBox(this);
+    m_mode->setObjectName("twoTakeMode");
+    m_mode->addItem(tr("A and B overlaid"), int(TwoTakeMode::Overlay));
+    m_mode->addItem(tr("A and B side by side"), int(TwoTakeMode::SideBySide));
+    m_scale = new QComboBox(this);
+    m_scale->setObjectName("valueScale");
+    m_scale->addItem(tr("Scale per graph"), int(ValueScale::PerGraph));
+    m_scale->addItem(tr("Scale per DOF"), int(ValueScale::PerDof));
+    m_layout->setToolTip(tr("Which graphs to show"));
+    m_part->setToolTip(tr("The part shown by the 'one part' and 'single' layouts"));
+    m_dof->setToolTip(tr("The DOF shown by the 'one DOF' and 'single' layouts"));
+
+    auto* controls = new QHBoxLayout;
+    controls->setContentsMargins(4, 2, 4, 0);
+    controls->addWidget(m_layout);
+    controls->addWidget(m_part);
+    controls->addWidget(m_dof);
+    controls->addWidget(m_mode);
+    controls->addWidget(m_scale);
+    auto* hint = new QLabel(tr("drag: scrub   wheel: zoom   Shift+drag: pan   double click: whole take"), this);
+    hint->setEnabled(false);
+    controls->addWidget(hint, 1, Qt::AlignRight);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(2);
+    layout->addLayout(controls);
+    layout->addWidget(m_grid, 1);
+
+    connect(m_layout, &QComboBox::currentIndexChanged, this,
+            [this] { m_grid->setGraphLayout(GraphLayout(m_layout->currentData().toInt())); });
+    connect(m_mode, &QComboBox::currentIndexChanged, this,
+            [this] { m_grid->setTwoTakeMode(TwoTakeMode(m_mode->currentData().toInt())); });
+    connect(m_scale, &QComboBox::currentIndexChanged, this,
+            [this] { m_grid->setValueScale(ValueScale(m_scale->currentData().toInt())); });
+    connect(m_part, &QComboBox::currentIndexChanged, this, &GraphPanel::applySelection);
+    connect(m_dof, &QComboBox::currentIndexChanged, this, &GraphPanel::applySelection);
+}
+
+void GraphPanel::setTakes(std::shared_ptr<const analysis::Take> takeA, std::shared_ptr<const analysis::Take> takeB)
+{
+    QStringList parts;
+    QStringList dofs;
+    if (takeA) {
+        for (const auto& channel : takeA->channels) {
+            const QString part = QString::fromStdString(channel.part);
+            const QString dof = QString::fromStdString(channel.dof);
+            if (!parts.contains(part)) parts << part;
+            if (!dofs.contains(dof)) dofs << dof;
+        }
+    }
+    refill(m_part, parts);
+    refill(m_dof, dofs);
+    m_grid->setSelectedChannel(selectedPart().toStdString(), selectedDof().toStdString());
+    m_grid->setTakes(std::move(takeA), std::move(takeB));
+}
+
+void GraphPanel::setGraphLayout(GraphLayout layout) { m_layout->setCurrentIndex(m_layout->findData(int(layout))); }
+void GraphPanel::setTwoTakeMode(TwoTakeMode mode) { m_mode->setCurrentIndex(m_mode->findData(int(mode))); }
+void GraphPanel::setValueScale(ValueScale scale) { m_scale->setCurrentIndex(m_scale->findData(int(scale))); }
+
+void GraphPanel::selectPart(const QString& part)
+{
+    const int index = m_part->findText(part);
+    if (index < 0) return;
+    m_part->setCurrentIndex(index);
+    if (m_grid->graphLayout() == GraphLayout::AllChannels || m_grid->graphLayout() == GraphLayout::OneDof)
+        setGraphLayout(GraphLayout::OnePart);
+}
+
+QString GraphPanel::selectedPart() const { return m_part->currentText(); }
+QString GraphPanel::selectedDof() const { return m_dof->currentText(); }
+
+void GraphPanel::applySelection() { m_grid->setSelectedChannel(selectedPart().toStdString(), selectedDof().toStdString()); }
+
+} // namespace bunraku::widgets

@@ -1,0 +1,41 @@
+#pragma once
+/// The graph grid with its controls: layout (all / one part / one DOF / single), the part and
+/// DOF those layouts show, the two-take mode (overlay / side by side) and the value scaling.
+
+#include "widgets/graph_grid.h"
+
+#include <QWidget>
+
+class QComboBox;
+
+namespace bunraku::widgets {
+
+class GraphPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit GraphPanel(QWidget* parent = nullptr);
+
+    GraphGrid* grid() const { return m_grid; }
+
+    /// Sets both takes (B may be null) and refreshes the part and DOF choices.
+    void setTakes(std::shared_ptr<const analysis::Take> takeA, std::shared_ptr<const analysis::Take> takeB);
+    void setGraphLayout(GraphLayout layout);
+    void setTwoTakeMode(TwoTakeMode mode);
+    void setValueScale(ValueScale scale);
+    /// Shows `part` in the one-part layout (e.g. a part clicked in the 3D view).
+    void selectPart(const QString& part);
+    QString selectedPart() const;
+    QString selectedDof() const;
+
+private:
+    void applySelection();
+
+    GraphGrid* m_grid = nullptr;
+    QComboBox* m_layout = nullptr;
+    QComboBox* m_part = nullptr;
+    QComboBox* m_dof = nullptr;
+    QComboBox* m_mode = nullptr;
+    QComboBox* m_scale = nullptr;
+};
+
+} // namespace bunraku::widgets
