@@ -10,11 +10,7 @@
 #include "app/document.h"
 #include "app/recomputer.h"
 
-// analysis/wavelet/cwt.h names a parameter `signals`, which is a Qt keyword macro.
-#pragma push_macro("signals")
-#undef signals
 #include "analysis/design/motion_design.h"
-#pragma pop_macro("signals")
 
 #include <QObject>
 

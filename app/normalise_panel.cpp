@@ -4,12 +4,9 @@
 #include "app/parameters.h"
 #include "app/recomputer.h"
 
-#pragma push_macro("signals") // analysis/wavelet/cwt.h names a parameter `signals`
-#undef signals
 #include "analysis/normalise/coupling.h"
 #include "analysis/normalise/take_normalisation.h"
 #include "analysis/normalise/variance_evaluation.h"
-#pragma pop_macro("signals")
 
 #include <qcustomplot.h>
 

@@ -13,15 +13,7 @@ namespace {
 
 using analysis::ErrorCode;
 using analysis::makeError;
-// "file:line: what" (as analysis::parseError, built with append: GCC 12's -Wrestrict misfires
-// on parseError's inlined operator+ at -O3).
-analysis::Error parseError(const std::string& file, long line, const std::string& what)
-{
-    std::string message = file;
-    if (line > 0) message.append(":").append(std::to_string(line));
-    message.append(": ").append(what);
-    return analysis::Error{ErrorCode::Parse, message};
-}
+using analysis::parseError;
 
 long lineOfOffset(const QByteArray& text, int offset)
 {
