@@ -9,6 +9,9 @@
 #include <QCoreApplication>
 #include <QElapsedTimer>
 
+#include <algorithm>
+#include <cmath>
+
 
 namespace bunraku::app {
 namespace {
@@ -59,7 +62,8 @@ DesignController::DesignController(Document& document, QObject* parent) : QObjec
         if (slot == TakeSlot::A) resolveInputs();
     });
     connect(&document, &Document::parameterChanged, this, [this](const QString& key) {
-        if (key == parameters::kDesignWarp || key == parameters::kDesignGains) redesign();
+        if (key == parameters::kDesignWarp || key == parameters::kDesignGains || key == parameters::kDesignBoundaries)
+            redesign();
     });
 }
 
@@ -139,7 +143,7 @@ analysis::GainSet DesignController::gains() const
     std::vector<std::string> names;
     for (const auto& channel : analysis::axisCoordinateChannels()) names.push_back(channel.name());
     if (m_prepared->extracted) names = m_prepared->extracted->gains.dofNames;
-    analysis::GainSet set = analysis::unitGains(m_prepared->boundaries, names);
+    analysis::GainSet set = analysis::unitGains(boundaries(), names);
     const QVariantMap edits = m_document.parameter(parameters::kDesignGains).toMap();
     for (auto it = edits.begin(); it != edits.end(); ++it) {
         const QStringList where = it.key().split('/');
@@ -152,6 +156,68 @@ analysis::GainSet DesignController::gains() const
         set.phrases[phrase].dofs[dof].g1 = values[1].toDouble();
     }
     return set;
+}
+
+std::vector<Eigen::Index> DesignController::boundaries() const
+{
+    if (!m_prepared) return {};
+    const Eigen::Index last = m_prepared->basis->functional.frameCount() - 1;
+    const QVariantList edited = m_document.parameter(parameters::kDesignBoundaries).toList();
+    if (edited.isEmpty() || last < 2) return m_prepared->boundaries;
+    std::vector<Eigen::Index> result{0};
+    for (const QVariant& value : edited) {
+        const Eigen::Index frame = value.toLongLong();
+        if (frame <= result.back() || frame >= last) return m_prepared->boundaries; // not valid here
+        result.push_back(frame);
+    }
+    result.push_back(last);
+    return result;
+}
+
+std::vector<double> DesignController::boundarySeconds() const
+{
+    const double rate = functionalRateHz();
+    const auto frames = boundaries();
+    std::vector<double> seconds;
+    for (std::size_t i = 1; i + 1 < frames.size() && rate > 0.0; ++i) seconds.push_back(double(frames[i]) / rate);
+    return seconds;
+}
+
+double DesignController::functionalRateHz() const
+{
+    if (!m_prepared) return 0.0;
+    const TakePointer source = m_document.take(m_prepared->sourceId);
+    return source ? source->rateHz : 0.0;
+}
+
+namespace {
+
+QVariantList innerAsVariant(const std::vector<Eigen::Index>& all)
+{
+    QVariantList inner;
+    for (std::size_t i = 1; i + 1 < all.size(); ++i) inner.append(qlonglong(all[i]));
+    return inner;
+}
+
+} // namespace
+
+void DesignController::moveBoundary(int index, double frame)
+{
+    std::vector<Eigen::Index> all = boundaries();
+    const auto position = std::size_t(index) + 1;
+    if (index < 0 || position + 1 >= all.size()) return;
+    const auto low = double(all[position - 1] + 1);
+    const auto high = double(all[position + 1] - 1);
+    if (high < low) return;
+    all[position] = Eigen::Index(std::lround(std::clamp(frame, low, high)));
+    changeParameter(m_document, parameters::kDesignBoundaries, innerAsVariant(all),
+                    QCoreApplication::translate("commands", "Move phrase boundary"));
+}
+
+void DesignController::resetBoundaries()
+{
+    changeParameter(m_document, parameters::kDesignBoundaries, parameters::defaultValue(parameters::kDesignBoundaries),
+                    QCoreApplication::translate("commands", "Reset phrase boundaries"));
 }
 
 Eigen::VectorXd DesignController::extractedWarp() const

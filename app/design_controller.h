@@ -31,6 +31,14 @@ public:
     analysis::WarpCurve warpCurve() const;
     /// The gains in use: the phrase structure of the functional take with the edited values.
     analysis::GainSet gains() const;
+    /// The phrase boundaries in use, functional frames (0, inner..., last): the edited inner
+    /// boundaries (design.boundaries) when valid for the functional take, else the suggested
+    /// ones. Empty before the preparation finished.
+    std::vector<Eigen::Index> boundaries() const;
+    /// The inner boundaries in seconds of the functional take (the timeline's marks).
+    std::vector<double> boundarySeconds() const;
+    /// The frame rate of the functional take (Hz), 0 before the preparation finished.
+    double functionalRateHz() const;
     /// The extracted correspondence (emotional frame -> functional frame), empty when unknown.
     Eigen::VectorXd extractedWarp() const;
     /// The extracted control points, empty when unknown.
@@ -50,6 +58,13 @@ public:
     void resetGains();
     /// Sets every gain to the extracted one (one undo step).
     void useExtractedGains();
+    /// Moves inner boundary `index` (0-based among the inner ones) to `frame` (functional
+    /// frames), clamped so it stays at least one frame after its predecessor and before its
+    /// successor (boundaries keep their order and stay inside the take). Inside a document
+    /// interaction (a drag) the moves merge into one undo step.
+    void moveBoundary(int index, double frame);
+    /// Back to the suggested boundaries.
+    void resetBoundaries();
 
 signals:
     /// The preparation finished (new phrase structure, extracted curve).

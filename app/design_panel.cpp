@@ -28,6 +28,9 @@ DesignPanel::DesignPanel(Document& document, DesignController& controller, QWidg
     showDesigned->setObjectName("showDesigned");
     auto* extractedGains = new QPushButton(tr("Use extracted gains"), this);
     auto* resetGains = new QPushButton(tr("Reset gains"), this);
+    auto* resetBoundaries = new QPushButton(tr("Reset phrases"), this);
+    resetBoundaries->setObjectName("resetBoundaries");
+    resetBoundaries->setToolTip(tr("Back to the suggested phrase boundaries (drag the orange ticks on the timeline to move them)"));
 
     auto* splitter = new QSplitter(Qt::Vertical, this);
     splitter->addWidget(m_editor);
@@ -38,6 +41,7 @@ DesignPanel::DesignPanel(Document& document, DesignController& controller, QWidg
     buttons->addWidget(showDesigned);
     buttons->addWidget(extractedGains);
     buttons->addWidget(resetGains);
+    buttons->addWidget(resetBoundaries);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
     layout->addWidget(m_inputs);
@@ -55,6 +59,7 @@ DesignPanel::DesignPanel(Document& document, DesignController& controller, QWidg
     connect(m_gains, &widgets::GainTable::gainEdited, &controller, &DesignController::editGain);
     connect(extractedGains, &QPushButton::clicked, &controller, &DesignController::useExtractedGains);
     connect(resetGains, &QPushButton::clicked, &controller, &DesignController::resetGains);
+    connect(resetBoundaries, &QPushButton::clicked, &controller, &DesignController::resetBoundaries);
     connect(showDesigned, &QPushButton::clicked, this, [this] {
         m_document.selectTake(TakeSlot::A, QStringLiteral("live/designed"));
     });
@@ -66,7 +71,9 @@ DesignPanel::DesignPanel(Document& document, DesignController& controller, QWidg
         bool same = gains.phrases.size() == m_gains->gains().phrases.size();
         for (std::size_t p = 0; same && p < gains.phrases.size(); ++p)
             for (std::size_t d = 0; same && d < gains.phrases[p].dofs.size(); ++d)
-                same = gains.phrases[p].dofs[d].g0 == m_gains->gains().phrases[p].dofs[d].g0 &&
+                same = gains.phrases[p].begin == m_gains->gains().phrases[p].begin &&
+                       gains.phrases[p].end == m_gains->gains().phrases[p].end &&
+                       gains.phrases[p].dofs[d].g0 == m_gains->gains().phrases[p].dofs[d].g0 &&
                        gains.phrases[p].dofs[d].g1 == m_gains->gains().phrases[p].dofs[d].g1;
         if (!same) m_gains->setGains(gains);
         m_timing->setText(tr("synthesis %1 ms").arg(m_controller.lastSynthesisMilliseconds(), 0, 'f', 2));

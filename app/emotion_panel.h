@@ -1,7 +1,8 @@
 #pragma once
 /// The Emotion dock (thesis ch. 4): the corpus is preprocessed (padded, unwrapped, aligned) and
-/// decomposed by least squares into function y^i and emotion z^{ij} components in the
-/// background; the emotion weight a (thesis eq. 4.45, x = y + a z) is a slider, and the weighted
+/// decomposed into function y^i and emotion z^{ij} components in the background, by least
+/// squares (thesis 4.3.1) or by the KM2O-Langevin equation with correlation length M (thesis
+/// 4.4.4; the method and M are undoable parameters and a change re-decomposes); the emotion weight a (thesis eq. 4.45, x = y + a z) is a slider, and the weighted
 /// take of take A's cell is re-synthesised on every slider step (a few microseconds) and
 /// published as the live take "weighted", so it plays as you drag. A drag is one undo step.
 
@@ -14,6 +15,7 @@
 class QComboBox;
 class QLabel;
 class QSlider;
+class QSpinBox;
 
 namespace bunraku::app {
 
@@ -28,6 +30,12 @@ public:
 
     Recomputer* recomputer() const { return m_recomputer; }
     QSlider* weightSlider() const { return m_weight; }
+    QComboBox* methodBox() const { return m_method; }
+    QSpinBox* orderBox() const { return m_order; }
+    /// The method of the decomposition in use ("least-squares" | "km2o"), empty before the first.
+    QString decomposedMethod() const;
+    /// The M of the KM2O decomposition in use, 0 for least squares.
+    int decomposedOrder() const;
     bool ready() const { return m_model != nullptr; }
     /// The latest weighted take, null before the decomposition finished.
     TakePointer weightedTake() const { return m_weighted; }
@@ -35,6 +43,7 @@ public:
 private:
     void resolveCell();
     void synthesise();
+    void showParameters();
 
     Document& m_document;
     Recomputer* m_recomputer = nullptr;
@@ -43,9 +52,10 @@ private:
     std::string m_function;
     std::string m_emotion;
     QComboBox* m_method = nullptr;
+    QSpinBox* m_order = nullptr;
     QSlider* m_weight = nullptr;
     QLabel* m_label = nullptr;
-    quint64 m_corpusSerial = 0;
+    quint64 m_inputSerial = 0; ///< bumped when the corpus, method or M change
 };
 
 } // namespace bunraku::app

@@ -32,6 +32,10 @@ std::filesystem::path toPath(const QString& file) { return std::filesystem::path
 
 FileController::FileController(Document& document, QWidget* window) : QObject(window), m_document(document), m_window(window)
 {
+    connect(&document, &Document::derivedTakesChanged, this, &FileController::showPendingLiveTakes);
+    connect(&document, &Document::selectionChanged, this, [this](TakeSlot slot) {
+        if (!m_applying) m_pending[int(slot)].clear(); // the user chose another take meanwhile
+    });
     m_openCorpus = new QAction(tr("&Open Corpus Folder..."), this);
     m_openCorpus->setShortcut(QKeySequence::Open);
     m_openDemo = new QAction(tr("Open &Demo Corpus"), this);
@@ -200,6 +204,31 @@ ProjectState FileController::captureState() const
 
 bool FileController::applyState(const ProjectState& state)
 {
+    m_pending[0].clear();
+    m_pending[1].clear();
+    m_applying = true;
+    const bool applied = applyStateNow(state);
+    m_applying = false;
+    return applied;
+}
+
+void FileController::showPendingLiveTakes()
+{
+    bool shown = false;
+    for (int slot = 0; slot < 2; ++slot) {
+        if (m_pending[slot].isEmpty() || !m_document.take(m_pending[slot])) continue;
+        const QString id = m_pending[slot];
+        m_pending[slot].clear();
+        m_applying = true; // the project's own selection: do not drop the other pending slot
+        m_document.selectTake(TakeSlot(slot), id);
+        m_applying = false;
+        shown = true;
+    }
+    if (shown) m_document.setCurrentTime(m_pendingTime);
+}
+
+bool FileController::applyStateNow(const ProjectState& state)
+{
     const bool opened = state.corpus == QStringLiteral("demo") ? openDemoCorpus() : openCorpusFolder(state.corpus);
     if (!opened) return false;
     for (const auto& recipe : state.imported) {
@@ -215,8 +244,16 @@ bool FileController::applyState(const ProjectState& state)
             int(m_document.derivedTakes().size()));
     }
     m_document.restoreParameters(state.parameters);
-    m_document.selectTake(TakeSlot::A, state.takeA);
-    m_document.selectTake(TakeSlot::B, state.takeB);
+    // Live results are recomputed after opening: a live take shown as A or B is awaited and
+    // shown when published (showPendingLiveTakes); until then A keeps the corpus's first take.
+    const QString ids[2] = {state.takeA, state.takeB};
+    for (int slot = 0; slot < 2; ++slot) {
+        if (ids[slot].startsWith(QStringLiteral("live/")) && !m_document.take(ids[slot]))
+            m_pending[slot] = ids[slot];
+        else
+            m_document.selectTake(TakeSlot(slot), ids[slot]);
+    }
+    m_pendingTime = state.timeSeconds;
     m_document.setCurrentTime(state.timeSeconds);
     if (m_restoreView) m_restoreView(state.view);
     return true;

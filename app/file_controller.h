@@ -5,6 +5,7 @@
 /// and the unsaved-changes prompt. Errors are shown as messages naming file, line and what was
 /// expected; nothing here throws.
 
+#include "app/document.h"
 #include "app/project_file.h"
 
 #include "analysis/core/result.h"
@@ -52,6 +53,9 @@ public:
     bool autosave();
     QString autosavePath() const;
     QString projectPath() const { return m_projectPath; }
+    /// The live take ("live/...") an opened project showed in `slot` and that is still being
+    /// recomputed: it is shown as soon as it is published. Empty when none is awaited.
+    QString pendingLiveTake(TakeSlot slot) const { return m_pending[int(slot)]; }
     /// Asks to save unsaved changes; false when the user cancels.
     bool maybeSave();
     QStringList recentFiles() const;
@@ -78,6 +82,9 @@ private:
     void rebuildRecentMenu();
     ProjectState captureState() const;
     bool applyState(const ProjectState& state);
+    bool applyStateNow(const ProjectState& state);
+    /// Shows awaited live takes that have been published.
+    void showPendingLiveTakes();
     void chooseAndImport();
     void chooseAndExport(const QString& suffix);
 
@@ -86,6 +93,9 @@ private:
     bool m_dialogs = true;
     QString m_lastError;
     QString m_projectPath;
+    QString m_pending[2];       ///< awaited live takes per slot (see pendingLiveTake)
+    double m_pendingTime = 0.0; ///< the project's time, applied when an awaited take appears
+    bool m_applying = false;    ///< inside applyState: selections are the project's own
     QTimer m_autosaveTimer;
     std::function<QVariantMap()> m_saveView;
     std::function<void(const QVariantMap&)> m_restoreView;

@@ -13,6 +13,7 @@
 #include "widgets/corpus_browser.h"
 #include "widgets/graph_panel.h"
 #include "widgets/inspector_widget.h"
+#include "widgets/scrub_bar.h"
 #include "widgets/timeline_widget.h"
 #include "widgets/viewport_widget.h"
 
@@ -203,6 +204,15 @@ void MainWindow::connectDocument()
     connect(m_timeline, &widgets::TimelineWidget::loopToggled, m_playback, &PlaybackController::setLooping);
     connect(m_timeline, &widgets::TimelineWidget::speedChanged, m_playback, &PlaybackController::setSpeed);
     m_playback->setLooping(m_timeline->looping());
+    // Dragging a phrase mark moves the design's boundary: one undo step per drag.
+    auto* bar = m_timeline->scrubBar();
+    connect(bar, &widgets::ScrubBar::boundaryDragStarted, m_document, &Document::beginInteraction);
+    connect(bar, &widgets::ScrubBar::boundaryDragFinished, m_document, &Document::endInteraction);
+    connect(bar, &widgets::ScrubBar::boundaryDragged, this, [this](int index, double seconds) {
+        m_design->moveBoundary(index, seconds * m_design->functionalRateHz());
+    });
+    connect(m_design, &DesignController::prepared, this, &MainWindow::refreshBoundaries);
+    connect(m_design, &DesignController::designed, this, &MainWindow::refreshBoundaries);
     connect(m_viewportPanel, &ViewportPanel::partPicked, m_graphs, &widgets::GraphPanel::selectPart);
 }
 
@@ -221,11 +231,23 @@ void MainWindow::refreshTakes()
     m_graphs->setTakes(takeA, takeB);
     m_inspector->setTakes(takeA, takeB);
     m_timeline->setDuration(m_document->duration(), m_document->rateHz());
-    std::vector<double> boundaries;
-    if (takeA && m_document->demoTruth()) boundaries = phraseBoundarySeconds(*m_document->demoTruth(), *takeA);
-    m_timeline->setBoundaries(std::move(boundaries));
+    refreshBoundaries();
     refreshTime(m_document->currentTime());
     updateTitle();
+}
+
+void MainWindow::refreshBoundaries()
+{
+    const QString idA = m_document->selectedId(TakeSlot::A);
+    const TakePointer takeA = m_document->selectedTake(TakeSlot::A);
+    const bool designed = m_design->ready() && (idA == m_design->sourceId() || idA == QStringLiteral("live/designed"));
+    std::vector<double> boundaries;
+    if (designed)
+        boundaries = m_design->boundarySeconds();
+    else if (takeA && m_document->demoTruth())
+        boundaries = phraseBoundarySeconds(*m_document->demoTruth(), *takeA);
+    m_timeline->scrubBar()->setBoundariesEditable(designed);
+    m_timeline->setBoundaries(std::move(boundaries));
 }
 
 void MainWindow::refreshTime(double seconds)

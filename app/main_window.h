@@ -81,6 +81,9 @@ private:
     void connectDocument();
     void refreshEntries();
     void refreshTakes();
+    /// The timeline's phrase marks: the design's (draggable) when take A is the functional take
+    /// or the designed take, else the demo truth's.
+    void refreshBoundaries();
     void refreshTime(double seconds);
     void updateTitle();
     void chooseScreenshot();

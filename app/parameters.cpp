@@ -18,6 +18,7 @@ QVariant defaultValue(const QString& key)
         {kEmotionWeight, 1.0},
         {kDesignWarp, QVariantList{}},
         {kDesignGains, QVariantMap{}},
+        {kDesignBoundaries, QVariantList{}},
     };
     return defaults.value(key);
 }
@@ -25,7 +26,7 @@ QVariant defaultValue(const QString& key)
 QStringList knownKeys()
 {
     return {kNormaliseReference, kNormaliseTau, kNormaliseSearchBand, kNormaliseMaxScale, kNormaliseCoupling,
-            kNormalisePath, kEmotionMethod, kEmotionOrder, kEmotionWeight, kDesignWarp, kDesignGains};
+            kNormalisePath, kEmotionMethod, kEmotionOrder, kEmotionWeight, kDesignWarp, kDesignGains, kDesignBoundaries};
 }
 
 } // namespace bunraku::app::parameters

@@ -24,6 +24,8 @@ inline const QString kEmotionWeight = QStringLiteral("emotion.weight"); ///< dou
 // Design (thesis ch. 5): the warp curve and per-phrase gains.
 inline const QString kDesignWarp = QStringLiteral("design.warp");   ///< QVariantList of QVariantList{reference s, sample s}
 inline const QString kDesignGains = QStringLiteral("design.gains"); ///< QVariantMap "phrase/dof" -> QVariantList{g0, g1}
+/// QVariantList of int: the inner phrase boundaries, functional frames, increasing; empty: suggested
+inline const QString kDesignBoundaries = QStringLiteral("design.boundaries");
 
 /// The default value of `key`; an invalid QVariant for unknown keys.
 QVariant defaultValue(const QString& key);

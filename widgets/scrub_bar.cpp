@@ -77,14 +77,55 @@ void ScrubBar::paintEvent(QPaintEvent*)
     painter.drawEllipse(QPoint(xOfTime(m_time), mid), 7, 7);
 }
 
+void ScrubBar::setBoundariesEditable(bool editable)
+{
+    m_boundariesEditable = editable;
+    setToolTip(editable ? tr("Press or drag to move the time; drag an orange tick to move a phrase boundary")
+                        : tr("Press or drag to move the time; ticks mark phrase boundaries"));
+}
+
+int ScrubBar::boundaryAtX(int x) const
+{
+    int best = -1;
+    int bestDistance = kBoundaryGrabPixels + 1;
+    for (std::size_t i = 0; i < m_boundaries.size(); ++i) {
+        const int distance = std::abs(xOfTime(m_boundaries[i]) - x);
+        if (distance < bestDistance) {
+            best = int(i);
+            bestDistance = distance;
+        }
+    }
+    return best;
+}
+
 void ScrubBar::mousePressEvent(QMouseEvent* event)
 {
-    if (event->button() == Qt::LeftButton) emit scrubbed(timeAtX(int(event->position().x())));
+    if (event->button() != Qt::LeftButton) return;
+    const int x = int(event->position().x());
+    m_dragged = m_boundariesEditable ? boundaryAtX(x) : -1;
+    if (m_dragged >= 0) {
+        emit boundaryDragStarted(m_dragged);
+        return;
+    }
+    emit scrubbed(timeAtX(x));
 }
 
 void ScrubBar::mouseMoveEvent(QMouseEvent* event)
 {
-    if (event->buttons() & Qt::LeftButton) emit scrubbed(timeAtX(int(event->position().x())));
+    if (!(event->buttons() & Qt::LeftButton)) return;
+    const int x = int(event->position().x());
+    if (m_dragged >= 0)
+        emit boundaryDragged(m_dragged, timeAtX(x));
+    else
+        emit scrubbed(timeAtX(x));
+}
+
+void ScrubBar::mouseReleaseEvent(QMouseEvent* event)
+{
+    if (event->button() != Qt::LeftButton || m_dragged < 0) return;
+    const int index = m_dragged;
+    m_dragged = -1;
+    emit boundaryDragFinished(index);
 }
 
 } // namespace bunraku::widgets

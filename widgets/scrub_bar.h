@@ -1,6 +1,9 @@
 #pragma once
 /// A horizontal time bar: the take's duration, the current time as a handle, phrase boundaries
 /// as ticks. Pressing or dragging on it requests a time (scrubbed); it never sets its own time.
+/// When the boundaries are editable, pressing on a tick (within kBoundaryGrabPixels) drags that
+/// boundary instead: boundaryDragStarted, boundaryDragged (per move), boundaryDragFinished. The
+/// owner moves the boundary and sets the new ticks back.
 
 #include <QWidget>
 
@@ -21,6 +24,12 @@ public:
     double duration() const { return m_duration; }
     double time() const { return m_time; }
     const std::vector<double>& boundaries() const { return m_boundaries; }
+    /// Whether ticks can be dragged (off by default).
+    void setBoundariesEditable(bool editable);
+    bool boundariesEditable() const { return m_boundariesEditable; }
+    /// The index of the tick under `x` (nearest within the grab distance), -1 when none.
+    int boundaryAtX(int x) const;
+    static constexpr int kBoundaryGrabPixels = 4;
     /// The time under the x pixel coordinate `x`, clamped to [0, duration].
     double timeAtX(int x) const;
     /// The x pixel coordinate of `seconds`.
@@ -30,16 +39,23 @@ public:
 
 signals:
     void scrubbed(double seconds);
+    void boundaryDragStarted(int index);
+    /// Boundary `index` dragged to `seconds` (clamped to [0, duration]).
+    void boundaryDragged(int index, double seconds);
+    void boundaryDragFinished(int index);
 
 protected:
     void paintEvent(QPaintEvent* event) override;
     void mousePressEvent(QMouseEvent* event) override;
     void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
 
 private:
     double m_duration = 1.0;
     double m_time = 0.0;
     std::vector<double> m_boundaries;
+    bool m_boundariesEditable = false;
+    int m_dragged = -1; ///< the boundary being dragged, -1 when scrubbing
 };
 
 } // namespace bunraku::widgets

@@ -274,7 +274,7 @@ struct PreprocessArguments {
     bool noPad = false, noUnwrap = false, noAlignStart = false, noAlignPosition = false, noAlignHeading = false;
     std::string headingPart = "shoulder";
     std::string method = "onset";
-    int referenceTake = 1;
+    int referenceTake = 0;
     int maxShift = 30;
     double onsetFraction = 0.1;
     bool json = false;
@@ -442,7 +442,7 @@ void addIoCommands(CommandSet& commands)
                                "(cross-correlation of summed speed)")
             ->check(CLI::IsMember({"onset", "xcorr"}))
             ->capture_default_str();
-        preprocess->add_option("--reference-take", arguments->referenceTake, "Take index of each cell's reference (falls back to the lowest)")
+        preprocess->add_option("--reference-take", arguments->referenceTake, "Take index of each cell's time reference; 0 = automatic (median onset among the longest takes)")
             ->check(CLI::Range(0, 1000000))
             ->capture_default_str();
         preprocess->add_option("--max-shift", arguments->maxShift, "Largest shift in frames tried by xcorr")

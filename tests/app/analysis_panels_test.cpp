@@ -7,6 +7,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <QComboBox>
 #include <QSlider>
 #include <QSpinBox>
 #include <QTableWidget>
@@ -69,4 +70,46 @@ TEST_CASE("the emotion weight slider re-synthesises y + a z live as one undo ste
     document.undoStack()->undo(); // back to a = 1
     REQUIRE(slider->value() == 100);
     REQUIRE((panel->weightedTake()->values - atOne).cwiseAbs().maxCoeff() < 1e-12);
+}
+
+TEST_CASE("switching the emotion decomposition to KM2O with a given M changes the weighted take and undoes", "[app][emotion]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    auto* panel = window->emotionPanel();
+    auto& document = window->document();
+    document.selectTake(TakeSlot::A, app::Document::corpusTakeId(7)); // a friendly take
+    REQUIRE(QTest::qWaitFor([&] { return panel->ready() && panel->weightedTake() && !panel->recomputer()->busy(); }, 60000));
+    REQUIRE(panel->decomposedMethod() == QStringLiteral("least-squares"));
+    REQUIRE_FALSE(panel->orderBox()->isEnabled());
+    const auto leastSquares = panel->weightedTake();
+
+    panel->orderBox()->setValue(3); // M alone does not re-decompose a least-squares model
+    REQUIRE(document.undoStack()->count() == 1);
+    REQUIRE_FALSE(panel->recomputer()->busy());
+    panel->methodBox()->setCurrentIndex(panel->methodBox()->findData(QStringLiteral("km2o")));
+    REQUIRE(document.undoStack()->count() == 2);
+    REQUIRE(document.parameter(app::parameters::kEmotionMethod).toString() == QStringLiteral("km2o"));
+    REQUIRE(panel->orderBox()->isEnabled());
+    REQUIRE(QTest::qWaitFor([&] { return panel->decomposedMethod() == QStringLiteral("km2o") && !panel->recomputer()->busy(); },
+                            60000));
+    INFO(panel->recomputer()->lastError().toStdString());
+    REQUIRE(panel->decomposedOrder() == 3); // the given M, not a search
+    const auto km2o = panel->weightedTake();
+    REQUIRE(km2o != leastSquares);
+    REQUIRE(document.take(QStringLiteral("live/weighted")) == km2o);
+    REQUIRE(km2o->frameCount() == leastSquares->frameCount());
+    REQUIRE((km2o->values - leastSquares->values).cwiseAbs().maxCoeff() > 1e-6);
+
+    panel->orderBox()->setValue(2); // another M re-decomposes
+    REQUIRE(QTest::qWaitFor([&] { return panel->decomposedOrder() == 2 && !panel->recomputer()->busy(); }, 60000));
+    const auto km2oTwo = panel->weightedTake();
+    REQUIRE((km2oTwo->values - km2o->values).cwiseAbs().maxCoeff() > 1e-9);
+
+    document.undoStack()->undo(); // M back to 3
+    document.undoStack()->undo(); // back to least squares
+    REQUIRE(panel->methodBox()->currentData().toString() == QStringLiteral("least-squares"));
+    REQUIRE(QTest::qWaitFor([&] { return panel->decomposedMethod() == QStringLiteral("least-squares") && !panel->recomputer()->busy(); },
+                            60000));
+    REQUIRE((panel->weightedTake()->values - leastSquares->values).cwiseAbs().maxCoeff() < 1e-12);
 }

@@ -5,12 +5,15 @@
 #include "app/parameters.h"
 
 #include "widgets/gain_table.h"
+#include "widgets/scrub_bar.h"
+#include "widgets/timeline_widget.h"
 #include "widgets/warp_curve_editor.h"
 
 #include <catch2/catch.hpp>
 #include <qcustomplot.h>
 
 #include <QDockWidget>
+#include <QPushButton>
 #include <QSlider>
 
 using namespace bunraku;
@@ -141,4 +144,91 @@ TEST_CASE("the warp editor adds and deletes points and resets to identity and ex
     REQUIRE(editor->curve().points == design.extractedCurve().points);
     design.resetWarpToIdentity();
     for (const auto& point : editor->curve().points) REQUIRE(point.source == Approx(point.output));
+}
+
+namespace {
+
+void dragOnBar(QWidget* bar, QPoint from, QPoint to)
+{
+    QTest::mousePress(bar, Qt::LeftButton, Qt::NoModifier, from);
+    for (int step = 1; step <= 5; ++step) {
+        const QPoint at = from + (to - from) * step / 5;
+        QMouseEvent move(QEvent::MouseMove, QPointF(at), bar->mapToGlobal(QPointF(at)), Qt::NoButton, Qt::LeftButton,
+                         Qt::NoModifier);
+        QCoreApplication::sendEvent(bar, &move);
+    }
+    QTest::mouseRelease(bar, Qt::LeftButton, Qt::NoModifier, to);
+}
+
+} // namespace
+
+TEST_CASE("dragging a phrase mark on the timeline moves the design's boundary as one undo step", "[app][design]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    REQUIRE(waitForDesign(*window));
+    auto& document = window->document();
+    auto& design = window->design();
+    document.selectTake(TakeSlot::A, design.sourceId());
+    design.useExtractedGains(); // with unit gains the phrases change nothing
+    REQUIRE(document.undoStack()->count() == 1);
+    auto* bar = window->timeline()->scrubBar();
+    REQUIRE(bar->boundariesEditable());
+    const auto framesBefore = design.boundaries();
+    REQUIRE(framesBefore.size() >= 4); // at least two inner boundaries
+    REQUIRE(bar->boundaries() == design.boundarySeconds());
+    const Eigen::MatrixXd valuesBefore = design.designedTake()->values;
+
+    // A short drag to the right: the first inner boundary moves later.
+    const int y = bar->height() / 2;
+    const QPoint from(bar->xOfTime(bar->boundaries()[0]), y);
+    dragOnBar(bar, from, from + QPoint(12, 0));
+    REQUIRE(document.undoStack()->count() == 2); // the whole drag is one step
+    REQUIRE(design.boundaries()[1] > framesBefore[1]);
+    REQUIRE((design.designedTake()->values - valuesBefore).cwiseAbs().maxCoeff() > 1e-6);
+    REQUIRE(design.gains().phrases[0].end == design.boundaries()[1]);
+
+    // Far past the next boundary and past the end: clamped, still ordered and inside the take.
+    const QPoint again(bar->xOfTime(bar->boundaries()[0]), y);
+    dragOnBar(bar, again, QPoint(bar->width() + 50, y));
+    REQUIRE(document.undoStack()->count() == 3);
+    const auto clamped = design.boundaries();
+    REQUIRE(clamped.size() == framesBefore.size());
+    for (std::size_t i = 1; i < clamped.size(); ++i) REQUIRE(clamped[i] > clamped[i - 1]);
+    REQUIRE(clamped.front() == 0);
+    REQUIRE(clamped.back() == framesBefore.back());
+    REQUIRE(clamped[1] == clamped[2] - 1);
+
+    document.undoStack()->undo();
+    document.undoStack()->undo();
+    REQUIRE(design.boundaries() == framesBefore);
+    REQUIRE(bar->boundaries() == design.boundarySeconds());
+    REQUIRE((design.designedTake()->values - valuesBefore).cwiseAbs().maxCoeff() < 1e-12);
+    document.undoStack()->redo();
+    REQUIRE(design.boundaries()[1] > framesBefore[1]);
+
+    // "Reset phrases" in the design panel brings back the suggested boundaries as one step.
+    auto* reset = window->designPanel()->findChild<QPushButton*>(QStringLiteral("resetBoundaries"));
+    REQUIRE(reset);
+    reset->click();
+    REQUIRE(design.boundaries() == framesBefore);
+    REQUIRE(bar->boundaries() == design.boundarySeconds());
+    REQUIRE(document.undoStack()->count() == 3);
+}
+
+TEST_CASE("phrase marks of takes other than the design's cannot be dragged", "[app][design]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    REQUIRE(waitForDesign(*window));
+    auto& design = window->design();
+    for (std::size_t i = 0; i < window->document().corpus().takes.size(); ++i) {
+        const QString id = app::Document::corpusTakeId(i);
+        if (id == design.sourceId()) continue;
+        window->document().selectTake(TakeSlot::A, id);
+        break;
+    }
+    REQUIRE_FALSE(window->timeline()->scrubBar()->boundariesEditable());
+    window->document().selectTake(TakeSlot::A, QStringLiteral("live/designed"));
+    REQUIRE(window->timeline()->scrubBar()->boundariesEditable());
 }

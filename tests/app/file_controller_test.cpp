@@ -1,6 +1,8 @@
 #include "tests/app/app_test_support.h"
 
 #include "app/commands.h"
+#include "app/design_controller.h"
+#include "app/emotion_panel.h"
 #include "app/parameters.h"
 
 #include "widgets/graph_panel.h"
@@ -137,6 +139,41 @@ TEST_CASE("a saved project reopens to the same state", "[app][files]")
     REQUIRE(window->graphPanel()->grid()->graphCount() == 12);
     REQUIRE(window->files().projectPath() == project);
     REQUIRE_FALSE(window->isWindowModified());
+}
+
+TEST_CASE("a project saved while live takes are shown reopens showing them once recomputed", "[app][files]")
+{
+    const QString project = scratchFile("project-live", "live.bunraku.json");
+    std::vector<Eigen::Index> boundaries;
+    {
+        auto window = test::demoWindow();
+        REQUIRE(window);
+        auto& document = window->document();
+        REQUIRE(QTest::qWaitFor([&] { return window->design().ready() && window->emotionPanel()->weightedTake(); }, 60000));
+        auto& design = window->design();
+        design.moveBoundary(0, double(design.boundaries()[1] + 2)); // an edited phrase boundary
+        boundaries = design.boundaries();
+        document.selectTake(TakeSlot::A, QStringLiteral("live/designed"));
+        document.selectTake(TakeSlot::B, QStringLiteral("live/weighted"));
+        REQUIRE(document.selectedId(TakeSlot::A) == QStringLiteral("live/designed"));
+        document.setCurrentTime(2.0);
+        REQUIRE(window->files().saveProject(project));
+    }
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    REQUIRE(window->files().openProject(project));
+    const auto& document = window->document();
+    REQUIRE(QTest::qWaitFor(
+        [&] {
+            return document.selectedId(TakeSlot::A) == QStringLiteral("live/designed") &&
+                   document.selectedId(TakeSlot::B) == QStringLiteral("live/weighted");
+        },
+        60000));
+    REQUIRE(window->files().pendingLiveTake(TakeSlot::A).isEmpty());
+    REQUIRE(window->files().pendingLiveTake(TakeSlot::B).isEmpty());
+    REQUIRE(document.currentTime() == Approx(2.0));
+    REQUIRE(window->design().boundaries() == boundaries);
+    REQUIRE(document.selectedTake(TakeSlot::A) == window->design().designedTake());
 }
 
 TEST_CASE("a broken project file is reported with its line and what was expected", "[app][files]")

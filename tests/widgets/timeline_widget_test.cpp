@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <QAction>
+#include <QMouseEvent>
 #include <QSignalSpy>
 #include <QTest>
 
@@ -60,4 +61,46 @@ TEST_CASE("pressing the scrub bar requests the time under the mouse", "[widgets]
     REQUIRE(scrubbed[0][0].toDouble() == Approx(5.0).margin(0.05));
     REQUIRE(bar.timeAtX(bar.xOfTime(12.5)) == Approx(12.5).margin(0.05));
     REQUIRE(bar.boundaries().size() == 2);
+}
+
+TEST_CASE("an editable phrase tick is dragged instead of scrubbing", "[widgets][timeline]")
+{
+    widgets::ScrubBar bar;
+    bar.resize(400, 34);
+    bar.setDuration(10.0);
+    bar.setBoundaries({3.0, 6.0});
+    bar.show();
+    REQUIRE(QTest::qWaitForWindowExposed(&bar));
+    QSignalSpy scrubbed(&bar, &widgets::ScrubBar::scrubbed);
+    QSignalSpy started(&bar, &widgets::ScrubBar::boundaryDragStarted);
+    QSignalSpy dragged(&bar, &widgets::ScrubBar::boundaryDragged);
+    QSignalSpy finished(&bar, &widgets::ScrubBar::boundaryDragFinished);
+    const int y = bar.height() / 2;
+    const QPoint tick(bar.xOfTime(6.0), y);
+
+    // Not editable: pressing on a tick scrubs.
+    QTest::mousePress(&bar, Qt::LeftButton, Qt::NoModifier, tick);
+    QTest::mouseRelease(&bar, Qt::LeftButton, Qt::NoModifier, tick);
+    REQUIRE(scrubbed.count() == 1);
+    REQUIRE(started.isEmpty());
+
+    bar.setBoundariesEditable(true);
+    REQUIRE(bar.boundaryAtX(tick.x() + 2) == 1);
+    REQUIRE(bar.boundaryAtX(bar.xOfTime(4.5)) == -1);
+    QTest::mousePress(&bar, Qt::LeftButton, Qt::NoModifier, tick);
+    const QPoint to(bar.xOfTime(8.0), y);
+    QMouseEvent move(QEvent::MouseMove, QPointF(to), bar.mapToGlobal(QPointF(to)), Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(&bar, &move);
+    QTest::mouseRelease(&bar, Qt::LeftButton, Qt::NoModifier, to);
+    REQUIRE(scrubbed.count() == 1); // no scrubbing during the drag
+    REQUIRE(started.count() == 1);
+    REQUIRE(started.first().at(0).toInt() == 1);
+    REQUIRE(dragged.count() == 1);
+    REQUIRE(dragged.first().at(0).toInt() == 1);
+    REQUIRE(dragged.first().at(1).toDouble() == Approx(8.0).margin(10.0 / 380));
+    REQUIRE(finished.count() == 1);
+
+    // Away from the ticks it still scrubs.
+    QTest::mousePress(&bar, Qt::LeftButton, Qt::NoModifier, QPoint(bar.xOfTime(4.5), y));
+    REQUIRE(scrubbed.count() == 2);
 }
