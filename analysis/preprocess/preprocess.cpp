@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <map>
 
 namespace bunraku::analysis::preprocess {
 
@@ -71,6 +70,68 @@ int headingReference(const Corpus& corpus, const std::string& function, const st
     return best;
 }
 
+/// Onset of a take (fractional frame): departureOnset of its departure signal, with the noise
+/// floor of its activity (both are distances between two noisy samples when the take is still).
+double startOnset(const Take& take, const PreprocessOptions& options)
+{
+    const double noise = noiseFloor(activitySignal(take, options.activity), options.quietFraction);
+    return departureOnset(departureSignal(take, options.activity), noise, options.onsetFraction, options.noiseBand);
+}
+
+/// Signal the CrossCorrelation method correlates: the start edge of the take's departure,
+/// clipped at 2 * noiseBand * noise (twice the onset band; noiseless takes: the onset threshold
+/// noise + onsetFraction * (peak - noise), whichever is lower), so the correlation aligns the
+/// rise from the start pose rather than the whole motion, whose tempo differs between takes.
+Eigen::VectorXd xcorrSignal(const Take& take, const PreprocessOptions& options)
+{
+    const double noise = noiseFloor(activitySignal(take, options.activity), options.quietFraction);
+    const Eigen::VectorXd departure = departureSignal(take, options.activity);
+    if (departure.size() == 0) return departure;
+    double ceiling = noise + options.onsetFraction * (departure.maxCoeff() - noise);
+    if (noise > 0.0) ceiling = std::min(ceiling, 2.0 * options.noiseBand * noise);
+    return startEdge(departure, ceiling);
+}
+
+/// Step (3): per cell, choose the time reference (named or automatic) and shift every other
+/// take by its estimated start shift; shifts are estimated on the unshifted takes.
+void alignStartTimes(Corpus& out, const std::vector<Eigen::Index>& originalFrames, const PreprocessOptions& options,
+                     PreprocessReport& report)
+{
+    const std::vector<Take> before = out.takes;
+    std::vector<Eigen::VectorXd> signals;
+    for (std::size_t i = 0; i < before.size(); ++i) {
+        report.takes[i].onsetFrame = startOnset(before[i], options);
+        if (options.alignMethod == StartAlignMethod::CrossCorrelation) signals.push_back(xcorrSignal(before[i], options));
+    }
+    for (const auto& function : out.functions())
+        for (const auto& emotion : out.emotions()) {
+            std::vector<std::size_t> members;
+            std::vector<ReferenceCandidate> candidates;
+            int ref = -1;
+            for (std::size_t i = 0; i < before.size(); ++i) {
+                const auto& labels = before[i].labels;
+                if (labels.function != function || labels.emotion != emotion) continue;
+                if (options.referenceTakeIndex > 0 && labels.takeIndex == options.referenceTakeIndex) ref = int(i);
+                members.push_back(i);
+                candidates.push_back({originalFrames[i], report.takes[i].onsetFrame});
+            }
+            if (members.empty()) continue;
+            const bool automatic = ref < 0;
+            if (automatic) ref = int(members[std::size_t(chooseTimeReference(candidates, options.longTakeFraction))]);
+            const auto r = std::size_t(ref);
+            report.timeReferences.push_back({function, emotion, before[r].labels.takeIndex, automatic, report.takes[r].onsetFrame});
+            report.takes[r].isTimeReference = true;
+            for (std::size_t i : members) {
+                if (i == r) continue;
+                const int shift = options.alignMethod == StartAlignMethod::Onset
+                                      ? int(std::lround(report.takes[i].onsetFrame - report.takes[r].onsetFrame))
+                                      : crossCorrelationShift(signals[i], signals[r], options.maxShiftFrames);
+                shiftTake(out.takes[i], shift);
+                report.takes[i].shiftFrames = shift;
+            }
+        }
+}
+
 Error cancelled() { return makeError(ErrorCode::Cancelled, "preprocessing cancelled"); }
 
 } // namespace
@@ -111,80 +172,11 @@ int unwrapAngles(Take& take)
     return wraps;
 }
 
-Eigen::VectorXd summedSpeed(const Take& take)
-{
-    const Eigen::Index frames = take.frameCount();
-    Eigen::VectorXd speed = Eigen::VectorXd::Zero(frames);
-    if (frames < 2) return speed;
-    const auto parts = sixDofParts(take);
-    for (Eigen::Index t = 1; t < frames; ++t) {
-        double sum = 0.0;
-        if (!parts.empty()) {
-            for (const auto& part : parts)
-                sum += (take.values.row(t).segment(part.firstChannel, 3) - take.values.row(t - 1).segment(part.firstChannel, 3)).norm();
-        } else {
-            sum = (take.values.row(t) - take.values.row(t - 1)).cwiseAbs().sum();
-        }
-        speed[t] = sum;
-    }
-    return speed;
-}
-
-Eigen::Index onsetFrame(const Eigen::VectorXd& speed, double fraction)
-{
-    if (speed.size() == 0) return 0;
-    const double peak = speed.maxCoeff();
-    if (!(peak > 0.0)) return 0;
-    for (Eigen::Index t = 0; t < speed.size(); ++t)
-        if (speed[t] >= fraction * peak) return t;
-    return 0;
-}
-
-int crossCorrelationShift(const Eigen::VectorXd& signal, const Eigen::VectorXd& reference, int maxShift)
-{
-    const Eigen::Index n = signal.size(), m = reference.size();
-    if (n == 0 || m == 0) return 0;
-    const Eigen::VectorXd a = signal.array() - signal.mean();
-    const Eigen::VectorXd b = reference.array() - reference.mean();
-    double best = -std::numeric_limits<double>::infinity();
-    int bestShift = 0;
-    for (int s = -maxShift; s <= maxShift; ++s) {
-        // Overlap: reference t in [t0, t1), signal index t + s.
-        const Eigen::Index t0 = std::max<Eigen::Index>(0, -s);
-        const Eigen::Index t1 = std::min<Eigen::Index>(m, n - s);
-        if (t1 - t0 < 2) continue;
-        const auto x = a.segment(t0 + s, t1 - t0);
-        const auto y = b.segment(t0, t1 - t0);
-        const double norm = x.norm() * y.norm();
-        if (!(norm > 0.0)) continue;
-        const double score = x.dot(y) / norm;
-        if (score > best + 1e-12 || (std::fabs(score - best) <= 1e-12 && std::abs(s) < std::abs(bestShift))) {
-            best = score;
-            bestShift = s;
-        }
-    }
-    return bestShift;
-}
-
 int estimateStartShift(const Take& take, const Take& reference, const PreprocessOptions& options)
 {
-    const Eigen::VectorXd speed = summedSpeed(take);
-    const Eigen::VectorXd referenceSpeed = summedSpeed(reference);
     if (options.alignMethod == StartAlignMethod::Onset)
-        return int(onsetFrame(speed, options.onsetFraction) - onsetFrame(referenceSpeed, options.onsetFraction));
-    return crossCorrelationShift(speed, referenceSpeed, options.maxShiftFrames);
-}
-
-void shiftTake(Take& take, int shift)
-{
-    const Eigen::Index frames = take.frameCount();
-    if (shift == 0 || frames == 0) return;
-    Eigen::MatrixXd shifted(frames, take.channelCount());
-    for (Eigen::Index t = 0; t < frames; ++t) {
-        const Eigen::Index source = std::clamp<Eigen::Index>(t + shift, 0, frames - 1);
-        shifted.row(t) = take.values.row(source);
-    }
-    take.values = std::move(shifted);
+        return int(std::lround(startOnset(take, options) - startOnset(reference, options)));
+    return crossCorrelationShift(xcorrSignal(take, options), xcorrSignal(reference, options), options.maxShiftFrames);
 }
 
 int matchAngleBranches(Take& take, const Take& reference)
@@ -222,6 +214,16 @@ Result<PreprocessResult> preprocessCorpus(const Corpus& corpus, const Preprocess
     if (!(options.onsetFraction > 0.0 && options.onsetFraction <= 1.0))
         return makeError(ErrorCode::InvalidArgument, "onset fraction must be in (0, 1]");
     if (options.maxShiftFrames < 0) return makeError(ErrorCode::InvalidArgument, "the maximum shift must not be negative");
+    if (!(options.quietFraction >= 0.0 && options.quietFraction <= 1.0))
+        return makeError(ErrorCode::InvalidArgument, "quiet fraction must be in [0, 1]");
+    if (!(options.longTakeFraction >= 0.0 && options.longTakeFraction <= 1.0))
+        return makeError(ErrorCode::InvalidArgument, "long-take fraction must be in [0, 1]");
+    if (!(options.activity.cmPerDegree >= 0.0) || !std::isfinite(options.activity.cmPerDegree))
+        return makeError(ErrorCode::InvalidArgument, "the angle weight (cm per degree) must be finite and not negative");
+    if (options.referenceTakeIndex < 0)
+        return makeError(ErrorCode::InvalidArgument, "the reference take index must be 0 (automatic) or a take index");
+    std::vector<Eigen::Index> originalFrames;
+    for (const Take& take : corpus.takes) originalFrames.push_back(take.frameCount());
     PreprocessResult result{corpus, {}};
     Corpus& out = result.corpus;
     auto& reports = result.report.takes;
@@ -246,25 +248,7 @@ Result<PreprocessResult> preprocessCorpus(const Corpus& corpus, const Preprocess
     if (control.cancelled()) return cancelled();
     control.report(0.5);
 
-    if (options.alignStart) {
-        std::map<std::pair<std::string, std::string>, int> references;
-        for (const auto& function : out.functions())
-            for (const auto& emotion : out.emotions()) {
-                const int ref = cellReference(out, function, emotion, options.referenceTakeIndex);
-                if (ref >= 0) references[{function, emotion}] = ref;
-            }
-        const std::vector<Take> before = out.takes; // shifts are estimated on unshifted takes
-        for (std::size_t i = 0; i < out.takes.size(); ++i) {
-            const int ref = references.at({out.takes[i].labels.function, out.takes[i].labels.emotion});
-            if (ref == int(i)) {
-                reports[i].isTimeReference = true;
-                continue;
-            }
-            const int shift = estimateStartShift(before[i], before[std::size_t(ref)], options);
-            shiftTake(out.takes[i], shift);
-            reports[i].shiftFrames = shift;
-        }
-    }
+    if (options.alignStart) alignStartTimes(out, originalFrames, options, result.report);
     if (control.cancelled()) return cancelled();
     control.report(0.75);
 

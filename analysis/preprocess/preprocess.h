@@ -1,8 +1,9 @@
 #pragma once
 /// Preprocessing of a corpus, thesis 2.2: (1) pad every take to the longest with its last frame,
 /// (2) unwrap angles (the thesis remapped to 0..360; we unwrap), (3) align the start times of the
-/// K takes of each function x emotion cell to the cell's reference take, (4) translate each take
-/// so each part's first-frame position equals that of its function's reference take.
+/// K takes of each function x emotion cell to the cell's time reference (automatic: the median
+/// onset among its longest takes), (4) translate each take so each part's first-frame position
+/// equals that of its function's reference take.
 /// Two steps the thesis implies but does not name: after unwrapping, every angle channel is
 /// moved by whole turns so its first value lies within 180 deg of the function's reference take
 /// (the thesis's 0..360 remapping kept all takes on one branch; per-take unwrapping does not),
@@ -17,6 +18,7 @@
 #include "analysis/core/corpus.h"
 #include "analysis/core/result.h"
 #include "analysis/core/run_control.h"
+#include "analysis/preprocess/start_alignment.h"
 
 #include <Eigen/Core>
 
@@ -24,15 +26,6 @@
 #include <vector>
 
 namespace bunraku::analysis::preprocess {
-
-enum class StartAlignMethod {
-    /// Onset: first frame where the summed speed exceeds `onsetFraction` of its maximum; the
-    /// shift is onset(take) - onset(reference).
-    Onset,
-    /// Cross-correlation of the (mean-removed) summed speed with the reference's; the shift is
-    /// the lag in [-maxShiftFrames, maxShiftFrames] of the largest normalised correlation.
-    CrossCorrelation,
-};
 
 struct PreprocessOptions {
     bool pad = true;
@@ -43,10 +36,25 @@ struct PreprocessOptions {
     /// The part whose start yaw defines the whole-body heading.
     std::string headingPart = "shoulder";
     StartAlignMethod alignMethod = StartAlignMethod::Onset;
+    /// Onset search threshold: the noise floor plus this fraction of (peak - floor) of the
+    /// departure from the start pose (departureOnset).
     double onsetFraction = 0.1;
+    /// Quantile of the non-zero frames' activity taken as the noise floor (the quietest frames).
+    double quietFraction = 0.25;
+    /// Start of motion: where the departure from the start pose rises above this multiple of
+    /// the noise floor (departureOnset's band; xcorr clips the departure at twice this).
+    double noiseBand = 1.5;
     int maxShiftFrames = 30;
-    /// Take index of the reference of each cell; when absent in a cell, its lowest take index.
-    int referenceTakeIndex = 1;
+    /// Angle weight and smoothing of the activity and departure signals both methods use.
+    ActivityOptions activity;
+    /// Take index of each cell's time reference. 0 (default) = automatic: the median onset
+    /// among the takes at least `longTakeFraction` as long as the cell's longest (thesis 3.6.1,
+    /// chooseTimeReference); when a cell lacks the named take, the automatic choice.
+    /// The function's position reference (step 4) is the named take of its reference emotion,
+    /// or its lowest take index when 0 or absent.
+    int referenceTakeIndex = 0;
+    /// Takes at least this fraction of the cell's longest (before padding) count as long.
+    double longTakeFraction = 0.95;
     /// Emotion whose reference take is the function's position reference; empty = the corpus's
     /// neutral emotion, falling back to the function's first emotion.
     std::string referenceEmotion;
@@ -59,6 +67,7 @@ struct TakeReport {
     int anglesUnwrapped = 0;         ///< 360-degree jumps removed over all angle channels
     int shiftFrames = 0;             ///< frames dropped from the start (< 0: first frame repeated in front)
     bool isTimeReference = false;
+    double onsetFrame = 0.0;         ///< start of motion before shifting (fractional frame, departureOnset; when aligning start)
     bool isPositionReference = false;
     std::vector<Eigen::Vector3d> positionOffsets; ///< cm added per 6-DOF part (sixDofParts order)
     int branchTurns = 0;             ///< whole turns added to angle channels to meet the reference's branch
@@ -66,8 +75,18 @@ struct TakeReport {
     bool isHeadingReference = false; ///< the function's heading (and angle branch) reference
 };
 
+/// The time reference chosen for one function x emotion cell.
+struct CellTimeReference {
+    std::string function;
+    std::string emotion;
+    int takeIndex = 0;        ///< the reference's TakeLabels::takeIndex
+    bool automatic = true;    ///< chosen by chooseTimeReference (not named by referenceTakeIndex)
+    double onsetFrame = 0.0;  ///< its onset (fractional frame)
+};
+
 struct PreprocessReport {
     std::vector<TakeReport> takes;   ///< in corpus order
+    std::vector<CellTimeReference> timeReferences; ///< per cell, functions() x emotions() order (when aligning start)
     Eigen::Index paddedFrames = 0;   ///< common length after padding (0 when not padded)
 };
 
@@ -95,18 +114,8 @@ int matchAngleBranches(Take& take, const Take& reference);
 /// take, taken within (-180, 180]; returns that offset in degrees (0 when the part has no yaw
 /// channel). Follow with matchAngleBranches to put every channel on the reference's branch.
 double alignStartHeading(Take& take, const Take& reference, const std::string& headingPart);
-/// Summed speed per frame (length frames): sum over 6-DOF parts of the position speed (cm/frame),
-/// or when the take has none, the sum of absolute differences of all channels. speed(0) = 0.
-Eigen::VectorXd summedSpeed(const Take& take);
-/// First frame where `speed` reaches fraction * max(speed); 0 for a motionless signal.
-Eigen::Index onsetFrame(const Eigen::VectorXd& speed, double fraction);
-/// Lag s in [-maxShift, maxShift] maximising the normalised correlation of signal(t + s) with
-/// reference(t) over their overlap.
-int crossCorrelationShift(const Eigen::VectorXd& signal, const Eigen::VectorXd& reference, int maxShift);
-/// Shift of `take` relative to `reference` by the chosen method (positive: take starts late).
+/// Shift of `take` relative to `reference` by the chosen method (positive: take starts late), on
+/// activitySignal(options.activity): onset difference rounded to whole frames, or the xcorr lag.
 int estimateStartShift(const Take& take, const Take& reference, const PreprocessOptions& options);
-/// Drops `shift` frames at the start and repeats the last frame at the end (shift < 0: repeats
-/// the first frame in front and drops at the end); the frame count is unchanged.
-void shiftTake(Take& take, int shift);
 
 } // namespace bunraku::analysis::preprocess

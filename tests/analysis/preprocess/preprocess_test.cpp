@@ -121,9 +121,20 @@ TEST_CASE("preprocessing a corpus aligns start times per cell and positions per 
     CHECK(report.takes[2].framesPadded == 6);
     CHECK(report.takes[0].isTimeReference);
     CHECK(report.takes[1].shiftFrames == 4);
-    CHECK(report.takes[2].isTimeReference);
-    CHECK(report.takes[3].shiftFrames == 0);
+    // hostile: take 1 (44 frames) is too short to be the automatic reference; take 2 (50) is
+    CHECK(report.takes[3].isTimeReference);
+    CHECK_FALSE(report.takes[2].isTimeReference);
+    CHECK(report.takes[2].shiftFrames == 0);
     CHECK(report.takes[5].shiftFrames == 3);
+    REQUIRE(report.timeReferences.size() == 3);
+    CHECK(report.timeReferences[0].function == "greeting");
+    CHECK(report.timeReferences[0].emotion == "none");
+    CHECK(report.timeReferences[0].takeIndex == 1);
+    CHECK(report.timeReferences[1].emotion == "hostile");
+    CHECK(report.timeReferences[1].takeIndex == 2);
+    CHECK(report.timeReferences[1].automatic);
+    CHECK(report.timeReferences[2].function == "tea");
+    CHECK(report.timeReferences[2].takeIndex == 1);
     CHECK(report.takes[0].isPositionReference);
     CHECK(report.takes[4].isPositionReference);
     CHECK_FALSE(report.takes[2].isPositionReference);
@@ -177,6 +188,15 @@ TEST_CASE("preprocessing rejects invalid corpora and options and honours cancell
     corpus.takes[1].labels.takeIndex = 2;
     PreprocessOptions bad;
     bad.onsetFraction = 0.0;
+    CHECK(preprocessCorpus(corpus, bad).error().code == ErrorCode::InvalidArgument);
+    bad = {};
+    bad.referenceTakeIndex = -1;
+    CHECK(preprocessCorpus(corpus, bad).error().code == ErrorCode::InvalidArgument);
+    bad = {};
+    bad.quietFraction = 1.5;
+    CHECK(preprocessCorpus(corpus, bad).error().code == ErrorCode::InvalidArgument);
+    bad = {};
+    bad.activity.cmPerDegree = std::nan("");
     CHECK(preprocessCorpus(corpus, bad).error().code == ErrorCode::InvalidArgument);
     std::stop_source stop;
     stop.request_stop();
