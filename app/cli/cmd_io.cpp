@@ -438,8 +438,8 @@ void addIoCommands(CommandSet& commands)
         preprocess->add_option("--heading-part", arguments->headingPart, "Part whose start yaw is the whole-body heading")
             ->capture_default_str();
         preprocess->add_option("--align-method", arguments->method,
-                               "Start-time alignment: onset (summed speed crosses a fraction of its peak) or xcorr "
-                               "(cross-correlation of summed speed)")
+                               "Start-time alignment: onset (where the distance from the start pose, positions and "
+                               "rotations, rises above its noise floor) or xcorr (cross-correlation of that rise)")
             ->check(CLI::IsMember({"onset", "xcorr"}))
             ->capture_default_str();
         preprocess->add_option("--reference-take", arguments->referenceTake, "Take index of each cell's time reference; 0 = automatic (median onset among the longest takes)")
