@@ -1,5 +1,7 @@
 #include "analysis/normalise/correspondence_path.h"
 
+#include "analysis/normalise/distance_kernel.h"
+
 #include <cassert>
 #include <cmath>
 
@@ -7,6 +9,20 @@ namespace bunraku::analysis {
 
 namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// The highest set bit at or below `column` in one row's drop bits: the first minimum of that
+// row's columns 0..column.
+Eigen::Index lastDropAtOrBelow(const std::uint64_t* bits, Eigen::Index column)
+{
+    auto word = std::size_t(column >> 6);
+    const unsigned bit = unsigned(column & 63);
+    std::uint64_t mask = bits[word] & (bit == 63 ? ~std::uint64_t(0) : (std::uint64_t(1) << (bit + 1)) - 1);
+    while (mask == 0) {
+        if (word == 0) return -1;
+        mask = bits[--word];
+    }
+    return Eigen::Index(word * 64 + 63 - std::size_t(__builtin_clzll(mask)));
+}
 }
 
 PathBuilder::PathBuilder(int searchBand, Eigen::Index referenceFrames, Eigen::Index sampleFrames, PathMethod method)
@@ -19,9 +35,9 @@ PathBuilder::PathBuilder(int searchBand, Eigen::Index referenceFrames, Eigen::In
     if (optimal) {
         m_previous.assign(width, kInfinity);
         m_current.assign(width, kInfinity);
-        m_prefixMin.assign(width, kInfinity);
-        m_prefixArg.assign(width, std::int16_t(-1));
-        m_back.assign(std::size_t(referenceFrames) * width, std::int16_t(-1));
+        m_prefix.assign(width + 4, kInfinity);
+        m_words = (width + 63) / 64;
+        m_drops.assign(std::size_t(referenceFrames) * m_words, 0);
     } else {
         m_greedy = Eigen::VectorXi::Zero(referenceFrames);
     }
@@ -62,28 +78,15 @@ void PathBuilder::addRow(const double* costRow)
     }
 
     // D(t, u) = cost(t, u) + min_{u' <= u} D(t - 1, u'); the previous row's column j' holds
-    // sample frame firstSample - 1 + j', so u' <= u means j' <= j + 1.
-    std::int16_t* back = m_back.data() + std::size_t(m_row) * std::size_t(width);
-    std::fill(m_current.begin(), m_current.end(), kInfinity);
+    // sample frame firstSample - 1 + j', so u' <= u means j' <= j + 1. The previous row's prefix
+    // minimum drops (first minimum on ties) are kept as bits for the back-pointers.
     if (m_row == 0) {
+        std::fill(m_current.begin(), m_current.end(), kInfinity);
         for (Eigen::Index j = lowColumn; j <= highColumn; ++j) m_current[std::size_t(j)] = costRow[j];
     } else {
-        // Prefix minimum of the previous row (first minimum on ties), then one pass.
-        double runningMin = kInfinity;
-        Eigen::Index runningArg = -1;
-        for (Eigen::Index k = 0; k < width; ++k) {
-            if (m_previous[std::size_t(k)] < runningMin) {
-                runningMin = m_previous[std::size_t(k)];
-                runningArg = k;
-            }
-            m_prefixMin[std::size_t(k)] = runningMin;
-            m_prefixArg[std::size_t(k)] = std::int16_t(runningArg);
-        }
-        for (Eigen::Index j = lowColumn; j <= highColumn; ++j) {
-            const std::size_t k = std::size_t(std::min<Eigen::Index>(j + 1, width - 1));
-            m_current[std::size_t(j)] = costRow[j] + m_prefixMin[k];
-            back[j] = m_prefixArg[k];
-        }
+        detail::dynamicProgrammeRow(m_previous.data(), costRow, std::size_t(width), std::size_t(lowColumn),
+                                    std::size_t(highColumn), m_prefix.data(),
+                                    m_drops.data() + std::size_t(m_row - 1) * m_words, m_current.data());
     }
     std::swap(m_previous, m_current);
     ++m_row;
@@ -97,19 +100,16 @@ Eigen::VectorXi PathBuilder::finish(double* totalCost)
         return m_greedy;
     }
     const Eigen::Index width = 2 * m_band + 1;
-    Eigen::Index best = -1;
-    double bestCost = kInfinity;
-    for (Eigen::Index j = 0; j < width; ++j) {
-        if (m_previous[std::size_t(j)] < bestCost) {
-            bestCost = m_previous[std::size_t(j)];
-            best = j;
-        }
-    }
+    const std::size_t last = std::size_t(m_referenceFrames - 1) * m_words;
+    detail::prefixMinimumBits(m_previous.data(), std::size_t(width), m_prefix.data(), m_drops.data() + last);
+    Eigen::Index best = lastDropAtOrBelow(m_drops.data() + last, width - 1);
+    const double bestCost = best >= 0 ? m_previous[std::size_t(best)] : kInfinity;
     Eigen::VectorXi path(m_referenceFrames);
     for (Eigen::Index t = m_referenceFrames - 1; t >= 0; --t) {
         assert(best >= 0);
         path[t] = int(t - m_band + best);
-        best = m_back[std::size_t(t) * std::size_t(width) + std::size_t(best)];
+        if (t > 0)
+            best = lastDropAtOrBelow(m_drops.data() + std::size_t(t - 1) * m_words, std::min<Eigen::Index>(best + 1, width - 1));
     }
     if (totalCost) *totalCost = bestCost;
     return path;

@@ -23,8 +23,10 @@ struct BandCost {
 };
 
 /// Feeds band rows one at a time (so long takes never hold the whole band) and keeps what the
-/// chosen PathMethod needs: the choices so far (greedy, independent) or int16 back-pointers
-/// (optimal: 2 bytes x frames x (2 T_cmp + 1)). Rows must have 2 * searchBand + 1 entries.
+/// chosen PathMethod needs: the choices so far (greedy, independent) or, for optimal, one bit
+/// per band cell - where each row's prefix minimum drops, which is enough to walk the
+/// back-pointers (ceil((2 T_cmp + 1) / 64) x 8 bytes a frame). Rows must have 2 * searchBand + 1
+/// entries.
 class PathBuilder {
 public:
     PathBuilder(int searchBand, Eigen::Index referenceFrames, Eigen::Index sampleFrames, PathMethod method);
@@ -47,9 +49,9 @@ private:
     Eigen::VectorXi m_greedy;
     double m_greedyCost = 0;
     // optimal
-    std::vector<double> m_previous, m_current, m_prefixMin;
-    std::vector<std::int16_t> m_prefixArg;
-    std::vector<std::int16_t> m_back;
+    std::vector<double> m_previous, m_current, m_prefix;
+    std::size_t m_words = 0;            // 64-bit words of drop bits per row
+    std::vector<std::uint64_t> m_drops; // row t: where the prefix minimum of row t drops
 };
 
 /// Thesis 3.5.3: for t_ref = 0, 1, ... choose the cheapest t_smp >= the previous choice (ties to

@@ -1,9 +1,10 @@
 #pragma once
-/// Internal: the innermost loop of matching - squared distances from one feature vector to a
-/// run of others - with an AVX2/FMA version chosen at run time when the CPU has it (the
-/// portable build targets baseline x86-64) and a plain fallback.
+/// Internal: the innermost loops of matching, each with an AVX2/FMA version chosen at run time
+/// when the CPU has it (the portable build targets baseline x86-64) and a plain fallback that
+/// gives the same results up to rounding.
 
 #include <cstddef>
+#include <cstdint>
 
 namespace bunraku::analysis::detail {
 
@@ -15,5 +16,34 @@ void squaredDistances(const double* a, const double* const* rows, std::size_t co
 /// multiply-add per feature instead of two.
 void squaredDistancesContiguous(const double* a, double aNorm, const double* first, const double* norms,
                                 std::size_t count, std::size_t features, double* out);
+
+/// Offsets handled by one call of diagonalDistances (the caller pads its arrays for them).
+inline constexpr std::size_t kDiagonalBlock = 8;
+
+/// Squared distances along 8 neighbouring diagonals of feature-major data, written as rows:
+/// e[p * eStride + k] = sum_f (a[f * aStride + p] - b[f * bStride + p + k])^2
+/// for k < kDiagonalBlock and p < count, count a multiple of 4. `a` must be readable for
+/// count entries per feature, `b` for count + kDiagonalBlock - 1.
+void diagonalDistances(const double* a, std::size_t aStride, const double* b, std::size_t bStride,
+                       std::size_t features, std::size_t count, double* e, std::size_t eStride);
+
+/// Window sums down the rows of e (each column is one diagonal of the band):
+/// rows[p * stride + o] = sum_{s = 0 .. length - 1} e[(p + s) * stride + o] for p < count and
+/// o < columns. Row 0 is summed in full, later rows slide (add the row entering, subtract the
+/// one leaving), so rounding accumulates over at most `count` rows.
+void windowRows(const double* e, std::size_t count, std::size_t length, std::size_t columns, std::size_t stride,
+                double* rows);
+
+/// One row of the optimal path's dynamic programme over a band of `width` cells.
+/// prefix[k] = min(previous[0..k]); bits (one bit per column, 64 a word, (width + 63) / 64
+/// words) get bit k set where the prefix minimum strictly drops at k, so the first minimum of
+/// previous[0..k] is the highest set bit at or below k. Then
+/// current[j] = cost[j] + prefix[min(j + 1, width - 1)] for low <= j <= high and infinity
+/// elsewhere. `prefix` needs width + 4 entries of scratch.
+void dynamicProgrammeRow(const double* previous, const double* cost, std::size_t width, std::size_t low,
+                         std::size_t high, double* prefix, std::uint64_t* bits, double* current);
+
+/// Just the prefix bits of `values` (as dynamicProgrammeRow), for the last row.
+void prefixMinimumBits(const double* values, std::size_t width, double* prefix, std::uint64_t* bits);
 
 } // namespace bunraku::analysis::detail

@@ -3,8 +3,9 @@
 /// feature vectors of a reference and a sample, a window cost
 /// cost(t_ref, t_smp) = sum_{s=-tau..tau} |f_ref(t_ref + s) - f_smp(t_smp + s)|^2 (thesis 3.5.2)
 /// in the band |t_smp - t_ref| <= T_cmp, and a greedy or optimal non-decreasing path.
-/// The band is streamed row by row: memory is O(frames x band) bytes for the optimal path's
-/// back-pointers (2 bytes a cell) and O(window x band) for the costs.
+/// Each per-frame distance is computed once (on the band's diagonals) and the band is streamed
+/// in tiles of reference frames: memory is O(frames x features) for feature-major copies,
+/// O(frames x band) bits for the optimal path's back-pointers and O(tile x band) for the costs.
 
 #include "analysis/core/result.h"
 #include "analysis/core/run_control.h"

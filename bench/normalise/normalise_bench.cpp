@@ -1,5 +1,6 @@
 // Speed of time normalisation (issue 3): one thesis cell, the whole demo corpus, a pair of
 // 100,000-frame takes, and the CWT of 100,000 samples. Numbers: docs/performance/normalise.md.
+#include "analysis/normalise/feature_matching.h"
 #include "analysis/normalise/take_normalisation.h"
 #include "analysis/synth/demo_corpus.h"
 #include "analysis/wavelet/cwt.h"
@@ -8,6 +9,7 @@
 #include <benchmark/benchmark.h>
 
 #include <random>
+#include <utility>
 
 using namespace bunraku::analysis;
 
@@ -76,6 +78,27 @@ void BM_LongPair(benchmark::State& state)
 }
 BENCHMARK(BM_LongPair)->Args({0, 100000})->Args({1, 100000})->Args({1, 25000})->Args({1, 50000})
     ->Unit(benchmark::kMillisecond)->Iterations(3);
+
+// The matching engine alone on one coupling set's worth of features: 100,000 frames x 32
+// features (2 channels x 16 scales), T_cmp 240, tau 4 - a twelfth of BM_LongPair's matching.
+void BM_MatchFeatures(benchmark::State& state)
+{
+    static const auto features = [] {
+        std::mt19937 random(11);
+        std::normal_distribution<double> normal;
+        std::pair<FeatureMatrix, FeatureMatrix> pair{FeatureMatrix(100000, 32), FeatureMatrix(100000, 32)};
+        for (Eigen::Index i = 0; i < pair.first.size(); ++i) pair.first.data()[i] = normal(random);
+        for (Eigen::Index i = 0; i < pair.second.size(); ++i) pair.second.data()[i] = normal(random);
+        return pair;
+    }();
+    const FeatureMatchOptions options{4, 240, PathMethod(state.range(0))};
+    for (auto _ : state) {
+        auto result = matchFeatures(features.first, features.second, options);
+        benchmark::DoNotOptimize(result);
+    }
+    state.SetLabel(state.range(0) == 0 ? "greedy" : "optimal");
+}
+BENCHMARK(BM_MatchFeatures)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 // CWT of 100,000 samples at scales 1..16 (sym3).
 void BM_Cwt100k(benchmark::State& state)

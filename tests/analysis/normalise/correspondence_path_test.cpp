@@ -153,3 +153,77 @@ TEST_CASE("the streamed matcher equals the paths through the full window-cost ba
         }
     }
 }
+
+TEST_CASE("the tiled matcher gives a plain dynamic programme's path and cost on random features", "[path]")
+{
+    // Reference: window costs from the definition and an O(frames x band^2) dynamic programme
+    // with explicit back-pointers (ties to the earliest sample frame), independent of
+    // PathBuilder. Sizes span several 64-frame tiles with a partial last one, feature counts
+    // that are not multiples of 4, bands wider than 64 columns (several words of drop bits).
+    std::mt19937 random(17);
+    std::normal_distribution<double> normal;
+    const double infinity = std::numeric_limits<double>::infinity();
+    for (int trial = 0; trial < 8; ++trial) {
+        const Eigen::Index referenceFrames = 90 + trial * 47;
+        const Eigen::Index sampleFrames = referenceFrames + (trial % 3) * 9 - 4;
+        const int tau = trial % 6;
+        const int searchBand = 5 + trial * 9;
+        const Eigen::Index features = 1 + trial * 5;
+        FeatureMatrix reference(referenceFrames, features), sample(sampleFrames, features);
+        for (Eigen::Index i = 0; i < reference.size(); ++i) reference.data()[i] = normal(random);
+        for (Eigen::Index i = 0; i < sample.size(); ++i) sample.data()[i] = normal(random);
+        auto clampRow = [](Eigen::Index i, Eigen::Index n) { return std::clamp<Eigen::Index>(i, 0, n - 1); };
+        auto cost = [&](Eigen::Index t, Eigen::Index u) {
+            double sum = 0.0;
+            for (int s = -tau; s <= tau; ++s)
+                sum += (reference.row(clampRow(t + s, referenceFrames)) - sample.row(clampRow(u + s, sampleFrames))).squaredNorm();
+            return sum;
+        };
+        auto admissible = [&](Eigen::Index t, Eigen::Index u) { return u >= 0 && u < sampleFrames && std::abs(u - t) <= searchBand; };
+        Eigen::MatrixXd total = Eigen::MatrixXd::Constant(referenceFrames, sampleFrames, infinity);
+        Eigen::MatrixXi back = Eigen::MatrixXi::Constant(referenceFrames, sampleFrames, -1);
+        for (Eigen::Index t = 0; t < referenceFrames; ++t)
+            for (Eigen::Index u = 0; u < sampleFrames; ++u) {
+                if (!admissible(t, u)) continue;
+                if (t == 0) {
+                    total(t, u) = cost(t, u);
+                    continue;
+                }
+                double previous = infinity;
+                for (Eigen::Index v = 0; v <= u; ++v)
+                    if (total(t - 1, v) < previous) {
+                        previous = total(t - 1, v);
+                        back(t, u) = int(v);
+                    }
+                if (back(t, u) >= 0) total(t, u) = cost(t, u) + previous;
+            }
+        Eigen::Index best = 0;
+        for (Eigen::Index u = 1; u < sampleFrames; ++u)
+            if (total(referenceFrames - 1, u) < total(referenceFrames - 1, best)) best = u;
+        Eigen::VectorXi expected(referenceFrames);
+        for (Eigen::Index t = referenceFrames - 1; t >= 0; --t) {
+            expected[t] = int(best);
+            if (t > 0) best = back(t, best);
+        }
+        // Greedy from its definition: the cheapest admissible frame at or after the previous choice.
+        Eigen::VectorXi greedy(referenceFrames);
+        double greedyCost = 0.0;
+        for (Eigen::Index t = 0; t < referenceFrames; ++t) {
+            Eigen::Index choice = -1;
+            for (Eigen::Index u = t > 0 ? greedy[t - 1] : 0; u < sampleFrames; ++u)
+                if (admissible(t, u) && (choice < 0 || cost(t, u) < cost(t, choice))) choice = u;
+            greedy[t] = int(choice);
+            greedyCost += cost(t, choice);
+        }
+        INFO("trial " << trial << ": " << referenceFrames << " x " << sampleFrames << " frames, " << features
+                      << " features, tau " << tau << ", T_cmp " << searchBand);
+        auto optimal = matchFeatures(reference, sample, {tau, searchBand, PathMethod::Optimal});
+        REQUIRE(optimal.ok());
+        CHECK(optimal->correspondence == expected);
+        CHECK(optimal->cost == Approx(total(referenceFrames - 1, expected[referenceFrames - 1])).epsilon(1e-9));
+        auto scanned = matchFeatures(reference, sample, {tau, searchBand, PathMethod::Greedy});
+        REQUIRE(scanned.ok());
+        CHECK(scanned->correspondence == greedy);
+        CHECK(scanned->cost == Approx(greedyCost).epsilon(1e-9));
+    }
+}
