@@ -3,7 +3,7 @@
 
 Prints one line per variant: name and median seconds over the repeats. bench_normalise_extras
 calls this and prints the ratio to the C++ transform measured in the same run
-(docs/performance/normalise.md).
+(docs/PERFORMANCE.md).
   mexh-conv, mexh-fft: pywt.cwt(x, 1..16, 'mexh', method=...)
   sym3-legacy: pywt 1.1.1's cwt refuses discrete wavelets, so the legacy MATLAB steps with
                pywt.integrate_wavelet + numpy.convolve, exactly what pywt.cwt does for

@@ -20,7 +20,7 @@ class ViewportWidget : public QOpenGLWidget {
     Q_OBJECT
 public:
     /// `samples`: multisampling of the view (4 looks best; 0 is about 2.5x faster on a software
-    /// rasteriser such as llvmpipe, see docs/performance/render.md).
+    /// rasteriser such as llvmpipe, see docs/PERFORMANCE.md).
     explicit ViewportWidget(QWidget* parent = nullptr, int samples = 4);
     ~ViewportWidget() override;
 

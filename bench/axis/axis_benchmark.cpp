@@ -1,5 +1,5 @@
 // Motion axis and design speed (issue 5 targets): axis of 106 frames < 1 ms, re-synthesis after
-// one control-point move < 2 ms, axis of 100,000 frames < 200 ms. Results: docs/performance/axis.md.
+// one control-point move < 2 ms, axis of 100,000 frames < 200 ms. Results: docs/PERFORMANCE.md.
 #include "analysis/axis/axis_channels.h"
 #include "analysis/axis/inertia_axis.h"
 #include "analysis/core/puppet_layout.h"

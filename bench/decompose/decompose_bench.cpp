@@ -1,6 +1,6 @@
 // Decomposition speed on the demo corpus shape (30 takes x 24 channels x 106 frames):
 // least squares, KM2O over all initial times, M selection, spectra, ARMA, and the emotion
-// weight re-synthesis the workbench's slider needs (< 1 ms). Results: docs/performance/decompose.md.
+// weight re-synthesis the workbench's slider needs (< 1 ms). Results: docs/PERFORMANCE.md.
 #include "analysis/decompose/arma.h"
 #include "analysis/decompose/emotion_weight.h"
 #include "analysis/decompose/km2o_decomposition.h"

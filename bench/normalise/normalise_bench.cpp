@@ -1,5 +1,5 @@
 // Speed of time normalisation (issue 3): one thesis cell, the whole demo corpus, a pair of
-// 100,000-frame takes, and the CWT of 100,000 samples. Numbers: docs/performance/normalise.md.
+// 100,000-frame takes, and the CWT of 100,000 samples. Numbers: docs/PERFORMANCE.md.
 #include "analysis/normalise/feature_matching.h"
 #include "analysis/normalise/take_normalisation.h"
 #include "analysis/synth/demo_corpus.h"

@@ -1,4 +1,4 @@
-// Measurements Google Benchmark does not make (docs/performance/normalise.md):
+// Measurements Google Benchmark does not make (docs/PERFORMANCE.md):
 //   bench_normalise_extras memory N   peak RSS of normalising one N-frame x 24-channel pair
 //                                     (T_cmp 240, scales 1..16, method 2, optimal path)
 //   bench_normalise_extras pywt       our CWT of 100,000 samples at scales 1..16 against Debian
