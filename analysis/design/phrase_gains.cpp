@@ -13,17 +13,6 @@ namespace bunraku::analysis {
 
 namespace {
 
-/// parseError's message built with a stream (GCC 12's -Wrestrict misfires on its inlined
-/// string concatenation at -O3).
-Error parseFailure(const std::string& file, long line, const std::string& what)
-{
-    std::ostringstream message;
-    message << file;
-    if (line > 0) message << ':' << line;
-    message << ": " << what;
-    return Error{ErrorCode::Parse, message.str()};
-}
-
 double smoothstep(double u)
 {
     u = std::clamp(u, 0.0, 1.0);
@@ -306,32 +295,32 @@ Result<GainSet> readGainsJson(const std::filesystem::path& file)
             phrase.end = phrases[p].at("end").get<Eigen::Index>();
             const auto& entries = phrases[p].at("gains");
             if (entries.size() != gains.dofNames.size())
-                return parseFailure(source, 0, "phrases[" + std::to_string(p) + "].gains: expected one entry per DOF");
+                return parseError(source, 0, "phrases[" + std::to_string(p) + "].gains: expected one entry per DOF");
             for (const auto& entry : entries) {
                 DofGain g;
                 g.g0 = entry.value("g0", 1.0);
                 g.g1 = entry.value("g1", 1.0);
                 const std::string mode = entry.value("mode", std::string("scale"));
                 if (mode != "scale" && mode != "offset")
-                    return parseFailure(source, 0, "phrases[" + std::to_string(p) + "]: mode must be \"scale\" or \"offset\"");
+                    return parseError(source, 0, "phrases[" + std::to_string(p) + "]: mode must be \"scale\" or \"offset\"");
                 g.dcMode = mode == "offset" ? DcMode::Offset : DcMode::Scale;
                 g.offset = entry.value("offset", 0.0);
                 const std::string acMode = entry.value("ac_mode", std::string("scale"));
                 if (acMode != "scale" && acMode != "additive")
-                    return parseFailure(source, 0, "phrases[" + std::to_string(p) + "]: ac_mode must be \"scale\" or \"additive\"");
+                    return parseError(source, 0, "phrases[" + std::to_string(p) + "]: ac_mode must be \"scale\" or \"additive\"");
                 g.acMode = acMode == "additive" ? AcMode::Additive : AcMode::Scale;
                 g.harmonicCos = entry.value("harmonic_cos", 0.0);
                 g.harmonicSin = entry.value("harmonic_sin", 0.0);
                 g.reason = entry.value("reason", std::string());
                 if (!std::isfinite(g.g0) || !std::isfinite(g.g1) || g.g0 == 0.0 || g.g1 == 0.0)
-                    return parseFailure(source, 0, "phrases[" + std::to_string(p) + "]: g0 and g1 must be finite and non-zero");
+                    return parseError(source, 0, "phrases[" + std::to_string(p) + "]: g0 and g1 must be finite and non-zero");
                 phrase.dofs.push_back(g);
             }
             gains.phrases.push_back(std::move(phrase));
         }
         return gains;
     } catch (const nlohmann::json::exception& error) {
-        return parseFailure(source, 0, std::string("expected a gains document with dofs and phrases (") + error.what() + ")");
+        return parseError(source, 0, std::string("expected a gains document with dofs and phrases (") + error.what() + ")");
     }
 }
 

@@ -32,17 +32,6 @@ WarpCurve identityWarp(Eigen::Index frames, int spacing)
 
 namespace {
 
-/// parseError's message built with a stream (GCC 12's -Wrestrict misfires on its inlined
-/// string concatenation at -O3).
-Error parseFailure(const std::string& file, long line, const std::string& what)
-{
-    std::ostringstream message;
-    message << file;
-    if (line > 0) message << ':' << line;
-    message << ": " << what;
-    return Error{ErrorCode::Parse, message.str()};
-}
-
 /// Fritsch-Carlson tangents: averaged secants, zero at flat stretches and local extrema, then
 /// shrunk interval by interval so that alpha^2 + beta^2 <= 9 (shrinking keeps earlier intervals valid).
 std::vector<double> monotoneTangents(const std::vector<WarpPoint>& p)
@@ -170,7 +159,7 @@ Result<WarpCurve> readWarpCsv(const std::filesystem::path& file)
         WarpPoint point;
         char comma = 0;
         if (!(fields >> point.output >> comma >> point.source) || comma != ',')
-            return parseFailure(file.string(), lineNumber, "expected \"output_frame,source_frame\" (two numbers)");
+            return parseError(file.string(), lineNumber, "expected \"output_frame,source_frame\" (two numbers)");
         curve.points.push_back(point);
     }
     if (!curve.points.empty()) curve.outputFrames = Eigen::Index(std::floor(curve.points.back().output)) + 1;
