@@ -89,6 +89,14 @@ Result<TruthExperimentResult> runTruthExperiment(const Corpus& corpus, const syn
                 if (!suggestion) return suggestion.error();
                 referenceIndex = std::size_t(suggestion->takeIndex);
             }
+            // Turn every take to the reference's whole-body heading (thesis 2.2's start-position
+            // alignment, extended to the heading; the timing is untouched, so the correspondences
+            // still compare with the raw takes' ground truth).
+            for (std::size_t k = 0; k < takes.size(); ++k) {
+                if (k == referenceIndex) continue;
+                preprocess::alignStartHeading(takes[k], takes[referenceIndex], "shoulder");
+                preprocess::matchAngleBranches(takes[k], takes[referenceIndex]);
+            }
             const Take& reference = *cell[referenceIndex];
 
             // The arm-hand distance range the raw takes of the cell show.

@@ -2,9 +2,12 @@
 
 #include "analysis/core/puppet_layout.h"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 namespace bunraku::analysis::preprocess {
 
@@ -202,6 +205,23 @@ double alignStartHeading(Take& take, const Take& reference, const std::string& h
     if (!own || !ref || take.frameCount() == 0 || reference.frameCount() == 0) return 0.0;
     // The physical turn, within (-180, 180]: the branch is matched afterwards by whole turns.
     const double offset = std::remainder(reference.values(0, *ref) - take.values(0, *own), 360.0);
+    // A rigid turn about the vertical through the heading part's start position: a rotation
+    // about world z adds to every yaw (Rz(a) Rz(y) Ry(p) Rx(r) = Rz(a + y) Ry(p) Rx(r)) and
+    // turns every position about the pivot.
+    const auto pivotColumn = take.channelIndex(headingPart, "x");
+    const bool hasPivot = pivotColumn && take.channelIndex(headingPart, "y") == *pivotColumn + 1;
+    const Eigen::Vector2d pivot =
+        hasPivot ? Eigen::Vector2d(take.values(0, *pivotColumn), take.values(0, *pivotColumn + 1)) : Eigen::Vector2d::Zero();
+    const Eigen::Matrix2d turn = Eigen::Rotation2Dd(offset * std::numbers::pi / 180.0).toRotationMatrix();
+    for (const SixDofPart& part : sixDofParts(take)) {
+        if (!hasPivot) break;
+        for (Eigen::Index f = 0; f < take.frameCount(); ++f) {
+            const Eigen::Vector2d xy(take.values(f, part.firstChannel), take.values(f, part.firstChannel + 1));
+            const Eigen::Vector2d turned = turn * (xy - pivot) + pivot;
+            take.values(f, part.firstChannel) = turned.x();
+            take.values(f, part.firstChannel + 1) = turned.y();
+        }
+    }
     for (Eigen::Index c = 0; c < take.channelCount(); ++c)
         if (take.channels[std::size_t(c)].dof == "yaw" && isAngleChannel(take.channels[std::size_t(c)]))
             take.values.col(c).array() += offset;

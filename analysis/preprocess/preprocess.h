@@ -110,9 +110,11 @@ int unwrapAngles(Take& take);
 /// Moves each angle channel of `take` by whole turns so its first value is within 180 deg of
 /// the same channel of `reference`; returns the number of turns added (absolute, summed).
 int matchAngleBranches(Take& take, const Take& reference);
-/// Adds to every yaw channel the difference of the heading part's start yaw, reference minus
-/// take, taken within (-180, 180]; returns that offset in degrees (0 when the part has no yaw
-/// channel). Follow with matchAngleBranches to put every channel on the reference's branch.
+/// Turns the whole take rigidly about the vertical through the heading part's start position
+/// by the difference of the heading part's start yaw, reference minus take, taken within
+/// (-180, 180]: every yaw channel gets the offset and every 6-DOF part's position is rotated
+/// about the pivot. Returns the offset in degrees (0 when the part has no yaw channel). Follow
+/// with matchAngleBranches to put every channel on the reference's branch.
 double alignStartHeading(Take& take, const Take& reference, const std::string& headingPart);
 /// Shift of `take` relative to `reference` by the chosen method (positive: take starts late), on
 /// activitySignal(options.activity): onset difference rounded to whole frames, or the xcorr lag.

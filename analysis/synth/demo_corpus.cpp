@@ -5,6 +5,8 @@
 #include "analysis/synth/motion_curves.h"
 #include "analysis/synth/puppet_rig.h"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -39,14 +41,33 @@ double inverseAt(const Eigen::VectorXd& samples, Eigen::Index first, double valu
     return double(k) + f;
 }
 
+} // namespace
+
+Eigen::Vector3d headingPivot(const CellTruth& cell)
+{
+    return cell.motion.row(0).segment<3>(puppetChannel(1, Dof::X)).transpose();
+}
+
+Eigen::Matrix3d headingTurn(const TakeTruth& take)
+{
+    return Eigen::AngleAxisd(take.yawOffsetDeg * std::numbers::pi / 180.0, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+}
+
+namespace {
+
 Eigen::MatrixXd noiselessValues(const CellTruth& cell, const TakeTruth& take)
 {
     const Eigen::RowVectorXd start = cell.motion.row(0);
+    const Eigen::Vector3d pivot = headingPivot(cell);
+    const Eigen::Matrix3d turn = headingTurn(take);
     Eigen::MatrixXd values(take.takeToCell.size(), kPuppetChannelCount);
     for (Eigen::Index t = 0; t < values.rows(); ++t) {
         Eigen::RowVectorXd row = start + take.amplitudeGain * (interpolateMotion(cell.motion, take.takeToCell(t)) - start);
+        // The whole puppet turned rigidly about the vertical through the shoulder's start
+        // position (a turn about world z only adds to yaw), then moved by the position offset.
         for (int part = 0; part < kPuppetPartCount; ++part) {
-            row.segment<3>(part * kDofCount) += take.positionOffset.transpose();
+            const Eigen::Vector3d position = row.segment<3>(part * kDofCount).transpose();
+            row.segment<3>(part * kDofCount) = (turn * (position - pivot) + pivot + take.positionOffset).transpose();
             row(puppetChannel(part, Dof::Yaw)) += take.yawOffsetDeg;
         }
         values.row(t) = row;

@@ -101,7 +101,9 @@ struct TakeTruth {
     double amplitudeGain = 1.0;
     /// Whole-body translation added to the 4 part positions (x, y, z), cm.
     Eigen::Vector3d positionOffset = Eigen::Vector3d::Zero();
-    /// Added to the 4 yaw channels before wrapping, degrees in (-180, 180].
+    /// Whole-body heading: the puppet turned rigidly by this angle about the vertical through
+    /// the shoulder's start position (headingPivot): positions rotated, the 4 yaw channels offset
+    /// before wrapping; degrees in (-180, 180]. Applied before positionOffset.
     double yawOffsetDeg = 0.0;
     /// True when yawOffsetDeg was chosen near 180 so that the yaw channels cross +-180.
     bool yawWraps = false;
@@ -130,6 +132,11 @@ struct DemoCorpus {
     Corpus corpus;
     DemoGroundTruth truth;
 };
+
+/// The pivot of a take's heading turn: the cell motion's first shoulder position, cm.
+Eigen::Vector3d headingPivot(const CellTruth& cell);
+/// The rotation about world z by the take's yawOffsetDeg.
+Eigen::Matrix3d headingTurn(const TakeTruth& take);
 
 /// The demo corpus and its ground truth; deterministic per options.seed.
 DemoCorpus generateDemoCorpus(const DemoOptions& options = {});

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <sys/wait.h>
+#include <unistd.h>
 
 namespace bunraku::test {
 namespace {
@@ -25,8 +26,10 @@ CliRun runBunraku(const std::vector<std::string>& arguments)
     static int counter = 0;
     const auto dir = std::filesystem::path(BUNRAKU_BINARY_DIR) / "test-scratch" / "cli-output";
     std::filesystem::create_directories(dir);
-    const auto outPath = dir / ("out" + std::to_string(counter) + ".txt");
-    const auto errPath = dir / ("err" + std::to_string(counter) + ".txt");
+    // ctest runs each case in its own process, two at a time: name the files by process too.
+    const std::string stem = std::to_string(::getpid()) + "-" + std::to_string(counter);
+    const auto outPath = dir / ("out-" + stem + ".txt");
+    const auto errPath = dir / ("err-" + stem + ".txt");
     ++counter;
     std::string command = "'" BUNRAKU_CLI "'";
     for (const auto& a : arguments) {

@@ -178,12 +178,18 @@ TEST_CASE("un-warping a take by its stored warp, jitter and offsets reproduces t
         const CellTruth& cell = *truth.cell(take.labels.function, take.labels.emotion);
         const Eigen::MatrixXd shown = resampleMotion(cell.motion, t.takeToCell); // the cell at the take's times
         const Eigen::RowVectorXd start = cell.motion.row(0);
+        const Eigen::Vector3d pivot = headingPivot(cell);
+        const Eigen::Matrix3d turn = headingTurn(t);
         double worst = 0.0;
         for (Eigen::Index f = 0; f < take.frameCount(); ++f)
             for (int c = 0; c < kPuppetChannelCount; ++c) {
                 const int dof = c % kDofCount;
                 double value = take.values(f, c);
-                if (dof < 3) value -= t.positionOffset(dof);
+                if (dof < 3) {
+                    // Undo the rigid heading turn and the translation of the part's position.
+                    const Eigen::Vector3d position = take.values.row(f).segment<3>(c - dof).transpose();
+                    value = (turn.transpose() * (position - t.positionOffset - pivot) + pivot)(dof);
+                }
                 if (dof == int(Dof::Yaw)) value -= t.yawOffsetDeg;
                 // Undo the wrap: the angle closest to the cell's value.
                 if (isAngleDof(dof)) value = shown(f, c) + wrapDegrees(value - shown(f, c));
