@@ -9,8 +9,10 @@ using bunraku::test::rotationAbout;
 
 TEST_CASE("the thesis's axis channels determine the pose")
 {
-    const Eigen::Vector3d direction = GENERATE(Eigen::Vector3d(0.2, -0.5, 1).eval(), Eigen::Vector3d(1, 0.3, -0.4).eval(),
-                                               Eigen::Vector3d(0, 1, 0).eval());
+    // An index is generated rather than the vectors themselves: Catch2's GENERATE keeps Eigen
+    // temporaries past their scope (AddressSanitizer: stack-use-after-scope).
+    static const Eigen::Vector3d directions[] = {{0.2, -0.5, 1}, {1, 0.3, -0.4}, {0, 1, 0}};
+    const Eigen::Vector3d direction = directions[GENERATE(0, 1, 2)];
     const double degrees = GENERATE(-170.0, -35.0, 0.0, 12.0, 179.0);
     const RigidTransform pose = rotationAbout(direction, degrees, Eigen::Vector3d(1, -2, 95));
     const auto values = axisChannelValues(pose);

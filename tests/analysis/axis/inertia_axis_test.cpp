@@ -94,8 +94,10 @@ TEST_CASE("the puppet's axis stands up and faces forward at rest")
 TEST_CASE("the axis never flips sign over a full turn")
 {
     const AxisModel model = makeAxisModel(defaultBodyDescription(), {{2.0}});
-    const Eigen::Vector3d turnAxis = GENERATE(Eigen::Vector3d::UnitZ().eval(), Eigen::Vector3d::UnitY().eval(),
-                                              Eigen::Vector3d(1, 1, 0.5).normalized().eval());
+    // An index, not the vectors: Catch2's GENERATE keeps Eigen temporaries past their scope.
+    static const Eigen::Vector3d turnAxes[] = {Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitY(),
+                                               Eigen::Vector3d(1, 1, 0.5).normalized()};
+    const Eigen::Vector3d turnAxis = turnAxes[GENERATE(0, 1, 2)];
     const int frames = 73; // 5 degrees per frame
     const Take take = puppetTake(frames, [&](Eigen::Index f) { return rotationAbout(turnAxis, 5.0 * double(f)); });
     const auto axis = computeMotionAxis(model, take);
@@ -173,7 +175,7 @@ TEST_CASE("the motion axis reports takes it cannot pose")
     CHECK(cancelled.error().code == ErrorCode::Cancelled);
 }
 
-TEST_CASE("when the arms swing forward the x and y moments cross; axis x stays on the shoulder's facing")
+TEST_CASE("when the arms swing forward the x and y moments cross, and axis x stays on the shoulder's facing")
 {
     const AxisModel model = makeAxisModel(defaultBodyDescription(), {{2.0}});
     // the arm and hand swing about the right shoulder joint from hanging to pointing forward;
