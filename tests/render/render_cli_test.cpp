@@ -9,6 +9,7 @@
 
 #include <QImage>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -100,6 +101,25 @@ TEST_CASE("bunraku render rejects bad input with a one-line error", "[render][cl
         CHECK(errors.find("bunraku: error: ") != std::string::npos);
         CHECK_FALSE(std::filesystem::exists(dir / "x.png"));
     }
+}
+
+TEST_CASE("bunraku render --mp4 without ffmpeg on PATH says how to get it and writes nothing", "[render][cli]")
+{
+    if (!std::filesystem::exists(cliPath())) {
+        WARN("skipped: " << cliPath() << " is not built");
+        return;
+    }
+    const auto dir = test::scratchDir("render_cli_mp4");
+    // An empty PATH: ffmpeg cannot be found whether or not the machine has it.
+    const auto [code, errors] = runCli("--help > /dev/null; PATH= " + quoted(cliPath()) +
+                                           " render demo:greeting/none/1 --frames 0:3 --mp4 " + quoted(dir / "take.mp4") +
+                                           " -o " + quoted(dir / "frames"),
+                                       dir);
+    INFO(errors);
+    CHECK(code != 0);
+    CHECK(errors.find("bunraku: error: --mp4 needs ffmpeg") != std::string::npos);
+    CHECK(std::count(errors.begin(), errors.end(), '\n') == 1);
+    CHECK_FALSE(std::filesystem::exists(dir / "take.mp4"));
 }
 
 TEST_CASE("a take scene carries the motion axis of every take, one pose per frame", "[render][scene]")
