@@ -20,6 +20,45 @@ double onsetThreshold(const Eigen::VectorXd& activity, double fraction, double q
     return floor + fraction * (peak - floor);
 }
 
+/// Distance between two frames of a take in cm: per 6-DOF part the Euclidean norm of its six
+/// changes (angles, within +-180, times cmPerDegree), summed over parts, plus the absolute
+/// change of every channel outside a part.
+class PoseDistance {
+public:
+    PoseDistance(const Take& take, double cmPerDegree)
+        : m_take(take), m_parts(sixDofParts(take)), m_inPart(std::size_t(take.channelCount()), false),
+          m_cmPerDegree(cmPerDegree)
+    {
+        for (const auto& part : m_parts)
+            for (Eigen::Index c = part.firstChannel; c < part.firstChannel + 6; ++c) m_inPart[std::size_t(c)] = true;
+    }
+
+    double operator()(Eigen::Index a, Eigen::Index b) const
+    {
+        double sum = 0.0;
+        for (const auto& part : m_parts) {
+            double squared = 0.0;
+            for (Eigen::Index c = part.firstChannel; c < part.firstChannel + 6; ++c) squared += change(a, b, c) * change(a, b, c);
+            sum += std::sqrt(squared);
+        }
+        for (Eigen::Index c = 0; c < m_take.channelCount(); ++c)
+            if (!m_inPart[std::size_t(c)]) sum += std::fabs(change(a, b, c));
+        return sum;
+    }
+
+private:
+    double change(Eigen::Index a, Eigen::Index b, Eigen::Index c) const
+    {
+        const double d = m_take.values(a, c) - m_take.values(b, c);
+        return m_take.channels[std::size_t(c)].unit == "deg" ? m_cmPerDegree * std::remainder(d, 360.0) : d;
+    }
+
+    const Take& m_take;
+    std::vector<SixDofPart> m_parts;
+    std::vector<bool> m_inPart;
+    double m_cmPerDegree;
+};
+
 } // namespace
 
 Eigen::VectorXd summedSpeed(const Take& take)
@@ -44,57 +83,20 @@ Eigen::VectorXd summedSpeed(const Take& take)
 Eigen::VectorXd rawActivity(const Take& take, double cmPerDegree)
 {
     const Eigen::Index frames = take.frameCount();
-    const Eigen::Index channels = take.channelCount();
     Eigen::VectorXd activity = Eigen::VectorXd::Zero(frames);
     if (frames < 2) return activity;
-    // Which channels belong to a 6-DOF part (handled as one rigid body each).
-    std::vector<bool> inPart(std::size_t(channels), false);
-    const auto parts = sixDofParts(take);
-    for (const auto& part : parts)
-        for (Eigen::Index c = part.firstChannel; c < part.firstChannel + 6; ++c) inPart[std::size_t(c)] = true;
-    auto change = [&](Eigen::Index t, Eigen::Index c) {
-        const double d = take.values(t, c) - take.values(t - 1, c);
-        return take.channels[std::size_t(c)].unit == "deg" ? cmPerDegree * std::remainder(d, 360.0) : d;
-    };
-    for (Eigen::Index t = 1; t < frames; ++t) {
-        double sum = 0.0;
-        for (const auto& part : parts) {
-            double squared = 0.0;
-            for (Eigen::Index c = part.firstChannel; c < part.firstChannel + 6; ++c) squared += change(t, c) * change(t, c);
-            sum += std::sqrt(squared);
-        }
-        for (Eigen::Index c = 0; c < channels; ++c)
-            if (!inPart[std::size_t(c)]) sum += std::fabs(change(t, c));
-        activity[t] = sum;
-    }
+    const PoseDistance distance(take, cmPerDegree);
+    for (Eigen::Index t = 1; t < frames; ++t) activity[t] = distance(t, t - 1);
     return activity;
 }
 
 Eigen::VectorXd departureSignal(const Take& take, const ActivityOptions& options)
 {
     const Eigen::Index frames = take.frameCount();
-    const Eigen::Index channels = take.channelCount();
     Eigen::VectorXd departure = Eigen::VectorXd::Zero(frames);
     if (frames < 2) return departure;
-    std::vector<bool> inPart(std::size_t(channels), false);
-    const auto parts = sixDofParts(take);
-    for (const auto& part : parts)
-        for (Eigen::Index c = part.firstChannel; c < part.firstChannel + 6; ++c) inPart[std::size_t(c)] = true;
-    auto change = [&](Eigen::Index t, Eigen::Index c) {
-        const double d = take.values(t, c) - take.values(0, c);
-        return take.channels[std::size_t(c)].unit == "deg" ? options.cmPerDegree * std::remainder(d, 360.0) : d;
-    };
-    for (Eigen::Index t = 1; t < frames; ++t) {
-        double sum = 0.0;
-        for (const auto& part : parts) {
-            double squared = 0.0;
-            for (Eigen::Index c = part.firstChannel; c < part.firstChannel + 6; ++c) squared += change(t, c) * change(t, c);
-            sum += std::sqrt(squared);
-        }
-        for (Eigen::Index c = 0; c < channels; ++c)
-            if (!inPart[std::size_t(c)]) sum += std::fabs(change(t, c));
-        departure[t] = sum;
-    }
+    const PoseDistance distance(take, options.cmPerDegree);
+    for (Eigen::Index t = 1; t < frames; ++t) departure[t] = distance(t, 0);
     // Frame 0 is the start pose itself: its zero distance carries no noise and would pull the
     // smoothed start down (delaying the onset of a take that moves from the first frames).
     departure[0] = departure[1];
