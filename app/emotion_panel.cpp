@@ -166,11 +166,25 @@ void EmotionPanel::showParameters()
 
 void EmotionPanel::resolveCell()
 {
-    const TakePointer takeA = m_document.selectedTake(TakeSlot::A);
-    if (!m_model || !takeA || !m_document.selectedId(TakeSlot::A).startsWith(QStringLiteral("corpus/"))) return;
+    if (!m_model) return;
     const auto& decomposition = m_model->decomposition;
-    m_function = takeA->labels.function;
-    m_emotion = takeA->labels.emotion;
+    const auto known = [&](const std::string& function) {
+        return std::any_of(decomposition.emotions.begin(), decomposition.emotions.end(),
+                           [&](const auto& component) { return component.function == function; });
+    };
+    const TakePointer takeA = m_document.selectedTake(TakeSlot::A);
+    if (takeA && m_document.selectedId(TakeSlot::A).startsWith(QStringLiteral("corpus/"))) {
+        m_function = takeA->labels.function;
+        m_emotion = takeA->labels.emotion;
+    } else if (m_function.empty() || !known(m_function)) {
+        // A shows a derived take (a project may reopen on one before the decomposition is
+        // done): keep weighting the current cell, or start from the corpus's first function.
+        if (decomposition.emotions.empty()) return;
+        m_function = decomposition.emotions.front().function;
+        m_emotion = decomposition.neutralEmotion;
+    } else {
+        return;
+    }
     if (m_emotion == decomposition.neutralEmotion) {
         // The neutral emotion has z = 0: weight the first other emotion of the function instead.
         for (const auto& component : decomposition.emotions)

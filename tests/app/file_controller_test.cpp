@@ -163,12 +163,18 @@ TEST_CASE("a project saved while live takes are shown reopens showing them once 
     REQUIRE(window);
     REQUIRE(window->files().openProject(project));
     const auto& document = window->document();
-    REQUIRE(QTest::qWaitFor(
+    const bool shown = QTest::qWaitFor(
         [&] {
             return document.selectedId(TakeSlot::A) == QStringLiteral("live/designed") &&
                    document.selectedId(TakeSlot::B) == QStringLiteral("live/weighted");
         },
-        60000));
+        60000);
+    INFO("A " << document.selectedId(TakeSlot::A).toStdString() << ", B " << document.selectedId(TakeSlot::B).toStdString()
+              << ", pending A " << window->files().pendingLiveTake(TakeSlot::A).toStdString() << ", pending B "
+              << window->files().pendingLiveTake(TakeSlot::B).toStdString() << ", designed "
+              << (document.take(QStringLiteral("live/designed")) != nullptr) << ", weighted "
+              << (document.take(QStringLiteral("live/weighted")) != nullptr));
+    REQUIRE(shown);
     REQUIRE(window->files().pendingLiveTake(TakeSlot::A).isEmpty());
     REQUIRE(window->files().pendingLiveTake(TakeSlot::B).isEmpty());
     REQUIRE(document.currentTime() == Approx(2.0));
