@@ -43,6 +43,12 @@ std::vector<char> reachedByLateOffsets(Eigen::Index frames, int m, Eigen::Index 
     return reached;
 }
 
+/// sum / weight element by element; NaN where nothing was averaged (weight 0).
+Eigen::MatrixXd weightedMeans(const Eigen::MatrixXd& sum, const Eigen::MatrixXd& weight)
+{
+    return (weight.array() > 0.0).select(sum.array() / weight.array(), kNaN).matrix();
+}
+
 } // namespace
 
 Result<ExogenousEstimate> estimateExogenousInputs(const std::vector<Eigen::MatrixXd>& cells, const ExogenousOptions& options)
@@ -137,16 +143,14 @@ Result<ExogenousEstimate> estimateExogenousInputs(const std::vector<Eigen::Matri
             ++est.estimateCount(t0 + t);
         }
     }
-    Eigen::MatrixXd inputs(frames, cellCount);
-    for (Eigen::Index f = 0; f < frames; ++f)
-        for (int j = 0; j < cellCount; ++j)
-            inputs(f, j) = inputWeight(f, j) > 0.0 ? inputSum(f, j) / inputWeight(f, j) : kNaN;
+    const Eigen::MatrixXd inputs = weightedMeans(inputSum, inputWeight);
     est.functionInput = inputs.col(0);
     est.emotionInputs = inputs;
     est.emotionInputs.col(0).setZero();
 
-    // Components (eqs. 4.41-4.43): per window, y(T0) = u(T0) and the recursion with gamma of the
-    // neutral cell for y, of cell j for z; averaged per absolute time like the inputs.
+    // Components (eqs. 4.41-4.43): per window, the recursion with gamma of the neutral cell for
+    // y, of cell j for z, from the window's own t = 0 estimate; averaged per absolute time like
+    // the inputs.
     Eigen::MatrixXd componentSum = Eigen::MatrixXd::Zero(frames, cellCount);
     Eigen::MatrixXd componentWeight = Eigen::MatrixXd::Zero(frames, cellCount);
     Eigen::VectorXd window(m + 1);
@@ -166,10 +170,7 @@ Result<ExogenousEstimate> estimateExogenousInputs(const std::vector<Eigen::Matri
             }
         }
     }
-    Eigen::MatrixXd components(frames, cellCount);
-    for (Eigen::Index f = 0; f < frames; ++f)
-        for (int j = 0; j < cellCount; ++j)
-            components(f, j) = componentWeight(f, j) > 0.0 ? componentSum(f, j) / componentWeight(f, j) : kNaN;
+    const Eigen::MatrixXd components = weightedMeans(componentSum, componentWeight);
     est.functionComponent = components.col(0);
     est.emotionComponents = components;
     est.emotionComponents.col(0).setZero();
