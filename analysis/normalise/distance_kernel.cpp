@@ -35,42 +35,18 @@ void squaredDistancesPlain(const double* a, const double* const* rows, std::size
     }
 }
 
-void diagonalDistancesPlain(const double* a, std::size_t aStride, const double* b, std::size_t bStride,
-                            std::size_t features, std::size_t count, double* e, std::size_t eStride)
+inline void windowStartBody(const double* __restrict e, std::size_t length, std::size_t columns, std::size_t stride,
+                            double* __restrict running)
 {
-    for (std::size_t p = 0; p < count; ++p) {
-        double sum[kDiagonalBlock] = {};
-        for (std::size_t f = 0; f < features; ++f) {
-            const double x = a[f * aStride + p];
-            const double* y = b + f * bStride + p;
-            for (std::size_t k = 0; k < kDiagonalBlock; ++k) {
-                const double d = x - y[k];
-                sum[k] += d * d;
-            }
-        }
-        for (std::size_t k = 0; k < kDiagonalBlock; ++k) e[p * eStride + k] = sum[k];
-    }
-}
-
-inline void windowRowsBody(const double* __restrict e, std::size_t count, std::size_t length, std::size_t columns,
-                           std::size_t stride, double* __restrict rows)
-{
-    for (std::size_t o = 0; o < columns; ++o) rows[o] = e[o];
+    for (std::size_t o = 0; o < columns; ++o) running[o] = e[o];
     for (std::size_t s = 1; s < length; ++s)
-        for (std::size_t o = 0; o < columns; ++o) rows[o] += e[s * stride + o];
-    for (std::size_t p = 1; p < count; ++p) {
-        const double* __restrict entering = e + (p + length - 1) * stride;
-        const double* __restrict leaving = e + (p - 1) * stride;
-        const double* __restrict before = rows + (p - 1) * stride;
-        double* __restrict out = rows + p * stride;
-        for (std::size_t o = 0; o < columns; ++o) out[o] = (before[o] + entering[o]) - leaving[o];
-    }
+        for (std::size_t o = 0; o < columns; ++o) running[o] += e[s * stride + o];
 }
 
-void windowRowsPlain(const double* e, std::size_t count, std::size_t length, std::size_t columns, std::size_t stride,
-                     double* rows)
+inline void windowSlideBody(double* __restrict running, const double* __restrict entering, const double* __restrict leaving,
+                            std::size_t columns)
 {
-    windowRowsBody(e, count, length, columns, stride, rows);
+    for (std::size_t o = 0; o < columns; ++o) running[o] = (running[o] + entering[o]) - leaving[o];
 }
 
 // The scan of the prefix minimum with its "drops here" bits, one column at a time.
@@ -162,84 +138,68 @@ __attribute__((target("avx2,fma"))) void dotDistancesAvx2(const double* a, doubl
     }
 }
 
-// r_q holds four frames of column q; stores them as four rows of the four columns.
-__attribute__((target("avx2,fma"))) inline void storeTransposed(__m256d r0, __m256d r1, __m256d r2, __m256d r3,
-                                                                  double* out, std::size_t stride)
+__attribute__((target("avx2,fma"))) void windowStartAvx2(const double* e, std::size_t length, std::size_t columns,
+                                                           std::size_t stride, double* running)
 {
-    const __m256d t0 = _mm256_unpacklo_pd(r0, r1), t1 = _mm256_unpackhi_pd(r0, r1);
-    const __m256d t2 = _mm256_unpacklo_pd(r2, r3), t3 = _mm256_unpackhi_pd(r2, r3);
-    _mm256_storeu_pd(out, _mm256_permute2f128_pd(t0, t2, 0x20));
-    _mm256_storeu_pd(out + stride, _mm256_permute2f128_pd(t1, t3, 0x20));
-    _mm256_storeu_pd(out + 2 * stride, _mm256_permute2f128_pd(t0, t2, 0x31));
-    _mm256_storeu_pd(out + 3 * stride, _mm256_permute2f128_pd(t1, t3, 0x31));
+    windowStartBody(e, length, columns, stride, running);
 }
 
-// Four reference frames (one register) against 8 diagonals: each load of `a` serves 8 cells,
-// and no horizontal sums are needed (the cells are the lanes).
-__attribute__((target("avx2,fma"))) void diagonalDistancesAvx2(const double* a, std::size_t aStride, const double* b,
-                                                                 std::size_t bStride, std::size_t features,
-                                                                 std::size_t count, double* e, std::size_t eStride)
+__attribute__((target("avx2,fma"))) void windowSlideAvx2(double* running, const double* entering, const double* leaving,
+                                                           std::size_t columns)
 {
-    for (std::size_t p = 0; p < count; p += 4) {
-        __m256d s0 = _mm256_setzero_pd(), s1 = _mm256_setzero_pd(), s2 = _mm256_setzero_pd(), s3 = _mm256_setzero_pd();
-        __m256d s4 = _mm256_setzero_pd(), s5 = _mm256_setzero_pd(), s6 = _mm256_setzero_pd(), s7 = _mm256_setzero_pd();
-        const double* af = a + p;
-        const double* bf = b + p;
-        for (std::size_t f = 0; f < features; ++f, af += aStride, bf += bStride) {
-            const __m256d x = _mm256_loadu_pd(af);
-            __m256d d;
-            d = _mm256_sub_pd(x, _mm256_loadu_pd(bf + 0)); s0 = _mm256_fmadd_pd(d, d, s0);
-            d = _mm256_sub_pd(x, _mm256_loadu_pd(bf + 1)); s1 = _mm256_fmadd_pd(d, d, s1);
-            d = _mm256_sub_pd(x, _mm256_loadu_pd(bf + 2)); s2 = _mm256_fmadd_pd(d, d, s2);
-            d = _mm256_sub_pd(x, _mm256_loadu_pd(bf + 3)); s3 = _mm256_fmadd_pd(d, d, s3);
-            d = _mm256_sub_pd(x, _mm256_loadu_pd(bf + 4)); s4 = _mm256_fmadd_pd(d, d, s4);
-            d = _mm256_sub_pd(x, _mm256_loadu_pd(bf + 5)); s5 = _mm256_fmadd_pd(d, d, s5);
-            d = _mm256_sub_pd(x, _mm256_loadu_pd(bf + 6)); s6 = _mm256_fmadd_pd(d, d, s6);
-            d = _mm256_sub_pd(x, _mm256_loadu_pd(bf + 7)); s7 = _mm256_fmadd_pd(d, d, s7);
-        }
-        storeTransposed(s0, s1, s2, s3, e + p * eStride, eStride);
-        storeTransposed(s4, s5, s6, s7, e + p * eStride + 4, eStride);
+    windowSlideBody(running, entering, leaving, columns);
+}
+
+// Prefix minimum four columns at a time: an in-register scan (an in-lane and a cross-lane
+// shifted minimum) and a carried minimum. A drop at column c is prefix[c] < prefix[c - 1]: the
+// prefix shifted by one column (prefix[k - 3 .. k], built one block behind the scan) gives the
+// drop bits of columns k - 3 .. k and, with `cost`, current[j] = cost[j] + prefix[j + 1] for
+// j = k - 4 .. k - 1. Lane-crossing shuffles are the bottleneck here: three per block.
+// Returns how many leading entries of `current` are set (0 without `cost`).
+__attribute__((target("avx2,fma"))) std::size_t prefixAvx2(const double* values, std::size_t width, double* prefix,
+                                                              std::uint64_t* bits, const double* cost, double* current)
+{
+    if (width < 4) {
+        prefixScalar(values, 0, width, kInfinity, prefix, bits);
+        return 0;
     }
-}
-
-__attribute__((target("avx2,fma"))) void windowRowsAvx2(const double* e, std::size_t count, std::size_t length,
-                                                          std::size_t columns, std::size_t stride, double* rows)
-{
-    windowRowsBody(e, count, length, columns, stride, rows);
-}
-
-// Prefix minimum four columns at a time: an in-register scan (two shifted minima) and a
-// carried minimum; the drop bits compare each prefix value with the one before it.
-__attribute__((target("avx2,fma"))) void prefixAvx2(const double* values, std::size_t width, double* prefix,
-                                                      std::uint64_t* bits)
-{
     const __m256d infinity = _mm256_set1_pd(kInfinity);
     __m256d carry = infinity;
+    __m256d previousBlock = infinity;
+    // The word of drop bits stays in a register until its 64 columns are done (or-ing into
+    // memory each block would chain every block through a store and a load).
+    std::uint64_t word = 0;
     std::size_t k = 0;
     for (; k + 4 <= width; k += 4) {
         const __m256d x = _mm256_loadu_pd(values + k);
-        const __m256d y = _mm256_min_pd(x, _mm256_blend_pd(_mm256_permute4x64_pd(x, 0x90), infinity, 0x1));
-        const __m256d z = _mm256_min_pd(y, _mm256_blend_pd(_mm256_permute4x64_pd(y, 0x40), infinity, 0x3));
+        const __m256d y = _mm256_min_pd(x, _mm256_blend_pd(_mm256_permute_pd(x, 0x0), infinity, 0x5));
+        const __m256d z = _mm256_min_pd(y, _mm256_blend_pd(_mm256_permute4x64_pd(y, 0x55), infinity, 0x3));
         const __m256d p = _mm256_min_pd(z, carry);
-        const __m256d before = _mm256_blend_pd(_mm256_permute4x64_pd(p, 0x90), carry, 0x1);
-        const auto drops = std::uint64_t(_mm256_movemask_pd(_mm256_cmp_pd(p, before, _CMP_LT_OQ)));
-        bits[k >> 6] |= drops << (k & 63);
         _mm256_storeu_pd(prefix + k, p);
+        if (k > 0) {
+            const __m256d next = _mm256_shuffle_pd(previousBlock, _mm256_permute2f128_pd(previousBlock, p, 0x21), 0x5);
+            const auto drops = std::uint64_t(_mm256_movemask_pd(_mm256_cmp_pd(next, previousBlock, _CMP_LT_OQ)));
+            if ((k & 63) == 0) { // columns k - 3 .. k - 1 end the previous word, k starts this one
+                bits[(k >> 6) - 1] = word | ((drops & 0x7) << 61);
+                word = drops >> 3;
+            } else {
+                word |= drops << ((k - 3) & 63);
+            }
+            if (cost) _mm256_storeu_pd(current + k - 4, _mm256_add_pd(_mm256_loadu_pd(cost + k - 4), next));
+        }
+        previousBlock = p;
         // The carried minimum depends on the previous carry through one min only (the block's
         // own minimum, z's last lane, is broadcast off the chain).
         carry = _mm256_min_pd(carry, _mm256_permute4x64_pd(z, 0xff));
     }
-    prefixScalar(values, k, width, k > 0 ? prefix[k - 1] : kInfinity, prefix, bits);
-}
-
-// current[j] = cost[j] + prefix[j + 1] for j < width.
-__attribute__((target("avx2,fma"))) void addShiftedAvx2(const double* cost, const double* prefix, std::size_t width,
-                                                          double* current)
-{
-    std::size_t j = 0;
-    for (; j + 4 <= width; j += 4)
-        _mm256_storeu_pd(current + j, _mm256_add_pd(_mm256_loadu_pd(cost + j), _mm256_loadu_pd(prefix + j + 1)));
-    for (; j < width; ++j) current[j] = cost[j] + prefix[j + 1];
+    // Bits so far: columns 1 .. k - 4 (the last block's first column); then that block's other
+    // three columns, column 0 and the columns after the last block.
+    const std::size_t last = k - 4;
+    bits[last >> 6] = word;
+    for (std::size_t c = last + 1; c < k; ++c) bits[c >> 6] |= std::uint64_t(prefix[c] < prefix[c - 1]) << (c & 63);
+    bits[0] |= std::uint64_t(prefix[0] < kInfinity);
+    prefixScalar(values, k, width, prefix[k - 1], prefix, bits);
+    return cost ? last : 0;
 }
 
 bool cpuHasAvx2()
@@ -286,28 +246,26 @@ void squaredDistances(const double* a, const double* const* rows, std::size_t co
     squaredDistancesPlain(a, rows, count, features, out);
 }
 
-void diagonalDistances(const double* a, std::size_t aStride, const double* b, std::size_t bStride,
-                       std::size_t features, std::size_t count, double* e, std::size_t eStride)
+void windowStart(const double* e, std::size_t length, std::size_t columns, std::size_t stride, double* running)
 {
 #ifdef BUNRAKU_AVX2_KERNEL
     if (cpuHasAvx2()) {
-        diagonalDistancesAvx2(a, aStride, b, bStride, features, count, e, eStride);
+        windowStartAvx2(e, length, columns, stride, running);
         return;
     }
 #endif
-    diagonalDistancesPlain(a, aStride, b, bStride, features, count, e, eStride);
+    windowStartBody(e, length, columns, stride, running);
 }
 
-void windowRows(const double* e, std::size_t count, std::size_t length, std::size_t columns, std::size_t stride,
-                double* rows)
+void windowSlide(double* running, const double* entering, const double* leaving, std::size_t columns)
 {
 #ifdef BUNRAKU_AVX2_KERNEL
     if (cpuHasAvx2()) {
-        windowRowsAvx2(e, count, length, columns, stride, rows);
+        windowSlideAvx2(running, entering, leaving, columns);
         return;
     }
 #endif
-    windowRowsPlain(e, count, length, columns, stride, rows);
+    windowSlideBody(running, entering, leaving, columns);
 }
 
 void prefixMinimumBits(const double* values, std::size_t width, double* prefix, std::uint64_t* bits)
@@ -315,7 +273,7 @@ void prefixMinimumBits(const double* values, std::size_t width, double* prefix, 
     std::fill(bits, bits + (width + 63) / 64, std::uint64_t(0));
 #ifdef BUNRAKU_AVX2_KERNEL
     if (cpuHasAvx2()) {
-        prefixAvx2(values, width, prefix, bits);
+        prefixAvx2(values, width, prefix, bits, nullptr, nullptr);
         return;
     }
 #endif
@@ -325,16 +283,16 @@ void prefixMinimumBits(const double* values, std::size_t width, double* prefix, 
 void dynamicProgrammeRow(const double* previous, const double* cost, std::size_t width, std::size_t low,
                          std::size_t high, double* prefix, std::uint64_t* bits, double* current)
 {
-    prefixMinimumBits(previous, width, prefix, bits);
-    prefix[width] = prefix[width - 1]; // column width - 1 reads the whole previous row
+    std::fill(bits, bits + (width + 63) / 64, std::uint64_t(0));
+    std::size_t done = 0;
 #ifdef BUNRAKU_AVX2_KERNEL
-    if (cpuHasAvx2()) {
-        addShiftedAvx2(cost, prefix, width, current);
-    } else
+    if (cpuHasAvx2())
+        done = prefixAvx2(previous, width, prefix, bits, cost, current);
+    else
 #endif
-    {
-        for (std::size_t j = 0; j < width; ++j) current[j] = cost[j] + prefix[j + 1];
-    }
+        prefixPlain(previous, width, prefix, bits);
+    prefix[width] = prefix[width - 1]; // column width - 1 reads the whole previous row
+    for (std::size_t j = done; j < width; ++j) current[j] = cost[j] + prefix[j + 1];
     std::fill(current, current + low, kInfinity);
     std::fill(current + high + 1, current + width, kInfinity);
 }

@@ -17,22 +17,11 @@ void squaredDistances(const double* a, const double* const* rows, std::size_t co
 void squaredDistancesContiguous(const double* a, double aNorm, const double* first, const double* norms,
                                 std::size_t count, std::size_t features, double* out);
 
-/// Offsets handled by one call of diagonalDistances (the caller pads its arrays for them).
-inline constexpr std::size_t kDiagonalBlock = 8;
-
-/// Squared distances along 8 neighbouring diagonals of feature-major data, written as rows:
-/// e[p * eStride + k] = sum_f (a[f * aStride + p] - b[f * bStride + p + k])^2
-/// for k < kDiagonalBlock and p < count, count a multiple of 4. `a` must be readable for
-/// count entries per feature, `b` for count + kDiagonalBlock - 1.
-void diagonalDistances(const double* a, std::size_t aStride, const double* b, std::size_t bStride,
-                       std::size_t features, std::size_t count, double* e, std::size_t eStride);
-
-/// Window sums down the rows of e (each column is one diagonal of the band):
-/// rows[p * stride + o] = sum_{s = 0 .. length - 1} e[(p + s) * stride + o] for p < count and
-/// o < columns. Row 0 is summed in full, later rows slide (add the row entering, subtract the
-/// one leaving), so rounding accumulates over at most `count` rows.
-void windowRows(const double* e, std::size_t count, std::size_t length, std::size_t columns, std::size_t stride,
-                double* rows);
+/// Window sums down the rows of e (each column is one diagonal of the band), one row at a time:
+/// windowStart sets running[o] = sum_{s = 0 .. length - 1} e[s * stride + o] for o < columns;
+/// windowSlide moves the window one row on: running = (running + entering) - leaving.
+void windowStart(const double* e, std::size_t length, std::size_t columns, std::size_t stride, double* running);
+void windowSlide(double* running, const double* entering, const double* leaving, std::size_t columns);
 
 /// One row of the optimal path's dynamic programme over a band of `width` cells.
 /// prefix[k] = min(previous[0..k]); bits (one bit per column, 64 a word, (width + 63) / 64

@@ -1,10 +1,12 @@
 #include "analysis/normalise/feature_matching.h"
 
 #include "analysis/normalise/correspondence_path.h"
+#include "analysis/normalise/band_distances.h"
 #include "analysis/normalise/distance_kernel.h"
 
 #include <algorithm>
 #include <limits>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -12,20 +14,41 @@ namespace bunraku::analysis {
 
 namespace {
 
-constexpr Eigen::Index kTile = 64; // reference frames per tile (a multiple of 4)
+constexpr Eigen::Index kTile = 96; // reference frames per tile (a multiple of the distance kernel's 6-frame blocks)
 
 Eigen::Index roundUp(Eigen::Index value, Eigen::Index step) { return (value + step - 1) / step * step; }
 
-// Feature-major copy of frames first + from .. first + to - 1 (one tile's worth, so it stays in
-// cache): out[f * stride + (i - first)] = features(clamp(i), f). Window indices beyond either
-// end replicate the edge frame.
-void featureMajor(const FeatureMatrix& features, Eigen::Index first, Eigen::Index from, Eigen::Index to,
-                  Eigen::Index stride, double* out)
+// Feature-major copy of the listed feature columns of frames first + from .. first + to - 1
+// (one tile's worth, so it stays in cache): out[k * stride + (i - first)] = features(clamp(i),
+// columns[k]), and norms[i - first] the squared norm of those values. Window indices beyond
+// either end replicate the edge frame. Column-major features are copied a series at a time.
+template <class Features>
+void featureMajor(const Features& features, const std::vector<Eigen::Index>& columns, Eigen::Index first, Eigen::Index from,
+                  Eigen::Index to, Eigen::Index stride, double* out, double* norms)
 {
-    const Eigen::Index count = features.cols();
-    for (Eigen::Index i = from; i < to; ++i) {
-        const double* row = features.data() + std::clamp<Eigen::Index>(first + i, 0, features.rows() - 1) * count;
-        for (Eigen::Index f = 0; f < count; ++f) out[f * stride + i] = row[f];
+    const Eigen::Index last = features.rows() - 1;
+    if constexpr (Features::IsRowMajor) {
+        const Eigen::Index count = features.cols();
+        for (Eigen::Index i = from; i < to; ++i) {
+            const double* row = features.data() + std::clamp<Eigen::Index>(first + i, 0, last) * count;
+            for (std::size_t k = 0; k < columns.size(); ++k) out[Eigen::Index(k) * stride + i] = row[columns[k]];
+        }
+    } else {
+        // Frames inside the take are one contiguous run per feature; the edges replicate.
+        const Eigen::Index inFrom = std::clamp<Eigen::Index>(-first, from, to);
+        const Eigen::Index inTo = std::clamp<Eigen::Index>(last + 1 - first, inFrom, to);
+        for (std::size_t k = 0; k < columns.size(); ++k) {
+            const double* series = features.data() + columns[k] * features.rows();
+            double* target = out + Eigen::Index(k) * stride;
+            std::fill(target + from, target + inFrom, series[0]);
+            std::copy_n(series + first + inFrom, inTo - inFrom, target + inFrom);
+            std::fill(target + inTo, target + to, series[last]);
+        }
+    }
+    std::fill(norms + from, norms + to, 0.0);
+    for (std::size_t k = 0; k < columns.size(); ++k) {
+        const double* values = out + Eigen::Index(k) * stride;
+        for (Eigen::Index i = from; i < to; ++i) norms[i] += values[i] * values[i];
     }
 }
 
@@ -127,34 +150,38 @@ Result<MatchResult> matchStreamed(const FeatureMatrix& reference, const FeatureM
 
 // Optimal path: every band cell is needed, so each per-frame distance is computed once on the
 // band's diagonals, tile by tile.
-Result<MatchResult> matchTiled(const FeatureMatrix& reference, const FeatureMatrix& sample, const FeatureMatchOptions& options,
-                                  const RunControl& control)
+template <class Features>
+Result<MatchResult> matchTiled(const Features& reference, const Features& sample, const std::vector<Eigen::Index>& columns,
+                               const FeatureMatchOptions& options, const RunControl& control)
 {
     const Eigen::Index referenceFrames = reference.rows();
     const Eigen::Index sampleFrames = sample.rows();
     const int band = options.searchBand;
     // Per-frame squared distances e(i, o) = |f_ref(i) - f_smp(i + o)|^2 on the diagonals
     // o = -T_cmp..T_cmp (column j = o + T_cmp), computed once each, then window sums along each
-    // diagonal: cost(t, o) = sum_{i = t - tau .. t + tau} e(i, o) (eq. 3.21). Window indices
-    // beyond the ends replicate the edge frame: the feature-major copies below are padded with
-    // the edge frames (clamped rows). Tiles of kTile reference frames keep the work in cache; each tile reuses
-    // the previous tile's last 2 tau distances of every diagonal.
+    // diagonal: cost(t, o) = sum_{i = t - tau .. t + tau} e(i, o) (eq. 3.21). Tiles of kTile
+    // reference frames keep the work in cache; each tile reuses the previous tile's last
+    // 2 tau distances of every diagonal.
     const Eigen::Index tau = options.tau;
-    const Eigen::Index halfBand = band;
-    const Eigen::Index width = 2 * halfBand + 1;
-    const auto block = Eigen::Index(detail::kDiagonalBlock);
-    const Eigen::Index paddedWidth = roundUp(width, block);
-    const Eigen::Index features = reference.cols();
+    const Eigen::Index width = 2 * Eigen::Index(band) + 1;
+    const Eigen::Index paddedWidth = roundUp(width, 4);
+    const auto features = Eigen::Index(columns.size());
+    const auto readAhead = Eigen::Index(detail::kBandReadAhead);
     // Tile buffers: rows of distances for frames t0 - tau .. (position p <-> frame t0 - tau + p),
-    // rows of window costs for t0 .. t0 + kTile - 1, and feature-major copies of the frames
-    // they need (short strides keep them in cache).
+    // the window costs of the current row, and feature-major copies of the frames
+    // they need, padded with the edge frames (window indices beyond the ends replicate the edge
+    // frame); short strides keep them in cache.
     const Eigen::Index distanceRows = roundUp(kTile + 2 * tau, 4);
     const Eigen::Index referenceLength = distanceRows;
-    const Eigen::Index sampleLength = distanceRows + paddedWidth + block;
+    const Eigen::Index sampleLength = distanceRows + width + readAhead;
     std::vector<double> a(std::size_t(referenceLength * features));
+    std::vector<double> aNorms(static_cast<std::size_t>(referenceLength));
     std::vector<double> b(std::size_t(sampleLength * features));
+    std::vector<double> bNorms(static_cast<std::size_t>(sampleLength));
+    std::vector<const double*> aSeries(static_cast<std::size_t>(features));
+    std::vector<const double*> bSeries(static_cast<std::size_t>(features));
     std::vector<double> distances(std::size_t(distanceRows * paddedWidth));
-    std::vector<double> rows(std::size_t(kTile * paddedWidth));
+    std::vector<double> running(static_cast<std::size_t>(paddedWidth));
 
     PathBuilder builder(band, referenceFrames, sampleFrames, options.path);
     const Eigen::Index progressEvery = std::max<Eigen::Index>(kTile, roundUp(referenceFrames / 50, kTile));
@@ -168,22 +195,41 @@ Result<MatchResult> matchTiled(const FeatureMatrix& reference, const FeatureMatr
         // tile's last 2 tau.
         const Eigen::Index kept = t0 == 0 ? 0 : 2 * tau;
         if (kept > 0) std::copy_n(distances.data() + kTile * paddedWidth, kept * paddedWidth, distances.data());
-        const Eigen::Index fresh = roundUp(count + 2 * tau - kept, 4);
-        // a holds frames t0 - tau .. (the first `kept` are not needed), b frames t0 - tau - T_cmp ..
-        featureMajor(reference, t0 - tau, kept, kept + fresh, referenceLength, a.data());
+        const Eigen::Index fresh = count + 2 * tau - kept;
+        // Position p of a is reference frame t0 - tau + p; of b, sample frame t0 - tau - T_cmp + p.
+        featureMajor(reference, columns, t0 - tau, kept, kept + fresh, referenceLength, a.data(), aNorms.data());
         // The sample copy slides by kTile frames a tile: keep what overlaps, copy the rest.
         const Eigen::Index reused = t0 == 0 ? 0 : sampleLength - kTile;
-        if (reused > 0)
+        if (reused > 0) {
             for (Eigen::Index f = 0; f < features; ++f)
                 std::copy_n(b.data() + f * sampleLength + kTile, reused, b.data() + f * sampleLength);
-        featureMajor(sample, t0 - tau - halfBand, reused, sampleLength, sampleLength, b.data());
-        for (Eigen::Index o0 = 0; o0 < paddedWidth; o0 += block)
-            detail::diagonalDistances(a.data() + kept, std::size_t(referenceLength), b.data() + kept + o0, std::size_t(sampleLength),
-                                      std::size_t(features), std::size_t(fresh),
-                                      distances.data() + kept * paddedWidth + o0, std::size_t(paddedWidth));
-        detail::windowRows(distances.data(), std::size_t(count), std::size_t(2 * tau + 1), std::size_t(width),
-                           std::size_t(paddedWidth), rows.data());
-        for (Eigen::Index p = 0; p < count; ++p) builder.addRow(rows.data() + p * paddedWidth);
+            std::copy_n(bNorms.data() + kTile, reused, bNorms.data());
+        }
+        featureMajor(sample, columns, t0 - tau - band, reused, sampleLength, sampleLength, b.data(), bNorms.data());
+        detail::BandTile tile;
+        for (Eigen::Index k = 0; k < features; ++k) {
+            aSeries[std::size_t(k)] = a.data() + k * referenceLength + kept;
+            bSeries[std::size_t(k)] = b.data() + k * sampleLength + kept;
+        }
+        tile.a = aSeries.data();
+        tile.aNorms = aNorms.data() + kept;
+        tile.bNorms = bNorms.data() + kept;
+        tile.b = bSeries.data();
+        tile.features = std::size_t(features);
+        tile.count = std::size_t(fresh);
+        tile.width = std::size_t(width);
+        tile.e = distances.data() + kept * paddedWidth;
+        tile.eStride = std::size_t(paddedWidth);
+        detail::bandDistances(tile);
+        // Each tile starts its window sums afresh (rounding accumulates over kTile rows at most).
+        detail::windowStart(distances.data(), std::size_t(2 * tau + 1), std::size_t(width), std::size_t(paddedWidth),
+                            running.data());
+        builder.addRow(running.data());
+        for (Eigen::Index p = 1; p < count; ++p) {
+            detail::windowSlide(running.data(), distances.data() + (p + 2 * tau) * paddedWidth,
+                                distances.data() + (p - 1) * paddedWidth, std::size_t(width));
+            builder.addRow(running.data());
+        }
     }
     MatchResult result;
     result.correspondence = builder.finish(&result.cost);
@@ -192,9 +238,16 @@ Result<MatchResult> matchTiled(const FeatureMatrix& reference, const FeatureMatr
     return result;
 }
 
-} // namespace
+template <class Features>
+FeatureMatrix selectedColumns(const Features& features, const std::vector<Eigen::Index>& columns)
+{
+    FeatureMatrix out(features.rows(), Eigen::Index(columns.size()));
+    for (std::size_t k = 0; k < columns.size(); ++k) out.col(Eigen::Index(k)) = features.col(columns[k]);
+    return out;
+}
 
-Result<MatchResult> matchFeatures(const FeatureMatrix& reference, const FeatureMatrix& sample,
+template <class Features>
+Result<MatchResult> matchSelected(const Features& reference, const Features& sample, const std::vector<Eigen::Index>& columns,
                                   const FeatureMatchOptions& options, const RunControl& control)
 {
     if (options.tau < 0) return makeError(ErrorCode::InvalidArgument, "matching: tau must be >= 0, got " + std::to_string(options.tau));
@@ -205,6 +258,11 @@ Result<MatchResult> matchFeatures(const FeatureMatrix& reference, const FeatureM
     if (reference.cols() == 0 || reference.cols() != sample.cols())
         return makeError(ErrorCode::InvalidArgument, "matching: reference and sample must have the same (non-zero) number of features, got "
                                                          + std::to_string(reference.cols()) + " and " + std::to_string(sample.cols()));
+    if (columns.empty()) return makeError(ErrorCode::InvalidArgument, "matching: no feature columns selected");
+    for (Eigen::Index column : columns)
+        if (column < 0 || column >= reference.cols())
+            return makeError(ErrorCode::InvalidArgument, "matching: feature column " + std::to_string(column) + " is not in 0.."
+                                                             + std::to_string(reference.cols() - 1));
     const Eigen::Index referenceFrames = reference.rows();
     const Eigen::Index sampleFrames = sample.rows();
     const int band = options.searchBand;
@@ -214,8 +272,49 @@ Result<MatchResult> matchFeatures(const FeatureMatrix& reference, const FeatureM
                              + std::to_string(sampleFrames) + " frames) plus the search band T_cmp = " + std::to_string(band)
                              + ": its last frames have no sample frame to match");
 
-    if (options.path == PathMethod::Optimal) return matchTiled(reference, sample, options, control);
-    return matchStreamed(reference, sample, options, control);
+    if (options.path == PathMethod::Optimal) return matchTiled(reference, sample, columns, options, control);
+    // The streamed paths read whole rows: copy the selected columns when they are not all of them.
+    if constexpr (Features::IsRowMajor) {
+        const bool all = Eigen::Index(columns.size()) == reference.cols() && std::is_sorted(columns.begin(), columns.end())
+                         && std::adjacent_find(columns.begin(), columns.end()) == columns.end();
+        if (all) return matchStreamed(reference, sample, options, control);
+    }
+    return matchStreamed(selectedColumns(reference, columns), selectedColumns(sample, columns), options, control);
+}
+
+} // namespace
+
+Result<MatchResult> matchFeatures(const FeatureMatrix& reference, const FeatureMatrix& sample,
+                                  const std::vector<Eigen::Index>& columns, const FeatureMatchOptions& options,
+                                  const RunControl& control)
+{
+    return matchSelected(reference, sample, columns, options, control);
+}
+
+Result<MatchResult> matchFeatures(const FeatureSeries& reference, const FeatureSeries& sample,
+                                  const std::vector<Eigen::Index>& columns, const FeatureMatchOptions& options,
+                                  const RunControl& control)
+{
+    return matchSelected(reference, sample, columns, options, control);
+}
+
+std::vector<Eigen::Index> allColumns(Eigen::Index count)
+{
+    std::vector<Eigen::Index> columns(std::size_t(std::max<Eigen::Index>(count, 0)));
+    std::iota(columns.begin(), columns.end(), Eigen::Index(0));
+    return columns;
+}
+
+Result<MatchResult> matchFeatures(const FeatureMatrix& reference, const FeatureMatrix& sample,
+                                  const FeatureMatchOptions& options, const RunControl& control)
+{
+    return matchFeatures(reference, sample, allColumns(reference.cols()), options, control);
+}
+
+Result<MatchResult> matchFeatures(const FeatureSeries& reference, const FeatureSeries& sample,
+                                  const FeatureMatchOptions& options, const RunControl& control)
+{
+    return matchFeatures(reference, sample, allColumns(reference.cols()), options, control);
 }
 
 } // namespace bunraku::analysis

@@ -13,10 +13,15 @@
 
 #include <Eigen/Core>
 
+#include <vector>
+
 namespace bunraku::analysis {
 
 /// frames x features, one row per frame (row-major so a frame's features are contiguous).
 using FeatureMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+/// frames x features, column-major so each feature's series is contiguous (what the wavelet
+/// transform writes, and what the optimal path reads a coupling set at a time).
+using FeatureSeries = Eigen::MatrixXd;
 
 struct FeatureMatchOptions {
     int tau = 4;
@@ -30,5 +35,21 @@ struct FeatureMatchOptions {
 /// the sample plus the band (no admissible path); Cancelled via control.
 Result<MatchResult> matchFeatures(const FeatureMatrix& reference, const FeatureMatrix& sample,
                                   const FeatureMatchOptions& options, const RunControl& control = {});
+Result<MatchResult> matchFeatures(const FeatureSeries& reference, const FeatureSeries& sample,
+                                  const FeatureMatchOptions& options, const RunControl& control = {});
+
+/// 0 .. count - 1.
+std::vector<Eigen::Index> allColumns(Eigen::Index count);
+
+/// The same on the listed feature columns only (in that order), e.g. one coupling set's
+/// columns of every channel's features, in either layout: the optimal path reads them in
+/// place, the streamed paths copy them. InvalidArgument also for an empty list or a column out
+/// of range.
+Result<MatchResult> matchFeatures(const FeatureMatrix& reference, const FeatureMatrix& sample,
+                                  const std::vector<Eigen::Index>& columns, const FeatureMatchOptions& options,
+                                  const RunControl& control = {});
+Result<MatchResult> matchFeatures(const FeatureSeries& reference, const FeatureSeries& sample,
+                                  const std::vector<Eigen::Index>& columns, const FeatureMatchOptions& options,
+                                  const RunControl& control = {});
 
 } // namespace bunraku::analysis

@@ -3,6 +3,7 @@
 #include "analysis/normalise/feature_matching.h"
 #include "analysis/normalise/wavelet_features.h"
 
+#include <optional>
 #include <string>
 
 namespace bunraku::analysis {
@@ -24,21 +25,49 @@ Result<Eigen::MatrixXd> alignedChannels(const Take& reference, const Take& sampl
     return values;
 }
 
+// Features of takes up to this size (frames x channels x features per channel x 8 bytes) are
+// computed for all channels at once and the reference's are kept for every sample; longer takes
+// are transformed one coupling set at a time, so memory stays at one set's features (and the
+// transform's output is matched while it is still fresh).
+constexpr double kWholeTakeFeatureBytes = 64e6;
+
 // Everything that depends on the reference only, computed once for many samples.
 struct Prepared {
     Coupling coupling;
     Eigen::VectorXd weights;
     CwtFilterBank bank;
-    FeatureMatrix referenceFeatures; // frames x channels * perChannel
+    std::optional<FeatureSeries> referenceFeatures; // frames x channels * perChannel, for short references
     Eigen::Index perChannel = 1;
 };
 
-Result<FeatureMatrix> featuresOf(const Eigen::MatrixXd& values, const Prepared& prepared, const NormaliseOptions& options,
-                                 const RunControl& control)
+bool wholeTake(Eigen::Index frames, Eigen::Index channels, Eigen::Index perChannel)
+{
+    return double(frames) * double(channels) * double(perChannel) * 8.0 <= kWholeTakeFeatureBytes;
+}
+
+Result<FeatureSeries> featuresOf(const Eigen::MatrixXd& values, const Eigen::VectorXd& weights, const Prepared& prepared,
+                                 const NormaliseOptions& options, const RunControl& control)
 {
     if (options.features == MatchFeatures::Amplitude)
-        return FeatureMatrix(levelAligned(values, options.match.level) * prepared.weights.asDiagonal());
-    return waveletFeatures(values, prepared.weights, options.match, prepared.bank, control);
+        return FeatureSeries(levelAligned(values, options.match.level) * weights.asDiagonal());
+    return waveletFeatures(values, weights, options.match, prepared.bank, control);
+}
+
+// The features of one coupling set's channels (columns in the set's order), into `out`.
+Status setFeatures(const Eigen::MatrixXd& values, const std::vector<Eigen::Index>& set, const Prepared& prepared,
+                   const NormaliseOptions& options, FeatureSeries& out, const RunControl& control)
+{
+    Eigen::MatrixXd channels(values.rows(), Eigen::Index(set.size()));
+    Eigen::VectorXd weights(Eigen::Index(set.size()));
+    for (std::size_t k = 0; k < set.size(); ++k) {
+        channels.col(Eigen::Index(k)) = values.col(set[k]);
+        weights[Eigen::Index(k)] = prepared.weights[set[k]];
+    }
+    if (options.features == MatchFeatures::Amplitude) {
+        out = levelAligned(channels, options.match.level) * weights.asDiagonal();
+        return okStatus();
+    }
+    return waveletFeaturesInto(channels, weights, options.match, prepared.bank, out, control);
 }
 
 Result<Prepared> prepare(const Take& reference, const NormaliseOptions& options, const RunControl& control)
@@ -55,18 +84,22 @@ Result<Prepared> prepare(const Take& reference, const NormaliseOptions& options,
         prepared.bank = std::move(*bank);
         prepared.perChannel = Eigen::Index(options.match.scales.size()) + (options.match.approximationWeight > 0 ? 1 : 0);
     }
-    auto features = featuresOf(reference.values, prepared, options, control);
-    if (!features) return features.error();
-    prepared.referenceFeatures = std::move(*features);
+    if (wholeTake(reference.frameCount(), reference.channelCount(), prepared.perChannel)) {
+        auto features = featuresOf(reference.values, prepared.weights, prepared, options, control);
+        if (!features) return features.error();
+        prepared.referenceFeatures = std::move(*features);
+    }
     return prepared;
 }
 
-FeatureMatrix setColumns(const FeatureMatrix& features, const std::vector<Eigen::Index>& set, Eigen::Index perChannel)
+// The feature columns of one coupling set's channels.
+std::vector<Eigen::Index> setColumns(const std::vector<Eigen::Index>& set, Eigen::Index perChannel)
 {
-    FeatureMatrix out(features.rows(), Eigen::Index(set.size()) * perChannel);
-    for (std::size_t k = 0; k < set.size(); ++k)
-        out.middleCols(Eigen::Index(k) * perChannel, perChannel) = features.middleCols(set[k] * perChannel, perChannel);
-    return out;
+    std::vector<Eigen::Index> columns;
+    columns.reserve(set.size() * std::size_t(perChannel));
+    for (Eigen::Index channel : set)
+        for (Eigen::Index k = 0; k < perChannel; ++k) columns.push_back(channel * perChannel + k);
+    return columns;
 }
 
 Result<TakeNormalisation> normalisePrepared(const Take& reference, const Take& sample, const Prepared& prepared,
@@ -79,8 +112,13 @@ Result<TakeNormalisation> normalisePrepared(const Take& reference, const Take& s
         if (auto status = validateMatchOptions(options.match, reference.frameCount(), sample.frameCount()); !status)
             return status.error();
     }
-    auto features = featuresOf(*values, prepared, options, control);
-    if (!features) return features.error();
+    // Short takes: every channel's features at once; long ones: a coupling set at a time.
+    std::optional<FeatureSeries> sampleFeatures;
+    if (prepared.referenceFeatures && wholeTake(values->rows(), values->cols(), prepared.perChannel)) {
+        auto features = featuresOf(*values, prepared.weights, prepared, options, control);
+        if (!features) return features.error();
+        sampleFeatures = std::move(*features);
+    }
 
     TakeNormalisation result;
     result.coupling = prepared.coupling;
@@ -91,10 +129,19 @@ Result<TakeNormalisation> normalisePrepared(const Take& reference, const Take& s
     result.normalised.values.resize(reference.frameCount(), reference.channelCount());
     result.correspondence.resize(reference.frameCount(), reference.channelCount());
     const FeatureMatchOptions matchOptions{options.match.tau, options.match.searchBand, options.match.path};
+    FeatureSeries referenceSet, sampleSet; // reused from set to set
     for (const auto& set : prepared.coupling.sets) {
         if (control.cancelled()) return makeError(ErrorCode::Cancelled, "normalisation cancelled");
-        auto match = matchFeatures(setColumns(prepared.referenceFeatures, set, prepared.perChannel),
-                                   setColumns(*features, set, prepared.perChannel), matchOptions, control);
+        auto matchSet = [&]() -> Result<MatchResult> {
+            if (sampleFeatures)
+                return matchFeatures(*prepared.referenceFeatures, *sampleFeatures, setColumns(set, prepared.perChannel),
+                                     matchOptions, control);
+            if (auto status = setFeatures(reference.values, set, prepared, options, referenceSet, control); !status)
+                return status.error();
+            if (auto status = setFeatures(*values, set, prepared, options, sampleSet, control); !status) return status.error();
+            return matchFeatures(referenceSet, sampleSet, matchOptions, control);
+        };
+        auto match = matchSet();
         if (!match) return match.error();
         for (Eigen::Index c : set) {
             result.correspondence.col(c) = match->correspondence;

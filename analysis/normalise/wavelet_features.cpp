@@ -51,26 +51,34 @@ Eigen::MatrixXd levelAligned(const Eigen::MatrixXd& values, LevelAlignment level
     return values.rowwise() - values.row(0);
 }
 
-Result<FeatureMatrix> waveletFeatures(const Eigen::MatrixXd& channels, const Eigen::VectorXd& weights,
-                                      const MatchOptions& options, const CwtFilterBank& bank, const RunControl& control)
+Status waveletFeaturesInto(const Eigen::MatrixXd& channels, const Eigen::VectorXd& weights, const MatchOptions& options,
+                           const CwtFilterBank& bank, FeatureSeries& out, const RunControl& control)
 {
     const Eigen::Index scales = Eigen::Index(bank.scales.size());
-    Eigen::MatrixXd aligned = levelAligned(channels, options.level) * weights.asDiagonal();
-    auto coefficients = cwtChannels(aligned, bank, RunControl{control.stop, {}});
+    const Eigen::MatrixXd aligned = levelAligned(channels, options.level) * weights.asDiagonal();
+    if (!(options.approximationWeight > 0.0)) return cwtChannelSeriesInto(aligned, bank, out, RunControl{control.stop, {}});
+    auto coefficients = cwtChannelSeries(aligned, bank, RunControl{control.stop, {}});
     if (!coefficients) return coefficients.error();
-    if (!(options.approximationWeight > 0.0)) return std::move(*coefficients);
 
     // Eq. 5.17: sqrt(M) * A(t) after each channel's coefficients.
     const Eigen::Index perChannel = scales + 1;
-    FeatureMatrix features(channels.rows(), channels.cols() * perChannel);
+    out.resize(channels.rows(), channels.cols() * perChannel);
     const double factor = std::sqrt(options.approximationWeight);
     for (Eigen::Index c = 0; c < channels.cols(); ++c) {
         if (control.cancelled()) return makeError(ErrorCode::Cancelled, "matching cancelled");
-        features.middleCols(c * perChannel, scales) = coefficients->middleCols(c * scales, scales);
+        out.middleCols(c * perChannel, scales) = coefficients->middleCols(c * scales, scales);
         auto approximation = cwtApproximation(aligned.col(c), options.scales, options.cwt);
         if (!approximation) return approximation.error();
-        features.col(c * perChannel + scales) = factor * *approximation;
+        out.col(c * perChannel + scales) = factor * *approximation;
     }
+    return okStatus();
+}
+
+Result<FeatureSeries> waveletFeatures(const Eigen::MatrixXd& channels, const Eigen::VectorXd& weights,
+                                      const MatchOptions& options, const CwtFilterBank& bank, const RunControl& control)
+{
+    FeatureSeries features;
+    if (auto status = waveletFeaturesInto(channels, weights, options, bank, features, control); !status) return status.error();
     return features;
 }
 

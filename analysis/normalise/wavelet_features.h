@@ -24,10 +24,14 @@ Eigen::VectorXd channelWeights(const Eigen::MatrixXd& reference, ChannelWeightin
 /// they are. frames x channels.
 Eigen::MatrixXd levelAligned(const Eigen::MatrixXd& values, LevelAlignment level);
 
-/// frames x (channels * (scales + [M > 0])) features of `channels` (frames x channels), each
+/// frames x (channels * (scales + [M > 0])) features (column-major) of `channels` (frames x channels), each
 /// channel level-aligned (options.level) and multiplied by its weight first. InvalidArgument for NaN; Cancelled via control.
-Result<FeatureMatrix> waveletFeatures(const Eigen::MatrixXd& channels, const Eigen::VectorXd& weights,
+Result<FeatureSeries> waveletFeatures(const Eigen::MatrixXd& channels, const Eigen::VectorXd& weights,
                                       const MatchOptions& options, const CwtFilterBank& bank,
                                       const RunControl& control = {});
+
+/// waveletFeatures into `out` (resized; its storage is reused when it already has that size).
+Status waveletFeaturesInto(const Eigen::MatrixXd& channels, const Eigen::VectorXd& weights, const MatchOptions& options,
+                           const CwtFilterBank& bank, FeatureSeries& out, const RunControl& control = {});
 
 } // namespace bunraku::analysis

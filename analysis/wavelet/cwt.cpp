@@ -159,6 +159,81 @@ __attribute__((target("avx2,fma"))) void directScaleChannelsAvx2(const ScaleJob&
 }
 #endif
 
+// One channel at one scale, column-major: out[t] = factor * sum_j reversed[j] x[t + offset + 1 - M + j]
+// for begin <= t < end (x zero outside 0 .. frames - 1). Interior frames are vectorised
+// across frames: each tap's weight multiplies 32 consecutive frames at once.
+struct SeriesJob {
+    const double* x;
+    Eigen::Index frames;
+    const double* reversed;
+    Eigen::Index taps;
+    Eigen::Index offset;
+    double factor;
+    double* out;
+    Eigen::Index begin;
+    Eigen::Index end;
+};
+
+void seriesFrame(const SeriesJob& job, Eigen::Index t)
+{
+    const Eigen::Index m = job.taps - 1;
+    const Eigen::Index start = t + job.offset + 1 - m;
+    const Eigen::Index first = std::max<Eigen::Index>(0, -start);
+    const Eigen::Index last = std::min<Eigen::Index>(m, job.frames - 1 - start);
+    double sum = 0.0;
+    for (Eigen::Index j = first; j <= last; ++j) sum += job.reversed[j] * job.x[start + j];
+    job.out[t] = job.factor * sum;
+}
+
+void directScaleSeriesPlain(const SeriesJob& job)
+{
+    for (Eigen::Index t = job.begin; t < job.end; ++t) seriesFrame(job, t);
+}
+
+#ifdef BUNRAKU_CWT_AVX2
+__attribute__((target("avx2,fma"))) void directScaleSeriesAvx2(const SeriesJob& job)
+{
+    const Eigen::Index m = job.taps - 1;
+    // Frame t reads x[t + shift .. t + shift + M]: inside the signal for firstInterior <= t <= lastInterior.
+    const Eigen::Index shift = job.offset + 1 - m;
+    const Eigen::Index firstInterior = std::max(job.begin, -shift);
+    const Eigen::Index lastInterior = std::min(job.end - 1, job.frames - 1 - m - shift);
+    Eigen::Index t = job.begin;
+    for (; t < std::min(job.end, firstInterior); ++t) seriesFrame(job, t);
+    const __m256d factor = _mm256_set1_pd(job.factor);
+    constexpr int kVectors = 8;
+    for (; t + 4 * kVectors - 1 <= lastInterior; t += 4 * kVectors) {
+        __m256d sum[kVectors];
+        for (auto& one : sum) one = _mm256_setzero_pd();
+        const double* x = job.x + t + shift;
+        for (Eigen::Index j = 0; j <= m; ++j, ++x) {
+            const __m256d weight = _mm256_broadcast_sd(job.reversed + j);
+            for (int v = 0; v < kVectors; ++v) sum[v] = _mm256_fmadd_pd(weight, _mm256_loadu_pd(x + 4 * v), sum[v]);
+        }
+        for (int v = 0; v < kVectors; ++v) _mm256_storeu_pd(job.out + t + 4 * v, _mm256_mul_pd(factor, sum[v]));
+    }
+    for (; t + 3 <= lastInterior; t += 4) {
+        __m256d sum = _mm256_setzero_pd();
+        const double* x = job.x + t + shift;
+        for (Eigen::Index j = 0; j <= m; ++j, ++x) sum = _mm256_fmadd_pd(_mm256_broadcast_sd(job.reversed + j), _mm256_loadu_pd(x), sum);
+        _mm256_storeu_pd(job.out + t, _mm256_mul_pd(factor, sum));
+    }
+    for (; t < job.end; ++t) seriesFrame(job, t);
+}
+#endif
+
+void directScaleSeries(const SeriesJob& job)
+{
+#ifdef BUNRAKU_CWT_AVX2
+    static const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+    if (avx2) {
+        directScaleSeriesAvx2(job);
+        return;
+    }
+#endif
+    directScaleSeriesPlain(job);
+}
+
 void directScaleChannels(const ScaleJob& job)
 {
 #ifdef BUNRAKU_CWT_AVX2
@@ -273,14 +348,19 @@ Result<CwtResult> cwt(const Eigen::VectorXd& signal, const CwtFilterBank& bank, 
     return result;
 }
 
-Result<CoefficientRows> cwtChannels(const Eigen::MatrixXd& input, const CwtFilterBank& bank, const RunControl& control)
+namespace {
+
+// cwtChannels into either layout: row-major output is computed across channels (a frame's
+// coefficients together), column-major output a channel's series at a time.
+template <class Output>
+Status transformChannels(const Eigen::MatrixXd& input, const CwtFilterBank& bank, Output& out, const RunControl& control)
 {
     const Eigen::Index frames = input.rows();
     const Eigen::Index channels = input.cols();
     const auto scales = Eigen::Index(bank.scales.size());
     if (frames == 0 || channels == 0) return makeError(ErrorCode::InvalidArgument, "cwt: no samples or no channels");
     if (!input.allFinite()) return makeError(ErrorCode::InvalidArgument, "cwt: the signal contains NaN or infinity");
-    CoefficientRows out(frames, channels * scales);
+    out.resize(frames, channels * scales);
     if (resolvedCwtMethod(frames, bank) == CwtMethod::Fft) {
         for (Eigen::Index c = 0; c < channels; ++c) {
             auto one = cwt(input.col(c), bank, RunControl{control.stop, {}});
@@ -288,28 +368,62 @@ Result<CoefficientRows> cwtChannels(const Eigen::MatrixXd& input, const CwtFilte
             out.middleCols(c * scales, scales) = one->coefficients;
             control.report(double(c + 1) / double(channels));
         }
-        return out;
+        return okStatus();
     }
-    const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> rows = input;
     std::vector<Eigen::VectorXd> reversed;
     for (const auto& kernel : bank.kernels) reversed.emplace_back(kernel.reverse());
-    // Blocks of frames, every scale per block: the block's output rows (channels x scales
-    // values each) stay in cache while the scales fill them in, instead of the whole output
-    // streaming through memory once per scale. Each coefficient is computed as before.
-    constexpr Eigen::Index kBlock = 256;
-    for (Eigen::Index begin = 0; begin < frames; begin += kBlock) {
-        if (control.cancelled()) return makeError(ErrorCode::Cancelled, "cwt cancelled");
-        for (Eigen::Index s = 0; s < scales; ++s) {
-            const Eigen::Index taps = reversed[std::size_t(s)].size();
-            ScaleJob job{rows.data(), frames, channels, reversed[std::size_t(s)].data(), taps, centralOffset(taps - 1),
-                         -std::sqrt(bank.scales[std::size_t(s)]), out.data(), channels * scales, s, scales};
-            job.begin = begin;
-            job.end = std::min(frames, begin + kBlock);
-            directScaleChannels(job);
+    if constexpr (!Output::IsRowMajor) {
+        // Column-major: each channel's series at each scale, vectorised across frames.
+        for (Eigen::Index c = 0; c < channels; ++c) {
+            if (control.cancelled()) return makeError(ErrorCode::Cancelled, "cwt cancelled");
+            for (Eigen::Index s = 0; s < scales; ++s) {
+                const Eigen::Index taps = reversed[std::size_t(s)].size();
+                directScaleSeries({input.col(c).data(), frames, reversed[std::size_t(s)].data(), taps, centralOffset(taps - 1),
+                                   -std::sqrt(bank.scales[std::size_t(s)]), out.col(c * scales + s).data(), 0, frames});
+            }
+            control.report(double(c + 1) / double(channels));
         }
-        control.report(double(std::min(frames, begin + kBlock)) / double(frames));
+    } else {
+        const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> rows = input;
+        // Blocks of frames, every scale per block: the block's output rows (channels x scales
+        // values each) stay in cache while the scales fill them in, instead of the whole output
+        // streaming through memory once per scale. Each coefficient is computed as before.
+        constexpr Eigen::Index kBlock = 256;
+        for (Eigen::Index begin = 0; begin < frames; begin += kBlock) {
+            if (control.cancelled()) return makeError(ErrorCode::Cancelled, "cwt cancelled");
+            for (Eigen::Index s = 0; s < scales; ++s) {
+                const Eigen::Index taps = reversed[std::size_t(s)].size();
+                ScaleJob job{rows.data(), frames, channels, reversed[std::size_t(s)].data(), taps, centralOffset(taps - 1),
+                             -std::sqrt(bank.scales[std::size_t(s)]), out.data(), channels * scales, s, scales};
+                job.begin = begin;
+                job.end = std::min(frames, begin + kBlock);
+                directScaleChannels(job);
+            }
+            control.report(double(std::min(frames, begin + kBlock)) / double(frames));
+        }
     }
+    return okStatus();
+}
+
+} // namespace
+
+Result<CoefficientRows> cwtChannels(const Eigen::MatrixXd& input, const CwtFilterBank& bank, const RunControl& control)
+{
+    CoefficientRows out;
+    if (auto status = transformChannels(input, bank, out, control); !status) return status.error();
     return out;
+}
+
+Result<Eigen::MatrixXd> cwtChannelSeries(const Eigen::MatrixXd& input, const CwtFilterBank& bank, const RunControl& control)
+{
+    Eigen::MatrixXd out;
+    if (auto status = cwtChannelSeriesInto(input, bank, out, control); !status) return status.error();
+    return out;
+}
+
+Status cwtChannelSeriesInto(const Eigen::MatrixXd& input, const CwtFilterBank& bank, Eigen::MatrixXd& out, const RunControl& control)
+{
+    return transformChannels(input, bank, out, control);
 }
 
 Result<CwtResult> cwt(const Eigen::VectorXd& signal, const std::vector<double>& scales, const CwtOptions& options,

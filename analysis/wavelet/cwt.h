@@ -72,6 +72,16 @@ using CoefficientRows = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Ei
 Result<CoefficientRows> cwtChannels(const Eigen::MatrixXd& input, const CwtFilterBank& bank,
                                     const RunControl& control = {});
 
+/// The same coefficients column-major: each channel-and-scale series is contiguous (what
+/// matching reads a coupling set at a time). Equal to cwtChannels element for element.
+Result<Eigen::MatrixXd> cwtChannelSeries(const Eigen::MatrixXd& input, const CwtFilterBank& bank,
+                                         const RunControl& control = {});
+
+/// cwtChannelSeries into `out`, resized to frames x (channels * scales): its storage is reused
+/// when it already has that size (for callers transforming many inputs of one size).
+Status cwtChannelSeriesInto(const Eigen::MatrixXd& input, const CwtFilterBank& bank, Eigen::MatrixXd& out,
+                            const RunControl& control = {});
+
 /// Convenience: builds the bank and transforms.
 Result<CwtResult> cwt(const Eigen::VectorXd& signal, const std::vector<double>& scales,
                       const CwtOptions& options = {}, const RunControl& control = {});

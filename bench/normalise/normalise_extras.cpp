@@ -3,7 +3,12 @@
 //                                     (T_cmp 240, scales 1..16, method 2, optimal path)
 //   bench_normalise_extras pywt       our CWT of 100,000 samples at scales 1..16 against Debian
 //                                     python3-pywt's, measured in the same run, as ratios
+//   bench_normalise_extras digest     a hash of every correspondence and the summed costs of the
+//                                     30 demo-corpus normalisations and of a 30,000-frame pair,
+//                                     greedy and optimal: two builds that print the same digest
+//                                     chose the same frames
 #include "analysis/normalise/take_normalisation.h"
+#include "analysis/synth/demo_corpus.h"
 #include "analysis/wavelet/cwt.h"
 #include "bench/normalise/long_takes.h"
 
@@ -12,6 +17,7 @@
 #include <ctime>
 #include <functional>
 #include <cstdio>
+#include <cstdint>
 #include <cstdlib>
 #include <fstream>
 #include <map>
@@ -57,6 +63,54 @@ int memory(long frames)
     }
     std::printf("frames %ld: wall %.3f s, cpu %.3f s, peak RSS %ld kB (inputs alone %ld kB)\n", frames, wall, cpu,
                 statusKilobytes("VmHWM"), before);
+    return 0;
+}
+
+// FNV-1a over the correspondences; costs summed.
+struct Digest {
+    std::uint64_t hash = 1469598103934665603ull;
+    double cost = 0.0;
+    void add(const TakeNormalisation& result)
+    {
+        for (Eigen::Index i = 0; i < result.correspondence.size(); ++i) {
+            hash ^= std::uint64_t(std::uint32_t(result.correspondence.data()[i]));
+            hash *= 1099511628211ull;
+        }
+        cost += result.cost;
+    }
+};
+
+int digest()
+{
+    const auto demo = synth::generateDemoCorpus();
+    const Take reference = bunraku::bench::longTake(30000, 0.0, 1.0, 1);
+    const Take sample = bunraku::bench::longTake(30000, 190.0, 7919.0, 2);
+    for (const PathMethod path : {PathMethod::Greedy, PathMethod::Optimal}) {
+        NormaliseOptions options;
+        options.match.path = path;
+        Digest corpus;
+        for (const auto& function : demo.corpus.functions())
+            for (const auto& emotion : demo.corpus.emotions()) {
+                const auto takes = demo.corpus.cell(function, emotion);
+                auto results = normaliseTakes(*takes[0], takes, options);
+                if (!results) {
+                    std::fprintf(stderr, "%s\n", results.error().message.c_str());
+                    return 1;
+                }
+                for (const auto& result : *results) corpus.add(result);
+            }
+        options.match.searchBand = 240;
+        auto pair = normaliseTake(reference, sample, options);
+        if (!pair) {
+            std::fprintf(stderr, "%s\n", pair.error().message.c_str());
+            return 1;
+        }
+        Digest long_;
+        long_.add(*pair);
+        std::printf("%s: demo corpus %016llx cost %.17g; 30,000-frame pair %016llx cost %.17g\n",
+                    path == PathMethod::Greedy ? "greedy" : "optimal", static_cast<unsigned long long>(corpus.hash), corpus.cost,
+                    static_cast<unsigned long long>(long_.hash), long_.cost);
+    }
     return 0;
 }
 
@@ -117,6 +171,7 @@ int main(int argc, char** argv)
     const std::string command = argc > 1 ? argv[1] : "";
     if (command == "memory" && argc > 2) return memory(std::atol(argv[2]));
     if (command == "pywt") return pywt();
-    std::fprintf(stderr, "usage: %s memory FRAMES | pywt\n", argv[0]);
+    if (command == "digest") return digest();
+    std::fprintf(stderr, "usage: %s memory FRAMES | pywt | digest\n", argv[0]);
     return 2;
 }

@@ -227,3 +227,45 @@ TEST_CASE("the tiled matcher gives a plain dynamic programme's path and cost on 
         CHECK(scanned->cost == Approx(greedyCost).epsilon(1e-9));
     }
 }
+
+TEST_CASE("column-major features and a column subset give the row-major matcher's path", "[path]")
+{
+    // Column-major series are read in place away from the takes' ends and copied near them:
+    // takes of many tiles, bands narrow and wide, a subset of columns in a shuffled order,
+    // compared with the same columns copied into a row-major matrix (itself checked against a
+    // plain dynamic programme above).
+    std::mt19937 random(29);
+    std::normal_distribution<double> normal;
+    for (int trial = 0; trial < 6; ++trial) {
+        const Eigen::Index referenceFrames = 700 + trial * 151;
+        const Eigen::Index sampleFrames = referenceFrames + (trial % 3) * 17 - 8;
+        const int tau = 1 + trial % 5;
+        const int searchBand = trial % 2 == 0 ? 12 + trial : 70 + 11 * trial;
+        FeatureSeries reference(referenceFrames, 13), sample(sampleFrames, 13);
+        for (Eigen::Index i = 0; i < reference.size(); ++i) reference.data()[i] = normal(random);
+        for (Eigen::Index i = 0; i < sample.size(); ++i) sample.data()[i] = normal(random);
+        std::vector<Eigen::Index> columns{11, 3, 4, 0, 9, 12, 6};
+        if (trial == 5) columns = allColumns(13);
+        FeatureMatrix referenceRows(referenceFrames, Eigen::Index(columns.size()));
+        FeatureMatrix sampleRows(sampleFrames, Eigen::Index(columns.size()));
+        for (std::size_t k = 0; k < columns.size(); ++k) {
+            referenceRows.col(Eigen::Index(k)) = reference.col(columns[k]);
+            sampleRows.col(Eigen::Index(k)) = sample.col(columns[k]);
+        }
+        INFO("trial " << trial << ": T_cmp " << searchBand << ", tau " << tau);
+        for (auto path : {PathMethod::Optimal, PathMethod::Greedy}) {
+            auto series = matchFeatures(reference, sample, columns, {tau, searchBand, path});
+            auto rows = matchFeatures(referenceRows, sampleRows, {tau, searchBand, path});
+            REQUIRE(series.ok());
+            REQUIRE(rows.ok());
+            CHECK(series->correspondence == rows->correspondence);
+            CHECK(series->cost == Approx(rows->cost).epsilon(1e-12));
+        }
+    }
+    FeatureSeries small(50, 3);
+    small.setRandom();
+    auto outside = matchFeatures(small, small, std::vector<Eigen::Index>{0, 3}, {2, 5, PathMethod::Optimal});
+    REQUIRE_FALSE(outside.ok());
+    CHECK(outside.error().message.find("feature column 3") != std::string::npos);
+    REQUIRE_FALSE(matchFeatures(small, small, std::vector<Eigen::Index>{}, {2, 5, PathMethod::Optimal}).ok());
+}

@@ -206,3 +206,40 @@ TEST_CASE("the reference suggestion avoids the late outlier (thesis 3.6.1)", "[e
     CHECK(suggestion->reason.find("outliers") != std::string::npos);
     CHECK_FALSE(suggestReference({}).ok());
 }
+
+TEST_CASE("long takes, transformed one coupling set at a time, recover a known shift", "[normalise]")
+{
+    // Above about 20,800 frames of 24 channels x 16 scales the features are computed a coupling
+    // set at a time instead of for the whole take; both ways must find the same thing. The
+    // sample is the reference 3 frames later: away from the ends, every frame maps to t + 3.
+    auto wavy = [](int channel, double t) {
+        double value = 0.0;
+        for (int k = 1; k <= 4; ++k)
+            value += std::sin(0.013 * k * (channel + 3) * t + 0.7 * k * channel) / k + 0.2 * std::cos(0.11 * k * t + channel);
+        return value;
+    };
+    for (const Eigen::Index frames : {Eigen::Index(2000), Eigen::Index(21000)}) {
+        Take reference, sample;
+        for (Take* take : {&reference, &sample}) {
+            take->channels = puppetChannels();
+            take->labels = {"greeting", "none", take == &reference ? 1 : 2, "synthetic"};
+            take->values.resize(frames, kPuppetChannelCount);
+        }
+        for (Eigen::Index t = 0; t < frames; ++t)
+            for (int c = 0; c < kPuppetChannelCount; ++c) {
+                reference.values(t, c) = wavy(c, double(t));
+                sample.values(t, c) = wavy(c, double(t) - 3.0);
+            }
+        NormaliseOptions options;
+        options.match.path = PathMethod::Optimal;
+        auto result = normaliseTake(reference, sample, options);
+        REQUIRE(result.ok());
+        INFO(frames << " frames");
+        CHECK(result->matches.size() == 12);
+        int wrong = 0;
+        for (Eigen::Index t = 100; t < frames - 100; ++t)
+            for (int c = 0; c < kPuppetChannelCount; ++c) wrong += result->correspondence(t, c) != t + 3;
+        CHECK(wrong == 0);
+        CHECK(result->normalised.values.middleRows(100, frames - 200).isApprox(reference.values.middleRows(100, frames - 200)));
+    }
+}
