@@ -350,8 +350,8 @@ Result<CwtResult> cwt(const Eigen::VectorXd& signal, const CwtFilterBank& bank, 
 
 namespace {
 
-// cwtChannels into either layout: row-major output is computed across channels (a frame's
-// coefficients together), column-major output a channel's series at a time.
+// cwtChannels into either layout: vectorised across channels (a frame's coefficients together),
+// or, for long takes into column-major output, across frames a channel's series at a time.
 template <class Output>
 Status transformChannels(const Eigen::MatrixXd& input, const CwtFilterBank& bank, Output& out, const RunControl& control)
 {
@@ -372,35 +372,43 @@ Status transformChannels(const Eigen::MatrixXd& input, const CwtFilterBank& bank
     }
     std::vector<Eigen::VectorXd> reversed;
     for (const auto& kernel : bank.kernels) reversed.emplace_back(kernel.reverse());
-    if constexpr (!Output::IsRowMajor) {
-        // Column-major: each channel's series at each scale, vectorised across frames.
+    Eigen::Index longest = 0;
+    for (const auto& kernel : reversed) longest = std::max(longest, kernel.size());
+    if (!Output::IsRowMajor && frames >= 8 * longest) {
+        // Long takes, column-major: each channel's series at each scale, vectorised across
+        // frames (most frames have all their taps inside the signal).
         for (Eigen::Index c = 0; c < channels; ++c) {
             if (control.cancelled()) return makeError(ErrorCode::Cancelled, "cwt cancelled");
             for (Eigen::Index s = 0; s < scales; ++s) {
                 const Eigen::Index taps = reversed[std::size_t(s)].size();
                 directScaleSeries({input.col(c).data(), frames, reversed[std::size_t(s)].data(), taps, centralOffset(taps - 1),
-                                   -std::sqrt(bank.scales[std::size_t(s)]), out.col(c * scales + s).data(), 0, frames});
+                                   -std::sqrt(bank.scales[std::size_t(s)]), out.data() + (c * scales + s) * frames, 0, frames});
             }
             control.report(double(c + 1) / double(channels));
         }
-    } else {
-        const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> rows = input;
-        // Blocks of frames, every scale per block: the block's output rows (channels x scales
-        // values each) stay in cache while the scales fill them in, instead of the whole output
-        // streaming through memory once per scale. Each coefficient is computed as before.
-        constexpr Eigen::Index kBlock = 256;
-        for (Eigen::Index begin = 0; begin < frames; begin += kBlock) {
-            if (control.cancelled()) return makeError(ErrorCode::Cancelled, "cwt cancelled");
-            for (Eigen::Index s = 0; s < scales; ++s) {
-                const Eigen::Index taps = reversed[std::size_t(s)].size();
-                ScaleJob job{rows.data(), frames, channels, reversed[std::size_t(s)].data(), taps, centralOffset(taps - 1),
-                             -std::sqrt(bank.scales[std::size_t(s)]), out.data(), channels * scales, s, scales};
-                job.begin = begin;
-                job.end = std::min(frames, begin + kBlock);
-                directScaleChannels(job);
-            }
-            control.report(double(std::min(frames, begin + kBlock)) / double(frames));
+        return okStatus();
+    }
+    // Otherwise vectorised across channels. Element (t, c * scales + s) lives at
+    // t * rowStride + c * channelStride + s * scaleStride.
+    const Eigen::Index rowStride = Output::IsRowMajor ? channels * scales : 1;
+    const Eigen::Index channelStride = Output::IsRowMajor ? scales : scales * frames;
+    const Eigen::Index scaleStride = Output::IsRowMajor ? 1 : frames;
+    const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> rows = input;
+    // Blocks of frames, every scale per block: the block's outputs stay in cache while the
+    // scales fill them in, instead of the whole output streaming through memory once per
+    // scale. Each coefficient is computed as before.
+    constexpr Eigen::Index kBlock = 256;
+    for (Eigen::Index begin = 0; begin < frames; begin += kBlock) {
+        if (control.cancelled()) return makeError(ErrorCode::Cancelled, "cwt cancelled");
+        for (Eigen::Index s = 0; s < scales; ++s) {
+            const Eigen::Index taps = reversed[std::size_t(s)].size();
+            ScaleJob job{rows.data(), frames, channels, reversed[std::size_t(s)].data(), taps, centralOffset(taps - 1),
+                         -std::sqrt(bank.scales[std::size_t(s)]), out.data(), rowStride, s * scaleStride, channelStride};
+            job.begin = begin;
+            job.end = std::min(frames, begin + kBlock);
+            directScaleChannels(job);
         }
+        control.report(double(std::min(frames, begin + kBlock)) / double(frames));
     }
     return okStatus();
 }
