@@ -2,7 +2,17 @@
 
 #include <QCoreApplication>
 
+#include <chrono>
+
 namespace bunraku::app {
+namespace {
+
+qint64 steadyMilliseconds()
+{
+    return std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+} // namespace
 
 ChangeParameter::ChangeParameter(Document* document, QString key, QVariant value, const QString& text)
     : m_document(document),
@@ -18,13 +28,44 @@ void ChangeParameter::undo() { m_document->applyParameter(m_key, m_before); }
 
 void ChangeParameter::redo() { m_document->applyParameter(m_key, m_after); }
 
+void ChangeParameter::setStep(const QString& control)
+{
+    m_stepControl = control;
+    m_stepSeries = m_document->stepSeries();
+    m_stepMilliseconds = steadyMilliseconds();
+}
+
 bool ChangeParameter::mergeWith(const QUndoCommand* other)
 {
     const auto* next = static_cast<const ChangeParameter*>(other);
-    if (m_interaction == 0 || next->m_interaction != m_interaction || next->m_key != m_key) return false;
+    if (next->m_key != m_key) return false;
+    const bool sameInteraction = m_interaction != 0 && next->m_interaction == m_interaction;
+    const bool sameSteps = m_interaction == 0 && next->m_interaction == 0 && !m_stepControl.isEmpty() &&
+                           next->m_stepControl == m_stepControl && next->m_stepSeries == m_stepSeries &&
+                           next->m_stepMilliseconds >= m_stepMilliseconds &&
+                           next->m_stepMilliseconds - m_stepMilliseconds <= kStepMergeMilliseconds;
+    if (!sameInteraction && !sameSteps) return false;
     m_after = next->m_after;
+    m_stepMilliseconds = next->m_stepMilliseconds;
     setObsolete(m_after == m_before);
     return true;
+}
+
+ChangeParameters::ChangeParameters(Document* document, QVariantMap values, const QString& text)
+    : m_document(document), m_after(std::move(values))
+{
+    for (auto it = m_after.begin(); it != m_after.end(); ++it) m_before.insert(it.key(), document->parameter(it.key()));
+    setText(text);
+}
+
+void ChangeParameters::redo()
+{
+    for (auto it = m_after.begin(); it != m_after.end(); ++it) m_document->applyParameter(it.key(), it.value());
+}
+
+void ChangeParameters::undo()
+{
+    for (auto it = m_before.begin(); it != m_before.end(); ++it) m_document->applyParameter(it.key(), it.value());
 }
 
 ImportTake::ImportTake(Document* document, TakePointer take, const QString& label, const QString& sourcePath)
@@ -67,6 +108,25 @@ bool changeParameter(Document& document, const QString& key, const QVariant& val
 {
     if (document.parameter(key) == value) return false;
     document.undoStack()->push(new ChangeParameter(&document, key, value, text));
+    return true;
+}
+
+bool stepParameter(Document& document, const QString& key, const QVariant& value, const QString& text, const QString& control)
+{
+    if (document.parameter(key) == value) return false;
+    auto* command = new ChangeParameter(&document, key, value, text);
+    command->setStep(control.isEmpty() ? key : control);
+    document.undoStack()->push(command);
+    return true;
+}
+
+bool changeParameters(Document& document, const QVariantMap& values, const QString& text)
+{
+    QVariantMap changed;
+    for (auto it = values.begin(); it != values.end(); ++it)
+        if (document.parameter(it.key()) != it.value()) changed.insert(it.key(), it.value());
+    if (changed.isEmpty()) return false;
+    document.undoStack()->push(new ChangeParameters(&document, changed, text));
     return true;
 }
 

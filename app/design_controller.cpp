@@ -25,6 +25,42 @@ const analysis::AxisModel& defaultAxisModel()
 
 QString gainKey(int phrase, int dof) { return QStringLiteral("%1/%2").arg(phrase).arg(dof); }
 
+const QString kDesignedId = QStringLiteral("live/designed");
+
+/// The gain edits ("phrase/dof" -> {g0, g1}) with each phrase index moved by `remap` (-1: dropped).
+template <typename Remap> QVariantMap remapGainEdits(const QVariantMap& edits, Remap remap)
+{
+    QVariantMap result;
+    for (auto it = edits.begin(); it != edits.end(); ++it) {
+        const QStringList where = it.key().split('/');
+        if (where.size() != 2) continue;
+        for (int phrase : remap(where[0].toInt())) result.insert(gainKey(phrase, where[1].toInt()), it.value());
+    }
+    return result;
+}
+
+/// Phrase `split` divided in two: both halves keep its gains, later phrases move up by one.
+QVariantMap gainsAfterSplit(const QVariantMap& edits, int split)
+{
+    return remapGainEdits(edits, [split](int phrase) -> std::vector<int> {
+        if (phrase < split) return {phrase};
+        if (phrase == split) return {phrase, phrase + 1};
+        return {phrase + 1};
+    });
+}
+
+/// Phrases `left` and `left + 1` merged: the merged phrase keeps the gains of `kept` (one of
+/// them), later phrases move down by one.
+QVariantMap gainsAfterMerge(const QVariantMap& edits, int left, int kept)
+{
+    return remapGainEdits(edits, [left, kept](int phrase) -> std::vector<int> {
+        if (phrase < left) return {phrase};
+        if (phrase == kept) return {left};
+        if (phrase == left || phrase == left + 1) return {};
+        return {phrase - 1};
+    });
+}
+
 } // namespace
 
 analysis::WarpCurve warpFromVariant(const QVariant& value)
@@ -164,9 +200,12 @@ std::vector<Eigen::Index> DesignController::boundaries() const
     const Eigen::Index last = m_prepared->basis->functional.frameCount() - 1;
     const QVariantList edited = m_document.parameter(parameters::kDesignBoundaries).toList();
     if (edited.isEmpty() || last < 2) return m_prepared->boundaries;
+    std::vector<Eigen::Index> inner;
+    for (const QVariant& value : edited) inner.push_back(value.toLongLong());
+    if (inner.front() == 0) inner.erase(inner.begin()); // {0, last}: no inner boundary
+    if (!inner.empty() && inner.back() == last) inner.pop_back();
     std::vector<Eigen::Index> result{0};
-    for (const QVariant& value : edited) {
-        const Eigen::Index frame = value.toLongLong();
+    for (const Eigen::Index frame : inner) {
         if (frame <= result.back() || frame >= last) return m_prepared->boundaries; // not valid here
         result.push_back(frame);
     }
@@ -192,10 +231,13 @@ double DesignController::functionalRateHz() const
 
 namespace {
 
+/// The parameter value of the boundaries `all` (0, inner..., last): the inner ones, or {0, last}
+/// when there is none (the empty list means "suggested").
 QVariantList innerAsVariant(const std::vector<Eigen::Index>& all)
 {
     QVariantList inner;
     for (std::size_t i = 1; i + 1 < all.size(); ++i) inner.append(qlonglong(all[i]));
+    if (inner.isEmpty() && all.size() >= 2) inner = {qlonglong(all.front()), qlonglong(all.back())};
     return inner;
 }
 
@@ -212,6 +254,88 @@ void DesignController::moveBoundary(int index, double frame)
     all[position] = Eigen::Index(std::lround(std::clamp(frame, low, high)));
     changeParameter(m_document, parameters::kDesignBoundaries, innerAsVariant(all),
                     QCoreApplication::translate("commands", "Move phrase boundary"));
+}
+
+bool DesignController::addBoundary(double frame)
+{
+    std::vector<Eigen::Index> all = boundaries();
+    if (all.size() < 2 || !std::isfinite(frame)) return false;
+    const auto at = Eigen::Index(std::lround(frame));
+    const auto next = std::upper_bound(all.begin(), all.end(), at); // the first boundary after `at`
+    // both new phrases at least 2 frames long, as gain extraction needs (extractGains)
+    if (next == all.begin() || next == all.end() || at - *(next - 1) < 2 || *next - at < 2) return false;
+    const int phrase = int(next - all.begin()) - 1;
+    all.insert(next, at);
+    const QVariantMap edits = m_document.parameter(parameters::kDesignGains).toMap();
+    return changeParameters(m_document,
+                            {{parameters::kDesignBoundaries, innerAsVariant(all)},
+                             {parameters::kDesignGains, gainsAfterSplit(edits, phrase)}},
+                            QCoreApplication::translate("commands", "Add phrase boundary"));
+}
+
+bool DesignController::removeBoundary(int index)
+{
+    std::vector<Eigen::Index> all = boundaries();
+    const auto position = std::size_t(index) + 1;
+    if (index < 0 || position + 1 >= all.size()) return false;
+    const Eigen::Index leftFrames = all[position] - all[position - 1];
+    const Eigen::Index rightFrames = all[position + 1] - all[position];
+    const int kept = rightFrames > leftFrames ? index + 1 : index;
+    all.erase(all.begin() + std::ptrdiff_t(position));
+    const QVariantMap edits = m_document.parameter(parameters::kDesignGains).toMap();
+    return changeParameters(m_document,
+                            {{parameters::kDesignBoundaries, innerAsVariant(all)},
+                             {parameters::kDesignGains, gainsAfterMerge(edits, index, kept)}},
+                            QCoreApplication::translate("commands", "Remove phrase boundary"));
+}
+
+int DesignController::nearestBoundary(double frame) const
+{
+    const std::vector<Eigen::Index> all = boundaries();
+    int best = -1;
+    double bestDistance = 0.0;
+    for (std::size_t i = 1; i + 1 < all.size(); ++i) {
+        const double distance = std::abs(double(all[i]) - frame);
+        if (best < 0 || distance < bestDistance) {
+            best = int(i) - 1;
+            bestDistance = distance;
+        }
+    }
+    return best;
+}
+
+std::vector<double> DesignController::boundarySecondsOn(const QString& takeId) const
+{
+    if (takeId != kDesignedId) return boundarySeconds();
+    const double rate = functionalRateHz();
+    const analysis::WarpCurve curve = warpCurve();
+    const auto frames = boundaries();
+    std::vector<double> seconds;
+    for (std::size_t i = 1; i + 1 < frames.size() && rate > 0.0; ++i)
+        seconds.push_back(analysis::inverseWarp(curve, double(frames[i])) / rate);
+    return seconds;
+}
+
+double DesignController::functionalFrameAt(const QString& takeId, double seconds) const
+{
+    const double frame = seconds * functionalRateHz();
+    return takeId == kDesignedId ? analysis::evaluateWarp(warpCurve(), frame) : frame;
+}
+
+analysis::GainSet DesignController::extractedGains() const
+{
+    if (!m_prepared || !m_prepared->extracted) return {};
+    const std::vector<Eigen::Index> frames = boundaries();
+    if (frames == m_prepared->boundaries) return m_prepared->extracted->gains;
+    if (m_extractedFrom == m_prepared && m_extractedFor == frames) return m_extractedGains;
+    QElapsedTimer clock;
+    clock.start();
+    auto gains = analysis::extractGainsForBoundaries(m_prepared->basis->coordinates, *m_prepared->extracted, frames);
+    m_lastExtractionMilliseconds = double(clock.nsecsElapsed()) / 1e6;
+    m_extractedFrom = m_prepared;
+    m_extractedFor = frames;
+    m_extractedGains = gains ? std::move(gains).value() : analysis::GainSet{};
+    return m_extractedGains;
 }
 
 void DesignController::resetBoundaries()
@@ -241,7 +365,9 @@ void DesignController::editGain(int phrase, int dof, double g0, double g1)
 {
     QVariantMap edits = m_document.parameter(parameters::kDesignGains).toMap();
     edits.insert(gainKey(phrase, dof), QVariantList{g0, g1});
-    changeParameter(m_document, parameters::kDesignGains, edits, QCoreApplication::translate("commands", "Set phrase gain"));
+    // keyboard or wheel steps of one cell's sliders merge; a slider drag is one interaction
+    stepParameter(m_document, parameters::kDesignGains, edits, QCoreApplication::translate("commands", "Set phrase gain"),
+                  parameters::kDesignGains + QLatin1Char('/') + gainKey(phrase, dof));
 }
 
 void DesignController::resetWarpToIdentity()
@@ -266,9 +392,10 @@ void DesignController::resetGains()
 
 void DesignController::useExtractedGains()
 {
-    if (!m_prepared || !m_prepared->extracted) return;
+    const analysis::GainSet extracted = extractedGains();
+    if (extracted.phrases.empty()) return;
     QVariantMap edits;
-    const auto& phrases = m_prepared->extracted->gains.phrases;
+    const auto& phrases = extracted.phrases;
     for (std::size_t p = 0; p < phrases.size(); ++p)
         for (std::size_t d = 0; d < phrases[p].dofs.size(); ++d)
             edits.insert(gainKey(int(p), int(d)), QVariantList{phrases[p].dofs[d].g0, phrases[p].dofs[d].g1});

@@ -5,7 +5,15 @@
 /// of the warp curve or a phrase gain re-synthesises the designed take at once (designMotion
 /// takes well under a millisecond) and publishes it as the live take "designed", with the
 /// functional take as its ghost. Edits go through ChangeParameter (design.warp, design.gains);
-/// a drag is one undo step.
+/// a drag is one undo step. Phrase boundaries are added and removed one at a time, each one undo
+/// step together with the gain edits that follow the new phrase structure (a split phrase's
+/// gains are copied to both halves; two merged phrases keep the gains of the longer one, the
+/// left one on a tie). The extracted gains follow the boundaries in use: the extraction's
+/// phase is kept and the gains are re-extracted per phrase (extractGainsForBoundaries, a few
+/// microseconds for the demo takes, so on the GUI thread and cached).
+///
+/// design.boundaries holds the inner boundaries (functional frames); the structure with no
+/// inner boundary at all is stored as {0, last frame}, since the empty list means "suggested".
 
 #include "app/document.h"
 #include "app/recomputer.h"
@@ -39,6 +47,22 @@ public:
     std::vector<double> boundarySeconds() const;
     /// The frame rate of the functional take (Hz), 0 before the preparation finished.
     double functionalRateHz() const;
+    /// The gains extracted for the boundaries in use (the extraction's phase, gains per phrase
+    /// re-extracted when the boundaries differ from the suggested ones); empty without an
+    /// emotional take.
+    analysis::GainSet extractedGains() const;
+    /// Wall time of the last gain re-extraction, milliseconds (0 before the first).
+    double lastExtractionMilliseconds() const { return m_lastExtractionMilliseconds; }
+    /// The inner boundaries in seconds on the take `takeId`: the functional take's times, and on
+    /// the designed take ("live/designed") the designed times u / rate whose warp reaches each
+    /// boundary, warp(u) = boundary (inverseWarp of the monotone curve).
+    std::vector<double> boundarySecondsOn(const QString& takeId) const;
+    /// The functional frame shown at `seconds` of the take `takeId`: seconds * rate, through the
+    /// warp on the designed take.
+    double functionalFrameAt(const QString& takeId, double seconds) const;
+    /// The index (among the inner ones) of the inner boundary nearest to functional frame
+    /// `frame`, -1 when there is none.
+    int nearestBoundary(double frame) const;
     /// The extracted correspondence (emotional frame -> functional frame), empty when unknown.
     Eigen::VectorXd extractedWarp() const;
     /// The extracted control points, empty when unknown.
@@ -65,6 +89,13 @@ public:
     void moveBoundary(int index, double frame);
     /// Back to the suggested boundaries.
     void resetBoundaries();
+    /// Adds an inner boundary at functional frame `frame` (rounded), splitting the phrase that
+    /// holds it; one undo step with the gains that follow. False (nothing changes) when either
+    /// new phrase would be shorter than 2 frames (on or next to a boundary, outside the take).
+    bool addBoundary(double frame);
+    /// Removes inner boundary `index` (0-based among the inner ones), merging its two phrases;
+    /// one undo step with the gains that follow. False for a bad index.
+    bool removeBoundary(int index);
 
 signals:
     /// The preparation finished (new phrase structure, extracted curve).
@@ -94,6 +125,11 @@ private:
     quint64 m_inputSerial = 0;
     TakePointer m_designed;
     double m_lastMilliseconds = 0.0;
+    // extractedGains() for the latest boundaries, re-extracted when they or the preparation change
+    mutable std::shared_ptr<const Prepared> m_extractedFrom;
+    mutable std::vector<Eigen::Index> m_extractedFor;
+    mutable analysis::GainSet m_extractedGains;
+    mutable double m_lastExtractionMilliseconds = 0.0;
 };
 
 /// The warp parameter (QVariantList of [output, source]) as a curve; empty when unset.

@@ -31,6 +31,13 @@ DesignPanel::DesignPanel(Document& document, DesignController& controller, QWidg
     auto* resetBoundaries = new QPushButton(tr("Reset phrases"), this);
     resetBoundaries->setObjectName("resetBoundaries");
     resetBoundaries->setToolTip(tr("Back to the suggested phrase boundaries (drag the orange ticks on the timeline to move them)"));
+    auto* addBoundary = new QPushButton(tr("Add phrase boundary at cursor"), this);
+    addBoundary->setObjectName("addBoundary");
+    addBoundary->setToolTip(tr("Split the phrase under the time cursor there; both halves keep its gains"));
+    auto* removeBoundary = new QPushButton(tr("Remove nearest boundary"), this);
+    removeBoundary->setObjectName("removeBoundary");
+    removeBoundary->setToolTip(tr("Remove the phrase boundary nearest to the time cursor; the merged phrase keeps the "
+                                  "gains of the longer of the two"));
 
     auto* splitter = new QSplitter(Qt::Vertical, this);
     splitter->addWidget(m_editor);
@@ -41,12 +48,16 @@ DesignPanel::DesignPanel(Document& document, DesignController& controller, QWidg
     buttons->addWidget(showDesigned);
     buttons->addWidget(extractedGains);
     buttons->addWidget(resetGains);
-    buttons->addWidget(resetBoundaries);
+    auto* phraseButtons = new QHBoxLayout;
+    phraseButtons->addWidget(addBoundary);
+    phraseButtons->addWidget(removeBoundary);
+    phraseButtons->addWidget(resetBoundaries);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
     layout->addWidget(m_inputs);
     layout->addWidget(splitter, 1);
     layout->addLayout(buttons);
+    layout->addLayout(phraseButtons);
     layout->addWidget(m_timing);
 
     connect(m_editor, &widgets::WarpCurveEditor::dragStarted, &document, &Document::beginInteraction);
@@ -60,6 +71,9 @@ DesignPanel::DesignPanel(Document& document, DesignController& controller, QWidg
     connect(extractedGains, &QPushButton::clicked, &controller, &DesignController::useExtractedGains);
     connect(resetGains, &QPushButton::clicked, &controller, &DesignController::resetGains);
     connect(resetBoundaries, &QPushButton::clicked, &controller, &DesignController::resetBoundaries);
+    connect(addBoundary, &QPushButton::clicked, this, [this] { m_controller.addBoundary(cursorFrame()); });
+    connect(removeBoundary, &QPushButton::clicked, this,
+            [this] { m_controller.removeBoundary(m_controller.nearestBoundary(cursorFrame())); });
     connect(showDesigned, &QPushButton::clicked, this, [this] {
         m_document.selectTake(TakeSlot::A, QStringLiteral("live/designed"));
     });
@@ -75,7 +89,10 @@ DesignPanel::DesignPanel(Document& document, DesignController& controller, QWidg
                        gains.phrases[p].end == m_gains->gains().phrases[p].end &&
                        gains.phrases[p].dofs[d].g0 == m_gains->gains().phrases[p].dofs[d].g0 &&
                        gains.phrases[p].dofs[d].g1 == m_gains->gains().phrases[p].dofs[d].g1;
-        if (!same) m_gains->setGains(gains);
+        if (!same) {
+            m_gains->setGains(gains);
+            m_gains->setExtracted(m_controller.extractedGains()); // they follow the boundaries
+        }
         m_timing->setText(tr("synthesis %1 ms").arg(m_controller.lastSynthesisMilliseconds(), 0, 'f', 2));
     });
     connect(&document, &Document::currentTimeChanged, this,
@@ -95,7 +112,13 @@ void DesignPanel::refresh()
     m_editor->setExtracted(m_controller.extractedWarp());
     m_editor->setCurve(m_controller.warpCurve());
     m_gains->setGains(m_controller.gains());
+    m_gains->setExtracted(m_controller.extractedGains());
     m_timing->setText(tr("synthesis %1 ms").arg(m_controller.lastSynthesisMilliseconds(), 0, 'f', 2));
+}
+
+double DesignPanel::cursorFrame() const
+{
+    return m_controller.functionalFrameAt(m_document.selectedId(TakeSlot::A), m_document.currentTime());
 }
 
 } // namespace bunraku::app

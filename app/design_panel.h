@@ -1,6 +1,9 @@
 #pragma once
 /// The Design dock: the warp curve editor over the extracted correspondence, the per-phrase
-/// gain table, and buttons to show the designed take (with its original as a ghost).
+/// gain table (with the gains extracted for the phrase boundaries in use), and buttons to show
+/// the designed take (with its original as a ghost), to use the extracted gains, and to add a
+/// phrase boundary at the time cursor or remove the one nearest to it (so the phrase structure
+/// is editable without the mouse; the timeline's ticks do the same by mouse).
 
 #include <QWidget>
 
@@ -26,6 +29,8 @@ public:
 
 private:
     void refresh();
+    /// The functional frame under the time cursor on take A.
+    double cursorFrame() const;
 
     Document& m_document;
     DesignController& m_controller;

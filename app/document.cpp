@@ -161,9 +161,18 @@ void Document::restoreParameters(const QVariantMap& values)
     for (const auto& key : changed) emit parameterChanged(key);
 }
 
-void Document::beginInteraction() { m_interaction = ++m_interactionSerial; }
+void Document::beginInteraction()
+{
+    m_interaction = ++m_interactionSerial;
+    emit interactionChanged(true);
+}
 
-void Document::endInteraction() { m_interaction = 0; }
+void Document::endInteraction()
+{
+    if (m_interaction == 0) return;
+    m_interaction = 0;
+    emit interactionChanged(false);
+}
 
 void Document::applyParameter(const QString& key, const QVariant& value)
 {

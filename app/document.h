@@ -99,6 +99,12 @@ public:
     void endInteraction();
     /// The current interaction's id, 0 when none.
     int interactionId() const { return m_interaction; }
+    /// Steps of one control (spin box arrows, keys, wheel) merge into one undo step while they
+    /// follow each other quickly (app/commands.h stepParameter); a control that loses the focus
+    /// ends the series, so the next step starts a new undo step.
+    void endStepSeries() { ++m_stepSeries; }
+    /// The current step series, increased by endStepSeries().
+    int stepSeries() const { return m_stepSeries; }
 
     // --- mutators for commands only (app/commands.cpp) ---
     void applyParameter(const QString& key, const QVariant& value);
@@ -116,6 +122,8 @@ signals:
     void selectionChanged(bunraku::widgets::TakeSlot slot);
     void currentTimeChanged(double seconds);
     void parameterChanged(const QString& key);
+    /// An interaction (a drag) began (true) or ended (false): views may hold their ranges.
+    void interactionChanged(bool active);
 
 private:
     std::shared_ptr<const analysis::Corpus> m_corpus;
@@ -129,6 +137,7 @@ private:
     quint64 m_version = 1;
     int m_interaction = 0;
     int m_interactionSerial = 0;
+    int m_stepSeries = 0;
     int m_importSerial = 0;
 };
 

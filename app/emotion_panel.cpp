@@ -67,16 +67,18 @@ EmotionPanel::EmotionPanel(Document& document, QWidget* parent) : QWidget(parent
 
     connect(m_weight, &QSlider::sliderPressed, &document, &Document::beginInteraction);
     connect(m_weight, &QSlider::sliderReleased, &document, &Document::endInteraction);
+    // A drag is one interaction; keyboard and wheel steps of the slider merge as steps.
     connect(m_weight, &QSlider::valueChanged, this, [this](int position) {
-        changeParameter(m_document, parameters::kEmotionWeight, position / kSliderScale,
-                        tr("Set emotion weight"));
+        stepParameter(m_document, parameters::kEmotionWeight, position / kSliderScale, tr("Set emotion weight"));
     });
     connect(m_method, &QComboBox::currentIndexChanged, this, [this](int index) {
         changeParameter(m_document, parameters::kEmotionMethod, m_method->itemData(index), tr("Set decomposition method"));
     });
+    // Consecutive steps of M (arrows, keys, wheel) are one undo step until the box loses the focus.
     connect(m_order, &QSpinBox::valueChanged, this, [this](int order) {
-        changeParameter(m_document, parameters::kEmotionOrder, order, tr("Set correlation length M"));
+        stepParameter(m_document, parameters::kEmotionOrder, order, tr("Set correlation length M"));
     });
+    connect(m_order, &QSpinBox::editingFinished, &document, &Document::endStepSeries);
     connect(show, &QPushButton::clicked, this, [this] { m_document.selectTake(TakeSlot::A, QStringLiteral("live/weighted")); });
 
     m_recomputer = new Recomputer(

@@ -4,7 +4,8 @@
 /// squares (thesis 4.3.1) or by the KM2O-Langevin equation with correlation length M (thesis
 /// 4.4.4; the method and M are undoable parameters and a change re-decomposes); the emotion weight a (thesis eq. 4.45, x = y + a z) is a slider, and the weighted
 /// take of take A's cell is re-synthesised on every slider step (a few microseconds) and
-/// published as the live take "weighted", so it plays as you drag. A drag is one undo step.
+/// published as the live take "weighted", so it plays as you drag. A drag is one undo step, and
+/// so are consecutive steps of M or of the slider by arrows, keys or wheel (commands.h stepParameter).
 
 #include "app/document.h"
 

@@ -109,9 +109,15 @@ NormalisePanel::NormalisePanel(Document& document, QWidget* parent) : QWidget(pa
     };
     connect(m_reference, &QComboBox::currentIndexChanged, this,
             [this, push] { push(parameters::kNormaliseReference, m_reference->currentData().toString()); });
-    connect(m_tau, &QSpinBox::valueChanged, this, [push](int value) { push(parameters::kNormaliseTau, value); });
-    connect(m_band, &QSpinBox::valueChanged, this, [push](int value) { push(parameters::kNormaliseSearchBand, value); });
-    connect(m_scales, &QSpinBox::valueChanged, this, [push](int value) { push(parameters::kNormaliseMaxScale, value); });
+    // Consecutive steps of a spin box (arrows, keys, wheel) are one undo step until it loses the focus.
+    auto step = [this](const QString& key, const QVariant& value) {
+        if (!m_updating) stepParameter(m_document, key, value);
+    };
+    connect(m_tau, &QSpinBox::valueChanged, this, [step](int value) { step(parameters::kNormaliseTau, value); });
+    connect(m_band, &QSpinBox::valueChanged, this, [step](int value) { step(parameters::kNormaliseSearchBand, value); });
+    connect(m_scales, &QSpinBox::valueChanged, this, [step](int value) { step(parameters::kNormaliseMaxScale, value); });
+    for (QSpinBox* box : {m_tau, m_band, m_scales})
+        connect(box, &QSpinBox::editingFinished, &document, &Document::endStepSeries);
     connect(m_coupling, &QComboBox::currentTextChanged, this,
             [push](const QString& text) { push(parameters::kNormaliseCoupling, text); });
     connect(m_path, &QComboBox::currentIndexChanged, this,

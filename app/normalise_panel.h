@@ -4,7 +4,7 @@
 /// tau, T_cmp, the largest scale, the coupling and the path method. Recomputed in the
 /// background on every parameter change; the results update live: the variance table (before
 /// and after, per take), the correspondence curves, and take A normalised, published as the
-/// live take "normalised" with A as its ghost.
+/// live take "normalised" with A as its ghost. Consecutive steps of a spin box are one undo step.
 
 #include "app/document.h"
 
@@ -34,6 +34,7 @@ public:
     TakePointer normalisedTake() const;
     QTableWidget* varianceTable() const { return m_table; }
     QSpinBox* tauSpin() const { return m_tau; }
+    QSpinBox* searchBandSpin() const { return m_band; }
 
 private:
     void refreshControls();

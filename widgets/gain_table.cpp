@@ -63,15 +63,55 @@ void GainTable::setGains(const analysis::GainSet& gains)
             const auto& gain = phrase.dofs[std::size_t(d)];
             auto* item = new QTableWidgetItem(QStringLiteral("%1 / %2").arg(gain.g0, 0, 'f', 2).arg(gain.g1, 0, 'f', 2));
             item->setTextAlignment(Qt::AlignCenter);
-            if (!gain.reason.empty()) item->setToolTip(QString::fromStdString(gain.reason));
             m_table->setItem(p, d, item);
         }
     }
+    updateTooltips();
     if (row >= 0 && row < m_table->rowCount() && column >= 0 && column < m_table->columnCount())
         m_table->setCurrentCell(row, column);
     m_binding = false;
     bindSliders();
 }
+
+void GainTable::setExtracted(const analysis::GainSet& extracted)
+{
+    m_extracted = extracted;
+    updateTooltips();
+    bindSliders();
+}
+
+namespace {
+
+/// The extracted gain of `phrase` and `dof` when `extracted` has the same phrase there, else null.
+const analysis::DofGain* extractedGain(const analysis::GainSet& extracted, const analysis::GainSet& shown, int phrase, int dof)
+{
+    const auto p = std::size_t(phrase);
+    const auto d = std::size_t(dof);
+    if (p >= extracted.phrases.size() || p >= shown.phrases.size() || d >= extracted.phrases[p].dofs.size()) return nullptr;
+    if (extracted.phrases[p].begin != shown.phrases[p].begin || extracted.phrases[p].end != shown.phrases[p].end) return nullptr;
+    return &extracted.phrases[p].dofs[d];
+}
+
+} // namespace
+
+void GainTable::updateTooltips()
+{
+    for (int p = 0; p < m_table->rowCount(); ++p)
+        for (int d = 0; d < m_table->columnCount(); ++d) {
+            QTableWidgetItem* item = m_table->item(p, d);
+            if (!item || p >= int(m_gains.phrases.size()) || d >= int(m_gains.phrases[std::size_t(p)].dofs.size())) continue;
+            QStringList lines;
+            if (const auto* extracted = extractedGain(m_extracted, m_gains, p, d)) {
+                lines << tr("extracted: g0 = %1, g1 = %2").arg(extracted->g0, 0, 'f', 2).arg(extracted->g1, 0, 'f', 2);
+                if (!extracted->reason.empty()) lines << QString::fromStdString(extracted->reason);
+            }
+            const auto& reason = m_gains.phrases[std::size_t(p)].dofs[std::size_t(d)].reason;
+            if (!reason.empty()) lines << QString::fromStdString(reason);
+            item->setToolTip(lines.join('\n'));
+        }
+}
+
+QString GainTable::selectionText() const { return m_label->text(); }
 
 void GainTable::selectCell(int phrase, int dof) { m_table->setCurrentCell(phrase, dof); }
 
@@ -89,11 +129,14 @@ void GainTable::bindSliders()
     if (!m_g0->isSliderDown()) m_g0->setValue(positionOfGain(gain.g0));
     if (!m_g1->isSliderDown()) m_g1->setValue(positionOfGain(gain.g1));
     m_binding = wasBinding;
-    m_label->setText(tr("Phrase %1, %2: g0 = %3, g1 = %4")
-                         .arg(p + 1)
-                         .arg(QString::fromStdString(m_gains.dofNames[std::size_t(d)]))
-                         .arg(gain.g0, 0, 'f', 2)
-                         .arg(gain.g1, 0, 'f', 2));
+    QString text = tr("Phrase %1, %2: g0 = %3, g1 = %4")
+                       .arg(p + 1)
+                       .arg(QString::fromStdString(d < int(m_gains.dofNames.size()) ? m_gains.dofNames[std::size_t(d)] : std::string()))
+                       .arg(gain.g0, 0, 'f', 2)
+                       .arg(gain.g1, 0, 'f', 2);
+    if (const auto* extracted = extractedGain(m_extracted, m_gains, p, d))
+        text += tr(" (extracted %1 / %2)").arg(extracted->g0, 0, 'f', 2).arg(extracted->g1, 0, 'f', 2);
+    m_label->setText(text);
 }
 
 void GainTable::sliderMoved()

@@ -2,7 +2,8 @@
 /// The per-phrase gain table of a design (thesis 5.4): one row per phrase, one column per axis
 /// DOF, each cell "g0 / g1"; the selected cell's g0 and g1 are edited with two sliders on a
 /// logarithmic scale (0.25 to 4). The table never changes its own gains: it proposes edits
-/// (gainEdited) and shows what setGains gives it.
+/// (gainEdited) and shows what setGains gives it. The extracted gains (setExtracted) are shown
+/// for comparison in each cell's tooltip and beside the selected cell's values.
 
 #include "analysis/design/phrase_gains.h"
 
@@ -21,6 +22,11 @@ public:
 
     void setGains(const analysis::GainSet& gains);
     const analysis::GainSet& gains() const { return m_gains; }
+    /// The gains extracted from the emotional take for the same phrases (empty: none known).
+    void setExtracted(const analysis::GainSet& extracted);
+    const analysis::GainSet& extracted() const { return m_extracted; }
+    /// The text under the table describing the selected cell.
+    QString selectionText() const;
     /// Selects the cell of `phrase` and `dof` (binds the sliders to it).
     void selectCell(int phrase, int dof);
     QSlider* g0Slider() const { return m_g0; }
@@ -39,6 +45,7 @@ signals:
 
 private:
     void bindSliders();
+    void updateTooltips();
     void sliderMoved();
 
     QTableWidget* m_table = nullptr;
@@ -46,6 +53,7 @@ private:
     QSlider* m_g1 = nullptr;
     QLabel* m_label = nullptr;
     analysis::GainSet m_gains;
+    analysis::GainSet m_extracted;
     bool m_binding = false;
 };
 

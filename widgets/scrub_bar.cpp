@@ -1,5 +1,8 @@
 #include "widgets/scrub_bar.h"
 
+#include <QContextMenuEvent>
+#include <QKeyEvent>
+#include <QMenu>
 #include <QMouseEvent>
 #include <QPainter>
 
@@ -16,6 +19,8 @@ ScrubBar::ScrubBar(QWidget* parent) : QWidget(parent)
     setMinimumHeight(28);
     setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
     setCursor(Qt::PointingHandCursor);
+    setMouseTracking(true); // the hovered tick
+    setFocusPolicy(Qt::ClickFocus); // Delete removes the selected tick
     setToolTip(tr("Press or drag to move the time; ticks mark phrase boundaries"));
 }
 
@@ -33,6 +38,7 @@ void ScrubBar::setTime(double seconds)
 
 void ScrubBar::setBoundaries(std::vector<double> seconds)
 {
+    if (seconds.size() != m_boundaries.size()) m_selected = m_hovered = -1; // a tick came or went
     m_boundaries = std::move(seconds);
     update();
 }
@@ -67,9 +73,10 @@ void ScrubBar::paintEvent(QPaintEvent*)
         const int x = xOfTime(second);
         painter.drawLine(x, track.bottom() + 2, x, track.bottom() + (second % 5 == 0 ? 6 : 4));
     }
-    painter.setPen(QPen(QColor(0xe0, 0x80, 0x10), 2));
-    for (double boundary : m_boundaries) {
-        const int x = xOfTime(boundary);
+    for (std::size_t i = 0; i < m_boundaries.size(); ++i) {
+        const bool marked = m_boundariesEditable && (int(i) == m_selected || int(i) == m_hovered);
+        painter.setPen(QPen(marked ? QColor(0xff, 0x50, 0x00) : QColor(0xe0, 0x80, 0x10), marked ? 4 : 2));
+        const int x = xOfTime(m_boundaries[i]);
         painter.drawLine(x, 2, x, track.bottom());
     }
     painter.setPen(QPen(palette().color(QPalette::Dark), 1));
@@ -80,8 +87,11 @@ void ScrubBar::paintEvent(QPaintEvent*)
 void ScrubBar::setBoundariesEditable(bool editable)
 {
     m_boundariesEditable = editable;
-    setToolTip(editable ? tr("Press or drag to move the time; drag an orange tick to move a phrase boundary")
+    if (!editable) m_selected = m_hovered = -1;
+    setToolTip(editable ? tr("Press or drag to move the time; drag an orange tick to move a phrase boundary, "
+                             "double-click to add one, right-click or Delete to remove one")
                         : tr("Press or drag to move the time; ticks mark phrase boundaries"));
+    update();
 }
 
 int ScrubBar::boundaryAtX(int x) const
@@ -104,6 +114,8 @@ void ScrubBar::mousePressEvent(QMouseEvent* event)
     const int x = int(event->position().x());
     m_dragged = m_boundariesEditable ? boundaryAtX(x) : -1;
     if (m_dragged >= 0) {
+        m_selected = m_dragged;
+        update();
         emit boundaryDragStarted(m_dragged);
         return;
     }
@@ -112,8 +124,15 @@ void ScrubBar::mousePressEvent(QMouseEvent* event)
 
 void ScrubBar::mouseMoveEvent(QMouseEvent* event)
 {
-    if (!(event->buttons() & Qt::LeftButton)) return;
     const int x = int(event->position().x());
+    if (!(event->buttons() & Qt::LeftButton)) {
+        const int hovered = m_boundariesEditable ? boundaryAtX(x) : -1;
+        if (hovered != m_hovered) {
+            m_hovered = hovered;
+            update();
+        }
+        return;
+    }
     if (m_dragged >= 0)
         emit boundaryDragged(m_dragged, timeAtX(x));
     else
@@ -126,6 +145,62 @@ void ScrubBar::mouseReleaseEvent(QMouseEvent* event)
     const int index = m_dragged;
     m_dragged = -1;
     emit boundaryDragFinished(index);
+}
+
+void ScrubBar::mouseDoubleClickEvent(QMouseEvent* event)
+{
+    if (event->button() != Qt::LeftButton) return;
+    const int x = int(event->position().x());
+    if (!m_boundariesEditable || boundaryAtX(x) >= 0) {
+        mousePressEvent(event); // as a second press: scrub, or drag the tick
+        return;
+    }
+    emit boundaryAddRequested(timeAtX(x));
+}
+
+QMenu* ScrubBar::createContextMenu(QPoint position)
+{
+    if (!m_boundariesEditable) return nullptr;
+    auto* menu = new QMenu(this);
+    const int index = boundaryAtX(position.x());
+    if (index >= 0) {
+        menu->addAction(tr("Remove phrase boundary"), this, [this, index] { emit boundaryRemoveRequested(index); });
+    } else {
+        const double seconds = timeAtX(position.x());
+        menu->addAction(tr("Add phrase boundary here"), this, [this, seconds] { emit boundaryAddRequested(seconds); });
+    }
+    return menu;
+}
+
+void ScrubBar::contextMenuEvent(QContextMenuEvent* event)
+{
+    QMenu* menu = createContextMenu(event->pos());
+    if (!menu) {
+        QWidget::contextMenuEvent(event);
+        return;
+    }
+    menu->setAttribute(Qt::WA_DeleteOnClose);
+    menu->popup(event->globalPos());
+}
+
+void ScrubBar::keyPressEvent(QKeyEvent* event)
+{
+    const int index = m_hovered >= 0 ? m_hovered : m_selected;
+    if (m_boundariesEditable && (event->key() == Qt::Key_Delete || event->key() == Qt::Key_Backspace) && index >= 0 &&
+        index < int(m_boundaries.size())) {
+        emit boundaryRemoveRequested(index);
+        return;
+    }
+    QWidget::keyPressEvent(event);
+}
+
+void ScrubBar::leaveEvent(QEvent* event)
+{
+    if (m_hovered >= 0) {
+        m_hovered = -1;
+        update();
+    }
+    QWidget::leaveEvent(event);
 }
 
 } // namespace bunraku::widgets

@@ -3,9 +3,15 @@
 /// as ticks. Pressing or dragging on it requests a time (scrubbed); it never sets its own time.
 /// When the boundaries are editable, pressing on a tick (within kBoundaryGrabPixels) drags that
 /// boundary instead: boundaryDragStarted, boundaryDragged (per move), boundaryDragFinished. The
-/// owner moves the boundary and sets the new ticks back.
+/// owner moves the boundary and sets the new ticks back. Editable ticks are also added and
+/// removed one at a time: a double click where there is no tick, or the context menu's "Add
+/// phrase boundary here", requests a new one (boundaryAddRequested); the context menu's "Remove
+/// phrase boundary" on a tick, or Delete / Backspace with the bar focused, removes the tick under
+/// the mouse, else the selected one (the last tick pressed) (boundaryRemoveRequested).
 
 #include <QWidget>
+
+class QMenu;
 
 #include <vector>
 
@@ -30,6 +36,14 @@ public:
     /// The index of the tick under `x` (nearest within the grab distance), -1 when none.
     int boundaryAtX(int x) const;
     static constexpr int kBoundaryGrabPixels = 4;
+    /// The selected tick (the last editable tick pressed), -1 when none.
+    int selectedBoundary() const { return m_selected; }
+    /// The tick under the mouse, -1 when none.
+    int hoveredBoundary() const { return m_hovered; }
+    /// The context menu at `position` (widget coordinates): "Remove phrase boundary" on an
+    /// editable tick, else "Add phrase boundary here"; null when the ticks are not editable. The
+    /// caller owns the menu; its actions emit the requests when triggered.
+    QMenu* createContextMenu(QPoint position);
     /// The time under the x pixel coordinate `x`, clamped to [0, duration].
     double timeAtX(int x) const;
     /// The x pixel coordinate of `seconds`.
@@ -43,12 +57,20 @@ signals:
     /// Boundary `index` dragged to `seconds` (clamped to [0, duration]).
     void boundaryDragged(int index, double seconds);
     void boundaryDragFinished(int index);
+    /// A new boundary is asked for at `seconds`.
+    void boundaryAddRequested(double seconds);
+    /// Boundary `index` is asked to go.
+    void boundaryRemoveRequested(int index);
 
 protected:
     void paintEvent(QPaintEvent* event) override;
     void mousePressEvent(QMouseEvent* event) override;
     void mouseMoveEvent(QMouseEvent* event) override;
     void mouseReleaseEvent(QMouseEvent* event) override;
+    void mouseDoubleClickEvent(QMouseEvent* event) override;
+    void contextMenuEvent(QContextMenuEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
+    void leaveEvent(QEvent* event) override;
 
 private:
     double m_duration = 1.0;
@@ -56,6 +78,8 @@ private:
     std::vector<double> m_boundaries;
     bool m_boundariesEditable = false;
     int m_dragged = -1; ///< the boundary being dragged, -1 when scrubbing
+    int m_selected = -1; ///< the last tick pressed, -1 when none
+    int m_hovered = -1;  ///< the tick under the mouse, -1 when none
 };
 
 } // namespace bunraku::widgets

@@ -119,6 +119,20 @@ Result<DesignParameters> extractDesign(const Eigen::MatrixXd& functional, const 
     return parameters;
 }
 
+Result<GainSet> extractGainsForBoundaries(const Eigen::MatrixXd& functional, const DesignParameters& parameters,
+                                          const std::vector<Eigen::Index>& boundaries, const GainOptions& options)
+{
+    if (parameters.emotionalOnFunctionalTime.rows() != functional.rows() ||
+        parameters.emotionalOnFunctionalTime.cols() != functional.cols())
+        return makeError(ErrorCode::InvalidArgument,
+                         "the extraction has " + std::to_string(parameters.emotionalOnFunctionalTime.rows()) + " x " +
+                             std::to_string(parameters.emotionalOnFunctionalTime.cols()) + " axis samples but the functional axis " +
+                             std::to_string(functional.rows()) + " x " + std::to_string(functional.cols()));
+    const std::vector<std::string> names =
+        parameters.gains.dofNames.size() == std::size_t(functional.cols()) ? parameters.gains.dofNames : coordinateNames();
+    return extractGains(functional, parameters.emotionalOnFunctionalTime, boundaries, names, options);
+}
+
 double relativeError(const Eigen::MatrixXd& designed, const Eigen::MatrixXd& measured)
 {
     const Eigen::Index rows = std::min(designed.rows(), measured.rows());

@@ -77,6 +77,14 @@ Result<GainSet> extractGainsWithWarp(const Eigen::MatrixXd& functional, const Ei
                                      const Eigen::VectorXd& functionalToEmotional,
                                      const std::vector<Eigen::Index>& boundaries, const GainOptions& options = {});
 
+/// Gains for other phrase boundaries with an extraction's phase kept (the workbench re-extracts
+/// them when the user edits the boundaries): extractGains of `functional` against
+/// parameters.emotionalOnFunctionalTime over `boundaries` (0 ... frames - 1). The phase and its
+/// refinement passes are not re-run; for the boundaries the parameters were extracted with it
+/// reproduces parameters.gains. thesis eqs. 5.22, 5.23.
+Result<GainSet> extractGainsForBoundaries(const Eigen::MatrixXd& functional, const DesignParameters& parameters,
+                                          const std::vector<Eigen::Index>& boundaries, const GainOptions& options = {});
+
 /// Relative error of thesis eq. 5.18's form: sqrt(sum |designed - measured|^2) / sqrt(sum |measured|^2)
 /// over all frames and columns (rows beyond the shorter are ignored).
 double relativeError(const Eigen::MatrixXd& designed, const Eigen::MatrixXd& measured);

@@ -93,6 +93,25 @@ Eigen::VectorXd sampleWarp(const WarpCurve& curve)
     return samples;
 }
 
+double inverseWarp(const WarpCurve& curve, double source)
+{
+    if (!validateWarpCurve(curve).ok() || !std::isfinite(source)) return source;
+    const std::vector<double> tangents = monotoneTangents(curve.points);
+    double low = curve.points.front().output;
+    double high = curve.points.back().output;
+    if (evaluateWithTangents(curve.points, tangents, low) >= source) return low;
+    if (evaluateWithTangents(curve.points, tangents, high) < source) return high;
+    // invariant: f(low) < source <= f(high); 64 halvings reach double precision on any range
+    for (int step = 0; step < 64 && high - low > 1e-9; ++step) {
+        const double middle = 0.5 * (low + high);
+        if (evaluateWithTangents(curve.points, tangents, middle) >= source)
+            high = middle;
+        else
+            low = middle;
+    }
+    return high;
+}
+
 WarpCurve moveControlPoint(const WarpCurve& curve, std::size_t index, const WarpPoint& proposed, double minimumGap)
 {
     WarpCurve moved = curve;

@@ -39,6 +39,13 @@ double evaluateWarp(const WarpCurve& curve, double output);
 /// Source frame for each output frame 0..outputFrames-1.
 Eigen::VectorXd sampleWarp(const WarpCurve& curve);
 
+/// The inverse of the monotone curve: the first output frame u (within the control points'
+/// output range) with evaluateWarp(curve, u) >= source, to 1e-9 frames by bisection. Sources
+/// below the first point's source give its output, above the last point's source the last
+/// output; on a flat stretch (the curve holds a source frame) the stretch's first frame.
+/// An invalid curve (validateWarpCurve) returns `source` unchanged (the identity).
+double inverseWarp(const WarpCurve& curve, double source);
+
 /// The curve with point `index` moved towards `proposed`, clamped so output stays strictly
 /// between the neighbours (by `minimumGap` frames) and source between the neighbours' sources;
 /// the first and last points keep their output frame.

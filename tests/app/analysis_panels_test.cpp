@@ -113,3 +113,65 @@ TEST_CASE("switching the emotion decomposition to KM2O with a given M changes th
                             60000));
     REQUIRE((panel->weightedTake()->values - leastSquares->values).cwiseAbs().maxCoeff() < 1e-12);
 }
+
+TEST_CASE("consecutive steps of the M spin box are one undo step until it loses the focus", "[app][emotion]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    auto* panel = window->emotionPanel();
+    auto& document = window->document();
+    auto* box = panel->orderBox();
+    panel->methodBox()->setCurrentIndex(panel->methodBox()->findData(QStringLiteral("km2o")));
+    REQUIRE(box->isEnabled());
+    box->setValue(2);
+    emit box->editingFinished(); // the focus leaves: the next steps start a new undo step
+    REQUIRE(document.undoStack()->count() == 2);
+
+    for (int step = 0; step < 5; ++step) QTest::keyClick(box, Qt::Key_Up);
+    REQUIRE(box->value() == 7);
+    REQUIRE(document.parameter(app::parameters::kEmotionOrder).toInt() == 7);
+    REQUIRE(document.undoStack()->count() == 3);
+    document.undoStack()->undo(); // one Ctrl+Z: back to 2
+    REQUIRE(box->value() == 2);
+    REQUIRE(document.parameter(app::parameters::kEmotionOrder).toInt() == 2);
+    document.undoStack()->redo();
+    REQUIRE(box->value() == 7);
+
+    // After the focus left, the next steps are a new undo step.
+    emit box->editingFinished();
+    QTest::keyClick(box, Qt::Key_Down);
+    QTest::keyClick(box, Qt::Key_Down);
+    REQUIRE(document.undoStack()->count() == 4);
+    document.undoStack()->undo();
+    REQUIRE(box->value() == 7);
+    REQUIRE(QTest::qWaitFor([&] { return !panel->recomputer()->busy(); }, 60000));
+}
+
+TEST_CASE("steps of tau, T_cmp and the emotion weight slider merge per control", "[app][normalise][emotion]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    auto& document = window->document();
+    auto* tau = window->normalisePanel()->tauSpin();
+    auto* band = window->normalisePanel()->searchBandSpin();
+    for (int step = 0; step < 3; ++step) QTest::keyClick(tau, Qt::Key_Up);
+    REQUIRE(document.parameter(app::parameters::kNormaliseTau).toInt() == 7);
+    REQUIRE(document.undoStack()->count() == 1);
+    for (int step = 0; step < 4; ++step) QTest::keyClick(band, Qt::Key_Down);
+    REQUIRE(document.parameter(app::parameters::kNormaliseSearchBand).toInt() == 16);
+    REQUIRE(document.undoStack()->count() == 2); // another control: its own step
+
+    auto* slider = window->emotionPanel()->weightSlider();
+    for (int step = 0; step < 3; ++step) QTest::keyClick(slider, Qt::Key_Up); // Left/Right step the time
+    REQUIRE(document.parameter(app::parameters::kEmotionWeight).toDouble() == Approx(1.03));
+    REQUIRE(document.undoStack()->count() == 3);
+
+    document.undoStack()->undo();
+    REQUIRE(document.parameter(app::parameters::kEmotionWeight).toDouble() == 1.0);
+    REQUIRE(slider->value() == 100);
+    document.undoStack()->undo();
+    REQUIRE(band->value() == 20);
+    document.undoStack()->undo();
+    REQUIRE(tau->value() == 4);
+    REQUIRE(QTest::qWaitFor([&] { return !window->normalisePanel()->recomputer()->busy(); }, 60000));
+}

@@ -13,8 +13,14 @@
 #include <qcustomplot.h>
 
 #include <QDockWidget>
+#include <QMenu>
 #include <QPushButton>
 #include <QSlider>
+#include <QTableWidget>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
 
 using namespace bunraku;
 using app::TakeSlot;
@@ -231,4 +237,239 @@ TEST_CASE("phrase marks of takes other than the design's cannot be dragged", "[a
     REQUIRE_FALSE(window->timeline()->scrubBar()->boundariesEditable());
     window->document().selectTake(TakeSlot::A, QStringLiteral("live/designed"));
     REQUIRE(window->timeline()->scrubBar()->boundariesEditable());
+}
+
+namespace {
+
+/// g0 and g1 of every phrase and DOF.
+std::vector<std::vector<std::pair<double, double>>> gainValues(const analysis::GainSet& gains)
+{
+    std::vector<std::vector<std::pair<double, double>>> values;
+    for (const auto& phrase : gains.phrases) {
+        values.emplace_back();
+        for (const auto& dof : phrase.dofs) values.back().emplace_back(dof.g0, dof.g1);
+    }
+    return values;
+}
+
+} // namespace
+
+TEST_CASE("phrase boundaries are added and removed one at a time, each one undo step with the gains", "[app][design]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    REQUIRE(waitForDesign(*window));
+    auto& document = window->document();
+    auto& design = window->design();
+    document.selectTake(TakeSlot::A, design.sourceId());
+    design.useExtractedGains(); // distinct gains per phrase, so their remapping shows
+    REQUIRE(document.undoStack()->count() == 1);
+    auto* bar = window->timeline()->scrubBar();
+    auto* table = window->designPanel()->gainTable();
+    const double rate = design.functionalRateHz();
+    const auto framesBefore = design.boundaries();
+    const auto gainsBefore = gainValues(design.gains());
+    REQUIRE(framesBefore.size() >= 3);
+    REQUIRE(gainsBefore.size() == framesBefore.size() - 1);
+    const int y = bar->height() / 2;
+
+    // Double click in the middle of the first phrase: a new boundary there, the first phrase's
+    // gains copied to both halves.
+    const double middle = 0.5 * double(framesBefore[0] + framesBefore[1]) / rate;
+    QTest::mouseDClick(bar, Qt::LeftButton, Qt::NoModifier, QPoint(bar->xOfTime(middle), y));
+    REQUIRE(document.undoStack()->count() == 2);
+    auto frames = design.boundaries();
+    REQUIRE(frames.size() == framesBefore.size() + 1);
+    REQUIRE(double(frames[1]) == Approx(middle * rate).margin(1.0 + rate * bar->duration() / bar->width()));
+    REQUIRE(bar->boundaries().size() == frames.size() - 2);
+    auto gains = gainValues(design.gains());
+    REQUIRE(gains.size() == gainsBefore.size() + 1);
+    REQUIRE(gains[0] == gainsBefore[0]);
+    REQUIRE(gains[1] == gainsBefore[0]);
+    for (std::size_t p = 1; p < gainsBefore.size(); ++p) REQUIRE(gains[p + 1] == gainsBefore[p]);
+    REQUIRE(table->gains().phrases.size() == gains.size());
+    REQUIRE(table->table()->rowCount() == int(gains.size()));
+
+    // Undo restores the boundaries and the gains, redo brings them back.
+    document.undoStack()->undo();
+    REQUIRE(design.boundaries() == framesBefore);
+    REQUIRE(gainValues(design.gains()) == gainsBefore);
+    REQUIRE(table->table()->rowCount() == int(gainsBefore.size()));
+    document.undoStack()->redo();
+    REQUIRE(design.boundaries() == frames);
+
+    // The context menu on the new tick removes it: the halves merge back.
+    std::unique_ptr<QMenu> menu(bar->createContextMenu(QPoint(bar->xOfTime(bar->boundaries()[0]), y)));
+    REQUIRE(menu);
+    REQUIRE(menu->actions()[0]->text() == QStringLiteral("Remove phrase boundary"));
+    menu->actions()[0]->trigger();
+    REQUIRE(document.undoStack()->count() == 3);
+    REQUIRE(design.boundaries() == framesBefore);
+    REQUIRE(gainValues(design.gains()) == gainsBefore);
+
+    // Delete on the pressed tick: the first inner boundary goes, the merged phrase keeps the
+    // gains of the longer of its two phrases.
+    const QPoint first(bar->xOfTime(bar->boundaries()[0]), y);
+    QTest::mousePress(bar, Qt::LeftButton, Qt::NoModifier, first);
+    QTest::mouseRelease(bar, Qt::LeftButton, Qt::NoModifier, first);
+    REQUIRE(document.undoStack()->count() == 3); // pressing a tick moves nothing
+    QTest::keyClick(bar, Qt::Key_Delete);
+    REQUIRE(document.undoStack()->count() == 4);
+    frames = design.boundaries();
+    REQUIRE(frames.size() == framesBefore.size() - 1);
+    REQUIRE(frames[1] == framesBefore[2]);
+    const bool rightLonger = framesBefore[2] - framesBefore[1] > framesBefore[1] - framesBefore[0];
+    gains = gainValues(design.gains());
+    REQUIRE(gains[0] == gainsBefore[rightLonger ? 1 : 0]);
+    for (std::size_t p = 1; p < gains.size(); ++p) REQUIRE(gains[p] == gainsBefore[p + 1]);
+    document.undoStack()->undo();
+    REQUIRE(design.boundaries() == framesBefore);
+    REQUIRE(gainValues(design.gains()) == gainsBefore);
+
+    // Without the mouse: the design panel's buttons add at the time cursor and remove the nearest.
+    auto* add = window->designPanel()->findChild<QPushButton*>(QStringLiteral("addBoundary"));
+    auto* remove = window->designPanel()->findChild<QPushButton*>(QStringLiteral("removeBoundary"));
+    REQUIRE(add);
+    REQUIRE(remove);
+    const Eigen::Index at = framesBefore[framesBefore.size() - 2] + 3; // inside the last phrase
+    REQUIRE(at < framesBefore.back());
+    document.setCurrentTime(double(at) / rate);
+    add->click();
+    frames = design.boundaries();
+    REQUIRE(frames.size() == framesBefore.size() + 1);
+    REQUIRE(frames[frames.size() - 2] == at);
+    REQUIRE(table->table()->rowCount() == int(frames.size() - 1));
+    add->click(); // on a boundary: nothing to add
+    REQUIRE(design.boundaries() == frames);
+    remove->click();
+    REQUIRE(design.boundaries() == framesBefore);
+    REQUIRE(gainValues(design.gains()) == gainsBefore);
+
+    // Every inner boundary removed: one phrase, stored as such (not "suggested").
+    while (design.boundaries().size() > 2) REQUIRE(design.removeBoundary(0));
+    REQUIRE(design.boundaries() == std::vector<Eigen::Index>{0, framesBefore.back()});
+    REQUIRE(design.gains().phrases.size() == 1);
+    REQUIRE(bar->boundaries().empty());
+    REQUIRE_FALSE(design.removeBoundary(0));
+    REQUIRE(design.addBoundary(double(at)));
+    REQUIRE(design.boundaries() == std::vector<Eigen::Index>{0, at, framesBefore.back()});
+}
+
+TEST_CASE("the extracted gains follow the phrase boundaries in use", "[app][design]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    REQUIRE(waitForDesign(*window));
+    auto& design = window->design();
+    auto* table = window->designPanel()->gainTable();
+    const auto suggested = design.boundaries();
+    const analysis::GainSet extractedBefore = design.extractedGains();
+    REQUIRE(extractedBefore.phrases.size() == suggested.size() - 1);
+    REQUIRE(gainValues(table->extracted()) == gainValues(extractedBefore));
+
+    // Split the last phrase.
+    const std::size_t last = suggested.size() - 2; // index of the last phrase
+    const Eigen::Index split = (suggested[last] + suggested[last + 1]) / 2;
+    REQUIRE(design.addBoundary(double(split)));
+    const analysis::GainSet extracted = design.extractedGains();
+    INFO("re-extraction took " << design.lastExtractionMilliseconds() << " ms");
+    REQUIRE(extracted.phrases.size() == suggested.size());
+    const auto frames = design.boundaries();
+    for (std::size_t p = 0; p < extracted.phrases.size(); ++p) {
+        REQUIRE(extracted.phrases[p].begin == frames[p]);
+        REQUIRE(extracted.phrases[p].end == frames[p + 1]);
+    }
+    // Phrases before the split are extracted as before; the halves are extracted on their own.
+    for (std::size_t p = 0; p < last; ++p) REQUIRE(gainValues(extracted)[p] == gainValues(extractedBefore)[p]);
+    bool halvesDiffer = false;
+    for (std::size_t d = 0; d < extracted.phrases[last].dofs.size(); ++d) {
+        const double whole = extractedBefore.phrases[last].dofs[d].g1;
+        halvesDiffer = halvesDiffer || std::abs(extracted.phrases[last].dofs[d].g1 - whole) > 1e-6 ||
+                       std::abs(extracted.phrases[last + 1].dofs[d].g1 - whole) > 1e-6;
+    }
+    REQUIRE(halvesDiffer);
+    // The table shows them, and "Use extracted gains" uses them.
+    REQUIRE(gainValues(table->extracted()) == gainValues(extracted));
+    table->selectCell(int(last) + 1, 0);
+    REQUIRE(table->selectionText().contains(QStringLiteral("extracted")));
+    design.useExtractedGains();
+    REQUIRE(gainValues(design.gains()) == gainValues(extracted));
+    // Undoing the boundary goes back to the suggested phrases' extraction.
+    window->document().undoStack()->undo();
+    window->document().undoStack()->undo();
+    REQUIRE(design.boundaries() == suggested);
+    REQUIRE(gainValues(design.extractedGains()) == gainValues(extractedBefore));
+    REQUIRE(gainValues(table->extracted()) == gainValues(extractedBefore));
+}
+
+TEST_CASE("on the warped designed take the ticks sit at the inverse-warped boundaries and drag back through the warp",
+          "[app][design]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    REQUIRE(waitForDesign(*window));
+    auto& document = window->document();
+    auto& design = window->design();
+    const double rate = design.functionalRateHz();
+    const Eigen::Index frames = design.designedTake()->frameCount();
+    // A non-identity warp over the same frames: slow start, fast end.
+    analysis::WarpCurve curve = analysis::identityWarp(frames);
+    const double last = double(frames - 1);
+    for (auto& point : curve.points) point.source = last * std::pow(point.output / last, 1.5);
+    REQUIRE(analysis::validateWarpCurve(curve).ok());
+    design.editWarp(curve);
+    document.selectTake(TakeSlot::A, QStringLiteral("live/designed"));
+    auto* bar = window->timeline()->scrubBar();
+    REQUIRE(bar->boundariesEditable());
+    const auto boundaries = design.boundaries();
+    REQUIRE(bar->boundaries().size() == boundaries.size() - 2);
+    bool moved = false;
+    for (std::size_t i = 0; i < bar->boundaries().size(); ++i) {
+        const double tick = bar->boundaries()[i];
+        const double frame = double(boundaries[i + 1]);
+        REQUIRE(tick == Approx(analysis::inverseWarp(curve, frame) / rate).margin(1e-9));
+        REQUIRE(analysis::evaluateWarp(curve, tick * rate) == Approx(frame).margin(1e-6));
+        moved = moved || std::abs(tick * rate - frame) > 2.0;
+    }
+    REQUIRE(moved); // the warp is not the identity where the ticks are
+
+    // Dragging a tick: the boundary moves to the functional frame the designed time shows.
+    const QPoint from(bar->xOfTime(bar->boundaries()[0]), bar->height() / 2);
+    const QPoint to = from + QPoint(10, 0);
+    dragOnBar(bar, from, to);
+    const double shown = analysis::evaluateWarp(curve, bar->timeAtX(to.x()) * rate);
+    const double low = double(boundaries[0] + 1);
+    const double high = double(boundaries[2] - 1);
+    REQUIRE(design.boundaries()[1] == std::lround(std::clamp(shown, low, high)));
+    REQUIRE(design.boundaries()[1] != boundaries[1]);
+    REQUIRE(bar->boundaries()[0] == Approx(analysis::inverseWarp(curve, double(design.boundaries()[1])) / rate).margin(1e-9));
+
+    // Adding on the designed take splits at the functional frame shown there.
+    const double seconds = 0.5 * (bar->boundaries()[0] + bar->boundaries()[1]);
+    QTest::mouseDClick(bar, Qt::LeftButton, Qt::NoModifier, QPoint(bar->xOfTime(seconds), bar->height() / 2));
+    REQUIRE(design.boundaries().size() == boundaries.size() + 1);
+    const double expected = analysis::evaluateWarp(curve, bar->timeAtX(bar->xOfTime(seconds)) * rate);
+    REQUIRE(double(design.boundaries()[2]) == Approx(expected).margin(0.5 + 1e-9));
+}
+
+TEST_CASE("key steps of one gain slider are one undo step, another cell's steps another", "[app][design]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    REQUIRE(waitForDesign(*window));
+    auto& document = window->document();
+    auto* table = window->designPanel()->gainTable();
+    REQUIRE(table->gains().phrases.size() >= 2);
+    table->selectCell(1, 2);
+    for (int step = 0; step < 3; ++step) QTest::keyClick(table->g1Slider(), Qt::Key_Up);
+    REQUIRE(document.undoStack()->count() == 1);
+    REQUIRE(table->gains().phrases[1].dofs[2].g1 == Approx(widgets::GainTable::gainOfPosition(3)));
+    table->selectCell(0, 2);
+    for (int step = 0; step < 2; ++step) QTest::keyClick(table->g1Slider(), Qt::Key_Up);
+    REQUIRE(document.undoStack()->count() == 2);
+    document.undoStack()->undo();
+    REQUIRE(table->gains().phrases[0].dofs[2].g1 == 1.0);
+    REQUIRE(table->gains().phrases[1].dofs[2].g1 == Approx(widgets::GainTable::gainOfPosition(3)));
+    document.undoStack()->undo();
+    REQUIRE(table->gains().phrases[1].dofs[2].g1 == 1.0);
 }

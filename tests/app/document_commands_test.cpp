@@ -122,3 +122,68 @@ TEST_CASE("the current time is clamped to the shown takes and live takes are not
     document.selectTake(TakeSlot::A, "no/such/take");
     REQUIRE(document.selectedId(TakeSlot::A) == Document::corpusTakeId(0));
 }
+
+TEST_CASE("consecutive steps of one control are one undo step until the control loses the focus", "[app][commands]")
+{
+    Document document;
+    document.setCorpus(smallCorpus(), "synthetic");
+    for (int tau = 5; tau <= 9; ++tau) REQUIRE(stepParameter(document, parameters::kNormaliseTau, tau));
+    REQUIRE(document.undoStack()->count() == 1);
+    REQUIRE(document.parameter(parameters::kNormaliseTau).toInt() == 9);
+    document.undoStack()->undo();
+    REQUIRE(document.parameter(parameters::kNormaliseTau).toInt() == 4);
+    document.undoStack()->redo();
+    REQUIRE(document.parameter(parameters::kNormaliseTau).toInt() == 9);
+
+    // Stepping back to where the series began leaves nothing to undo.
+    for (int tau = 8; tau >= 4; --tau) stepParameter(document, parameters::kNormaliseTau, tau);
+    REQUIRE(document.undoStack()->count() == 0);
+    REQUIRE(document.parameter(parameters::kNormaliseTau).toInt() == 4);
+
+    // The focus leaves (the series ends): the next steps are a new undo step.
+    stepParameter(document, parameters::kNormaliseTau, 5);
+    document.endStepSeries();
+    stepParameter(document, parameters::kNormaliseTau, 6);
+    stepParameter(document, parameters::kNormaliseTau, 7);
+    REQUIRE(document.undoStack()->count() == 2);
+    // Another key, or another control of the same key, does not merge.
+    stepParameter(document, parameters::kNormaliseSearchBand, 21);
+    stepParameter(document, parameters::kNormaliseSearchBand, 22);
+    REQUIRE(document.undoStack()->count() == 3);
+    stepParameter(document, parameters::kNormaliseSearchBand, 23, {}, QStringLiteral("another control"));
+    REQUIRE(document.undoStack()->count() == 4);
+    // A plain change never merges, and a step does not merge into it.
+    changeParameter(document, parameters::kNormaliseTau, 10);
+    stepParameter(document, parameters::kNormaliseTau, 11);
+    REQUIRE(document.undoStack()->count() == 6);
+    // A drag after steps is its own undo step.
+    document.beginInteraction();
+    stepParameter(document, parameters::kNormaliseTau, 12);
+    stepParameter(document, parameters::kNormaliseTau, 13);
+    document.endInteraction();
+    REQUIRE(document.undoStack()->count() == 7);
+    document.undoStack()->undo();
+    REQUIRE(document.parameter(parameters::kNormaliseTau).toInt() == 11);
+}
+
+TEST_CASE("several parameters set together are one undo step", "[app][commands]")
+{
+    Document document;
+    document.setCorpus(smallCorpus(), "synthetic");
+    QSignalSpy changed(&document, &Document::parameterChanged);
+    const QVariantMap gains{{QStringLiteral("0/1"), QVariantList{1.5, 0.5}}};
+    REQUIRE(changeParameters(document,
+                             {{parameters::kDesignBoundaries, QVariantList{qlonglong(10)}}, {parameters::kDesignGains, gains}},
+                             QStringLiteral("Add phrase boundary")));
+    REQUIRE(document.undoStack()->count() == 1);
+    REQUIRE(document.undoStack()->text(0) == QStringLiteral("Add phrase boundary"));
+    REQUIRE(document.parameter(parameters::kDesignBoundaries).toList() == QVariantList{qlonglong(10)});
+    REQUIRE(document.parameter(parameters::kDesignGains).toMap() == gains);
+    REQUIRE(changed.count() == 2);
+    document.undoStack()->undo();
+    REQUIRE(document.parameter(parameters::kDesignBoundaries) == parameters::defaultValue(parameters::kDesignBoundaries));
+    REQUIRE(document.parameter(parameters::kDesignGains) == parameters::defaultValue(parameters::kDesignGains));
+    // Values equal to the current ones push nothing.
+    REQUIRE_FALSE(changeParameters(document, {{parameters::kNormaliseTau, 4}}, QStringLiteral("nothing")));
+    REQUIRE(document.undoStack()->count() == 1);
+}

@@ -5,9 +5,12 @@
 #include <catch2/catch.hpp>
 
 #include <QAction>
+#include <QMenu>
 #include <QMouseEvent>
 #include <QSignalSpy>
 #include <QTest>
+
+#include <memory>
 
 using namespace bunraku;
 
@@ -103,4 +106,71 @@ TEST_CASE("an editable phrase tick is dragged instead of scrubbing", "[widgets][
     // Away from the ticks it still scrubs.
     QTest::mousePress(&bar, Qt::LeftButton, Qt::NoModifier, QPoint(bar.xOfTime(4.5), y));
     REQUIRE(scrubbed.count() == 2);
+}
+
+TEST_CASE("editable phrase ticks are added by double click and context menu, removed by context menu and Delete",
+          "[widgets][timeline]")
+{
+    widgets::ScrubBar bar;
+    bar.resize(400, 34);
+    bar.setDuration(10.0);
+    bar.setBoundaries({3.0, 6.0});
+    bar.show();
+    REQUIRE(QTest::qWaitForWindowExposed(&bar));
+    QSignalSpy added(&bar, &widgets::ScrubBar::boundaryAddRequested);
+    QSignalSpy removed(&bar, &widgets::ScrubBar::boundaryRemoveRequested);
+    const int y = bar.height() / 2;
+    const QPoint gap(bar.xOfTime(4.5), y);
+    const QPoint tick(bar.xOfTime(6.0), y);
+
+    // Not editable: no menu, double clicks and Delete request nothing.
+    REQUIRE(bar.createContextMenu(gap) == nullptr);
+    QTest::mouseDClick(&bar, Qt::LeftButton, Qt::NoModifier, gap);
+    QTest::keyClick(&bar, Qt::Key_Delete);
+    REQUIRE(added.isEmpty());
+    REQUIRE(removed.isEmpty());
+
+    bar.setBoundariesEditable(true);
+    // A double click away from the ticks asks for a boundary there; on a tick it does not.
+    QTest::mouseDClick(&bar, Qt::LeftButton, Qt::NoModifier, gap);
+    REQUIRE(added.count() == 1);
+    REQUIRE(added[0][0].toDouble() == Approx(4.5).margin(10.0 / 380));
+    QTest::mouseDClick(&bar, Qt::LeftButton, Qt::NoModifier, tick);
+    REQUIRE(added.count() == 1);
+
+    // The context menu: add between ticks, remove on a tick.
+    std::unique_ptr<QMenu> addMenu(bar.createContextMenu(gap));
+    REQUIRE(addMenu);
+    REQUIRE(addMenu->actions().size() == 1);
+    REQUIRE(addMenu->actions()[0]->text() == QStringLiteral("Add phrase boundary here"));
+    addMenu->actions()[0]->trigger();
+    REQUIRE(added.count() == 2);
+    REQUIRE(added[1][0].toDouble() == Approx(4.5).margin(10.0 / 380));
+    std::unique_ptr<QMenu> removeMenu(bar.createContextMenu(tick + QPoint(2, 0)));
+    REQUIRE(removeMenu->actions().size() == 1);
+    REQUIRE(removeMenu->actions()[0]->text() == QStringLiteral("Remove phrase boundary"));
+    removeMenu->actions()[0]->trigger();
+    REQUIRE(removed.count() == 1);
+    REQUIRE(removed[0][0].toInt() == 1);
+
+    // Delete removes the tick under the mouse, else the one pressed last.
+    const QPoint first(bar.xOfTime(3.0), y);
+    QTest::mousePress(&bar, Qt::LeftButton, Qt::NoModifier, first);
+    QTest::mouseRelease(&bar, Qt::LeftButton, Qt::NoModifier, first);
+    REQUIRE(bar.selectedBoundary() == 0);
+    QMouseEvent away(QEvent::MouseMove, QPointF(gap), bar.mapToGlobal(QPointF(gap)), Qt::NoButton, Qt::NoButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(&bar, &away);
+    REQUIRE(bar.hoveredBoundary() == -1);
+    QTest::keyClick(&bar, Qt::Key_Delete);
+    REQUIRE(removed.count() == 2);
+    REQUIRE(removed[1][0].toInt() == 0);
+    QMouseEvent over(QEvent::MouseMove, QPointF(tick), bar.mapToGlobal(QPointF(tick)), Qt::NoButton, Qt::NoButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(&bar, &over);
+    REQUIRE(bar.hoveredBoundary() == 1);
+    QTest::keyClick(&bar, Qt::Key_Backspace);
+    REQUIRE(removed.count() == 3);
+    REQUIRE(removed[2][0].toInt() == 1);
+    // A new set of ticks (one came or went) clears the selection.
+    bar.setBoundaries({3.0});
+    REQUIRE(bar.selectedBoundary() == -1);
 }

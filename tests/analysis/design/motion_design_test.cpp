@@ -118,3 +118,46 @@ TEST_CASE("design with the extracted parameters reproduces the emotional axis")
     INFO("relative error designed " << error << ", undesigned " << before);
     CHECK(error < 0.25 * before);
 }
+
+TEST_CASE("gains re-extracted for edited phrase boundaries keep the phase and follow the new phrases")
+{
+    const Take functional = bunraku::test::livelyTake(106);
+    const auto basis = prepareDesign(model(), functional);
+    REQUIRE(basis.ok());
+    GainSet truthGains = unitGains({0, 40, 105}, {"x", "y", "z", "rx", "ry", "rz"});
+    truthGains.phrases[0].dofs[2].g1 = 0.7;
+    truthGains.phrases[1].dofs[2].g1 = 1.3;
+    Eigen::VectorXd truth(106);
+    for (int u = 0; u < 106; ++u) truth[u] = knownWarp(u);
+    const Eigen::MatrixXd emotional = resampleRows(applyGains(basis->coordinates, truthGains), truth);
+    ExtractionOptions options;
+    options.boundaries = {0, 40, 105};
+    const auto parameters = extractDesign(basis->coordinates, emotional, options);
+    REQUIRE(parameters.ok());
+
+    // the boundaries of the extraction: the same gains
+    const auto same = extractGainsForBoundaries(basis->coordinates, *parameters, {0, 40, 105});
+    REQUIRE(same.ok());
+    REQUIRE(same->phrases.size() == parameters->gains.phrases.size());
+    for (std::size_t p = 0; p < same->phrases.size(); ++p)
+        for (std::size_t d = 0; d < same->phrases[p].dofs.size(); ++d) {
+            CHECK(same->phrases[p].dofs[d].g0 == parameters->gains.phrases[p].dofs[d].g0);
+            CHECK(same->phrases[p].dofs[d].g1 == parameters->gains.phrases[p].dofs[d].g1);
+        }
+
+    // the second phrase split in two: phrase 0 unchanged, both halves carry the second phrase's scaling
+    const auto split = extractGainsForBoundaries(basis->coordinates, *parameters, {0, 40, 72, 105});
+    REQUIRE(split.ok());
+    REQUIRE(split->phrases.size() == 3);
+    CHECK(split->phrases[1].begin == 40);
+    CHECK(split->phrases[1].end == 72);
+    CHECK(split->phrases[2].begin == 72);
+    CHECK(split->dofNames == parameters->gains.dofNames);
+    CHECK(split->phrases[0].dofs[2].g1 == parameters->gains.phrases[0].dofs[2].g1);
+    CHECK(split->phrases[1].dofs[2].g1 == Approx(1.3).epsilon(0.15));
+    CHECK(split->phrases[2].dofs[2].g1 == Approx(1.3).epsilon(0.15));
+
+    // bad boundaries and a mismatched extraction are errors, not crashes
+    CHECK_FALSE(extractGainsForBoundaries(basis->coordinates, *parameters, {0, 60, 40, 105}).ok());
+    CHECK_FALSE(extractGainsForBoundaries(basis->coordinates.topRows(50), *parameters, {0, 49}).ok());
+}

@@ -1,9 +1,11 @@
+#include "analysis/design/phase_extraction.h"
 #include "analysis/design/warp_curve.h"
 
 #include "tests/support/test_paths.h"
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <fstream>
 #include <random>
 
@@ -47,6 +49,33 @@ TEST_CASE("moving a control point is clamped between its neighbours")
     const WarpCurve end = moveControlPoint(curve, 2, {40, 30});
     CHECK(end.points[2].output == 20.0); // ends keep their frame
     CHECK(end.points[2].source == 30.0);
+}
+
+TEST_CASE("the inverse warp finds the output frame that shows a source frame")
+{
+    // a smooth non-identity warp: slow start, fast end
+    Eigen::VectorXd samples(106);
+    for (int i = 0; i < 106; ++i) samples[i] = 105.0 * std::pow(i / 105.0, 1.6);
+    const WarpCurve curve = warpCurveFromSamples(samples, 8);
+    REQUIRE(validateWarpCurve(curve).ok());
+    for (double source = 0.0; source <= 105.0; source += 3.7) {
+        const double output = inverseWarp(curve, source);
+        CHECK(evaluateWarp(curve, output) == Approx(source).margin(1e-6));
+        CHECK(output >= source - 1e-9); // this warp lags behind the identity
+    }
+    // the peer: the dense inverse of the sampled curve agrees to within interpolation error
+    const Eigen::VectorXd back = invertMonotone(sampleWarp(curve), 106);
+    for (int source = 0; source < 106; source += 5) CHECK(inverseWarp(curve, source) == Approx(back[source]).margin(0.2));
+    // outside the curve's range: its ends
+    CHECK(inverseWarp(curve, -10.0) == 0.0);
+    CHECK(inverseWarp(curve, 500.0) == 105.0);
+    // a held source frame maps to the first output frame that shows it
+    const WarpCurve hold{{{0, 0}, {10, 10}, {20, 10}, {30, 20}}, 31};
+    CHECK(inverseWarp(hold, 10.0) == Approx(10.0).margin(1e-6));
+    CHECK(inverseWarp(hold, 15.0) > 20.0);
+    CHECK(evaluateWarp(hold, inverseWarp(hold, 15.0)) == Approx(15.0).margin(1e-6));
+    // an invalid curve is the identity
+    CHECK(inverseWarp(WarpCurve{}, 12.5) == 12.5);
 }
 
 TEST_CASE("a dense map is summarised by control points it passes through")
