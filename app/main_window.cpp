@@ -5,9 +5,11 @@
 #include "app/emotion_panel.h"
 #include "app/file_controller.h"
 #include "app/normalise_panel.h"
+#include "app/offscreen_view.h"
 #include "app/phrase_marks.h"
 #include "app/playback_controller.h"
 #include "app/recomputer.h"
+#include "app/video_export_dialog.h"
 #include "app/viewport_panel.h"
 
 #include "widgets/corpus_browser.h"
@@ -16,6 +18,8 @@
 #include "widgets/scrub_bar.h"
 #include "widgets/timeline_widget.h"
 #include "widgets/viewport_widget.h"
+
+#include "analysis/core/puppet_layout.h"
 
 #include <QAction>
 #include <QApplication>
@@ -29,9 +33,12 @@
 #include <QMessageBox>
 #include <QMimeData>
 #include <QProgressBar>
+#include <QProgressDialog>
 #include <QSettings>
 #include <QStatusBar>
 #include <QUndoView>
+
+#include <cmath>
 
 namespace bunraku::app {
 namespace {
@@ -142,12 +149,8 @@ void MainWindow::createMenus()
     file->addAction(m_files->exportCsvAction());
     file->addAction(m_files->exportBvhAction());
     file->addAction(tr("Save &Screenshot..."), this, &MainWindow::chooseScreenshot);
-    file->addAction(tr("Export 3D View &Frames..."), this, [this] {
-        const QString folder = QFileDialog::getExistingDirectory(this, tr("Folder for the PNG frames"));
-        if (folder.isEmpty()) return;
-        const int written = exportViewFrames(folder);
-        m_status->setText(tr("Wrote %1 frames to %2").arg(written).arg(folder));
-    });
+    auto* video = file->addAction(tr("Export 3D View &Video..."), this, &MainWindow::chooseViewVideo);
+    video->setObjectName("exportViewVideoAction");
     file->addSeparator();
     auto* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);
@@ -191,6 +194,13 @@ void MainWindow::connectDocument()
     connect(m_document, &Document::selectionChanged, this, [this] { refreshTakes(); });
     connect(m_document, &Document::currentTimeChanged, this, &MainWindow::refreshTime);
     connect(m_document->undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
+    // During a drag the graphs hold their value ranges (autoscaled once when it ends).
+    connect(m_document, &Document::interactionChanged, this, [this](bool active) {
+        if (active)
+            m_graphs->grid()->beginInteraction();
+        else
+            m_graphs->grid()->endInteraction();
+    });
 
     connect(m_browser, &widgets::CorpusBrowser::takeChosen, this,
             [this](widgets::TakeSlot slot, const QString& id) { m_document->selectTake(slot, id); });
@@ -208,9 +218,14 @@ void MainWindow::connectDocument()
     auto* bar = m_timeline->scrubBar();
     connect(bar, &widgets::ScrubBar::boundaryDragStarted, m_document, &Document::beginInteraction);
     connect(bar, &widgets::ScrubBar::boundaryDragFinished, m_document, &Document::endInteraction);
+    // Ticks are at take A's times (the designed take's through the warp): map back to functional frames.
     connect(bar, &widgets::ScrubBar::boundaryDragged, this, [this](int index, double seconds) {
-        m_design->moveBoundary(index, seconds * m_design->functionalRateHz());
+        m_design->moveBoundary(index, m_design->functionalFrameAt(m_document->selectedId(TakeSlot::A), seconds));
     });
+    connect(bar, &widgets::ScrubBar::boundaryAddRequested, this, [this](double seconds) {
+        m_design->addBoundary(m_design->functionalFrameAt(m_document->selectedId(TakeSlot::A), seconds));
+    });
+    connect(bar, &widgets::ScrubBar::boundaryRemoveRequested, m_design, &DesignController::removeBoundary);
     connect(m_design, &DesignController::prepared, this, &MainWindow::refreshBoundaries);
     connect(m_design, &DesignController::designed, this, &MainWindow::refreshBoundaries);
     connect(m_viewportPanel, &ViewportPanel::partPicked, m_graphs, &widgets::GraphPanel::selectPart);
@@ -243,7 +258,7 @@ void MainWindow::refreshBoundaries()
     const bool designed = m_design->ready() && (idA == m_design->sourceId() || idA == QStringLiteral("live/designed"));
     std::vector<double> boundaries;
     if (designed)
-        boundaries = m_design->boundarySeconds();
+        boundaries = m_design->boundarySecondsOn(idA);
     else if (takeA && m_document->demoTruth())
         boundaries = phraseBoundarySeconds(*m_document->demoTruth(), *takeA);
     m_timeline->scrubBar()->setBoundariesEditable(designed);
@@ -321,20 +336,107 @@ bool MainWindow::saveScreenshot(const QString& file, QWidget* widget)
 
 int MainWindow::exportViewFrames(const QString& folder)
 {
+    VideoExportOptions options;
+    options.format = VideoFormat::PngSequence;
+    options.output = folder;
+    return exportViewVideo(options, [](int, int) { return true; }).frames;
+}
+
+VideoExportResult MainWindow::exportViewVideo(const VideoExportOptions& options, const ExportProgress& progress)
+{
+    VideoExportResult refused;
     const TakePointer take = m_document->selectedTake(TakeSlot::A);
-    auto* view = m_viewportPanel->viewport();
-    if (!take || !view->isVisible() || !QDir().mkpath(folder)) return 0;
-    const double restore = m_document->currentTime();
-    int written = 0;
-    for (Eigen::Index frame = 0; frame < take->frameCount(); ++frame) {
-        m_document->setCurrentTime(take->timeOfFrame(frame));
-        const QImage image = view->grabFramebuffer(); // renders the current pose
-        if (image.isNull() || !image.save(QDir(folder).filePath(QStringLiteral("frame_%1.png").arg(frame, 5, 10, QLatin1Char('0')))))
-            break;
-        ++written;
+    if (!take) {
+        refused.error = tr("There is no take to export: choose take A in the corpus browser.");
+        return refused;
     }
-    m_document->setCurrentTime(restore);
-    return written;
+    const int lastAvailable = int(std::lround(m_document->duration() * take->rateHz));
+    const int lastFrame = options.lastFrame < 0 ? lastAvailable : options.lastFrame;
+    if (options.firstFrame < 0 || options.firstFrame > lastFrame || lastFrame > lastAvailable) {
+        refused.error = tr("Frames %1 to %2 cannot be exported: take A has frames 0 to %3.")
+                            .arg(options.firstFrame).arg(lastFrame).arg(lastAvailable);
+        return refused;
+    }
+    const FramePlan plan = planFrames(take->rateHz, options.firstFrame, lastFrame, options.fps);
+
+    // At the view's own size the view itself is grabbed (what you see); else an offscreen copy.
+    auto* view = m_viewportPanel->viewport();
+    const qreal ratio = view->devicePixelRatioF();
+    const QSize viewPixels(int(std::lround(view->width() * ratio)), int(std::lround(view->height() * ratio)));
+    std::unique_ptr<OffscreenView> offscreen;
+    FrameRenderer render;
+    if (options.size.isEmpty() && view->isVisible()) {
+        render = [this, view](double seconds) {
+            m_document->setCurrentTime(seconds);
+            return view->grabFramebuffer(); // renders the current pose
+        };
+    } else {
+        std::vector<analysis::Take> takes;
+        for (TakeSlot slot : {TakeSlot::A, TakeSlot::B})
+            if (TakePointer shown = m_document->selectedTake(slot); shown && analysis::hasPuppetLayout(*shown))
+                takes.push_back(*shown);
+        const std::optional<render::Camera> camera =
+            view->renderer() ? std::optional<render::Camera>(view->camera()) : std::nullopt;
+        auto made = OffscreenView::create(std::move(takes), camera, view->visibility(),
+                                          options.size.isEmpty() ? viewPixels : options.size);
+        if (!made) {
+            refused.error = tr("Cannot draw the 3D view offscreen: %1").arg(QString::fromStdString(made.error().message));
+            return refused;
+        }
+        offscreen = std::move(made.value());
+        render = [&offscreen](double seconds) { return offscreen->render(seconds); };
+    }
+
+    std::unique_ptr<QProgressDialog> dialog;
+    ExportProgress report = progress;
+    if (!report) {
+        dialog = std::make_unique<QProgressDialog>(tr("Exporting the 3D view to %1...").arg(QFileInfo(options.output).fileName()),
+                                                   tr("Cancel"), 0, int(plan.times.size()), this);
+        dialog->setObjectName("videoExportProgress");
+        dialog->setWindowTitle(tr("Export 3D View Video"));
+        dialog->setWindowModality(Qt::WindowModal);
+        dialog->setMinimumDuration(0);
+        report = [&dialog](int done, int) {
+            dialog->setValue(done);
+            return !dialog->wasCanceled();
+        };
+    }
+
+    const bool wasPlaying = m_playback->playing();
+    const double restoreTime = m_document->currentTime();
+    m_playback->setPlaying(false);
+    VideoExportResult result = exportFrames(options, plan, render, report);
+    offscreen.reset();
+    dialog.reset();
+    m_document->setCurrentTime(restoreTime);
+    m_playback->setPlaying(wasPlaying);
+
+    if (result.cancelled)
+        m_status->setText(tr("Export cancelled: nothing was written"));
+    else if (!result.ok())
+        m_status->setText(tr("Export failed: %1").arg(result.error.section(QLatin1Char('\n'), 0, 0)));
+    else
+        m_status->setText(tr("Wrote %1 frames to %2").arg(result.frames).arg(result.output));
+    return result;
+}
+
+void MainWindow::chooseViewVideo()
+{
+    const TakePointer take = m_document->selectedTake(TakeSlot::A);
+    if (!take) {
+        QMessageBox::information(this, tr("Export 3D View Video"), tr("Choose take A in the corpus browser first."));
+        return;
+    }
+    auto* view = m_viewportPanel->viewport();
+    VideoExportLimits limits;
+    limits.lastFrame = int(std::lround(m_document->duration() * take->rateHz));
+    limits.rateHz = take->rateHz;
+    limits.viewSize = QSize(int(std::lround(view->width() * view->devicePixelRatioF())),
+                            int(std::lround(view->height() * view->devicePixelRatioF())));
+    VideoExportDialog dialog(limits, this);
+    if (dialog.exec() != QDialog::Accepted) return;
+    const VideoExportResult result = exportViewVideo(dialog.options());
+    if (!result.ok() && !result.cancelled) QMessageBox::warning(this, tr("Export 3D View Video"), result.error);
 }
 
 void MainWindow::chooseScreenshot()

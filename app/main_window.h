@@ -5,6 +5,7 @@
 /// (FileController, PlaybackController) and undo commands.
 
 #include "app/document.h"
+#include "app/video_export.h"
 
 #include <QMainWindow>
 #include <QSet>
@@ -66,8 +67,15 @@ public:
     /// Grabs `widget` (the whole window when null) into an image file (PNG by extension).
     bool saveScreenshot(const QString& file, QWidget* widget = nullptr);
     /// Writes every frame of take A as seen in the 3D view to `folder`/frame_00000.png ...
-    /// (for a video: ffmpeg -framerate 5 -i frame_%05d.png out.mp4). Returns the frames written.
+    /// (exportViewVideo with a PNG sequence at the view's size). Returns the frames written.
     int exportViewFrames(const QString& folder);
+    /// Exports the 3D view over a frame range of take A (frames at take A's rate, both takes
+    /// shown) as an MP4 or a PNG sequence, without asking anything. At the view's size the view
+    /// itself is grabbed (what you see); at another size, or with the view hidden, an offscreen
+    /// renderer draws the same takes, camera and toggles. `progress` (done, total) returns false
+    /// to cancel; without it a QProgressDialog with Cancel ("videoExportProgress") shows. The
+    /// document's time and playback are restored afterwards; on cancel or error nothing is left.
+    VideoExportResult exportViewVideo(const VideoExportOptions& options, const ExportProgress& progress = {});
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -87,6 +95,8 @@ private:
     void refreshTime(double seconds);
     void updateTitle();
     void chooseScreenshot();
+    /// File > Export 3D View Video...: the dialog, the export, then a message on error.
+    void chooseViewVideo();
     QVariantMap viewState() const;
     void restoreViewState(const QVariantMap& state);
 

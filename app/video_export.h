@@ -1,0 +1,79 @@
+#pragma once
+/// Export of the 3D view as a video: which frames (a frame range of take A, resampled to any
+/// frame rate), and where they go (an MP4 H.264 file through ffmpeg, or a PNG sequence). The
+/// caller renders each frame (the view's grabFramebuffer or an OffscreenRenderer); this file
+/// plans the times, streams the images to a FrameSink and cleans up on cancel or error, so a
+/// half-written result never stays on disk.
+
+#include "analysis/core/result.h"
+
+#include <QImage>
+#include <QSize>
+#include <QString>
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace bunraku::app {
+
+enum class VideoFormat {
+    Mp4,         ///< one .mp4 file, H.264 (libx264, yuv420p) encoded by ffmpeg on PATH
+    PngSequence, ///< a folder of frame_00000.png, frame_00001.png, ...
+};
+
+struct VideoExportOptions {
+    VideoFormat format = VideoFormat::Mp4;
+    int firstFrame = 0; ///< first exported frame of take A (at the take's rate), inclusive
+    int lastFrame = -1; ///< last exported frame of take A, inclusive; -1 = the end of the take
+    double fps = 0.0;   ///< frames per second of the output; 0 = the take's own rate
+    QSize size;         ///< output pixels; empty = the 3D view's size (made even for MP4)
+    QString output;     ///< the .mp4 file, or the folder for the PNG frames
+};
+
+struct VideoExportResult {
+    int frames = 0;         ///< frames in the finished output (0 on error or cancel)
+    QString output;         ///< the file or folder written
+    QString error;          ///< what went wrong, for a person; empty on success and on cancel
+    bool cancelled = false; ///< the user stopped it; nothing was left on disk
+    bool ok() const { return error.isEmpty() && !cancelled; }
+};
+
+/// The frames of one export.
+struct FramePlan {
+    std::vector<double> times; ///< seconds on the document's timeline, increasing
+    double fps = 0.0;          ///< frames per second of the output
+};
+
+/// From firstFrame / rateHz to lastFrame / rateHz (both included when on the grid) in steps of
+/// 1 / fps; fps <= 0 exports every take frame at the take's rate. Empty when lastFrame <
+/// firstFrame or rateHz <= 0. A higher fps repeats take frames (the view shows the nearest one).
+FramePlan planFrames(double rateHz, int firstFrame, int lastFrame, double fps);
+
+/// Where the frames of one export go. open() once, write() each frame (all of the size given to
+/// open), then finish() to publish the result, or abort() to remove everything written.
+class FrameSink {
+public:
+    virtual ~FrameSink() = default;
+    virtual analysis::Status open(QSize size, double fps) = 0;
+    virtual analysis::Status write(const QImage& image) = 0;
+    virtual analysis::Status finish() = 0;
+    virtual void abort() = 0;
+};
+
+/// PNG files frame_00000.png ... in `folder` (created if needed); each file is written
+/// atomically (QSaveFile); abort() removes the frames this sink wrote.
+std::unique_ptr<FrameSink> makePngSequenceSink(const QString& folder);
+
+/// Renders the scene at `seconds`; a null image stops the export with an error.
+using FrameRenderer = std::function<QImage(double seconds)>;
+/// Called before each frame and after the last with (frames done, total); false cancels.
+using ExportProgress = std::function<bool(int done, int total)>;
+
+/// Renders the planned frames one by one into the sink of `options` (MP4 or PNG; options.fps and
+/// the range are already in `plan`). Every image is brought to options.size (the first image's
+/// size when empty, cropped to even dimensions for MP4). Checks for ffmpeg before rendering.
+VideoExportResult exportFrames(const VideoExportOptions& options, const FramePlan& plan,
+                               const FrameRenderer& render, const ExportProgress& progress = {});
+
+} // namespace bunraku::app
