@@ -13,10 +13,18 @@
 #include <QHBoxLayout>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 namespace bunraku::app {
 namespace {
 
 using AxisPoses = std::vector<std::vector<analysis::RigidTransform>>;
+
+/// A finished axis job: the takes it computed for and their axes (empty where it failed).
+struct AxisResult {
+    std::vector<TakePointer> takes;
+    AxisPoses axes;
+};
 
 render::SceneContent sceneOf(const std::vector<TakePointer>& takes, const AxisPoses& axes)
 {
@@ -78,18 +86,21 @@ ViewportPanel::ViewportPanel(Document& document, QWidget* parent) : QWidget(pare
             if (takes.empty()) return {};
             return [takes](const analysis::RunControl& control) -> JobOutput {
                 static const analysis::AxisModel model = analysis::makeAxisModel(analysis::defaultBodyDescription());
-                AxisPoses axes;
+                AxisResult result{takes, {}};
                 for (const auto& take : takes) {
                     auto axis = analysis::computeMotionAxis(model, *take, {}, control);
-                    axes.push_back(axis ? axis->world_T_axis : std::vector<analysis::RigidTransform>{});
+                    result.axes.push_back(axis ? axis->world_T_axis : std::vector<analysis::RigidTransform>{});
                 }
-                return {axes, {}};
+                return {result, {}};
             };
         },
         [this](const JobOutput& output) {
             if (!output.value.has_value()) return;
+            const auto result = std::any_cast<AxisResult>(output.value);
+            m_knownAxes.clear();
+            for (std::size_t i = 0; i < result.takes.size(); ++i) m_knownAxes.emplace_back(result.takes[i], result.axes[i]);
             const auto takes = shownTakes(m_document);
-            const auto axes = std::any_cast<AxisPoses>(output.value);
+            const auto axes = result.axes;
             m_viewport->setScene(sceneOf(takes, axes));
             m_viewport->setTime(m_document.currentTime());
             // The motion axis of the first take is a take too: its 6 channels can be graphed.
@@ -107,13 +118,9 @@ ViewportPanel::ViewportPanel(Document& document, QWidget* parent) : QWidget(pare
         this, 60, [this] { return m_sceneSerial; });
     m_axes->setObjectName(tr("Motion axis"));
 
-    // Uploading a scene costs far more than posing it: rebuild at most every 40 ms.
-    m_rebuild.setSingleShot(true);
-    m_rebuild.setInterval(40);
-    connect(&m_rebuild, &QTimer::timeout, this, &ViewportPanel::rebuildScene);
-    connect(&document, &Document::selectionChanged, this, [this] {
-        if (!m_rebuild.isActive()) m_rebuild.start();
-    });
+    // Uploading a scene costs about one frame (it happens once, at the next paint, however many
+    // scenes were set before it): a changed take shows at once.
+    connect(&document, &Document::selectionChanged, this, &ViewportPanel::rebuildScene);
     connect(&document, &Document::corpusChanged, this, &ViewportPanel::rebuildScene);
     connect(&document, &Document::currentTimeChanged, m_viewport, &widgets::ViewportWidget::setTime);
     // A body part (face, torso, ...) selects the graphs of the take part that drives it.
@@ -133,7 +140,12 @@ void ViewportPanel::rebuildScene()
     const auto takes = shownTakes(m_document);
     if (takes.empty()) return;
     ++m_sceneSerial;
-    m_viewport->setScene(sceneOf(takes, {}));
+    AxisPoses axes; // the known axes of takes that did not change; the others are recomputed
+    for (const auto& take : takes) {
+        const auto known = std::find_if(m_knownAxes.begin(), m_knownAxes.end(), [&](const auto& entry) { return entry.first == take; });
+        axes.push_back(known != m_knownAxes.end() ? known->second : std::vector<analysis::RigidTransform>{});
+    }
+    m_viewport->setScene(sceneOf(takes, axes));
     m_viewport->setTime(m_document.currentTime());
     m_axes->schedule();
 }

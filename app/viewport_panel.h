@@ -2,11 +2,17 @@
 /// The 3D view dock: the renderer's ViewportWidget showing take A (and B side by side), with
 /// toggles for the puppet, the motion axis, the orbits and the floor grid. The motion axes are
 /// computed in the background and added when ready; a click on a part selects its graphs.
+/// A changed take (a designed take on every step of a warp drag) is shown at the next paint:
+/// replacing the scene costs about one frame, so changes are not delayed.
 
 #include "app/document.h"
 
-#include <QTimer>
+#include "analysis/core/pose.h"
+
 #include <QWidget>
+
+#include <utility>
+#include <vector>
 
 class QCheckBox;
 
@@ -43,7 +49,9 @@ private:
     QCheckBox* m_grid = nullptr;
     quint64 m_sceneSerial = 0;
     TakePointer m_axisSource; ///< the take whose motion axis was last published
-    QTimer m_rebuild; ///< coalesces scene rebuilds (a live take changes on every drag step)
+    /// The motion axis (world_T_axis per frame) of each take it was last computed for: a rebuilt
+    /// scene keeps the axes of takes that did not change.
+    std::vector<std::pair<TakePointer, std::vector<analysis::RigidTransform>>> m_knownAxes;
 };
 
 } // namespace bunraku::app

@@ -47,7 +47,7 @@ analysis::Result<std::unique_ptr<OffscreenRenderer>> OffscreenRenderer::create(c
 OffscreenRenderer::~OffscreenRenderer()
 {
     if (m_context && makeCurrent()) {
-        m_framebuffer.reset();
+        m_framebuffers.clear();
         m_renderer.release();
         m_context->doneCurrent();
     }
@@ -55,28 +55,36 @@ OffscreenRenderer::~OffscreenRenderer()
 
 bool OffscreenRenderer::makeCurrent() { return m_context && m_context->makeCurrent(m_surface.get()); }
 
+void OffscreenRenderer::doneCurrent()
+{
+    if (m_context) m_context->doneCurrent();
+}
+
 analysis::Status OffscreenRenderer::setScene(const SceneContent& scene, const LayoutOptions& layout)
 {
     if (!makeCurrent()) return analysis::makeError(analysis::ErrorCode::Unsupported, "lost the OpenGL context");
     return m_renderer.setScene(scene, layout);
 }
 
-QOpenGLFramebufferObject& OffscreenRenderer::framebuffer(QSize size)
+QOpenGLFramebufferObject& OffscreenRenderer::framebuffer(QSize size, int samples)
 {
-    if (!m_framebuffer || m_framebuffer->size() != size) {
+    auto& framebuffer = m_framebuffers[samples];
+    if (!framebuffer || framebuffer->size() != size) {
         QOpenGLFramebufferObjectFormat format;
         format.setAttachment(QOpenGLFramebufferObject::Depth);
-        format.setSamples(m_options.samples);
+        format.setSamples(samples);
         format.setInternalTextureFormat(GL_RGBA8);
-        m_framebuffer = std::make_unique<QOpenGLFramebufferObject>(size, format);
+        framebuffer = std::make_unique<QOpenGLFramebufferObject>(size, format);
     }
-    return *m_framebuffer;
+    return *framebuffer;
 }
 
-QImage OffscreenRenderer::render(const Camera& camera, QSize size)
+QImage OffscreenRenderer::render(const Camera& camera, QSize size) { return render(camera, size, m_options.samples); }
+
+QImage OffscreenRenderer::render(const Camera& camera, QSize size, int samples)
 {
     if (size.isEmpty() || !makeCurrent()) return {};
-    QOpenGLFramebufferObject& target = framebuffer(size);
+    QOpenGLFramebufferObject& target = framebuffer(size, samples);
     target.bind();
     m_renderer.render(camera, size);
     QImage image = target.toImage();
@@ -87,7 +95,7 @@ QImage OffscreenRenderer::render(const Camera& camera, QSize size)
 void OffscreenRenderer::draw(const Camera& camera, QSize size)
 {
     if (size.isEmpty() || !makeCurrent()) return;
-    QOpenGLFramebufferObject& target = framebuffer(size);
+    QOpenGLFramebufferObject& target = framebuffer(size, m_options.samples);
     target.bind();
     m_renderer.render(camera, size);
     target.release();

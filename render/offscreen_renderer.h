@@ -8,6 +8,7 @@
 
 #include <QImage>
 
+#include <map>
 #include <memory>
 
 class QOffscreenSurface;
@@ -33,10 +34,16 @@ public:
     Renderer& renderer() { return m_renderer; }
     /// Makes the offscreen context current (the methods below do it themselves).
     bool makeCurrent();
+    /// Releases the offscreen context from this thread (after makeCurrent, when done).
+    void doneCurrent();
 
     analysis::Status setScene(const SceneContent& scene, const LayoutOptions& layout = {});
     /// One image of `size` pixels (ARGB32, opaque).
     QImage render(const Camera& camera, QSize size);
+    /// The same with `samples` multisampling instead of OffscreenOptions::samples (an
+    /// interactive view draws moving frames with 0, then the still frame with its usual count);
+    /// one framebuffer is kept per sample count.
+    QImage render(const Camera& camera, QSize size, int samples);
     /// Draws into the framebuffer without reading it back (what a widget's frame costs).
     void draw(const Camera& camera, QSize size);
     std::optional<PickResult> pick(const Camera& camera, QSize size, QPoint pixel);
@@ -46,12 +53,12 @@ public:
 
 private:
     explicit OffscreenRenderer(const OffscreenOptions& options);
-    QOpenGLFramebufferObject& framebuffer(QSize size);
+    QOpenGLFramebufferObject& framebuffer(QSize size, int samples);
 
     OffscreenOptions m_options;
     std::unique_ptr<QOffscreenSurface> m_surface;
     std::unique_ptr<QOpenGLContext> m_context;
-    std::unique_ptr<QOpenGLFramebufferObject> m_framebuffer;
+    std::map<int, std::unique_ptr<QOpenGLFramebufferObject>> m_framebuffers; ///< by sample count
     Renderer m_renderer;
 };
 

@@ -14,6 +14,7 @@ namespace bunraku::widgets {
 namespace {
 
 constexpr const char* kCursorLayer = "cursor";
+constexpr const char* kLiveLayer = "live";
 
 bool sameCells(const std::vector<GraphCell>& a, const std::vector<GraphCell>& b)
 {
@@ -47,7 +48,10 @@ GraphGrid::GraphGrid(QWidget* parent) : QWidget(parent), m_plot(new QCustomPlot(
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_plot);
     m_plot->setObjectName("graphPlot");
-    m_plot->addLayer(kCursorLayer, m_plot->layer("axes"), QCustomPlot::limAbove);
+    // Paint buffers: [background grid main axes] [live] [cursor] [legend overlay].
+    m_plot->addLayer(kLiveLayer, m_plot->layer("axes"), QCustomPlot::limAbove);
+    m_plot->layer(kLiveLayer)->setMode(QCPLayer::lmBuffered);
+    m_plot->addLayer(kCursorLayer, m_plot->layer(kLiveLayer), QCustomPlot::limAbove);
     m_plot->layer(kCursorLayer)->setMode(QCPLayer::lmBuffered);
     m_plot->setInteractions(QCP::iRangeZoom);
     m_plot->setNoAntialiasingOnDrag(true);
@@ -58,6 +62,11 @@ GraphGrid::GraphGrid(QWidget* parent) : QWidget(parent), m_plot(new QCustomPlot(
     connect(m_plot, &QCustomPlot::mouseMove, this, &GraphGrid::onMouseMove);
     connect(m_plot, &QCustomPlot::mouseRelease, this, &GraphGrid::onMouseRelease);
     connect(m_plot, &QCustomPlot::mouseDoubleClick, this, [this](QMouseEvent*) { resetTimeRange(); });
+    m_settle.setSingleShot(true);
+    m_settle.setInterval(kSettleMs);
+    connect(&m_settle, &QTimer::timeout, this, [this] {
+        if (!interactionActive()) settleValueRanges();
+    });
 }
 
 GraphGrid::~GraphGrid() = default;
@@ -69,8 +78,26 @@ void GraphGrid::setTakes(std::shared_ptr<const analysis::Take> takeA, std::share
     const bool firstTakes = !m_takes[0];
     m_takes[0] = std::move(takeA);
     m_takes[1] = std::move(takeB);
-    rebuild();
+    rebuild(false);
     if (firstTakes) resetTimeRange();
+}
+
+void GraphGrid::beginInteraction() { m_interacting = true; }
+
+void GraphGrid::endInteraction()
+{
+    if (!m_interacting) return;
+    m_interacting = false;
+    settleValueRanges();
+}
+
+void GraphGrid::settleValueRanges()
+{
+    m_settle.stop();
+    if (!m_rangesStale) return;
+    m_rangesStale = false;
+    applyValueRanges();
+    m_plot->replot();
 }
 
 void GraphGrid::setGhost(std::shared_ptr<const analysis::Take> ghost)
@@ -101,12 +128,13 @@ void GraphGrid::setValueScale(ValueScale scale)
 
 void GraphGrid::setSelectedChannel(const std::string& part, const std::string& dof)
 {
+    if (part == m_options.selectedPart && dof == m_options.selectedDof) return;
     m_options.selectedPart = part;
     m_options.selectedDof = dof;
     if (m_options.layout != GraphLayout::AllChannels) rebuild();
 }
 
-void GraphGrid::rebuild()
+void GraphGrid::rebuild(bool allData)
 {
     m_options.hasTakeB = m_takes[1] != nullptr;
     const std::vector<GraphCell> cells = m_takes[0] ? layoutGraphs(m_takes[0]->channels, m_options) : std::vector<GraphCell>{};
@@ -157,7 +185,8 @@ void GraphGrid::rebuild()
             for (int slot = 0; slot < 2; ++slot) {
                 if (!drawsSlot(cell.takes, slot)) continue;
                 graph.curves[slot] = m_plot->addGraph(timeAxis, valueAxis);
-                graph.curves[slot]->setPen(QPen(slot == 0 ? m_colours.takeA : m_colours.takeB, 1.4));
+                graph.curves[slot]->setLayer(kLiveLayer);
+                graph.curves[slot]->setPen(QPen(slot == 0 ? m_colours.takeA : m_colours.takeB, 1.0));
             }
 
             auto* name = new QCPItemText(m_plot);
@@ -197,22 +226,30 @@ void GraphGrid::rebuild()
             m_plot->setCurrentLayer("main");
             m_graphs.push_back(graph);
         }
+        allData = true;
     }
 
-    // Data: per curve, the channel of its take matched by name.
+    // Data: per curve, the channel of its take matched by name; only takes that changed.
+    const bool changed[2] = {allData || m_plotted[0] != m_takes[0], allData || m_plotted[1] != m_takes[1]};
+    QVector<double> times[2];
+    for (int slot = 0; slot < 2; ++slot) {
+        m_plotted[slot] = m_takes[slot];
+        if (changed[slot] && m_takes[slot]) times[slot] = frameTimes(*m_takes[slot]);
+    }
     const QVector<double> noData;
     for (auto& graph : m_graphs) {
         for (int slot = 0; slot < 2; ++slot) {
+            if (!changed[slot]) continue;
             graph.channels[slot].reset();
             if (!graph.curves[slot]) continue;
             const analysis::Take* take = slotTake(slot);
             if (take) graph.channels[slot] = findChannel(*take, graph.cell.part, graph.cell.dof);
             if (take && graph.channels[slot])
-                graph.curves[slot]->setData(frameTimes(*take), channelValues(*take, *graph.channels[slot]), true);
+                graph.curves[slot]->setData(times[slot], channelValues(*take, *graph.channels[slot]), true);
             else
                 graph.curves[slot]->setData(noData, noData);
         }
-        if (graph.ghost) {
+        if (graph.ghost && allData) {
             graph.ghostChannel = findChannel(*m_ghost, graph.cell.part, graph.cell.dof);
             if (graph.ghostChannel)
                 graph.ghost->setData(frameTimes(*m_ghost), channelValues(*m_ghost, *graph.ghostChannel), true);
@@ -220,8 +257,27 @@ void GraphGrid::rebuild()
                 graph.ghost->setData(noData, noData);
         }
     }
-    applyValueRanges();
     updateCursorItems();
+    if (!allData && !changed[0] && !changed[1]) {
+        m_plot->layer(kCursorLayer)->replot(); // the same takes again: nothing to redraw
+        return;
+    }
+    if (!allData) {
+        const bool burst = m_sinceData.isValid() && m_sinceData.elapsed() < kSettleMs;
+        m_sinceData.restart();
+        if (interactionActive() || burst) {
+            // Only the curves of A and B changed and the value ranges are held: the axes,
+            // ticks, labels and ghost in the layers below stay as they are.
+            m_rangesStale = true;
+            if (!interactionActive()) m_settle.start();
+            m_plot->layer(kLiveLayer)->replot();
+            m_plot->layer(kCursorLayer)->replot();
+            return;
+        }
+    }
+    m_rangesStale = false;
+    m_settle.stop();
+    applyValueRanges();
     m_plot->replot();
 }
 

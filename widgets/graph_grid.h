@@ -2,7 +2,12 @@
 /// The synchronised graphs of one or two takes (thesis digest section 6): value against time
 /// per channel, each with a moving point and its value at the current time. All graphs live in
 /// one QCustomPlot (one axis rect per graph). The time cursor, points and values sit on their own
-/// buffered layer "cursor", so moving the time replots only that layer, never the curves.
+/// buffered layer "cursor", so moving the time replots only that layer, never the curves. The
+/// curves of takes A and B sit on the buffered layer "live" (the ghost, grid, axes and labels
+/// below it): while the value ranges are held, new data for A or B (a designed take during a
+/// warp drag) replots only that layer and the cursor layer. Ranges are held during an
+/// interaction (beginInteraction/endInteraction) and for a burst of data changes less than
+/// kSettleMs apart; they autoscale once when it ends (a full replot).
 /// Zoom (wheel) and pan (middle or Shift+left drag) on time are shared by every graph; a left
 /// press or drag in any graph scrubs (timeScrubbed); a double click resets the time range.
 
@@ -11,6 +16,8 @@
 #include "analysis/core/take.h"
 
 #include <QColor>
+#include <QElapsedTimer>
+#include <QTimer>
 #include <QWidget>
 
 #include <memory>
@@ -60,6 +67,18 @@ public:
     TwoTakeMode twoTakeMode() const { return m_options.twoTakeMode; }
     ValueScale valueScale() const { return m_scale; }
 
+    /// A drag that changes the takes' data on every step begins: until endInteraction, every
+    /// graph keeps its value range, so new data of A or B replots only the "live" and "cursor"
+    /// layers (not the axes, ticks and labels of every graph). Calls do not nest (like
+    /// app::Document's): a second begin is ignored.
+    void beginInteraction();
+    /// The interaction ends: value ranges autoscale once (a full replot) if data changed.
+    void endInteraction();
+    bool interactionActive() const { return m_interacting; }
+    /// Data changes closer together than this (ms) form a burst that holds the value ranges;
+    /// this long after the last one, the ranges autoscale.
+    static constexpr int kSettleMs = 250;
+
     /// Moves the time cursor (seconds) and replots only the cursor layer.
     void setCursorTime(double seconds);
     double cursorTime() const { return m_cursorTime; }
@@ -102,8 +121,12 @@ private:
         QCPItemText* valueText = nullptr;
     };
 
-    void rebuild();
+    /// Rebuilds the graphs when the layout changed, else updates the curves whose take changed
+    /// (all of them when `allData`).
+    void rebuild(bool allData = true);
     void applyValueRanges();
+    /// Autoscales and replots if data changed while the ranges were held.
+    void settleValueRanges();
     void updateCursorItems();
     void onMousePress(QMouseEvent* event);
     void onMouseMove(QMouseEvent* event);
@@ -114,6 +137,11 @@ private:
     QCustomPlot* m_plot = nullptr;
     std::shared_ptr<const analysis::Take> m_takes[2];
     std::shared_ptr<const analysis::Take> m_ghost;
+    std::shared_ptr<const analysis::Take> m_plotted[2]; ///< the takes whose data the curves hold
+    bool m_interacting = false;
+    bool m_rangesStale = false; ///< data changed while the ranges were held
+    QElapsedTimer m_sinceData;  ///< since the last change of A's or B's data
+    QTimer m_settle;            ///< autoscales after a burst of data changes
     GraphLayoutOptions m_options;
     ValueScale m_scale = ValueScale::PerGraph;
     GraphColours m_colours;

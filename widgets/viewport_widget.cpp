@@ -3,7 +3,7 @@
 #include "render/offscreen_renderer.h"
 
 #include <QMouseEvent>
-#include <QOpenGLContext>
+#include <QPainter>
 #include <QWheelEvent>
 
 #include <cmath>
@@ -15,24 +15,52 @@ constexpr float kDegreesPerPixel = 0.4f;
 constexpr int kClickSlopPixels = 4; // a press and release closer than this is a click
 } // namespace
 
-ViewportWidget::ViewportWidget(QWidget* parent, int samples) : QOpenGLWidget(parent)
+ViewportWidget::ViewportWidget(QWidget* parent, int samples) : QWidget(parent), m_samples(samples)
 {
-    setFormat(render::rendererSurfaceFormat(samples));
     setMinimumSize(160, 120);
     setFocusPolicy(Qt::StrongFocus);
+    // Every paint covers the whole widget with the rendered image: no background fill needed.
+    setAttribute(Qt::WA_OpaquePaintEvent);
+    m_settle.setSingleShot(true);
+    m_settle.setInterval(kSettleMs);
+    connect(&m_settle, &QTimer::timeout, this, [this] {
+        if (m_imageSamples == m_samples) return;
+        m_imageStale = true;
+        repaint(); // m_sinceFrame is at least kSettleMs old: a full-quality frame
+    });
 }
 
-ViewportWidget::~ViewportWidget() { releaseRenderer(); }
+ViewportWidget::~ViewportWidget() = default; // the OffscreenRenderer frees its GL objects
 
-void ViewportWidget::releaseRenderer()
+const render::Renderer* ViewportWidget::renderer() const { return m_offscreen ? &m_offscreen->renderer() : nullptr; }
+
+bool ViewportWidget::ensureRenderer()
 {
-    if (!m_renderer) return;
-    if (context() != nullptr) {
-        makeCurrent();
-        m_renderer->release();
-        doneCurrent();
+    if (m_offscreen) return true;
+    if (m_unavailable) return false;
+    auto made = render::OffscreenRenderer::create(render::OffscreenOptions{m_samples});
+    if (!made) {
+        m_unavailable = true;
+        m_error = QString::fromStdString(made.error().message);
+        emit renderError(m_error);
+        return false;
     }
-    m_renderer.reset();
+    m_offscreen = std::move(*made);
+    m_sceneUploaded = false;
+    return true;
+}
+
+bool ViewportWidget::makeCurrent() { return ensureRenderer() && m_offscreen->makeCurrent(); }
+
+void ViewportWidget::doneCurrent()
+{
+    if (m_offscreen) m_offscreen->doneCurrent();
+}
+
+void ViewportWidget::invalidate()
+{
+    m_imageStale = true;
+    update();
 }
 
 void ViewportWidget::setScene(render::SceneContent scene, const render::LayoutOptions& layout)
@@ -40,13 +68,13 @@ void ViewportWidget::setScene(render::SceneContent scene, const render::LayoutOp
     m_scene = std::move(scene);
     m_sceneUploaded = false;
     m_layout = layout;
-    update();
+    invalidate();
 }
 
 void ViewportWidget::setVisibility(const render::SceneVisibility& visibility)
 {
     m_visibility = visibility;
-    update();
+    invalidate();
 }
 
 void ViewportWidget::setCamera(const render::Camera& camera)
@@ -54,7 +82,7 @@ void ViewportWidget::setCamera(const render::Camera& camera)
     m_camera = camera;
     m_cameraChosen = true;
     emit cameraChanged();
-    update();
+    invalidate();
 }
 
 void ViewportWidget::setCameraPreset(render::CameraPreset preset) { setCamera(m_camera.withPreset(preset)); }
@@ -63,27 +91,13 @@ void ViewportWidget::setFrame(int frame)
 {
     m_frame = frame;
     m_time.reset();
-    update();
+    invalidate();
 }
 
 void ViewportWidget::setTime(double seconds)
 {
     m_time = seconds;
-    update();
-}
-
-void ViewportWidget::initializeGL()
-{
-    m_renderer = std::make_unique<render::Renderer>();
-    m_sceneUploaded = false;
-    if (auto status = m_renderer->initialize(); !status.ok()) {
-        emit renderError(QString::fromStdString(status.error().message));
-        m_renderer.reset();
-        return;
-    }
-    // The context goes away with the widget's window: free GL objects while it is current.
-    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &ViewportWidget::releaseRenderer,
-            Qt::UniqueConnection);
+    invalidate();
 }
 
 QSize ViewportWidget::pixelSize() const
@@ -92,24 +106,61 @@ QSize ViewportWidget::pixelSize() const
     return {int(std::lround(width() * ratio)), int(std::lround(height() * ratio))};
 }
 
-void ViewportWidget::paintGL()
+void ViewportWidget::prepareFrame()
 {
-    if (!m_renderer) return;
+    render::Renderer& renderer = m_offscreen->renderer();
     if (m_scene && !m_sceneUploaded) {
-        const auto status = m_renderer->setScene(*m_scene, m_layout);
+        const auto status = m_offscreen->setScene(*m_scene, m_layout);
         m_sceneUploaded = true;
+        m_scene.reset(); // the renderer keeps what it needs; the context never changes
         if (!status.ok()) emit renderError(QString::fromStdString(status.error().message));
         else if (!m_cameraChosen) {
-            m_camera = m_renderer->framingCamera();
+            m_camera = renderer.framingCamera();
             emit cameraChanged();
         }
     }
-    if (m_renderer->hasScene()) {
-        m_renderer->setVisibility(m_visibility);
-        if (m_time) m_renderer->setTime(*m_time);
-        else m_renderer->setFrame(m_frame);
+    if (renderer.hasScene()) {
+        renderer.setVisibility(m_visibility);
+        if (m_time) renderer.setTime(*m_time);
+        else renderer.setFrame(m_frame);
     }
-    m_renderer->render(m_camera, pixelSize());
+}
+
+void ViewportWidget::renderImage(int samples)
+{
+    if (!makeCurrent()) return;
+    prepareFrame();
+    m_image = m_offscreen->render(m_camera, pixelSize(), samples);
+    m_image.setDevicePixelRatio(devicePixelRatioF());
+    m_imageSamples = samples;
+    m_imageStale = false;
+    ++m_renderedFrames;
+    m_sinceFrame.restart();
+    if (samples != m_samples) m_settle.start();
+    else m_settle.stop();
+}
+
+QImage ViewportWidget::grabFramebuffer()
+{
+    renderImage(m_samples);
+    return m_image;
+}
+
+void ViewportWidget::paintEvent(QPaintEvent*)
+{
+    QPainter painter(this);
+    if (m_imageStale || m_image.size() != pixelSize()) {
+        const bool moving = m_sinceFrame.isValid() && m_sinceFrame.elapsed() < kSettleMs;
+        renderImage(moving ? 0 : m_samples);
+    }
+    if (m_image.isNull()) {
+        painter.fillRect(rect(), palette().color(QPalette::Dark));
+        if (m_unavailable)
+            painter.drawText(rect().adjusted(8, 8, -8, -8), Qt::AlignCenter | Qt::TextWordWrap,
+                             tr("The 3D view needs OpenGL 3.3: %1").arg(m_error));
+        return;
+    }
+    painter.drawImage(QPointF(0.0, 0.0), m_image);
 }
 
 void ViewportWidget::mousePressEvent(QMouseEvent* event)
@@ -133,20 +184,19 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event)
         m_camera.panBy(QPointF(delta) * devicePixelRatioF(), pixelSize());
     m_cameraChosen = true;
     emit cameraChanged();
-    update();
+    invalidate();
 }
 
 void ViewportWidget::mouseReleaseEvent(QMouseEvent* event)
 {
     const bool click = !m_dragged && m_dragButton == Qt::LeftButton && event->button() == Qt::LeftButton;
     m_dragButton = Qt::NoButton;
-    if (!click || !m_renderer || !m_renderer->hasScene()) return;
-    makeCurrent();
-    m_renderer->setVisibility(m_visibility);
+    if (!click || !makeCurrent()) return;
+    prepareFrame();
+    if (!m_offscreen->renderer().hasScene()) return;
     const qreal ratio = devicePixelRatioF();
     const QPoint pixel(int(event->position().x() * ratio), int(event->position().y() * ratio));
-    const auto picked = m_renderer->pick(m_camera, pixelSize(), pixel);
-    doneCurrent();
+    const auto picked = m_offscreen->pick(m_camera, pixelSize(), pixel);
     if (picked) emit partPicked(picked->takeSlot, QString::fromStdString(picked->partName));
     else emit backgroundPicked();
 }
@@ -158,7 +208,7 @@ void ViewportWidget::wheelEvent(QWheelEvent* event)
     m_camera.zoomBy(std::pow(1.12f, steps));
     m_cameraChosen = true;
     emit cameraChanged();
-    update();
+    invalidate();
     event->accept();
 }
 

@@ -114,7 +114,9 @@ void WarpCurveEditor::redraw()
     m_plot->xAxis->setRange(-0.02 * xMax, 1.02 * xMax);
     m_plot->yAxis->setRange(-0.02 * yMax, 1.02 * yMax);
     m_marker->setData(QVector<double>{m_currentFrame, m_currentFrame}, QVector<double>{-0.02 * yMax, 1.02 * yMax});
-    m_plot->replot();
+    // Queued: an immediate replot would repaint (and flush the window) once per drag step on top
+    // of the paint the event loop does anyway.
+    m_plot->replot(QCustomPlot::rpQueuedReplot);
 }
 
 QPoint WarpCurveEditor::pointPosition(std::size_t index) const

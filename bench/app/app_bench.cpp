@@ -2,13 +2,20 @@
 // - cursor-only update of 48 graphs (two takes side by side): setCursorTime + a synchronous
 //   repaint of the plot (target < 4 ms per frame), against a full replot of the same graphs;
 // - one playback frame of the whole window with two puppets and 48 graphs;
-// - a warp control-point drag step to the designed take shown in the graphs (target < 16 ms).
+// - a warp control-point drag step to the designed take shown in the graphs and the 3D view
+//   (target < 16 ms; counters: every step changed the take, 3D frames drawn per step);
+// - the 3D view alone: a moving frame, a still (multisampled) frame, a replaced scene.
 #include "app/design_controller.h"
 #include "app/file_controller.h"
 #include "app/main_window.h"
+#include "app/recomputer.h"
+#include "app/viewport_panel.h"
 
 #include "widgets/graph_grid.h"
 #include "widgets/graph_panel.h"
+#include "widgets/viewport_widget.h"
+
+#include "analysis/body/body_description.h"
 
 #include <benchmark/benchmark.h>
 #include <qcustomplot.h>
@@ -18,6 +25,8 @@
 #include <QElapsedTimer>
 #include <QTest>
 
+#include <algorithm>
+#include <map>
 #include <memory>
 
 using namespace bunraku;
@@ -25,6 +34,17 @@ using namespace bunraku;
 namespace {
 
 std::unique_ptr<app::MainWindow> g_window;
+
+/// Waits until no background recomputation (normalisation, decomposition, design, motion axes)
+/// is pending or running: a job still running when a drag starts is made stale by every step
+/// and reruns, so it would load the CPU for the whole measurement.
+void waitIdle(app::MainWindow& main)
+{
+    const auto recomputers = main.findChildren<app::Recomputer*>();
+    (void)QTest::qWaitFor([&] { return std::none_of(recomputers.begin(), recomputers.end(), [](auto* r) { return r->busy(); }); },
+                          120000);
+    QTest::qWait(200);
+}
 
 app::MainWindow& window()
 {
@@ -38,7 +58,7 @@ app::MainWindow& window()
         made->document().selectTake(app::TakeSlot::B, app::Document::corpusTakeId(7));
         made->graphPanel()->setTwoTakeMode(widgets::TwoTakeMode::SideBySide);
         (void)QTest::qWaitFor([&] { return made->design().ready(); }, 60000);
-        QTest::qWait(200);
+        waitIdle(*made);
         return made;
     }();
     return *g_window;
@@ -110,17 +130,91 @@ void fullReplot48Graphs(benchmark::State& state)
 }
 BENCHMARK(fullReplot48Graphs)->Unit(benchmark::kMillisecond);
 
+/// The 3D view alone in its own window, 420 x 900 (about its dock in the window), two puppets;
+/// one per multisampling count (4: the workbench's view, 0: none).
+std::map<int, std::unique_ptr<widgets::ViewportWidget>> g_views;
+
+render::SceneContent demoScene()
+{
+    render::SceneContent scene;
+    scene.body = analysis::defaultBodyDescription();
+    const auto& document = window().document();
+    for (std::size_t index : {0, 7}) scene.takes.push_back(render::TakeSlot{*document.take(app::Document::corpusTakeId(index)), {}});
+    return scene;
+}
+
+widgets::ViewportWidget& standaloneView(int samples)
+{
+    auto& view = g_views[samples];
+    if (!view) view = [samples] {
+        auto made = std::make_unique<widgets::ViewportWidget>(nullptr, samples);
+        made->setScene(demoScene());
+        made->resize(420, 900);
+        made->show();
+        (void)QTest::qWaitForWindowExposed(made.get());
+        made->repaint();
+        return made;
+    }();
+    return *view;
+}
+
+/// One frame of the 3D view while it moves (frames back to back, as in playback or a drag): pose
+/// at a new time, draw (without multisampling: a moving frame), read back and paint.
+/// Argument: the view's samples.
+void viewFrame(benchmark::State& state)
+{
+    auto& view = standaloneView(int(state.range(0)));
+    double t = 0.0;
+    const int before = view.renderedFrameCount();
+    for (auto _ : state) {
+        t = t > 19.0 ? 0.0 : t + 0.2;
+        view.setTime(t);
+        view.repaint();
+    }
+    state.counters["rendered"] = double(view.renderedFrameCount() - before) / double(state.iterations());
+}
+BENCHMARK(viewFrame)->Arg(4)->Arg(0)->Unit(benchmark::kMillisecond);
+
+/// One still frame at the view's multisampling (what grabFramebuffer, frame export and the
+/// redraw after a motion cost). Argument: samples.
+void viewStillFrame(benchmark::State& state)
+{
+    auto& view = standaloneView(int(state.range(0)));
+    double t = 0.0;
+    for (auto _ : state) {
+        t = t > 19.0 ? 0.0 : t + 0.2;
+        view.setTime(t);
+        benchmark::DoNotOptimize(view.grabFramebuffer());
+    }
+}
+BENCHMARK(viewStillFrame)->Arg(4)->Arg(0)->Unit(benchmark::kMillisecond);
+
+/// A new scene (what a changed take costs when the whole scene is replaced), then one frame.
+void viewSceneReplaced(benchmark::State& state)
+{
+    auto& view = standaloneView(int(state.range(0)));
+    const render::SceneContent scene = demoScene();
+    for (auto _ : state) {
+        view.setScene(scene);
+        view.repaint();
+    }
+}
+BENCHMARK(viewSceneReplaced)->Arg(4)->Unit(benchmark::kMillisecond);
+
 /// Argument 1: the 3D view shown (Mesa's software renderer under Xvfb dominates then), 0: hidden.
 void showView(app::MainWindow& main, bool show)
 {
     main.dock(QStringLiteral("viewDock"))->setVisible(show);
     QCoreApplication::processEvents();
+    waitIdle(main);
 }
 
 void playbackFrameTwoPuppets48Graphs(benchmark::State& state)
 {
     auto& main = window();
     showView(main, state.range(0) != 0);
+    const auto* view = main.viewportPanel()->viewport();
+    const int framesBefore = view->renderedFrameCount();
     double t = 0.0;
     for (auto _ : state) {
         t = t > 19.0 ? 0.0 : t + 0.2;
@@ -128,6 +222,7 @@ void playbackFrameTwoPuppets48Graphs(benchmark::State& state)
         QCoreApplication::processEvents(); // every view's queued paint, the 3D view included
     }
     state.counters["graphs"] = main.graphPanel()->grid()->graphCount();
+    state.counters["view_frames"] = double(view->renderedFrameCount() - framesBefore) / double(state.iterations());
 }
 BENCHMARK(playbackFrameTwoPuppets48Graphs)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond);
 
@@ -138,20 +233,48 @@ void warpDragStepToResult(benchmark::State& state)
     showView(main, state.range(0) != 0);
     main.document().selectTake(app::TakeSlot::A, QStringLiteral("live/designed"));
     main.document().selectTake(app::TakeSlot::B, QString()); // 24 graphs, the original as ghost
-    const analysis::WarpCurve base = design.warpCurve();
+    waitIdle(main);
+    // Every run drags the same point of the same curve (the curve as first found; a run that
+    // started where the previous one left the point could clamp every step to no change).
+    static const analysis::WarpCurve base = design.warpCurve();
+    design.editWarp(base);
+    QCoreApplication::processEvents();
+    waitIdle(main);
     const std::size_t index = base.points.size() / 2;
+    int changed = 0;
+    const auto* view = main.viewportPanel()->viewport();
+    const int framesBefore = view->renderedFrameCount();
     int step = 0;
     main.document().beginInteraction();
+    QElapsedTimer clock;
+    double phases[3] = {0.0, 0.0, 0.0}; // edit (synchronous updates), queued events, graph repaint
     for (auto _ : state) {
         step = (step + 1) % 6;
         analysis::WarpPoint proposed = base.points[index];
         proposed.source += step * 0.5;
+        clock.start();
+        const auto before = main.document().selectedTake(app::TakeSlot::A);
         design.editWarp(analysis::moveControlPoint(base, index, proposed));
+        changed += main.document().selectedTake(app::TakeSlot::A) != before ? 1 : 0;
+        phases[0] += double(clock.nsecsElapsed());
+        clock.start();
         QCoreApplication::processEvents(); // queued replots and paints of every view
+        phases[1] += double(clock.nsecsElapsed());
+        clock.start();
         main.graphPanel()->grid()->plot()->repaint();
+        phases[2] += double(clock.nsecsElapsed());
     }
     main.document().endInteraction();
     state.counters["synthesis_ms"] = design.lastSynthesisMilliseconds();
+    const double perStep = 1e6 * double(state.iterations());
+    state.counters["edit_ms"] = phases[0] / perStep;
+    state.counters["events_ms"] = phases[1] / perStep;
+    state.counters["repaint_ms"] = phases[2] / perStep;
+    state.counters["changed"] = double(changed) / double(state.iterations()); // 1: every step redesigned
+    // 3D frames drawn per step (1 when shown: the new pose every step; 0 when hidden).
+    state.counters["view_frames"] = double(view->renderedFrameCount() - framesBefore) / double(state.iterations());
+    design.editWarp(base);
+    QCoreApplication::processEvents();
 }
 BENCHMARK(warpDragStepToResult)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond);
 
@@ -167,6 +290,7 @@ int main(int argc, char** argv)
     benchmark::RunSpecifiedBenchmarks();
     benchmark::Shutdown();
     g_grid.reset(); // before the QApplication goes
+    g_views.clear();
     g_window.reset();
     return 0;
 }

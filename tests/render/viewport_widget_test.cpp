@@ -1,10 +1,14 @@
 // The thin viewport widget: it shows the scene it is given, a click picks the part under the
-// pointer, a left drag orbits the camera and the wheel zooms.
+// pointer, a left drag orbits the camera and the wheel zooms; its window stays raster (the view
+// draws offscreen), so screenshots, docking and floating work like any widget.
 #include "render_test_support.h"
 #include "widgets/viewport_widget.h"
 
+#include <QDockWidget>
+#include <QMainWindow>
 #include <QSignalSpy>
 #include <QTest>
+#include <QWindow>
 
 using namespace bunraku;
 
@@ -42,13 +46,13 @@ TEST_CASE("the viewport shows the puppet and a click on its head picks the head"
     REQUIRE_FALSE(frame.isNull());
     REQUIRE(viewport.renderer() != nullptr);
 
-    // The head's face, where the camera projects it (in widget pixels: device ratio 1 under Xvfb).
+    // The head's face, where the camera projects it (in widget pixels; the image is in device pixels).
     const auto world_T_head = viewport.renderer()->displayedPartTransforms(0, viewport.camera())[0];
     const glm::vec3 face = glm::vec3(world_T_head * glm::vec4(-2.0f, 0.0f, -0.5f, 1.0f));
     const QSize pixels(int(viewport.width() * viewport.devicePixelRatioF()),
                        int(viewport.height() * viewport.devicePixelRatioF()));
     const QPointF pixel = viewport.camera().project(face, pixels).pixel / viewport.devicePixelRatioF();
-    CHECK_FALSE(test::isBackground(frame.pixel(pixel.toPoint())));
+    CHECK_FALSE(test::isBackground(frame.pixel((pixel * viewport.devicePixelRatioF()).toPoint())));
 
     QSignalSpy picked(&viewport, &widgets::ViewportWidget::partPicked);
     QSignalSpy background(&viewport, &widgets::ViewportWidget::backgroundPicked);
@@ -100,4 +104,91 @@ TEST_CASE("a viewport without a chosen camera frames each new scene", "[widgets]
     const auto world_T_shoulder = viewport.renderer()->displayedPartTransforms(0, viewport.camera())[1];
     const auto shoulder = viewport.camera().project(glm::vec3(world_T_shoulder[3]), QSize(320, 240));
     CHECK(QRectF(0, 0, 320, 240).contains(shoulder.pixel));
+}
+
+namespace {
+
+/// The pixel (in widget coordinates) where the viewport's camera shows the head's face.
+QPoint facePixel(const widgets::ViewportWidget& viewport)
+{
+    const auto world_T_head = viewport.renderer()->displayedPartTransforms(0, viewport.camera())[0];
+    const glm::vec3 face = glm::vec3(world_T_head * glm::vec4(-2.0f, 0.0f, -0.5f, 1.0f));
+    const QSize pixels(int(viewport.width() * viewport.devicePixelRatioF()), int(viewport.height() * viewport.devicePixelRatioF()));
+    return (viewport.camera().project(face, pixels).pixel / viewport.devicePixelRatioF()).toPoint();
+}
+
+} // namespace
+
+TEST_CASE("a window holding the viewport stays raster and its screenshot shows the puppet", "[widgets][viewport]")
+{
+    // A QOpenGLWidget would turn its whole top-level window into an OpenGL-composed surface
+    // (every repaint of any neighbour then costs a full-window composition).
+    QMainWindow window;
+    auto* dock = new QDockWidget(QStringLiteral("3D"), &window);
+    auto* viewport = new widgets::ViewportWidget(nullptr, 0);
+    dock->setWidget(viewport);
+    window.addDockWidget(Qt::RightDockWidgetArea, dock);
+    window.setCentralWidget(new QWidget(&window));
+    viewport->setScene(oneTake());
+    viewport->setCamera(frontCamera());
+    window.resize(800, 400);
+    window.show();
+    REQUIRE(QTest::qWaitForWindowExposed(&window));
+    REQUIRE(QTest::qWaitFor([&] { return viewport->renderedFrameCount() > 0; }, 5000));
+    CHECK(window.windowHandle()->surfaceType() == QSurface::RasterSurface);
+    REQUIRE(viewport->renderer() != nullptr);
+
+    // QWidget::grab (the workbench's screenshots) shows the rendered puppet.
+    const QImage screenshot = window.grab().toImage();
+    const QPoint face = facePixel(*viewport);
+    const QPoint inWindow = viewport->mapTo(&window, face) * window.devicePixelRatioF();
+    CHECK_FALSE(test::isBackground(screenshot.pixel(inWindow)));
+    CHECK(test::isBackground(screenshot.pixel(viewport->mapTo(&window, QPoint(3, 3)) * window.devicePixelRatioF())));
+
+    // Floated out of the window, the view keeps drawing and picking.
+    dock->setFloating(true);
+    REQUIRE(QTest::qWaitForWindowExposed(dock));
+    const int drawn = viewport->renderedFrameCount();
+    viewport->setTime(0.2);
+    viewport->repaint();
+    CHECK(viewport->renderedFrameCount() > drawn);
+    QSignalSpy picked(viewport, &widgets::ViewportWidget::partPicked);
+    QTest::mouseClick(viewport, Qt::LeftButton, Qt::NoModifier, facePixel(*viewport));
+    REQUIRE(picked.count() == 1);
+    CHECK(picked.at(0).at(1).toString() == QStringLiteral("head"));
+    const QImage floating = viewport->grabFramebuffer();
+    CHECK(floating.size() == viewport->size() * viewport->devicePixelRatioF());
+    CHECK_FALSE(test::isBackground(floating.pixel(facePixel(*viewport) * viewport->devicePixelRatioF())));
+}
+
+TEST_CASE("quick successive frames skip multisampling and the still frame is redrawn with it", "[widgets][viewport]")
+{
+    widgets::ViewportWidget viewport(nullptr, 4);
+    viewport.resize(320, 240);
+    viewport.setScene(oneTake());
+    viewport.setCamera(frontCamera());
+    viewport.show();
+    REQUIRE(QTest::qWaitForWindowExposed(&viewport));
+    (void)QTest::qWaitFor([&] { return viewport.renderedFrameCount() > 0 && viewport.shownSamples() == 4; }, 5000);
+    REQUIRE(viewport.shownSamples() == 4); // a first (or isolated) frame is drawn at full quality
+
+    // A frame right after another one (playback, a drag): no multisampling, but a new frame.
+    const int drawn = viewport.renderedFrameCount();
+    viewport.setTime(0.4);
+    viewport.repaint();
+    REQUIRE(viewport.renderedFrameCount() == drawn + 1);
+    CHECK(viewport.shownSamples() == 0);
+    CHECK(viewport.renderer()->frame(0) == 2);
+    // A paint without a change reuses the image.
+    viewport.repaint();
+    CHECK(viewport.renderedFrameCount() == drawn + 1);
+    // Once the view is still, the same frame is redrawn with multisampling.
+    REQUIRE(QTest::qWaitFor([&] { return viewport.shownSamples() == 4; }, 5000));
+    CHECK(viewport.renderedFrameCount() >= drawn + 2);
+    CHECK(viewport.renderer()->frame(0) == 2);
+    // Screenshots and frame export always use the view's multisampling.
+    viewport.setTime(0.2);
+    (void)viewport.grabFramebuffer();
+    CHECK(viewport.shownSamples() == 4);
+    CHECK(viewport.renderer()->frame(0) == 1);
 }

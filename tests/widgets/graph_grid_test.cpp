@@ -139,3 +139,88 @@ TEST_CASE("per-DOF scaling gives graphs of one DOF the same value range", "[widg
     // head.x (channel 0, amplitude 1) and hand.x (channel 18, amplitude 19) now differ.
     REQUIRE(grid.graphValueRange(0) != grid.graphValueRange(12 + 6));
 }
+
+namespace {
+
+/// `take` with every value multiplied by `factor` (a new take, as a live result would be).
+std::shared_ptr<analysis::Take> scaled(const analysis::Take& take, double factor)
+{
+    auto result = std::make_shared<analysis::Take>(take);
+    result->values *= factor;
+    return result;
+}
+
+/// The value range autoscaling gives `take`'s graph `graph` (per graph, padded).
+std::pair<double, double> autoscaledRange(const std::shared_ptr<analysis::Take>& take, int graph)
+{
+    widgets::GraphGrid reference;
+    reference.setTakes(take, nullptr);
+    return reference.graphValueRange(graph);
+}
+
+} // namespace
+
+TEST_CASE("during an interaction new data redraws only the curves and value ranges autoscale when it ends",
+          "[widgets][graph_grid]")
+{
+    widgets::GraphGrid grid;
+    const auto original = test::syntheticPuppetTake(60);
+    grid.setTakes(original, nullptr);
+    grid.setGhost(original);
+    showGrid(grid);
+    REQUIRE(grid.graphCount() == 24);
+    REQUIRE(grid.plot()->layer("live")->mode() == QCPLayer::lmBuffered);
+    const auto before = grid.graphValueRange(18);
+    QSignalSpy fullReplots(grid.plot(), &QCustomPlot::beforeReplot);
+
+    grid.beginInteraction();
+    std::shared_ptr<analysis::Take> last;
+    for (double factor : {1.5, 2.0, 3.0}) {
+        last = scaled(*original, factor);
+        grid.setTakes(last, nullptr);
+    }
+    CHECK(fullReplots.count() == 0);
+    CHECK(grid.graphValueRange(18) == before); // held
+    // The curves and the moving points show the new data.
+    grid.setCursorTime(2.0);
+    const auto channel = *widgets::findChannel(*last, grid.graphCell(18).part, grid.graphCell(18).dof);
+    CHECK(grid.graphPointValue(18, 0).value() == Approx(*widgets::valueAt(*last, channel, 2.0)));
+    QCPGraph* curve = nullptr;
+    for (int i = 0; i < grid.plot()->graphCount(); ++i)
+        if (grid.plot()->graph(i)->layer()->name() == "live" &&
+            grid.plot()->graph(i)->keyAxis()->axisRect()->rect().translated(grid.plot()->pos()) == grid.graphRect(18))
+            curve = grid.plot()->graph(i);
+    REQUIRE(curve != nullptr);
+    CHECK(curve->data()->at(7)->value == Approx(last->values(7, channel)));
+
+    grid.endInteraction();
+    CHECK(fullReplots.count() == 1);
+    const auto after = grid.graphValueRange(18);
+    CHECK(after != before);
+    // The ghost (the original) still counts in the range: it is the union of both.
+    const auto ghostRange = autoscaledRange(original, 18);
+    const auto lastRange = autoscaledRange(last, 18);
+    CHECK(after.first == Approx(std::min(ghostRange.first, lastRange.first)));
+    CHECK(after.second == Approx(std::max(ghostRange.second, lastRange.second)));
+}
+
+TEST_CASE("a burst of data changes holds the value ranges until it settles", "[widgets][graph_grid]")
+{
+    widgets::GraphGrid grid;
+    const auto original = test::syntheticPuppetTake(60);
+    grid.setTakes(original, nullptr);
+    showGrid(grid);
+    // An isolated change autoscales at once.
+    const auto doubled = scaled(*original, 2.0);
+    QTest::qWait(widgets::GraphGrid::kSettleMs + 50);
+    grid.setTakes(doubled, nullptr);
+    CHECK(grid.graphValueRange(5) == autoscaledRange(doubled, 5));
+    // The next change follows quickly: ranges are held, then autoscale once it settles.
+    QSignalSpy fullReplots(grid.plot(), &QCustomPlot::beforeReplot);
+    const auto tripled = scaled(*original, 3.0);
+    grid.setTakes(tripled, nullptr);
+    CHECK(fullReplots.count() == 0);
+    CHECK(grid.graphValueRange(5) == autoscaledRange(doubled, 5));
+    REQUIRE(QTest::qWaitFor([&] { return fullReplots.count() == 1; }, 5000));
+    CHECK(grid.graphValueRange(5) == autoscaledRange(tripled, 5));
+}
