@@ -4,6 +4,7 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QStandardPaths>
+#include <QTemporaryFile>
 
 #include <filesystem>
 #include <system_error>
@@ -31,11 +32,7 @@ QString ffmpegMissingMessage()
                        "sudo apt-get install ffmpeg) or export a PNG sequence instead.");
 }
 
-FfmpegEncoder::FfmpegEncoder(QString output) : m_output(std::move(output))
-{
-    const QFileInfo info(m_output);
-    m_temporary = info.dir().filePath(QStringLiteral(".%1.partial").arg(info.fileName()));
-}
+FfmpegEncoder::FfmpegEncoder(QString output) : m_output(std::move(output)) {}
 
 FfmpegEncoder::~FfmpegEncoder() { abort(); }
 
@@ -49,7 +46,18 @@ analysis::Status FfmpegEncoder::open(QSize size, double fps)
     if (!(fps > 0.0)) return errorOf(ErrorCode::InvalidArgument, QObject::tr("the frame rate must be positive"));
     if (!QDir().mkpath(QFileInfo(m_output).absolutePath()))
         return errorOf(ErrorCode::Io, QObject::tr("cannot create the folder of %1").arg(m_output));
-    QFile::remove(m_temporary);
+    // A fresh random name of our own (no file of the user's is touched), removed again by abort().
+    if (!m_temporary.isEmpty()) QFile::remove(m_temporary);
+    m_temporary.clear();
+    const QFileInfo info(m_output);
+    QTemporaryFile reserved(info.dir().filePath(QStringLiteral(".%1.partial-XXXXXX").arg(info.fileName())));
+    reserved.setAutoRemove(false);
+    if (!reserved.open())
+        return errorOf(ErrorCode::Io, QObject::tr("cannot create a temporary file next to %1: %2").arg(m_output, reserved.errorString()));
+    m_temporary = reserved.fileName();
+    reserved.close();
+    // ffmpeg creates it again itself, with the usual permissions (QTemporaryFile's are 0600).
+    reserved.remove();
     m_size = size;
     m_errors.clear();
     m_row.resize(qsizetype(size.width()) * size.height() * 3);
@@ -106,6 +114,7 @@ analysis::Status FfmpegEncoder::finish()
     std::filesystem::rename(std::filesystem::path(m_temporary.toStdString()), std::filesystem::path(m_output.toStdString()),
                             error);
     if (error) return failure(QObject::tr("cannot write %1: %2").arg(m_output, QString::fromStdString(error.message())));
+    m_temporary.clear(); // it is the output now
     return analysis::okStatus();
 }
 
@@ -115,7 +124,8 @@ void FfmpegEncoder::abort()
         m_process.kill();
         m_process.waitForFinished(kStartTimeoutMs);
     }
-    QFile::remove(m_temporary);
+    if (!m_temporary.isEmpty()) QFile::remove(m_temporary);
+    m_temporary.clear();
 }
 
 QString FfmpegEncoder::errorTail()

@@ -1,8 +1,9 @@
 #pragma once
 /// The MP4 sink of a video export: raw RGB frames streamed to `ffmpeg` (found on PATH) through
 /// its standard input, encoded to H.264 (libx264, yuv420p, CRF 18) in a hidden temporary file
-/// next to the output, renamed over the output only after ffmpeg exits with 0. No temporary
-/// images; cancel or failure kills ffmpeg and removes the partial file.
+/// next to the output (a fresh name, .NAME.partial-XXXXXX), renamed over the output only after
+/// ffmpeg exits with 0. No temporary images; cancel or failure kills ffmpeg and removes the
+/// partial file, so an existing output is untouched unless the export completes.
 
 #include "app/video_export.h"
 
@@ -28,7 +29,8 @@ public:
     analysis::Status finish() override;
     void abort() override;
 
-    /// The temporary file ffmpeg writes into (next to the output, hidden).
+    /// The temporary file ffmpeg writes into (next to the output, hidden); empty before open()
+    /// and after finish() or abort().
     QString temporaryPath() const { return m_temporary; }
 
 private:

@@ -38,6 +38,7 @@
 #include <QStatusBar>
 #include <QUndoView>
 
+#include <algorithm>
 #include <cmath>
 
 namespace bunraku::app {
@@ -76,7 +77,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_document(new Do
     updateTitle();
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow()
+{
+    // The document and its undo stack are children destroyed after this window's members: the
+    // stack's destructor emits cleanChanged, which must not reach updateTitle on a half-gone window.
+    m_document->undoStack()->disconnect(this);
+    m_document->disconnect(this);
+}
 
 QDockWidget* MainWindow::addDock(QWidget* widget, const QString& title, const QString& objectName, Qt::DockWidgetArea area)
 {
@@ -350,11 +357,13 @@ VideoExportResult MainWindow::exportViewVideo(const VideoExportOptions& options,
         refused.error = tr("There is no take to export: choose take A in the corpus browser.");
         return refused;
     }
-    const int lastAvailable = int(std::lround(m_document->duration() * take->rateHz));
+    // Take A's own frames, even when a longer take B is shown beside it.
+    const int lastAvailable = int(take->frameCount()) - 1;
     const int lastFrame = options.lastFrame < 0 ? lastAvailable : options.lastFrame;
-    if (options.firstFrame < 0 || options.firstFrame > lastFrame || lastFrame > lastAvailable) {
-        refused.error = tr("Frames %1 to %2 cannot be exported: take A has frames 0 to %3.")
-                            .arg(options.firstFrame).arg(lastFrame).arg(lastAvailable);
+    if (lastAvailable < 0 || options.firstFrame < 0 || options.firstFrame > lastFrame || lastFrame > lastAvailable) {
+        refused.error = lastAvailable < 0 ? tr("Take A has no frames to export.")
+                                          : tr("Frames %1 to %2 cannot be exported: take A has frames 0 to %3.")
+                                                .arg(options.firstFrame).arg(lastFrame).arg(lastAvailable);
         return refused;
     }
     const FramePlan plan = planFrames(take->rateHz, options.firstFrame, lastFrame, options.fps);
@@ -366,9 +375,20 @@ VideoExportResult MainWindow::exportViewVideo(const VideoExportOptions& options,
     std::unique_ptr<OffscreenView> offscreen;
     FrameRenderer render;
     if (options.size.isEmpty() && view->isVisible()) {
-        render = [this, view](double seconds) {
+        render = [this, view](double seconds) -> analysis::Result<QImage> {
+            if (!view->isVisible())
+                return analysis::makeError(analysis::ErrorCode::Unsupported,
+                                           tr("the 3D view is no longer shown (its dock was closed or the window "
+                                              "minimised during the export); show it, or export at a chosen "
+                                              "resolution, which draws offscreen").toStdString());
             m_document->setCurrentTime(seconds);
-            return view->grabFramebuffer(); // renders the current pose
+            QImage image = view->grabFramebuffer(); // renders the current pose
+            if (image.isNull())
+                return analysis::makeError(analysis::ErrorCode::Io,
+                                           tr("the 3D view could not be grabbed: it is not on screen or its OpenGL "
+                                              "context was lost; show it, or export at a chosen resolution, which "
+                                              "draws offscreen").toStdString());
+            return image;
         };
     } else {
         std::vector<analysis::Take> takes;
@@ -384,7 +404,15 @@ VideoExportResult MainWindow::exportViewVideo(const VideoExportOptions& options,
             return refused;
         }
         offscreen = std::move(made.value());
-        render = [&offscreen](double seconds) { return offscreen->render(seconds); };
+        render = [&offscreen](double seconds) -> analysis::Result<QImage> {
+            QImage image = offscreen->render(seconds);
+            if (image.isNull())
+                return analysis::makeError(analysis::ErrorCode::Io,
+                                           tr("the offscreen OpenGL context drew nothing (it was lost, e.g. by a "
+                                              "graphics driver reset); try again, or export at the view's size")
+                                               .toStdString());
+            return image;
+        };
     }
 
     std::unique_ptr<QProgressDialog> dialog;
@@ -429,7 +457,7 @@ void MainWindow::chooseViewVideo()
     }
     auto* view = m_viewportPanel->viewport();
     VideoExportLimits limits;
-    limits.lastFrame = int(std::lround(m_document->duration() * take->rateHz));
+    limits.lastFrame = std::max(0, int(take->frameCount()) - 1); // take A's own frames, not the longer take's
     limits.rateHz = take->rateHz;
     limits.viewSize = QSize(int(std::lround(view->width() * view->devicePixelRatioF())),
                             int(std::lround(view->height() * view->devicePixelRatioF())));

@@ -66,11 +66,13 @@ public:
 
     /// Grabs `widget` (the whole window when null) into an image file (PNG by extension).
     bool saveScreenshot(const QString& file, QWidget* widget = nullptr);
-    /// Writes every frame of take A as seen in the 3D view to `folder`/frame_00000.png ...
-    /// (exportViewVideo with a PNG sequence at the view's size). Returns the frames written.
+    /// Writes every frame of take A (take A's frame count, whatever take B's length) as seen in
+    /// the 3D view to `folder`/frame_00000.png ... (exportViewVideo with a PNG sequence at the
+    /// view's size). Returns the frames written; 0 when `folder` already holds frame_*.png.
     int exportViewFrames(const QString& folder);
     /// Exports the 3D view over a frame range of take A (frames at take A's rate, both takes
-    /// shown) as an MP4 or a PNG sequence, without asking anything. At the view's size the view
+    /// shown; lastFrame -1 = take A's last frame) as an MP4 or a PNG sequence, without asking
+    /// anything (a folder holding frames is refused unless options.overwrite). At the view's size the view
     /// itself is grabbed (what you see); at another size, or with the view hidden, an offscreen
     /// renderer draws the same takes, camera and toggles. `progress` (done, total) returns false
     /// to cancel; without it a QProgressDialog with Cancel ("videoExportProgress") shows. The

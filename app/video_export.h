@@ -29,6 +29,9 @@ struct VideoExportOptions {
     double fps = 0.0;   ///< frames per second of the output; 0 = the take's own rate
     QSize size;         ///< output pixels; empty = the 3D view's size (made even for MP4)
     QString output;     ///< the .mp4 file, or the folder for the PNG frames
+    /// PNG only: replace the frame_*.png already in the output folder (all of them, once the new
+    /// sequence is complete). Without it an export into a folder holding frames is refused.
+    bool overwrite = false;
 };
 
 struct VideoExportResult {
@@ -43,6 +46,7 @@ struct VideoExportResult {
 struct FramePlan {
     std::vector<double> times; ///< seconds on the document's timeline, increasing
     double fps = 0.0;          ///< frames per second of the output
+    double rateHz = 0.0;       ///< take A's frame rate (names the take frame in messages)
 };
 
 /// From firstFrame / rateHz to lastFrame / rateHz (both included when on the grid) in steps of
@@ -61,12 +65,22 @@ public:
     virtual void abort() = 0;
 };
 
-/// PNG files frame_00000.png ... in `folder` (created if needed); each file is written
-/// atomically (QSaveFile); abort() removes the frames this sink wrote.
-std::unique_ptr<FrameSink> makePngSequenceSink(const QString& folder);
+/// "1 frame", "10 frames": for messages.
+QString frameCountText(int count);
 
-/// Renders the scene at `seconds`; a null image stops the export with an error.
-using FrameRenderer = std::function<QImage(double seconds)>;
+/// The frame_*.png files already in `folder` (file names, sorted); empty when it does not exist.
+QStringList existingFrames(const QString& folder);
+
+/// PNG files frame_00000.png ... in `folder` (created if needed). The frames are written into a
+/// fresh hidden folder inside it (.partial-XXXXXX); finish() removes the folder's old
+/// frame_*.png and moves the new ones in, so an aborted export leaves the old frames untouched.
+/// open() refuses a folder that already holds frame_*.png unless `overwrite`. abort() removes
+/// only what this sink created (its hidden folder, and `folder` itself when it made it).
+std::unique_ptr<FrameSink> makePngSequenceSink(const QString& folder, bool overwrite = false);
+
+/// Renders the scene at `seconds`: the image, or why there is none (the view hidden, its OpenGL
+/// context lost...), which stops the export with an error naming the take frame.
+using FrameRenderer = std::function<analysis::Result<QImage>(double seconds)>;
 /// Called before each frame and after the last with (frames done, total); false cancels.
 using ExportProgress = std::function<bool(int done, int total)>;
 

@@ -13,6 +13,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QRadioButton>
 #include <QSettings>
@@ -148,6 +149,7 @@ VideoExportOptions VideoExportDialog::options() const
     options.fps = m_chosenRate->isChecked() ? m_fps->value() : 0.0;
     options.size = m_resolution->currentData().toSize();
     options.output = m_output->text().trimmed();
+    options.overwrite = m_overwrite && options.format == VideoFormat::PngSequence;
     return options;
 }
 
@@ -208,6 +210,24 @@ void VideoExportDialog::accept()
     if (format() == VideoFormat::Mp4 && QFileInfo(output).suffix().compare(QStringLiteral("mp4"), Qt::CaseInsensitive) != 0)
         output += QStringLiteral(".mp4");
     m_output->setText(output);
+    m_overwrite = false;
+    if (format() == VideoFormat::PngSequence) {
+        // Old frames are replaced only when the person says so (and only once the new ones are done).
+        if (const auto old = existingFrames(output).size(); old > 0) {
+            QMessageBox question(QMessageBox::Question, tr("Export 3D View Video"),
+                                 tr("Folder %1 already holds %2 (frame_*.png): replace them?")
+                                     .arg(QDir::toNativeSeparators(output), frameCountText(int(old))),
+                                 QMessageBox::Yes | QMessageBox::No, this);
+            question.setObjectName("replaceFramesQuestion");
+            question.setInformativeText(tr("The old frames are removed only after the new sequence is complete."));
+            question.setDefaultButton(QMessageBox::No);
+            if (question.exec() != QMessageBox::Yes) {
+                m_summary->setText(tr("Choose another folder, or allow replacing its frames."));
+                return;
+            }
+            m_overwrite = true;
+        }
+    }
     rememberOptions(options());
     QDialog::accept();
 }

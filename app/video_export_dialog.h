@@ -41,6 +41,8 @@ public:
 
 public slots:
     /// Adds the .mp4 suffix when missing, remembers the choices and closes; refuses an empty path.
+    /// A PNG folder already holding frame_*.png is kept only when the person agrees to replace
+    /// them (QMessageBox "replaceFramesQuestion"), which sets options().overwrite.
     void accept() override;
 
 private:
@@ -64,6 +66,7 @@ private:
     QDialogButtonBox* m_buttons = nullptr;
     QString m_mp4Path;   ///< the output kept for each format while switching
     QString m_pngFolder;
+    bool m_overwrite = false; ///< the person agreed to replace the folder's frames (never remembered)
 };
 
 } // namespace bunraku::app

@@ -1,96 +1,12 @@
 // Video export of the 3D view from the real main window: MP4 frames and size checked by ffprobe,
 // PNG sequences, cancel, missing or failing ffmpeg, and the dialog's remembered choices.
-#include "tests/app/app_test_support.h"
-
-#include "app/ffmpeg_encoder.h"
-#include "app/video_export.h"
-#include "app/video_export_dialog.h"
-#include "app/viewport_panel.h"
-
-#include "widgets/viewport_widget.h"
-
-#include <catch2/catch.hpp>
-
-#include <QAction>
-#include <QApplication>
-#include <QDialogButtonBox>
-#include <QLabel>
-#include <QPushButton>
-#include <QDir>
-#include <QFile>
-#include <QProcess>
-#include <QProgressDialog>
-#include <QTimer>
-
-#include <cmath>
-#include <filesystem>
-#include <optional>
+#include "tests/app/video_export_support.h"
 
 using namespace bunraku;
+using namespace bunraku::test::video;
 using app::TakeSlot;
 using app::VideoExportOptions;
 using app::VideoFormat;
-
-namespace {
-
-struct Probe {
-    int frames = 0;
-    int width = 0;
-    int height = 0;
-};
-
-bool ffmpegInstalled()
-{
-    return !QStandardPaths::findExecutable(QStringLiteral("ffmpeg")).isEmpty() &&
-           !QStandardPaths::findExecutable(QStringLiteral("ffprobe")).isEmpty();
-}
-
-/// Frames decoded and size of the first video stream, by ffprobe.
-std::optional<Probe> probe(const std::filesystem::path& file)
-{
-    QProcess process;
-    process.start(QStringLiteral("ffprobe"),
-                  {"-v", "error", "-count_frames", "-select_streams", "v:0", "-show_entries",
-                   "stream=nb_read_frames,width,height", "-of", "csv=p=0", QString::fromStdString(file.string())});
-    if (!process.waitForFinished(30000) || process.exitCode() != 0) return std::nullopt;
-    // ffprobe prints the fields in its own order: width,height,nb_read_frames.
-    const QStringList fields = QString::fromLatin1(process.readAllStandardOutput()).trimmed().split(QLatin1Char(','));
-    if (fields.size() != 3) return std::nullopt;
-    return Probe{fields[2].toInt(), fields[0].toInt(), fields[1].toInt()};
-}
-
-/// Files in `folder` (the hidden temporary one of ffmpeg included).
-int fileCount(const std::filesystem::path& folder)
-{
-    return int(QDir(QString::fromStdString(folder.string())).entryList(QDir::Files | QDir::Hidden).size());
-}
-
-/// A window on the demo corpus with corpus take 2 as take A, its time at `seconds`.
-std::unique_ptr<app::MainWindow> exportWindow(double seconds)
-{
-    auto window = test::demoWindow();
-    if (!window) return nullptr;
-    window->document().selectTake(TakeSlot::A, app::Document::corpusTakeId(2));
-    window->document().setCurrentTime(seconds);
-    return window;
-}
-
-/// Sets PATH to `path` for one scope.
-class ScopedPath {
-public:
-    explicit ScopedPath(const std::filesystem::path& path) : m_saved(qgetenv("PATH"))
-    {
-        qputenv("PATH", QByteArray::fromStdString(path.string()));
-    }
-    ~ScopedPath() { qputenv("PATH", m_saved); }
-    ScopedPath(const ScopedPath&) = delete;
-    ScopedPath& operator=(const ScopedPath&) = delete;
-
-private:
-    QByteArray m_saved;
-};
-
-} // namespace
 
 TEST_CASE("the planned export frames cover the range at the take's or a chosen rate", "[app][video]")
 {
@@ -358,3 +274,4 @@ TEST_CASE("File > Export 3D View Video exports what the dialog was given", "[app
     REQUIRE(fileCount(folder) == 3);
     REQUIRE(QImage(QString::fromStdString((folder / "frame_00002.png").string())).size() == QSize(48, 32));
 }
+
