@@ -248,8 +248,9 @@ void DesignController::moveBoundary(int index, double frame)
     std::vector<Eigen::Index> all = boundaries();
     const auto position = std::size_t(index) + 1;
     if (index < 0 || position + 1 >= all.size()) return;
-    const auto low = double(all[position - 1] + 1);
-    const auto high = double(all[position + 1] - 1);
+    // Both phrases stay at least 2 frames long, as gain extraction needs (as addBoundary).
+    const auto low = double(all[position - 1] + 2);
+    const auto high = double(all[position + 1] - 2);
     if (high < low) return;
     all[position] = Eigen::Index(std::lround(std::clamp(frame, low, high)));
     changeParameter(m_document, parameters::kDesignBoundaries, innerAsVariant(all),
@@ -324,16 +325,22 @@ double DesignController::functionalFrameAt(const QString& takeId, double seconds
 
 analysis::GainSet DesignController::extractedGains() const
 {
+    m_extractionError.clear();
     if (!m_prepared || !m_prepared->extracted) return {};
     const std::vector<Eigen::Index> frames = boundaries();
     if (frames == m_prepared->boundaries) return m_prepared->extracted->gains;
-    if (m_extractedFrom == m_prepared && m_extractedFor == frames) return m_extractedGains;
+    if (m_extractedFrom == m_prepared && m_extractedFor == frames) {
+        m_extractionError = m_extractedFailure;
+        return m_extractedGains;
+    }
     QElapsedTimer clock;
     clock.start();
     auto gains = analysis::extractGainsForBoundaries(m_prepared->basis->coordinates, *m_prepared->extracted, frames);
     m_lastExtractionMilliseconds = double(clock.nsecsElapsed()) / 1e6;
     m_extractedFrom = m_prepared;
     m_extractedFor = frames;
+    m_extractedFailure = gains ? QString() : QString::fromStdString(gains.error().message);
+    m_extractionError = m_extractedFailure;
     m_extractedGains = gains ? std::move(gains).value() : analysis::GainSet{};
     return m_extractedGains;
 }

@@ -53,6 +53,13 @@ public:
     analysis::GainSet extractedGains() const;
     /// Wall time of the last gain re-extraction, milliseconds (0 before the first).
     double lastExtractionMilliseconds() const { return m_lastExtractionMilliseconds; }
+    /// Why extractedGains() is empty for the boundaries in use (e.g. a phrase too short), empty
+    /// when the extraction succeeded.
+    QString extractionError() const
+    {
+        (void)extractedGains();
+        return m_extractionError;
+    }
     /// The inner boundaries in seconds on the take `takeId`: the functional take's times, and on
     /// the designed take ("live/designed") the designed times u / rate whose warp reaches each
     /// boundary, warp(u) = boundary (inverseWarp of the monotone curve).
@@ -83,8 +90,9 @@ public:
     /// Sets every gain to the extracted one (one undo step).
     void useExtractedGains();
     /// Moves inner boundary `index` (0-based among the inner ones) to `frame` (functional
-    /// frames), clamped so it stays at least one frame after its predecessor and before its
-    /// successor (boundaries keep their order and stay inside the take). Inside a document
+    /// frames), clamped so it stays at least 2 frames after its predecessor and before its
+    /// successor (phrases keep at least 2 frames, as gain extraction needs; boundaries keep
+    /// their order and stay inside the take). Inside a document
     /// interaction (a drag) the moves merge into one undo step.
     void moveBoundary(int index, double frame);
     /// Back to the suggested boundaries.
@@ -129,6 +137,8 @@ private:
     mutable std::shared_ptr<const Prepared> m_extractedFrom;
     mutable std::vector<Eigen::Index> m_extractedFor;
     mutable analysis::GainSet m_extractedGains;
+    mutable QString m_extractedFailure; ///< why m_extractedGains is empty, for m_extractedFor
+    mutable QString m_extractionError;  ///< the last extractedGains() call's error, empty when none
     mutable double m_lastExtractionMilliseconds = 0.0;
 };
 

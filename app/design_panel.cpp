@@ -93,7 +93,7 @@ DesignPanel::DesignPanel(Document& document, DesignController& controller, QWidg
             m_gains->setGains(gains);
             m_gains->setExtracted(m_controller.extractedGains()); // they follow the boundaries
         }
-        m_timing->setText(tr("synthesis %1 ms").arg(m_controller.lastSynthesisMilliseconds(), 0, 'f', 2));
+        showStatus();
     });
     connect(&document, &Document::currentTimeChanged, this,
             [this](double seconds) { m_editor->setCurrentFrame(seconds * m_document.rateHz()); });
@@ -113,8 +113,19 @@ void DesignPanel::refresh()
     m_editor->setCurve(m_controller.warpCurve());
     m_gains->setGains(m_controller.gains());
     m_gains->setExtracted(m_controller.extractedGains());
-    m_timing->setText(tr("synthesis %1 ms").arg(m_controller.lastSynthesisMilliseconds(), 0, 'f', 2));
+    showStatus();
 }
+
+void DesignPanel::showStatus()
+{
+    QString text = tr("synthesis %1 ms").arg(m_controller.lastSynthesisMilliseconds(), 0, 'f', 2);
+    if (const QString error = m_controller.extractionError(); !error.isEmpty())
+        text += QStringLiteral("<br><span style=\"color:#b00020\">%1</span>")
+                    .arg(tr("No extracted gains for these phrases: %1").arg(error.toHtmlEscaped()));
+    m_timing->setText(text);
+}
+
+QString DesignPanel::statusText() const { return m_timing->text(); }
 
 double DesignPanel::cursorFrame() const
 {

@@ -27,8 +27,12 @@ public:
     widgets::WarpCurveEditor* editor() const { return m_editor; }
     widgets::GainTable* gainTable() const { return m_gains; }
 
+    /// The status line under the editors (synthesis time, why extracted gains are missing).
+    QString statusText() const;
+
 private:
     void refresh();
+    void showStatus();
     /// The functional frame under the time cursor on take A.
     double cursorFrame() const;
 

@@ -99,8 +99,10 @@ ViewportPanel::ViewportPanel(Document& document, QWidget* parent) : QWidget(pare
             const auto result = std::any_cast<AxisResult>(output.value);
             m_knownAxes.clear();
             for (std::size_t i = 0; i < result.takes.size(); ++i) m_knownAxes.emplace_back(result.takes[i], result.axes[i]);
-            const auto takes = shownTakes(m_document);
-            const auto axes = result.axes;
+            // The takes the axes were computed for (the serial check drops results of takes no
+            // longer shown).
+            const auto& takes = result.takes;
+            const auto& axes = result.axes;
             m_viewport->setScene(sceneOf(takes, axes));
             m_viewport->setTime(m_document.currentTime());
             // The motion axis of the first take is a take too: its 6 channels can be graphed.
@@ -137,9 +139,9 @@ ViewportPanel::ViewportPanel(Document& document, QWidget* parent) : QWidget(pare
 
 void ViewportPanel::rebuildScene()
 {
+    ++m_sceneSerial; // also when nothing is shown: a pending axis result is stale either way
     const auto takes = shownTakes(m_document);
     if (takes.empty()) return;
-    ++m_sceneSerial;
     AxisPoses axes; // the known axes of takes that did not change; the others are recomputed
     for (const auto& take : takes) {
         const auto known = std::find_if(m_knownAxes.begin(), m_knownAxes.end(), [&](const auto& entry) { return entry.first == take; });

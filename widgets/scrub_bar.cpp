@@ -126,6 +126,7 @@ void ScrubBar::mouseMoveEvent(QMouseEvent* event)
 {
     const int x = int(event->position().x());
     if (!(event->buttons() & Qt::LeftButton)) {
+        finishBoundaryDrag(); // the release went elsewhere (e.g. to a popup menu)
         const int hovered = m_boundariesEditable ? boundaryAtX(x) : -1;
         if (hovered != m_hovered) {
             m_hovered = hovered;
@@ -141,7 +142,12 @@ void ScrubBar::mouseMoveEvent(QMouseEvent* event)
 
 void ScrubBar::mouseReleaseEvent(QMouseEvent* event)
 {
-    if (event->button() != Qt::LeftButton || m_dragged < 0) return;
+    if (event->button() == Qt::LeftButton) finishBoundaryDrag();
+}
+
+void ScrubBar::finishBoundaryDrag()
+{
+    if (m_dragged < 0) return;
     const int index = m_dragged;
     m_dragged = -1;
     emit boundaryDragFinished(index);
@@ -174,6 +180,7 @@ QMenu* ScrubBar::createContextMenu(QPoint position)
 
 void ScrubBar::contextMenuEvent(QContextMenuEvent* event)
 {
+    finishBoundaryDrag(); // the menu takes the mouse: the left release would never arrive
     QMenu* menu = createContextMenu(event->pos());
     if (!menu) {
         QWidget::contextMenuEvent(event);
@@ -192,6 +199,12 @@ void ScrubBar::keyPressEvent(QKeyEvent* event)
         return;
     }
     QWidget::keyPressEvent(event);
+}
+
+void ScrubBar::hideEvent(QHideEvent* event)
+{
+    finishBoundaryDrag();
+    QWidget::hideEvent(event);
 }
 
 void ScrubBar::leaveEvent(QEvent* event)

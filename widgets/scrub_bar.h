@@ -71,8 +71,12 @@ protected:
     void contextMenuEvent(QContextMenuEvent* event) override;
     void keyPressEvent(QKeyEvent* event) override;
     void leaveEvent(QEvent* event) override;
+    void hideEvent(QHideEvent* event) override;
 
 private:
+    /// Ends a tick drag (boundaryDragFinished) if one is under way.
+    void finishBoundaryDrag();
+
     double m_duration = 1.0;
     double m_time = 0.0;
     std::vector<double> m_boundaries;

@@ -23,10 +23,13 @@ ViewportWidget::ViewportWidget(QWidget* parent, int samples) : QWidget(parent), 
     setAttribute(Qt::WA_OpaquePaintEvent);
     m_settle.setSingleShot(true);
     m_settle.setInterval(kSettleMs);
+    // Precise: a coarse timer may fire a few milliseconds early, when paintEvent would still
+    // take the view for moving and draw another quick frame instead of the still one.
+    m_settle.setTimerType(Qt::PreciseTimer);
     connect(&m_settle, &QTimer::timeout, this, [this] {
-        if (m_imageSamples == m_samples) return;
-        m_imageStale = true;
-        repaint(); // m_sinceFrame is at least kSettleMs old: a full-quality frame
+        if (m_imageSamples == m_samples || !isVisible()) return;
+        renderImage(m_samples); // the still, full-quality frame
+        update();
     });
 }
 
@@ -160,7 +163,9 @@ void ViewportWidget::paintEvent(QPaintEvent*)
                              tr("The 3D view needs OpenGL 3.3: %1").arg(m_error));
         return;
     }
-    painter.drawImage(QPointF(0.0, 0.0), m_image);
+    // Into the whole widget: with a fractional device pixel ratio the image's pixel size is
+    // rounded, and the widget is opaque (nothing else paints a strip the image misses).
+    painter.drawImage(QRectF(rect()), m_image);
 }
 
 void ViewportWidget::mousePressEvent(QMouseEvent* event)

@@ -1,5 +1,6 @@
 #include "tests/app/app_test_support.h"
 
+#include "app/commands.h"
 #include "app/design_controller.h"
 #include "app/design_panel.h"
 #include "app/parameters.h"
@@ -203,7 +204,7 @@ TEST_CASE("dragging a phrase mark on the timeline moves the design's boundary as
     for (std::size_t i = 1; i < clamped.size(); ++i) REQUIRE(clamped[i] > clamped[i - 1]);
     REQUIRE(clamped.front() == 0);
     REQUIRE(clamped.back() == framesBefore.back());
-    REQUIRE(clamped[1] == clamped[2] - 1);
+    REQUIRE(clamped[1] == clamped[2] - 2); // phrases stay at least 2 frames long
 
     document.undoStack()->undo();
     document.undoStack()->undo();
@@ -472,4 +473,34 @@ TEST_CASE("key steps of one gain slider are one undo step, another cell's steps 
     REQUIRE(table->gains().phrases[1].dofs[2].g1 == Approx(widgets::GainTable::gainOfPosition(3)));
     document.undoStack()->undo();
     REQUIRE(table->gains().phrases[1].dofs[2].g1 == 1.0);
+}
+
+TEST_CASE("dragging a boundary keeps phrases 2 frames long, and missing extracted gains are explained", "[app][design]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    REQUIRE(waitForDesign(*window));
+    auto& design = window->design();
+    const auto suggested = design.boundaries();
+    REQUIRE(suggested.size() >= 3);
+    // Dragged onto its left neighbour: it stops 2 frames after it, and extraction still works.
+    window->document().beginInteraction();
+    design.moveBoundary(0, double(suggested[0]));
+    window->document().endInteraction();
+    REQUIRE(design.boundaries()[1] == suggested[0] + 2);
+    REQUIRE(design.extractedGains().phrases.size() == suggested.size() - 1);
+    REQUIRE(design.extractionError().isEmpty());
+    REQUIRE_FALSE(window->designPanel()->statusText().contains(QStringLiteral("No extracted gains")));
+    // A project can still hold a 1-frame phrase: the panel says why there are no extracted gains.
+    QVariantList inner;
+    inner << qlonglong(1);
+    for (std::size_t i = 2; i + 1 < suggested.size(); ++i) inner << qlonglong(suggested[i]);
+    app::changeParameter(window->document(), app::parameters::kDesignBoundaries, inner, QStringLiteral("test"));
+    REQUIRE(design.boundaries()[1] == 1);
+    REQUIRE(design.extractedGains().phrases.empty());
+    REQUIRE_FALSE(design.extractionError().isEmpty());
+    QTest::qWait(50);
+    const QString status = window->designPanel()->statusText();
+    INFO(status.toStdString());
+    REQUIRE(status.contains(QStringLiteral("No extracted gains")));
 }

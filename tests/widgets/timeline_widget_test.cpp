@@ -174,3 +174,34 @@ TEST_CASE("editable phrase ticks are added by double click and context menu, rem
     bar.setBoundaries({3.0});
     REQUIRE(bar.selectedBoundary() == -1);
 }
+
+TEST_CASE("a tick drag interrupted by a context menu ends (the release never comes)", "[widgets][timeline]")
+{
+    widgets::ScrubBar bar;
+    bar.resize(400, 34);
+    bar.setDuration(10.0);
+    bar.setBoundaries({3.0, 6.0});
+    bar.setBoundariesEditable(true);
+    bar.show();
+    REQUIRE(QTest::qWaitForWindowExposed(&bar));
+    QSignalSpy started(&bar, &widgets::ScrubBar::boundaryDragStarted);
+    QSignalSpy finished(&bar, &widgets::ScrubBar::boundaryDragFinished);
+    const QPoint tick(bar.xOfTime(3.0), bar.height() / 2);
+    QTest::mousePress(&bar, Qt::LeftButton, Qt::NoModifier, tick);
+    REQUIRE(started.count() == 1);
+    // A right click mid-drag: its menu takes the mouse.
+    QContextMenuEvent menu(QContextMenuEvent::Mouse, tick, bar.mapToGlobal(tick));
+    QCoreApplication::sendEvent(&bar, &menu);
+    REQUIRE(finished.count() == 1);
+    for (auto* popup : bar.findChildren<QMenu*>()) popup->close();
+    // A later move without the button does not start or end anything again.
+    QMouseEvent move(QEvent::MouseMove, QPointF(tick), bar.mapToGlobal(QPointF(tick)), Qt::NoButton, Qt::NoButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(&bar, &move);
+    REQUIRE(finished.count() == 1);
+
+    // The same when the release is lost and the next move arrives without the button.
+    QTest::mousePress(&bar, Qt::LeftButton, Qt::NoModifier, tick);
+    REQUIRE(started.count() == 2);
+    QCoreApplication::sendEvent(&bar, &move);
+    REQUIRE(finished.count() == 2);
+}
