@@ -202,7 +202,7 @@ std::vector<Eigen::Index> DesignController::boundaries() const
     if (edited.isEmpty() || last < 2) return m_prepared->boundaries;
     std::vector<Eigen::Index> inner;
     for (const QVariant& value : edited) inner.push_back(value.toLongLong());
-    if (inner.front() == 0) inner.erase(inner.begin()); // {0, last}: no inner boundary
+    if (inner.front() == 0) inner.erase(inner.begin()); // {0} (or {0, last} of older projects): no inner boundary
     if (!inner.empty() && inner.back() == last) inner.pop_back();
     std::vector<Eigen::Index> result{0};
     for (const Eigen::Index frame : inner) {
@@ -231,13 +231,14 @@ double DesignController::functionalRateHz() const
 
 namespace {
 
-/// The parameter value of the boundaries `all` (0, inner..., last): the inner ones, or {0, last}
-/// when there is none (the empty list means "suggested").
+/// The parameter value of the boundaries `all` (0, inner..., last): the inner ones, or {0}
+/// when there is none (the empty list means "suggested"; {0} does not depend on the take's
+/// length, so it keeps its meaning for another functional take).
 QVariantList innerAsVariant(const std::vector<Eigen::Index>& all)
 {
     QVariantList inner;
     for (std::size_t i = 1; i + 1 < all.size(); ++i) inner.append(qlonglong(all[i]));
-    if (inner.isEmpty() && all.size() >= 2) inner = {qlonglong(all.front()), qlonglong(all.back())};
+    if (inner.isEmpty() && all.size() >= 2) inner = {qlonglong(0)};
     return inner;
 }
 

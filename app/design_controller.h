@@ -13,7 +13,7 @@
 /// microseconds for the demo takes, so on the GUI thread and cached).
 ///
 /// design.boundaries holds the inner boundaries (functional frames); the structure with no
-/// inner boundary at all is stored as {0, last frame}, since the empty list means "suggested".
+/// inner boundary at all is stored as {0}, since the empty list means "suggested".
 
 #include "app/document.h"
 #include "app/recomputer.h"
