@@ -104,7 +104,12 @@ bool FileController::openDemoCorpus()
 {
     auto demo = analysis::synth::generateDemoCorpus();
     auto truth = std::make_shared<const analysis::synth::DemoGroundTruth>(std::move(demo.truth));
-    m_document.setCorpus(std::move(demo.corpus), QStringLiteral("demo"), std::move(truth));
+    // Shown first: the first take the generator did not turn about (its yaw channels wrap at
+    // +-180 and the puppet faces away; such takes are there to exercise preprocessing).
+    std::size_t first = 0;
+    while (first + 1 < truth->takes.size() && truth->takes[first].yawWraps) ++first;
+    m_document.setCorpus(std::move(demo.corpus), QStringLiteral("demo"), truth);
+    if (first > 0) m_document.selectTake(TakeSlot::A, Document::corpusTakeId(first));
     m_projectPath.clear();
     emit statusMessage(tr("Opened the demo corpus (%1 takes)").arg(m_document.corpus().takes.size()));
     return true;
