@@ -72,6 +72,16 @@ void subtractRow(double* __restrict out, const double* __restrict row, Eigen::In
     for (Eigen::Index j = 0; j < width; ++j) out[j] -= row[j];
 }
 
+// The path once every row is in, its cost and its smooth (sub-frame) warp.
+MatchResult finishedMatch(PathBuilder& builder, const RunControl& control)
+{
+    MatchResult result;
+    result.correspondence = builder.finish(&result.cost);
+    result.smoothWarp = smoothWarp(result.correspondence);
+    control.report(1.0);
+    return result;
+}
+
 // Greedy and independent paths: band rows streamed one at a time, so greedy can skip the
 // distances left of its previous choice (about half the band).
 Result<MatchResult> matchStreamed(const FeatureMatrix& reference, const FeatureMatrix& sample, const FeatureMatchOptions& options,
@@ -141,11 +151,7 @@ Result<MatchResult> matchStreamed(const FeatureMatrix& reference, const FeatureM
         }
         builder.addRow(cost.data());
     }
-        MatchResult result;
-        result.correspondence = builder.finish(&result.cost);
-        result.smoothWarp = smoothWarp(result.correspondence);
-        control.report(1.0);
-        return result;
+    return finishedMatch(builder, control);
 }
 
 // Optimal path: every band cell is needed, so each per-frame distance is computed once on the
@@ -231,11 +237,7 @@ Result<MatchResult> matchTiled(const Features& reference, const Features& sample
             builder.addRow(running.data());
         }
     }
-    MatchResult result;
-    result.correspondence = builder.finish(&result.cost);
-    result.smoothWarp = smoothWarp(result.correspondence);
-    control.report(1.0);
-    return result;
+    return finishedMatch(builder, control);
 }
 
 template <class Features>

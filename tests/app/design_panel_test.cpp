@@ -33,16 +33,17 @@ bool waitForDesign(app::MainWindow& window)
     return QTest::qWaitFor([&] { return window.design().ready() && !window.design().recomputer()->busy(); }, 60000);
 }
 
-void dragInPlot(QCustomPlot* plot, QPoint from, QPoint to)
+/// A left-button drag in 5 moves from `from` to `to` (widget coordinates).
+void dragIn(QWidget* widget, QPoint from, QPoint to)
 {
-    QTest::mousePress(plot, Qt::LeftButton, Qt::NoModifier, from);
+    QTest::mousePress(widget, Qt::LeftButton, Qt::NoModifier, from);
     for (int step = 1; step <= 5; ++step) {
         const QPoint at = from + (to - from) * step / 5;
-        QMouseEvent move(QEvent::MouseMove, QPointF(at), plot->mapToGlobal(QPointF(at)), Qt::NoButton, Qt::LeftButton,
+        QMouseEvent move(QEvent::MouseMove, QPointF(at), widget->mapToGlobal(QPointF(at)), Qt::NoButton, Qt::LeftButton,
                          Qt::NoModifier);
-        QCoreApplication::sendEvent(plot, &move);
+        QCoreApplication::sendEvent(widget, &move);
     }
-    QTest::mouseRelease(plot, Qt::LeftButton, Qt::NoModifier, to);
+    QTest::mouseRelease(widget, Qt::LeftButton, Qt::NoModifier, to);
 }
 
 } // namespace
@@ -82,7 +83,7 @@ TEST_CASE("dragging a warp control point changes the designed take, stays monoto
     const QPoint from = editor->plot()->mapFrom(editor, editor->pointPosition(index));
     // Up by 3 functional frames (less than the spacing of the points).
     const int up = int(editor->plot()->yAxis->coordToPixel(curveBefore.points[index].source + 3.0));
-    dragInPlot(editor->plot(), from, QPoint(from.x(), up));
+    dragIn(editor->plot(), from, QPoint(from.x(), up));
 
     REQUIRE(document.undoStack()->count() == 1); // the whole drag is one step
     const auto after = window->design().designedTake();
@@ -99,7 +100,7 @@ TEST_CASE("dragging a warp control point changes the designed take, stays monoto
 
     // Dragging far beyond the next point is clamped: still monotone.
     const QPoint again = editor->plot()->mapFrom(editor, editor->pointPosition(index));
-    dragInPlot(editor->plot(), again, again + QPoint(0, -400));
+    dragIn(editor->plot(), again, again + QPoint(0, -400));
     const Eigen::VectorXd clamped = analysis::sampleWarp(editor->curve());
     for (Eigen::Index i = 1; i < clamped.size(); ++i) REQUIRE(clamped[i] >= clamped[i - 1]);
     REQUIRE(document.undoStack()->count() == 2);
@@ -153,22 +154,6 @@ TEST_CASE("the warp editor adds and deletes points and resets to identity and ex
     for (const auto& point : editor->curve().points) REQUIRE(point.source == Approx(point.output));
 }
 
-namespace {
-
-void dragOnBar(QWidget* bar, QPoint from, QPoint to)
-{
-    QTest::mousePress(bar, Qt::LeftButton, Qt::NoModifier, from);
-    for (int step = 1; step <= 5; ++step) {
-        const QPoint at = from + (to - from) * step / 5;
-        QMouseEvent move(QEvent::MouseMove, QPointF(at), bar->mapToGlobal(QPointF(at)), Qt::NoButton, Qt::LeftButton,
-                         Qt::NoModifier);
-        QCoreApplication::sendEvent(bar, &move);
-    }
-    QTest::mouseRelease(bar, Qt::LeftButton, Qt::NoModifier, to);
-}
-
-} // namespace
-
 TEST_CASE("dragging a phrase mark on the timeline moves the design's boundary as one undo step", "[app][design]")
 {
     auto window = test::demoWindow();
@@ -189,7 +174,7 @@ TEST_CASE("dragging a phrase mark on the timeline moves the design's boundary as
     // A short drag to the right: the first inner boundary moves later.
     const int y = bar->height() / 2;
     const QPoint from(bar->xOfTime(bar->boundaries()[0]), y);
-    dragOnBar(bar, from, from + QPoint(12, 0));
+    dragIn(bar, from, from + QPoint(12, 0));
     REQUIRE(document.undoStack()->count() == 2); // the whole drag is one step
     REQUIRE(design.boundaries()[1] > framesBefore[1]);
     REQUIRE((design.designedTake()->values - valuesBefore).cwiseAbs().maxCoeff() > 1e-6);
@@ -197,7 +182,7 @@ TEST_CASE("dragging a phrase mark on the timeline moves the design's boundary as
 
     // Far past the next boundary and past the end: clamped, still ordered and inside the take.
     const QPoint again(bar->xOfTime(bar->boundaries()[0]), y);
-    dragOnBar(bar, again, QPoint(bar->width() + 50, y));
+    dragIn(bar, again, QPoint(bar->width() + 50, y));
     REQUIRE(document.undoStack()->count() == 3);
     const auto clamped = design.boundaries();
     REQUIRE(clamped.size() == framesBefore.size());
@@ -437,7 +422,7 @@ TEST_CASE("on the warped designed take the ticks sit at the inverse-warped bound
     // Dragging a tick: the boundary moves to the functional frame the designed time shows.
     const QPoint from(bar->xOfTime(bar->boundaries()[0]), bar->height() / 2);
     const QPoint to = from + QPoint(10, 0);
-    dragOnBar(bar, from, to);
+    dragIn(bar, from, to);
     const double shown = analysis::evaluateWarp(curve, bar->timeAtX(to.x()) * rate);
     const double low = double(boundaries[0] + 1);
     const double high = double(boundaries[2] - 1);
