@@ -34,11 +34,15 @@ std::string Take::displayName() const
     return labels.source.empty() ? std::string("take") : labels.source;
 }
 
+bool plausibleRate(double hz) { return std::isfinite(hz) && hz > 0.0 && hz <= kMaxRateHz; }
+
+std::string rateExpectation() { return "expected a sample rate in (0, 1000000] Hz"; }
+
 Status validateTake(const Take& take)
 {
     const std::string name = take.displayName();
-    if (!(take.rateHz > 0.0) || !std::isfinite(take.rateHz))
-        return makeError(ErrorCode::InvalidArgument, name + ": sample rate must be a positive number");
+    if (!plausibleRate(take.rateHz))
+        return makeError(ErrorCode::InvalidArgument, name + ": sample rate " + std::to_string(take.rateHz) + " Hz: " + rateExpectation());
     if (take.values.rows() < 1)
         return makeError(ErrorCode::InvalidArgument, name + ": a take needs at least one frame");
     if (std::size_t(take.values.cols()) != take.channels.size())

@@ -60,4 +60,14 @@ struct Take {
 /// value is finite; the error names the first offending frame and channel.
 Status validateTake(const Take& take);
 
+/// The highest sample rate a take may have (Hz): well above any motion capture system, low
+/// enough that a rate from a corrupt file (a BVH frame time of 1e-300 s) is refused.
+inline constexpr double kMaxRateHz = 1e6;
+
+/// True for a finite rate in (0, kMaxRateHz].
+bool plausibleRate(double hz);
+
+/// "expected a sample rate in (0, 1000000] Hz", for error messages.
+std::string rateExpectation();
+
 } // namespace bunraku::analysis

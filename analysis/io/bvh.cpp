@@ -242,6 +242,10 @@ Result<BvhFile> parseBvh(const std::string& text, const std::string& sourceName)
     const auto frameTime = timeValue ? detail::parseNumber(*timeValue) : detail::ParsedNumber{};
     if (timeText.rfind("Frame Time", 0) != 0 || frameTime.status != NumberStatus::Ok || !(frameTime.value > 0.0))
         return parseError(sourceName, timeLine.number, "expected 'Frame Time: seconds' with a positive number, found " + detail::quoted(timeText));
+    if (!plausibleRate(1.0 / frameTime.value))
+        return parseError(sourceName, timeLine.number,
+                          "'Frame Time: " + detail::shortText(frameTime.value) + "' s: " + rateExpectation()
+                              + " (a frame time of at least 1e-6 s)");
     file.motion.frameTime = frameTime.value;
     ++i;
 

@@ -129,7 +129,7 @@ Result<Corpus> readCorpus(const fs::path& folder)
     corpus.name = *name;
     auto rate = numberField(reader, manifest, "rate_hz", "top level");
     if (!rate) return rate.error();
-    if (!(*rate > 0.0)) return reader.error("\"rate_hz\"", "expected a positive sample rate");
+    if (!plausibleRate(*rate)) return reader.error("\"rate_hz\"", rateExpectation());
     corpus.rateHz = *rate;
     if (manifest.contains("convention")) {
         auto convention = stringField(reader, manifest, "convention", "top level");

@@ -42,8 +42,8 @@ RigidTransform fastrakToWorkbench(const Eigen::Vector3d& positionCm, double azim
 
 Result<Take> parseFastrak(const std::string& text, const std::string& sourceName, const FastrakOptions& options)
 {
-    if (!(options.rateHz > 0.0) || !std::isfinite(options.rateHz))
-        return makeError(ErrorCode::InvalidArgument, sourceName + ": the sample rate must be a positive number");
+    if (!plausibleRate(options.rateHz))
+        return makeError(ErrorCode::InvalidArgument, sourceName + ": the sample rate option: " + rateExpectation());
     for (std::size_t p = 0; p < 4; ++p)
         for (std::size_t q = p + 1; q < 4; ++q)
             if (options.stations[p] == options.stations[q])

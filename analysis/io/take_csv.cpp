@@ -101,8 +101,8 @@ Result<Take> parseTakeCsv(const std::string& text, const std::string& sourceName
     if (frames == 0) return parseError(sourceName, headerLine.number, "expected data rows after the header, found none");
 
     double rate = options.rateHz.value_or(0.0);
-    if (options.rateHz && !(*options.rateHz > 0.0 && std::isfinite(*options.rateHz)))
-        return makeError(ErrorCode::InvalidArgument, sourceName + ": the sample rate must be a positive number");
+    if (options.rateHz && !plausibleRate(*options.rateHz))
+        return makeError(ErrorCode::InvalidArgument, sourceName + ": the sample rate option: " + rateExpectation());
     if (hasTime && frames >= 2) {
         for (std::size_t f = 1; f < frames; ++f)
             if (!(times[f] > times[f - 1]))
@@ -121,6 +121,9 @@ Result<Take> parseTakeCsv(const std::string& text, const std::string& sourceName
             // Times written with finite precision: snap to a rate with few decimals when that close.
             const double snapped = std::round(rate * 1e6) / 1e6;
             if (std::fabs(snapped - rate) <= 1e-9 * rate) rate = snapped;
+            if (!plausibleRate(rate))
+                return parseError(sourceName, rowLines[1],
+                                  "time_s steps of " + detail::shortText(step) + " s: " + rateExpectation());
         }
     } else if (!options.rateHz) {
         if (!hasTime) return parseError(sourceName, headerLine.number, "no time_s column: expected one, or a sample rate option");

@@ -347,12 +347,19 @@ void runExperiment(const ExperimentArgs& args)
     Km2oExperimentOptions options;
     options.finalTime = args.finalTime;
     const auto colon = args.range.find(':');
+    // The whole text of each part must be a number ("3x:20" is refused, not read as 3:20).
+    const auto whole = [&](const std::string& text) {
+        std::size_t used = 0;
+        const int value = std::stoi(text, &used);
+        if (used != text.size()) throw std::invalid_argument(text);
+        return value;
+    };
     try {
         if (colon == std::string::npos) {
-            options.firstM = options.lastM = std::stoi(args.range);
+            options.firstM = options.lastM = whole(args.range);
         } else {
-            options.firstM = std::stoi(args.range.substr(0, colon));
-            options.lastM = std::stoi(args.range.substr(colon + 1));
+            options.firstM = whole(args.range.substr(0, colon));
+            options.lastM = whole(args.range.substr(colon + 1));
         }
     } catch (const std::exception&) {
         throw CliError("--M expects FIRST:LAST (e.g. 3:20), got '" + args.range + "'");

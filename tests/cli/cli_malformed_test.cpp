@@ -150,6 +150,13 @@ TEST_CASE("decompose and emotion reject bad options with one line and write noth
     }
     CHECK_FALSE(std::filesystem::exists(out));
     CHECK_FALSE(std::filesystem::exists(out.string() + ".csv"));
+    // A range with trailing garbage is refused, not read as its leading number.
+    for (const std::string range : {"3x:20", "3:20y", "x", "3:"}) {
+        const auto run = runBunraku({"experiment", "km2o", "--T", "300", "--seeds", "1", "--M", range});
+        INFO(range << ": " << run.err);
+        CHECK(isOneLineError(run.exitCode, run.err));
+        CHECK(run.err.find("--M expects FIRST:LAST") != std::string::npos);
+    }
 }
 
 TEST_CASE("decompose of a corpus too short for spectra fails before writing anything", "[cli]")

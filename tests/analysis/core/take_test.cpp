@@ -50,3 +50,22 @@ TEST_CASE("validation names the first non-finite value", "[take]")
     take.channels.pop_back();
     CHECK_FALSE(validateTake(take).ok());
 }
+
+TEST_CASE("validation refuses sample rates no recording has", "[take]")
+{
+    Take take;
+    take.channels = puppetChannels();
+    take.values = Eigen::MatrixXd::Zero(3, 24);
+    for (double rate : {120.0, 1.0e-3, kMaxRateHz}) {
+        take.rateHz = rate;
+        CHECK(validateTake(take).ok());
+    }
+    for (double rate : {0.0, -5.0, 1.0e300, kMaxRateHz * 1.01, std::numeric_limits<double>::infinity(),
+                        std::numeric_limits<double>::quiet_NaN()}) {
+        take.rateHz = rate;
+        const auto status = validateTake(take);
+        INFO(rate);
+        REQUIRE_FALSE(status.ok());
+        CHECK(status.error().message.find("(0, 1000000] Hz") != std::string::npos);
+    }
+}

@@ -134,6 +134,7 @@ TEST_CASE("malformed bvh files give errors naming the file and line")
         {replace("Frames: 1", "Frames: 99999999999999"), "bad.bvh:17", "only 1 lines"},
         {replace("Frames: 1", "Frames: 2") + "\n\n", "bad.bvh", "expected 2 motion rows"},
         {replace("Frame Time: 0.1", "Frame Time: 0"), "bad.bvh:18", "Frame Time"},
+        {replace("Frame Time: 0.1", "Frame Time: 1e-300"), "bad.bvh:18", "(0, 1000000] Hz"},
         {replace("\n1 2\n", "\n1\n"), "bad.bvh:19", "expected 2 channel values"},
         {replace("\n1 2\n", "\n1 inf\n"), "bad.bvh:19", "non-finite"},
         {replace("\n1 2\n", "\n1 2x\n"), "bad.bvh:19", "expected a number"},

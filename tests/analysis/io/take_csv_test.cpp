@@ -94,6 +94,12 @@ TEST_CASE("csv errors name the file, line and column")
         REQUIRE_FALSE(take.ok());
         CHECK_THAT(take.error().message, Contains("time.csv:4") && Contains("not uniform"));
     }
+    SECTION("time steps too short for any recording name the line and the rates accepted")
+    {
+        auto take = parseTakeCsv("time_s,head.x\n0,1\n1e-300,1\n2e-300,1\n", "fast.csv");
+        REQUIRE_FALSE(take.ok());
+        CHECK_THAT(take.error().message, Contains("fast.csv:3") && Contains("(0, 1000000] Hz"));
+    }
     SECTION("a time column that goes back names the line where it does")
     {
         auto take = parseTakeCsv("time_s,head.x\n0,1\n0.2,1\n0.1,1\n", "back.csv");
