@@ -14,6 +14,20 @@
 
 using namespace bunraku;
 
+namespace {
+
+/// A scrub bar of `seconds` with phrase ticks at `boundaries`, shown and exposed.
+void showBar(widgets::ScrubBar& bar, double seconds, std::vector<double> boundaries, QSize size = QSize(400, 34))
+{
+    bar.resize(size);
+    bar.setDuration(seconds);
+    bar.setBoundaries(std::move(boundaries));
+    bar.show();
+    REQUIRE(QTest::qWaitForWindowExposed(&bar));
+}
+
+} // namespace
+
 TEST_CASE("the timeline's keys request play, steps, start and end", "[widgets][timeline]")
 {
     widgets::TimelineWidget timeline;
@@ -53,11 +67,7 @@ TEST_CASE("the speed is limited to 0.1x to 4x", "[widgets][timeline]")
 TEST_CASE("pressing the scrub bar requests the time under the mouse", "[widgets][timeline]")
 {
     widgets::ScrubBar bar;
-    bar.resize(416, 30);
-    bar.setDuration(20.0);
-    bar.setBoundaries({4.0, 10.0});
-    bar.show();
-    REQUIRE(QTest::qWaitForWindowExposed(&bar));
+    showBar(bar, 20.0, {4.0, 10.0}, QSize(416, 30));
     QSignalSpy scrubbed(&bar, &widgets::ScrubBar::scrubbed);
     QTest::mousePress(&bar, Qt::LeftButton, Qt::NoModifier, QPoint(bar.xOfTime(5.0), 15));
     REQUIRE(scrubbed.count() == 1);
@@ -69,11 +79,7 @@ TEST_CASE("pressing the scrub bar requests the time under the mouse", "[widgets]
 TEST_CASE("an editable phrase tick is dragged instead of scrubbing", "[widgets][timeline]")
 {
     widgets::ScrubBar bar;
-    bar.resize(400, 34);
-    bar.setDuration(10.0);
-    bar.setBoundaries({3.0, 6.0});
-    bar.show();
-    REQUIRE(QTest::qWaitForWindowExposed(&bar));
+    showBar(bar, 10.0, {3.0, 6.0});
     QSignalSpy scrubbed(&bar, &widgets::ScrubBar::scrubbed);
     QSignalSpy started(&bar, &widgets::ScrubBar::boundaryDragStarted);
     QSignalSpy dragged(&bar, &widgets::ScrubBar::boundaryDragged);
@@ -112,11 +118,7 @@ TEST_CASE("editable phrase ticks are added by double click and context menu, rem
           "[widgets][timeline]")
 {
     widgets::ScrubBar bar;
-    bar.resize(400, 34);
-    bar.setDuration(10.0);
-    bar.setBoundaries({3.0, 6.0});
-    bar.show();
-    REQUIRE(QTest::qWaitForWindowExposed(&bar));
+    showBar(bar, 10.0, {3.0, 6.0});
     QSignalSpy added(&bar, &widgets::ScrubBar::boundaryAddRequested);
     QSignalSpy removed(&bar, &widgets::ScrubBar::boundaryRemoveRequested);
     const int y = bar.height() / 2;
@@ -178,12 +180,8 @@ TEST_CASE("editable phrase ticks are added by double click and context menu, rem
 TEST_CASE("a tick drag interrupted by a context menu ends (the release never comes)", "[widgets][timeline]")
 {
     widgets::ScrubBar bar;
-    bar.resize(400, 34);
-    bar.setDuration(10.0);
-    bar.setBoundaries({3.0, 6.0});
+    showBar(bar, 10.0, {3.0, 6.0});
     bar.setBoundariesEditable(true);
-    bar.show();
-    REQUIRE(QTest::qWaitForWindowExposed(&bar));
     QSignalSpy started(&bar, &widgets::ScrubBar::boundaryDragStarted);
     QSignalSpy finished(&bar, &widgets::ScrubBar::boundaryDragFinished);
     const QPoint tick(bar.xOfTime(3.0), bar.height() / 2);
