@@ -1,5 +1,7 @@
 #include "analysis/core/take.h"
 
+#include "analysis/core/skeleton.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -54,6 +56,13 @@ Status validateTake(const Take& take)
             if (!std::isfinite(take.values(f, c)))
                 return makeError(ErrorCode::Numerical, name + ": non-finite value at frame " + std::to_string(f) +
                                                            ", channel " + take.channels[std::size_t(c)].name());
+    if (take.skeleton) {
+        if (auto ok = validateSkeletalMotion(*take.skeleton); !ok)
+            return makeError(ok.error().code, name + ": " + ok.error().message);
+        if (take.skeleton->frameCount() != take.values.rows())
+            return makeError(ErrorCode::InvalidArgument, name + ": the skeleton has " + std::to_string(take.skeleton->frameCount()) +
+                                                             " frames but the take " + std::to_string(take.values.rows()));
+    }
     return okStatus();
 }
 

@@ -7,12 +7,15 @@
 
 #include <Eigen/Core>
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace bunraku::analysis {
+
+struct SkeletalMotion; // analysis/core/skeleton.h
 
 /// One column of a take: a part (head, Hand_R, axis...) and a degree of freedom of it.
 struct Channel {
@@ -40,6 +43,10 @@ struct Take {
     double rateHz = 5.0;
     std::vector<Channel> channels;
     TakeLabels labels;
+    /// The performer's full skeleton and its motion, frame for frame with `values`, when the take
+    /// came from (or was derived from) a file with a skeleton; null otherwise. Shared and
+    /// immutable: a derived take builds a new one (analysis/core/skeleton.h).
+    std::shared_ptr<const SkeletalMotion> skeleton;
 
     Eigen::Index frameCount() const { return values.rows(); }
     Eigen::Index channelCount() const { return values.cols(); }

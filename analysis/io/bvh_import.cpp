@@ -83,6 +83,18 @@ Status checkOptions(const BvhFile& file, const BvhImportOptions& options)
     return okStatus();
 }
 
+JointChannel toJointChannel(BvhChannel channel)
+{
+    switch (channel) {
+    case BvhChannel::Xposition: return JointChannel::Xposition;
+    case BvhChannel::Yposition: return JointChannel::Yposition;
+    case BvhChannel::Zposition: return JointChannel::Zposition;
+    case BvhChannel::Xrotation: return JointChannel::Xrotation;
+    case BvhChannel::Yrotation: return JointChannel::Yrotation;
+    default: return JointChannel::Zrotation;
+    }
+}
+
 } // namespace
 
 Result<JointMap> parseJointMap(const std::string& text, const JointMap& base)
@@ -191,6 +203,62 @@ double bvhRateHz(double frameTime)
     return whole > 0.0 && std::fabs(rate - whole) <= 1e-4 * rate ? whole : rate;
 }
 
+Result<std::shared_ptr<const SkeletalMotion>> bvhToSkeletalMotion(const BvhFile& file, const BvhImportOptions& options,
+                                                                  const std::array<int, 4>* joints)
+{
+    if (auto ok = checkOptions(file, options); !ok) return ok.error();
+    const BvhUpAxis upAxis = resolveUpAxis(file, options.upAxis);
+    const Eigen::Quaterniond world_R_file = bvhAxisChange(upAxis);
+    const double scale = options.unitScale;
+    auto skeleton = std::make_shared<Skeleton>();
+    skeleton->name = std::filesystem::path(file.source).stem().string();
+    skeleton->source = SourceFrame{world_R_file, scale, upAxis == BvhUpAxis::Z ? "z" : "y"};
+    skeleton->positionMode = options.kinematics.positionMode == BvhPositionMode::ReplaceOffset ? PositionChannelMode::ReplaceOffset
+                                                                                               : PositionChannelMode::AddToOffset;
+    const std::size_t slots = file.skeleton.joints.size();
+    skeleton->joints.reserve(slots);
+    for (const BvhJoint& joint : file.skeleton.joints) {
+        SkeletonJoint out;
+        out.name = joint.name;
+        out.parent = joint.parent;
+        out.offset = world_R_file * (scale * joint.offset);
+        out.endSite = joint.endSite;
+        for (const BvhChannel c : joint.channels) out.channels.push_back(toJointChannel(c));
+        skeleton->joints.push_back(std::move(out));
+    }
+    if (joints)
+        for (std::size_t p = 0; p < 4; ++p) skeleton->parts.push_back(PartBinding{std::string(kPuppetParts[p]), (*joints)[p], {}});
+    if (auto valid = validateSkeleton(*skeleton); !valid) return makeError(valid.error().code, file.source + ": " + valid.error().message);
+
+    const Eigen::Index frames = file.motion.values.rows();
+    auto motion = std::make_shared<SkeletalMotion>(makeRestMotion(skeleton, frames));
+    // Local translations of every frame first, to tell moving joints from static ones.
+    std::vector<Eigen::Vector3d> translations(std::size_t(frames) * slots);
+    for (Eigen::Index f = 0; f < frames; ++f) {
+        const auto local = bvhLocalPoses(file, f, options.kinematics);
+        for (std::size_t j = 0; j < slots; ++j) {
+            const RigidTransform pose = toWorkbench(local[j], world_R_file, scale);
+            motion->rotation(f, int(j)) = pose.rotation;
+            translations[std::size_t(f) * slots + j] = pose.translation;
+        }
+    }
+    for (std::size_t j = 0; j < slots; ++j) {
+        const Eigen::Vector3d first = frames > 0 ? translations[j] : skeleton->joints[j].offset;
+        bool moving = false;
+        for (Eigen::Index f = 1; f < frames && !moving; ++f) moving = translations[std::size_t(f) * slots + j] != first;
+        motion->staticTranslations[j] = first;
+        if (moving) motion->movingJoints.push_back(int(j));
+    }
+    motion->movingTranslations.resize(frames, Eigen::Index(3 * motion->movingJoints.size()));
+    for (std::size_t k = 0; k < motion->movingJoints.size(); ++k)
+        for (Eigen::Index f = 0; f < frames; ++f)
+            motion->movingTranslations.block<1, 3>(f, Eigen::Index(3 * k)) =
+                translations[std::size_t(f) * slots + std::size_t(motion->movingJoints[k])].transpose();
+    if (auto valid = validateSkeletalMotion(*motion); !valid)
+        return makeError(ErrorCode::Numerical, file.source + ": the poses overflow (values too large?): " + valid.error().message);
+    return std::shared_ptr<const SkeletalMotion>(std::move(motion));
+}
+
 Result<Take> bvhToPuppetTake(const BvhFile& file, const BvhImportOptions& options)
 {
     if (auto ok = checkOptions(file, options); !ok) return ok.error();
@@ -208,6 +276,9 @@ Result<Take> bvhToPuppetTake(const BvhFile& file, const BvhImportOptions& option
         for (int p = 0; p < kPuppetPartCount; ++p)
             setPartPose(take, f, Eigen::Index(p) * kDofCount, poses[std::size_t((*joints)[std::size_t(p)])]);
     }
+    auto skeleton = bvhToSkeletalMotion(file, options, &*joints);
+    if (!skeleton) return skeleton.error();
+    take.skeleton = *skeleton;
     if (auto valid = validateTake(take); !valid)
         return makeError(ErrorCode::Numerical, file.source + ": the poses overflow (values too large?): " + valid.error().message);
     return take;
@@ -232,6 +303,9 @@ Result<Take> bvhToJointTake(const BvhFile& file, const BvhImportOptions& options
         const auto poses = bvhWorkbenchPoses(file, f, upAxis, options.unitScale, options.kinematics);
         for (std::size_t k = 0; k < kept.size(); ++k) setPartPose(take, f, Eigen::Index(k) * kDofCount, poses[kept[k]]);
     }
+    auto skeleton = bvhToSkeletalMotion(file, options);
+    if (!skeleton) return skeleton.error();
+    take.skeleton = *skeleton;
     if (auto valid = validateTake(take); !valid)
         return makeError(ErrorCode::Numerical, file.source + ": the poses overflow (values too large?): " + valid.error().message);
     return take;

@@ -3,6 +3,7 @@
 /// fixed axis change plus a unit scale bring the file's world into the workbench convention
 /// (right-handed, z up, x towards the partner = the performer's forward, cm). docs/FORMATS.md.
 
+#include "analysis/core/skeleton.h"
 #include "analysis/core/take.h"
 #include "analysis/io/bvh.h"
 
@@ -56,6 +57,13 @@ std::vector<RigidTransform> bvhWorkbenchPoses(const BvhFile& file, Eigen::Index 
 /// 1 / frameTime, snapped to the nearest whole number of Hz when within 1e-4 of it (files write
 /// 30 fps as "Frame Time: 0.0333333").
 double bvhRateHz(double frameTime);
+
+/// The file's whole skeleton and motion in workbench axes and cm (analysis/core/skeleton.h):
+/// offsets and local poses re-expressed as C * file_T_joint * C^-1 with scaled translations,
+/// the source's channels and axes kept for writing it back. `parts` binds the puppet parts of
+/// `joints` (when given) with the identity calibration.
+Result<std::shared_ptr<const SkeletalMotion>> bvhToSkeletalMotion(const BvhFile& file, const BvhImportOptions& options = {},
+                                                                  const std::array<int, 4>* joints = nullptr);
 
 /// The 24-channel puppet take (head.x ... hand.roll), angles continuous, rate 1/Frame Time.
 Result<Take> bvhToPuppetTake(const BvhFile& file, const BvhImportOptions& options = {});

@@ -134,3 +134,39 @@ TEST_CASE("in the wave files the right hand moves the most")
         CHECK(hand > 2.0 * pathLength(*leftTake, 3));
     }
 }
+
+TEST_CASE("a bandai take keeps its whole skeleton, posed as the file's forward kinematics")
+{
+    auto file = loadBandai("wave-right-hand_active_001.bvh");
+    if (!file) {
+        WARN("Bandai test data not found in " << bunraku::test::bandaiDir() << "; skipping");
+        return;
+    }
+    auto take = bvhToPuppetTake(*file);
+    REQUIRE(take.ok());
+    REQUIRE(take->skeleton);
+    const SkeletalMotion& motion = *take->skeleton;
+    CHECK(motion.frameCount() == take->frameCount());
+    CHECK(motion.skeleton->jointCount() == 22);
+    CHECK(motion.skeleton->joints.size() == 27);
+    CHECK(motion.skeleton->parts.size() == 4);
+    // Only Hips moves (its position channels carry the world translation); every bone is rigid.
+    REQUIRE(motion.movingJoints.size() == 1);
+    CHECK(motion.skeleton->joints[std::size_t(motion.movingJoints[0])].name == "Hips");
+    const BvhUpAxis upAxis = resolveUpAxis(*file, BvhUpAxis::Auto);
+    for (Eigen::Index f : {Eigen::Index(0), take->frameCount() / 2, take->frameCount() - 1}) {
+        const auto expected = bvhWorkbenchPoses(*file, f, upAxis, 1.0);
+        const auto actual = motion.worldPoses(f);
+        REQUIRE(actual.size() == expected.size());
+        for (std::size_t j = 0; j < actual.size(); ++j) {
+            INFO("frame " << f << ", joint " << motion.skeleton->joints[j].name);
+            CHECK((actual[j].translation - expected[j].translation).norm() < 1e-9);
+            CHECK(actual[j].rotation.angularDistance(expected[j].rotation) < 1e-9);
+        }
+        for (int p = 0; p < kPuppetPartCount; ++p) {
+            const auto part = motion.partPose(f, kPuppetParts[std::size_t(p)]);
+            REQUIRE(part.has_value());
+            CHECK((part->translation - partPose(*take, f, p * kDofCount).translation).norm() < 1e-9);
+        }
+    }
+}
