@@ -10,6 +10,7 @@
 #include "app/playback_controller.h"
 #include "app/recomputer.h"
 #include "app/video_export_dialog.h"
+#include "app/export_controller.h"
 #include "app/viewport_panel.h"
 
 #include "widgets/corpus_browser.h"
@@ -57,6 +58,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_document(new Do
     setDockNestingEnabled(true);
     setDockOptions(AnimatedDocks | AllowNestedDocks | AllowTabbedDocks);
     m_files = new FileController(*m_document, this);
+    m_exports = new ExportController(*m_document, this);
     m_files->setViewStateHooks([this] { return viewState(); }, [this](const QVariantMap& state) { restoreViewState(state); });
     m_playback = new PlaybackController(*m_document, this);
     m_status = new QLabel(this);
@@ -71,6 +73,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_document(new Do
     connectDocument();
 
     connect(m_files, &FileController::statusMessage, this, [this](const QString& message) { m_status->setText(message); });
+    connect(m_exports, &ExportController::statusMessage, this, [this](const QString& message) { m_status->setText(message); });
 
     resize(1500, 920);
     m_defaultState = saveState(kLayoutVersion);
@@ -153,8 +156,8 @@ void MainWindow::createMenus()
     file->addAction(m_files->saveProjectAsAction());
     file->addSeparator();
     file->addAction(m_files->importAction());
-    file->addAction(m_files->exportCsvAction());
-    file->addAction(m_files->exportBvhAction());
+    file->addAction(m_exports->exportAction(TakeSlot::A));
+    file->addAction(m_exports->exportAction(TakeSlot::B));
     file->addAction(tr("Save &Screenshot..."), this, &MainWindow::chooseScreenshot);
     auto* video = file->addAction(tr("Export 3D View &Video..."), this, &MainWindow::chooseViewVideo);
     video->setObjectName("exportViewVideoAction");

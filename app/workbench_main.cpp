@@ -1,6 +1,7 @@
 #include "app/workbench_main.h"
 
 #include "app/file_controller.h"
+#include "app/export_controller.h"
 #include "app/main_window.h"
 
 #include <QApplication>
@@ -34,6 +35,7 @@ int runWorkbench(int argc, char** argv)
     MainWindow window;
     const bool batch = parser.isSet(screenshot);
     window.files().setDialogsEnabled(!batch);
+    window.exports().setDialogsEnabled(!batch);
     if (!batch && !parser.isSet(defaultLayout)) window.restoreSavedLayout();
 
     const QStringList paths = parser.positionalArguments();
