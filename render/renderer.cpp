@@ -51,13 +51,25 @@ struct Renderer::Slot {
     std::vector<GpuMesh> orbits;                  ///< one line strip per sensor, take coordinates
     Eigen::Index frame = 0;
     std::vector<glm::mat4> take_T_part; ///< at `frame`, one per body part
-    // The performer's skeleton, when the take has one.
-    std::vector<GpuMesh> skeletonMeshes;  ///< one per Skeleton::joints, in the joint frame
-    std::vector<std::string> jointNames;
-    std::vector<std::string> jointParts;  ///< the puppet part each joint carries, or ""
+    std::shared_ptr<SkeletonFigure> skeleton; ///< the performer's skeleton, when the take has one
     std::vector<glm::mat4> take_T_joint;  ///< at `frame`, one per joint
     float puppetLowest = 0.0f, puppetHighest = 0.0f;     ///< cm, at frame 0
     float skeletonLowest = 0.0f, skeletonHighest = 0.0f; ///< cm, at frame 0
+};
+
+struct Renderer::SkeletonFigure {
+    std::shared_ptr<const analysis::Skeleton> skeleton;
+    std::vector<Eigen::Vector3d> bones; ///< the static translations the meshes were built for
+    std::vector<int> movingJoints;
+    std::vector<GpuMesh> meshes;        ///< one per Skeleton::joints, in the joint frame
+    std::vector<std::string> jointNames;
+    std::vector<std::string> jointParts; ///< the puppet part each joint carries, or ""
+    float jointRadius = 0.0f;
+
+    void release(QOpenGLExtraFunctions& gl)
+    {
+        for (GpuMesh& mesh : meshes) mesh.release(gl);
+    }
 };
 
 Renderer::Renderer() = default;
@@ -105,7 +117,7 @@ void Renderer::releaseSceneBuffers()
     m_partMeshes.clear();
     for (Slot& slot : m_slots) {
         for (GpuMesh& orbit : slot.orbits) orbit.release(*m_gl);
-        for (GpuMesh& mesh : slot.skeletonMeshes) mesh.release(*m_gl);
+        if (slot.skeleton) slot.skeleton->release(*m_gl);
     }
     m_slots.clear();
     m_grid.release(*m_gl);
@@ -129,6 +141,9 @@ analysis::Status Renderer::setScene(const SceneContent& scene, const LayoutOptio
     if (m_gl == nullptr)
         return analysis::makeError(analysis::ErrorCode::InvalidArgument, "the renderer is not initialised");
     if (auto status = validateScene(scene); !status.ok()) return status;
+    std::vector<std::shared_ptr<SkeletonFigure>> reusable;
+    for (Slot& slot : m_slots)
+        if (slot.skeleton) reusable.push_back(std::move(slot.skeleton));
     releaseSceneBuffers();
     m_layout = layout;
     m_body = scene.body;
@@ -173,23 +188,44 @@ analysis::Status Renderer::setScene(const SceneContent& scene, const LayoutOptio
         for (const auto& pose : analysis::worldPartPoses(m_body, slot.binding, slot.take, 0)) partPoses.push_back(toMatrix(pose));
         extent(meshes, partPoses, slot.puppetLowest, slot.puppetHighest);
         if (slot.take.skeleton) {
-            const analysis::SkeletalMotion& motion = *slot.take.skeleton;
-            const std::vector<Mesh> bones = buildSkeletonMeshes(motion);
-            slot.skeletonMeshes.resize(bones.size());
-            for (std::size_t j = 0; j < bones.size(); ++j) slot.skeletonMeshes[j].upload(*m_gl, bones[j]);
-            for (std::size_t j = 0; j < motion.skeleton->joints.size(); ++j) {
-                slot.jointNames.push_back(motion.skeleton->joints[j].name);
-                slot.jointParts.push_back(jointPart(*motion.skeleton, int(j)));
+            slot.skeleton = skeletonFigure(*slot.take.skeleton, reusable);
+            // Joint spheres are the figure's extremes (bones are thinner).
+            slot.skeletonLowest = std::numeric_limits<float>::max();
+            slot.skeletonHighest = std::numeric_limits<float>::lowest();
+            for (const auto& pose : slot.take.skeleton->worldPoses(0)) {
+                slot.skeletonLowest = std::min(slot.skeletonLowest, float(pose.translation.z()) - slot.skeleton->jointRadius);
+                slot.skeletonHighest = std::max(slot.skeletonHighest, float(pose.translation.z()) + slot.skeleton->jointRadius);
             }
-            std::vector<glm::mat4> jointPoses;
-            for (const auto& pose : motion.worldPoses(0)) jointPoses.push_back(toMatrix(pose));
-            extent(bones, jointPoses, slot.skeletonLowest, slot.skeletonHighest);
         }
         m_slots.push_back(std::move(slot));
     }
+    for (auto& unused : reusable)
+        if (unused && unused.use_count() == 1) unused->release(*m_gl);
     m_grid.upload(*m_gl, gridMesh(m_layout.gridHalfExtent, m_layout.gridSpacing));
     setFrame(0);
     return analysis::okStatus();
+}
+
+std::shared_ptr<Renderer::SkeletonFigure> Renderer::skeletonFigure(const analysis::SkeletalMotion& motion,
+                                                                   std::vector<std::shared_ptr<SkeletonFigure>>& reusable)
+{
+    for (const auto& figure : reusable)
+        if (figure->skeleton == motion.skeleton && figure->movingJoints == motion.movingJoints && figure->bones == motion.staticTranslations)
+            return figure;
+    auto figure = std::make_shared<SkeletonFigure>();
+    figure->skeleton = motion.skeleton;
+    figure->bones = motion.staticTranslations;
+    figure->movingJoints = motion.movingJoints;
+    figure->jointRadius = skeletonJointRadius(motion);
+    const std::vector<Mesh> meshes = buildSkeletonMeshes(motion);
+    figure->meshes.resize(meshes.size());
+    for (std::size_t j = 0; j < meshes.size(); ++j) figure->meshes[j].upload(*m_gl, meshes[j]);
+    for (std::size_t j = 0; j < motion.skeleton->joints.size(); ++j) {
+        figure->jointNames.push_back(motion.skeleton->joints[j].name);
+        figure->jointParts.push_back(jointPart(*motion.skeleton, int(j)));
+    }
+    reusable.push_back(figure);
+    return figure;
 }
 
 void Renderer::updatePoses(Slot& slot) const
@@ -354,8 +390,8 @@ void Renderer::drawScene(const Camera& camera, QSize size, bool partIds)
             }
         }
         if (skeletonDrawn(int(s))) {
-            for (std::size_t j = 0; j < slot.skeletonMeshes.size() && j < slot.take_T_joint.size(); ++j) {
-                if (slot.skeletonMeshes[j].empty()) continue; // End Sites
+            for (std::size_t j = 0; j < slot.skeleton->meshes.size() && j < slot.take_T_joint.size(); ++j) {
+                if (slot.skeleton->meshes[j].empty()) continue; // End Sites
                 setModel(root * slot.take_T_joint[j]);
                 if (partIds) {
                     const int id = int(j) + 1;
@@ -363,7 +399,7 @@ void Renderer::drawScene(const Camera& camera, QSize size, bool partIds)
                 } else {
                     setColour(glm::vec3(1.0f), true, true);
                 }
-                slot.skeletonMeshes[j].draw(gl);
+                slot.skeleton->meshes[j].draw(gl);
             }
         }
         if (partIds) continue;
@@ -467,11 +503,11 @@ std::optional<PickResult> Renderer::decodePartId(QRgb pixel) const
     if (result.partIndex == kSkeletonId) {
         const Slot& slot = m_slots[std::size_t(result.takeSlot)];
         const int joint = qGreen(pixel) + 256 * qBlue(pixel) - 1;
-        if (joint < 0 || joint >= int(slot.jointNames.size())) return std::nullopt;
+        if (!slot.skeleton || joint < 0 || joint >= int(slot.skeleton->jointNames.size())) return std::nullopt;
         result.partIndex = -1;
         result.joint = joint;
-        result.jointName = slot.jointNames[std::size_t(joint)];
-        result.partName = slot.jointParts[std::size_t(joint)];
+        result.jointName = slot.skeleton->jointNames[std::size_t(joint)];
+        result.partName = slot.skeleton->jointParts[std::size_t(joint)];
         return result;
     }
     if (result.partIndex >= int(m_partNames.size())) return std::nullopt;

@@ -106,6 +106,11 @@ public:
 
 private:
     struct Slot;
+    struct SkeletonFigure;
+    /// The uploaded skeleton of a take: reused when the next scene shows the same skeleton with
+    /// the same bones (a scene is replaced on every step of a drag).
+    std::shared_ptr<SkeletonFigure> skeletonFigure(const analysis::SkeletalMotion& motion,
+                                                   std::vector<std::shared_ptr<SkeletonFigure>>& reusable);
     void updatePoses(Slot& slot) const;
     void drawScene(const Camera& camera, QSize size, bool partIds);
     void setModel(const glm::mat4& model);

@@ -41,6 +41,11 @@ float skeletonHeight(const analysis::SkeletalMotion& motion)
     return std::max(1.0f, float(high - low));
 }
 
+float skeletonJointRadius(const analysis::SkeletalMotion& motion, const SkeletonStyle& style)
+{
+    return style.jointRadiusScale * style.boneRadiusPerHeight * skeletonHeight(motion);
+}
+
 Mesh capsuleMesh(float radius, float length, int segments, int capStacks)
 {
     Mesh mesh;
@@ -87,7 +92,7 @@ std::vector<Mesh> buildSkeletonMeshes(const analysis::SkeletalMotion& motion, co
 {
     const analysis::Skeleton& skeleton = *motion.skeleton;
     const float boneRadius = style.boneRadiusPerHeight * skeletonHeight(motion);
-    const float jointRadius = style.jointRadiusScale * boneRadius;
+    const float jointRadius = skeletonJointRadius(motion, style);
     std::vector<Mesh> meshes(skeleton.joints.size());
     for (std::size_t j = 0; j < skeleton.joints.size(); ++j) {
         if (skeleton.joints[j].endSite) continue;
@@ -100,7 +105,7 @@ std::vector<Mesh> buildSkeletonMeshes(const analysis::SkeletalMotion& motion, co
             if (!isRigidBone(motion, child)) continue;
             const glm::vec3 bone = toGlm(motion.staticTranslations[std::size_t(child)]);
             const float length = glm::length(bone);
-            mesh.append(transformed(capsuleMesh(boneRadius, length, style.segments), zTo(bone / length)));
+            mesh.append(transformed(capsuleMesh(boneRadius, length, style.segments, 3), zTo(bone / length)));
         }
         paint(mesh, colour);
         meshes[j] = std::move(mesh);

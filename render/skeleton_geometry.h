@@ -15,12 +15,15 @@ namespace bunraku::render {
 struct SkeletonStyle {
     float boneRadiusPerHeight = 0.02f; ///< bone radius as a fraction of the skeleton's height
     float jointRadiusScale = 1.3f;     ///< joint sphere radius / bone radius
-    int segments = 16;                 ///< around each capsule and sphere
+    int segments = 12;                 ///< around each capsule and sphere
     glm::vec3 boneColour{0.86f, 0.82f, 0.72f};
 };
 
 /// Extent (cm) of the skeleton's joints along world z at the first frame; at least 1 cm.
 float skeletonHeight(const analysis::SkeletalMotion& motion);
+
+/// The radius (cm) of the joint spheres: the bones' radius times style.jointRadiusScale.
+float skeletonJointRadius(const analysis::SkeletalMotion& motion, const SkeletonStyle& style = {});
 
 /// A capsule of `radius` from the origin to (0, 0, length): a cylinder with hemispherical caps,
 /// smooth normals.
