@@ -239,6 +239,10 @@ void MainWindow::connectDocument()
     connect(m_design, &DesignController::prepared, this, &MainWindow::refreshBoundaries);
     connect(m_design, &DesignController::designed, this, &MainWindow::refreshBoundaries);
     connect(m_viewportPanel, &ViewportPanel::partPicked, m_graphs, &widgets::GraphPanel::selectPart);
+    connect(m_viewportPanel, &ViewportPanel::bonePicked, this, [this](int slot, const QString& joint, const QString& part) {
+        m_status->setText(part.isEmpty() ? tr("Bone %1 of take %2").arg(joint, slot == 0 ? QStringLiteral("A") : QStringLiteral("B"))
+                                         : tr("Bone %1 of take %2 (drives the %3)").arg(joint, slot == 0 ? QStringLiteral("A") : QStringLiteral("B"), part));
+    });
 }
 
 void MainWindow::refreshEntries()

@@ -157,7 +157,10 @@ ViewportPanel::ViewportPanel(Document& document, QWidget* parent) : QWidget(pare
             }
         emit partPicked(bodyPart);
     });
-    connect(m_viewport, &widgets::ViewportWidget::bonePicked, this, &ViewportPanel::bonePicked);
+    connect(m_viewport, &widgets::ViewportWidget::bonePicked, this, [this](int sceneSlot, const QString& joint, const QString& part) {
+        const auto shown = shownSlots(m_document); // the scene's takes are the shown slots, in order
+        emit bonePicked(sceneSlot < int(shown.size()) ? int(shown[std::size_t(sceneSlot)]) : sceneSlot, joint, part);
+    });
     rebuildScene();
 }
 

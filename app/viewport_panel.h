@@ -38,7 +38,7 @@ signals:
     /// A part of the puppet was clicked (its name in the take's channels when it has one), or a
     /// bone of a skeleton that carries a part.
     void partPicked(const QString& part);
-    /// A bone of a skeleton was clicked (take slot, joint, the part it carries or "").
+    /// A bone of a skeleton was clicked (take slot: 0 = A, 1 = B; joint; the part it carries or "").
     void bonePicked(int takeSlot, const QString& joint, const QString& part);
 
 public:

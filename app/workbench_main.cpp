@@ -3,8 +3,11 @@
 #include "app/file_controller.h"
 #include "app/export_controller.h"
 #include "app/main_window.h"
+#include "app/viewport_panel.h"
+#include "render/scene.h"
 
 #include <QApplication>
+#include <QComboBox>
 #include <QCommandLineParser>
 #include <QFileInfo>
 #include <QTimer>
@@ -28,11 +31,30 @@ int runWorkbench(int argc, char** argv)
     parser.addPositionalArgument(QStringLiteral("path"), QStringLiteral("A corpus folder, a project file (.json) or a take file; default: the demo corpus."), QStringLiteral("[path]"));
     const QCommandLineOption screenshot(QStringLiteral("screenshot"), QStringLiteral("Save a PNG of the window once shown, then quit."), QStringLiteral("file"));
     const QCommandLineOption defaultLayout(QStringLiteral("default-layout"), QStringLiteral("Ignore the saved window layout."));
+    const QCommandLineOption figure(QStringLiteral("figure"),
+                                    QStringLiteral("The 3D view's figure for takes A and B: puppet, skeleton (the performer's, for takes read from BVH) or both."),
+                                    QStringLiteral("figure"));
     parser.addOption(screenshot);
     parser.addOption(defaultLayout);
+    parser.addOption(figure);
     parser.process(application);
 
     MainWindow window;
+    if (parser.isSet(figure)) {
+        const QString value = parser.value(figure);
+        const int style = value == QStringLiteral("puppet")     ? int(render::FigureStyle::Puppet)
+                          : value == QStringLiteral("skeleton") ? int(render::FigureStyle::Skeleton)
+                          : value == QStringLiteral("both")     ? int(render::FigureStyle::PuppetAndSkeleton)
+                                                                : -1;
+        if (style < 0) {
+            std::fprintf(stderr, "bunraku-workbench: --figure '%s': expected puppet, skeleton or both\n", qPrintable(value));
+            return 1;
+        }
+        for (int slot = 0; slot < 2; ++slot) {
+            QComboBox* box = window.viewportPanel()->figureBox(slot);
+            box->setCurrentIndex(box->findData(style));
+        }
+    }
     const bool batch = parser.isSet(screenshot);
     window.files().setDialogsEnabled(!batch);
     window.exports().setDialogsEnabled(!batch);

@@ -263,7 +263,9 @@ Eigen::Index Renderer::frame(int takeSlot) const { return m_slots.at(std::size_t
 glm::mat4 Renderer::takeRoot(int takeSlot, const Camera& camera) const
 {
     const Slot& slot = m_slots.at(std::size_t(takeSlot));
-    return slotRoot(slot.centre, takeSlot, int(m_slots.size()), camera, m_layout);
+    LayoutOptions layout = m_layout;
+    layout.separation *= framedHeight() / kPuppetFramedHeight;
+    return slotRoot(slot.centre, takeSlot, int(m_slots.size()), camera, layout);
 }
 
 std::vector<glm::mat4> Renderer::displayedPartTransforms(int takeSlot, const Camera& camera) const
@@ -322,16 +324,23 @@ float Renderer::floorHeight() const
     return lowest == std::numeric_limits<float>::max() ? 0.0f : lowest - 1.0f;
 }
 
+float Renderer::framedHeight() const
+{
+    // A drawn skeleton is framed by its height (a puppet by the height the distances were chosen for).
+    const float floor = floorHeight();
+    float height = kPuppetFramedHeight;
+    for (std::size_t s = 0; s < m_slots.size(); ++s)
+        if (skeletonDrawn(int(s))) height = std::max(height, m_slots[s].skeletonHighest - floor);
+    return height;
+}
+
 Camera Renderer::framingCamera() const
 {
     Camera camera;
     camera.angleDeg = 340.0f;
     camera.elevationDeg = 15.0f;
     const float floor = floorHeight();
-    // A drawn skeleton is framed by its height (a puppet by the height the distances were chosen for).
-    float height = kPuppetFramedHeight;
-    for (std::size_t s = 0; s < m_slots.size(); ++s)
-        if (skeletonDrawn(int(s))) height = std::max(height, m_slots[s].skeletonHighest - floor);
+    const float height = framedHeight();
     camera.target = {0.0f, 0.0f, floor + 0.5f * height};
     camera.distance = (m_slots.size() > 1 ? 300.0f : 230.0f) * height / kPuppetFramedHeight;
     return camera;

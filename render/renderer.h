@@ -82,7 +82,8 @@ public:
     std::optional<PickResult> decodePartId(QRgb pixel) const;
 
     // CPU-side placement (what render() uses), for picking by the caller, tests and overlays.
-    /// world_T_take of a slot under this camera (slotRoot).
+    /// world_T_take of a slot under this camera (slotRoot; the separation of two takes grows
+    /// with the figures' height when a skeleton taller than the puppet is drawn).
     glm::mat4 takeRoot(int takeSlot, const Camera& camera) const;
     /// Displayed world_T_part of every body part at the current frame (take root included).
     std::vector<glm::mat4> displayedPartTransforms(int takeSlot, const Camera& camera) const;
@@ -112,6 +113,8 @@ private:
     std::shared_ptr<SkeletonFigure> skeletonFigure(const analysis::SkeletalMotion& motion,
                                                    std::vector<std::shared_ptr<SkeletonFigure>>& reusable);
     void updatePoses(Slot& slot) const;
+    /// Height (cm) the view is framed for: a puppet's, or the tallest skeleton drawn.
+    float framedHeight() const;
     void drawScene(const Camera& camera, QSize size, bool partIds);
     void setModel(const glm::mat4& model);
     void setColour(const glm::vec3& colour, bool vertexColour, bool lit);
