@@ -3,7 +3,8 @@
 #include "app/commands.h"
 #include "app/design_controller.h"
 #include "app/emotion_panel.h"
-#include "app/parameters.h"
+#include "app/analysis_controller.h"
+#include "app/commands.h"
 
 #include "widgets/graph_panel.h"
 #include "widgets/corpus_browser.h"
@@ -110,8 +111,8 @@ TEST_CASE("a saved project reopens to the same state", "[app][files]")
         auto& document = window->document();
         REQUIRE(window->files().exportTake(takeFile));
         REQUIRE(window->files().importTakeFile(takeFile));
-        app::changeParameter(document, app::parameters::kNormaliseTau, 6);
-        app::changeParameter(document, app::parameters::kEmotionWeight, 1.75);
+        app::changeStageParameters(document, [](app::AnalysisParameters& p) { p.normalise.tau = 6; }, QStringLiteral("tau"));
+        app::setEmotionWeight(document, 1.75);
         takeB = app::Document::corpusTakeId(12);
         document.selectTake(TakeSlot::A, app::Document::corpusTakeId(3));
         document.selectTake(TakeSlot::B, takeB);
@@ -128,8 +129,8 @@ TEST_CASE("a saved project reopens to the same state", "[app][files]")
     REQUIRE(window->files().openProject(project));
     const auto& document = window->document();
     REQUIRE(document.corpusSource() == QStringLiteral("demo"));
-    REQUIRE(document.parameter(app::parameters::kNormaliseTau).toInt() == 6);
-    REQUIRE(document.parameter(app::parameters::kEmotionWeight).toDouble() == 1.75);
+    REQUIRE(document.parameters().normalise.tau == 6);
+    REQUIRE(document.parameters().design.emotionWeight == 1.75);
     REQUIRE(document.selectedId(TakeSlot::A) == app::Document::corpusTakeId(3));
     REQUIRE(document.selectedId(TakeSlot::B) == takeB);
     REQUIRE(document.currentTime() == Approx(5.4));
@@ -209,11 +210,11 @@ TEST_CASE("autosave writes the unsaved work and a saved project removes it", "[a
     auto& files = window->files();
     QFile::remove(files.autosavePath());
     REQUIRE_FALSE(files.autosave()); // nothing to save
-    app::changeParameter(window->document(), app::parameters::kNormaliseSearchBand, 12);
+    app::changeStageParameters(window->document(), [](app::AnalysisParameters& p) { p.normalise.searchBand = 12; }, QStringLiteral("band"));
     REQUIRE(files.autosave());
     const auto recovered = app::readProject(files.autosavePath());
     REQUIRE(recovered.ok());
-    REQUIRE(recovered->parameters.value(app::parameters::kNormaliseSearchBand).toInt() == 12);
+    REQUIRE(recovered->parameters.normalise.searchBand == 12);
     REQUIRE(files.saveProject(scratchFile("autosave-project", "p.bunraku.json")));
     REQUIRE_FALSE(QFile::exists(files.autosavePath()));
 }
