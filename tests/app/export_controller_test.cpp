@@ -21,7 +21,7 @@
 #include <iterator>
 
 using namespace bunraku;
-using widgets::TakeSlot;
+using app::TakeSlot;
 
 namespace {
 
