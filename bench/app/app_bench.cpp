@@ -290,7 +290,8 @@ bool showBandaiAsB(app::MainWindow& main, bool skeleton)
     if (id.isEmpty()) {
         const auto file = std::filesystem::path(BUNRAKU_SHARED_DIR) / "data" / "bandai" / "bye_angry_001.bvh";
         if (!main.files().importTakeFile(QString::fromStdString(file.string()))) return false;
-        id = main.document().derivedTakes().back().id;
+        for (const auto& derived : main.document().derivedTakes())
+            if (derived.id.startsWith(QStringLiteral("imported/"))) id = derived.id;
     }
     main.document().selectTake(app::TakeSlot::B, id);
     QComboBox* figure = main.viewportPanel()->figureBox(1);

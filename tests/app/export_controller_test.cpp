@@ -33,10 +33,12 @@ bool showBandaiTakes(app::MainWindow& window)
         return false;
     REQUIRE(window.files().importTakeFile(QString::fromStdString(normal.string())));
     REQUIRE(window.files().importTakeFile(QString::fromStdString(angry.string())));
-    const auto& derived = window.document().derivedTakes();
-    REQUIRE(derived.size() == 2);
-    window.document().selectTake(TakeSlot::A, derived[0].id);
-    window.document().selectTake(TakeSlot::B, derived[1].id);
+    QStringList imported;
+    for (const auto& derived : window.document().derivedTakes())
+        if (derived.id.startsWith(QStringLiteral("imported/"))) imported << derived.id;
+    REQUIRE(imported.size() == 2);
+    window.document().selectTake(TakeSlot::A, imported[0]);
+    window.document().selectTake(TakeSlot::B, imported[1]);
     return true;
 }
 
