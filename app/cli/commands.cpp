@@ -10,6 +10,7 @@ void addAllCommands(CommandSet& commands)
     addDecompositionCommands(commands);
     addMotionAxisCommands(commands);
     addRenderCommands(commands);
+    addHelpCommands(commands);
 }
 
 } // namespace bunraku::app::cli

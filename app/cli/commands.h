@@ -16,4 +16,6 @@ void addDecompositionCommands(CommandSet& commands);
 void addMotionAxisCommands(CommandSet& commands);
 /// render (cmd_render.cpp)
 void addRenderCommands(CommandSet& commands);
+/// help (cmd_help.cpp)
+void addHelpCommands(CommandSet& commands);
 } // namespace bunraku::app::cli
