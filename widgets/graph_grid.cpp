@@ -62,6 +62,9 @@ GraphGrid::GraphGrid(QWidget* parent) : QWidget(parent), m_plot(new QCustomPlot(
     connect(m_plot, &QCustomPlot::mouseMove, this, &GraphGrid::onMouseMove);
     connect(m_plot, &QCustomPlot::mouseRelease, this, &GraphGrid::onMouseRelease);
     connect(m_plot, &QCustomPlot::mouseDoubleClick, this, [this](QMouseEvent*) { resetTimeRange(); });
+    // The layout is known only inside a replot: graphs that changed width are resampled there,
+    // before anything is drawn.
+    connect(m_plot, &QCustomPlot::afterLayout, this, [this] { resampleCurves(true); });
     m_settle.setSingleShot(true);
     m_settle.setInterval(kSettleMs);
     connect(&m_settle, &QTimer::timeout, this, [this] {
@@ -224,39 +227,31 @@ void GraphGrid::rebuild(bool allData)
             graph.valueText->setPositionAlignment(Qt::AlignRight | Qt::AlignTop);
             graph.valueText->setFont(tickFont);
             m_plot->setCurrentLayer("main");
-            m_graphs.push_back(graph);
+            m_graphs.push_back(std::move(graph));
         }
         allData = true;
     }
 
     // Data: per curve, the channel of its take matched by name; only takes that changed.
     const bool changed[2] = {allData || m_plotted[0] != m_takes[0], allData || m_plotted[1] != m_takes[1]};
-    QVector<double> times[2];
-    for (int slot = 0; slot < 2; ++slot) {
-        m_plotted[slot] = m_takes[slot];
-        if (changed[slot] && m_takes[slot]) times[slot] = frameTimes(*m_takes[slot]);
-    }
-    const QVector<double> noData;
+    for (int slot = 0; slot < 2; ++slot) m_plotted[slot] = m_takes[slot];
     for (auto& graph : m_graphs) {
         for (int slot = 0; slot < 2; ++slot) {
             if (!changed[slot]) continue;
             graph.channels[slot].reset();
+            graph.envelopes[slot] = {};
             if (!graph.curves[slot]) continue;
             const analysis::Take* take = slotTake(slot);
             if (take) graph.channels[slot] = findChannel(*take, graph.cell.part, graph.cell.dof);
-            if (take && graph.channels[slot])
-                graph.curves[slot]->setData(times[slot], channelValues(*take, *graph.channels[slot]), true);
-            else
-                graph.curves[slot]->setData(noData, noData);
+            if (take && graph.channels[slot]) graph.envelopes[slot] = SeriesEnvelope(m_takes[slot], *graph.channels[slot]);
         }
         if (graph.ghost && allData) {
             graph.ghostChannel = findChannel(*m_ghost, graph.cell.part, graph.cell.dof);
-            if (graph.ghostChannel)
-                graph.ghost->setData(frameTimes(*m_ghost), channelValues(*m_ghost, *graph.ghostChannel), true);
-            else
-                graph.ghost->setData(noData, noData);
+            graph.ghostEnvelope = graph.ghostChannel ? SeriesEnvelope(m_ghost, *graph.ghostChannel) : SeriesEnvelope();
         }
+        if (changed[0] || changed[1] || allData) sampleCurves(graph);
     }
+    if (changed[0] || changed[1] || allData) ++m_samplings;
     updateCursorItems();
     if (!allData && !changed[0] && !changed[1]) {
         m_plot->layer(kCursorLayer)->replot(); // the same takes again: nothing to redraw
@@ -283,13 +278,13 @@ void GraphGrid::rebuild(bool allData)
 
 void GraphGrid::applyValueRanges()
 {
-    auto graphRange = [this](const Graph& graph) {
+    auto graphRange = [](const Graph& graph) {
         std::optional<ValueRange> range;
         for (int slot = 0; slot < 2; ++slot)
-            if (graph.curves[slot] && graph.channels[slot])
-                if (auto r = channelRange(*slotTake(slot), *graph.channels[slot])) range = merged(range, *r);
-        if (graph.ghost && graph.ghostChannel)
-            if (auto r = channelRange(*m_ghost, *graph.ghostChannel)) range = merged(range, *r);
+            if (graph.curves[slot])
+                if (auto r = graph.envelopes[slot].range()) range = merged(range, *r);
+        if (graph.ghost)
+            if (auto r = graph.ghostEnvelope.range()) range = merged(range, *r);
         return range;
     };
     std::map<std::string, ValueRange> perDof;
@@ -306,6 +301,28 @@ void GraphGrid::applyValueRanges()
         const auto [lower, upper] = padded(range.value_or(ValueRange{0.0, 0.0}));
         graph.rect->axis(QCPAxis::atLeft)->setRange(lower, upper);
     }
+}
+
+void GraphGrid::sampleCurves(Graph& graph)
+{
+    // Before the first layout a new axis rect has no width yet: sample for a typical one, the
+    // layout resamples at the real width before drawing.
+    const int columns = graph.rect->width() > 1 ? graph.rect->width() : 800;
+    graph.sampledColumns = graph.rect->width();
+    for (int slot = 0; slot < 2; ++slot)
+        if (graph.curves[slot]) graph.curves[slot]->data()->set(graph.envelopes[slot].sample(m_rangeLower, m_rangeUpper, columns), true);
+    if (graph.ghost) graph.ghost->data()->set(graph.ghostEnvelope.sample(m_rangeLower, m_rangeUpper, columns), true);
+}
+
+void GraphGrid::resampleCurves(bool onlyResized)
+{
+    bool any = false;
+    for (auto& graph : m_graphs) {
+        if (onlyResized && graph.sampledColumns == graph.rect->width()) continue;
+        sampleCurves(graph);
+        any = true;
+    }
+    if (any) ++m_samplings;
 }
 
 void GraphGrid::updateCursorItems()
@@ -345,6 +362,7 @@ void GraphGrid::setTimeRange(double lower, double upper)
     m_propagating = true;
     for (auto& graph : m_graphs) graph.rect->axis(QCPAxis::atBottom)->setRange(lower, upper);
     m_propagating = false;
+    resampleCurves(false);
     m_plot->replot();
     emit timeRangeChanged(lower, upper);
 }
@@ -370,6 +388,7 @@ void GraphGrid::propagateTimeRange(QCPAxisRect* source)
     for (auto& graph : m_graphs)
         if (graph.rect != source) graph.rect->axis(QCPAxis::atBottom)->setRange(range);
     m_propagating = false;
+    resampleCurves(false);
     emit timeRangeChanged(range.lower, range.upper);
 }
 

@@ -10,8 +10,12 @@
 /// kSettleMs apart; they autoscale once when it ends (a full replot).
 /// Zoom (wheel) and pan (middle or Shift+left drag) on time are shared by every graph; a left
 /// press or drag in any graph scrubs (timeScrubbed); a double click resets the time range.
+/// Curves hold only what their view needs (take_series.h SeriesEnvelope: at most 4 points a
+/// pixel column, every frame when zoomed in): resampled when the time range or the graphs'
+/// width changes, never when only the cursor moves, so an hour-long take draws like a short one.
 
 #include "widgets/graph_layout.h"
+#include "widgets/take_series.h"
 
 #include "analysis/core/take.h"
 
@@ -101,6 +105,10 @@ public:
     QRect graphRect(int graph) const;
 
     QCustomPlot* plot() const { return m_plot; }
+    /// The curve of take A (slot 0) or B (slot 1) in graph `graph`, null when it has none.
+    QCPGraph* curve(int graph, int slot) const { return m_graphs.at(std::size_t(graph)).curves[slot]; }
+    /// How many times the curves were resampled for a new view (time range, width or data).
+    int samplingCount() const { return m_samplings; }
 
 signals:
     /// The user pressed or dragged at `seconds` in a graph.
@@ -119,12 +127,19 @@ private:
         QCPItemStraightLine* cursor = nullptr;
         QCPItemTracer* points[2] = {nullptr, nullptr};
         QCPItemText* valueText = nullptr;
+        SeriesEnvelope envelopes[2]; ///< the curves' data at any zoom
+        SeriesEnvelope ghostEnvelope;
+        int sampledColumns = 0; ///< the width the curves were last sampled for
     };
 
     /// Rebuilds the graphs when the layout changed, else updates the curves whose take changed
     /// (all of them when `allData`).
     void rebuild(bool allData = true);
     void applyValueRanges();
+    /// Fills the curves of `graph` with the points of the current time range at its width.
+    void sampleCurves(Graph& graph);
+    /// Resamples every graph (a new time range), or only those whose width changed.
+    void resampleCurves(bool onlyResized);
     /// Autoscales and replots if data changed while the ranges were held.
     void settleValueRanges();
     void updateCursorItems();
@@ -150,6 +165,7 @@ private:
     double m_rangeLower = 0.0;
     double m_rangeUpper = 1.0;
     bool m_propagating = false;
+    int m_samplings = 0;
     enum class Drag { None, Scrub, Pan } m_drag = Drag::None;
     QCPAxisRect* m_dragRect = nullptr;
     double m_panAnchor = 0.0;

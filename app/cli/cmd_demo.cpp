@@ -3,6 +3,7 @@
 
 #include "analysis/synth/demo_corpus.h"
 #include "analysis/synth/demo_corpus_io.h"
+#include "analysis/synth/long_take.h"
 
 #include <cstdint>
 #include <filesystem>
@@ -15,11 +16,39 @@ namespace {
 struct DemoArguments {
     std::string output;
     std::uint64_t seed = 1;
+    long long longFrames = 0; ///< --long N: one long take instead of the corpus
+    double rateHz = 120.0;
     bool json = false;
 };
 
+void runLongTake(const DemoArguments& arguments)
+{
+    namespace synth = analysis::synth;
+    synth::LongTakeOptions options;
+    options.frames = Eigen::Index(arguments.longFrames);
+    options.rateHz = arguments.rateHz;
+    options.seed = arguments.seed;
+    const std::filesystem::path file = unwrap(synth::writeLongTake(options, arguments.output));
+    std::error_code error;
+    const auto bytes = std::filesystem::file_size(file, error);
+    if (arguments.json) {
+        printJson({{"file", file.string()},
+                   {"frames", options.frames},
+                   {"rate_hz", options.rateHz},
+                   {"seconds", double(options.frames - 1) / options.rateHz},
+                   {"joints", synth::kLongTakeJoints},
+                   {"channels", synth::kLongTakeChannels},
+                   {"bytes", error ? 0 : bytes},
+                   {"seed", arguments.seed}});
+    } else {
+        std::cout << "wrote one take of " << options.frames << " frames at " << options.rateHz << " Hz ("
+                  << synth::kLongTakeJoints << " joints) to " << file.string() << "\n";
+    }
+}
+
 void runDemo(const DemoArguments& arguments)
 {
+    if (arguments.longFrames > 0) return runLongTake(arguments);
     namespace synth = analysis::synth;
     synth::DemoOptions options;
     options.seed = arguments.seed;
@@ -54,7 +83,7 @@ void addDemoCommands(CommandSet& commands)
     CLI::App* demo = commands.root.add_subcommand(
         "demo", "Write the synthetic Bunraku corpus (2 functions x 3 emotions x 5 takes) and its ground truth "
                 "(DIR/truth, see docs/DEMO-CORPUS.md)");
-    demo->add_option("-o,--output", arguments->output, "Corpus folder to write (replaced when it exists)")
+    demo->add_option("-o,--output", arguments->output, "Corpus folder to write (replaced when it exists); with --long, the folder the take is written into")
         ->required()
         ->type_name("DIR");
     demo->add_option("--seed", arguments->seed, "Seed of the takes' randomisation")
@@ -64,6 +93,14 @@ void addDemoCommands(CommandSet& commands)
                 return digits ? std::string() : "expected a non-negative integer, got '" + text + "'";
             },
             "UINT"))
+        ->capture_default_str();
+    demo->add_option("--long", arguments->longFrames,
+                     "Instead of the corpus, write one synthetic take of N frames with a 22-joint skeleton as DIR/" +
+                         analysis::synth::longTakeFileName() + " (BVH; for benchmarks of long takes)")
+        ->check(CLI::Range(2LL, 100'000'000LL))
+        ->type_name("N");
+    demo->add_option("--rate", arguments->rateHz, "Frame rate of the --long take (Hz)")
+        ->check(CLI::Range(1e-3, 1000.0))
         ->capture_default_str();
     demo->add_flag("--json", arguments->json, "Print a machine-readable summary");
     demo->callback([arguments] { runDemo(*arguments); });

@@ -224,3 +224,60 @@ TEST_CASE("a burst of data changes holds the value ranges until it settles", "[w
     REQUIRE(QTest::qWaitFor([&] { return fullReplots.count() == 1; }, 5000));
     CHECK(grid.graphValueRange(5) == autoscaledRange(tripled, 5));
 }
+
+TEST_CASE("an hour-long take's graphs hold a few points a pixel column, resampled per zoom and never per cursor move",
+          "[widgets][graph_grid][envelope]")
+{
+    // An hour at 120 Hz: 432,000 frames of 24 channels.
+    auto take = test::syntheticPuppetTake(432000);
+    take->rateHz = 120.0;
+    widgets::GraphGrid grid;
+    grid.setTakes(take, nullptr);
+    showGrid(grid);
+    REQUIRE(grid.graphCount() == 24);
+    REQUIRE(grid.timeRange().second == Approx(take->duration()));
+    auto checkCurves = [&](double lower, double upper) {
+        for (int g = 0; g < grid.graphCount(); ++g) {
+            const auto* curve = grid.curve(g, 0);
+            const QCPAxisRect* rect = curve->keyAxis()->axisRect();
+            REQUIRE(curve->dataCount() > 0);
+            REQUIRE(curve->dataCount() <= 4 * rect->width() + 6);
+            // The curve spans the view to within a pixel (points sit at their buckets' middles).
+            const double pixel = (upper - lower) / rect->width();
+            REQUIRE(curve->data()->constBegin()->key <= std::max(0.0, lower) + pixel);
+            REQUIRE((curve->data()->constEnd() - 1)->key >= std::min(take->duration(), upper) - pixel);
+            // Its extremes are the channel's extremes in view.
+            const auto& cell = grid.graphCell(g);
+            const auto channel = *widgets::findChannel(*take, cell.part, cell.dof);
+            const auto first = Eigen::Index(std::ceil(lower * 120.0));
+            const auto last = std::min<Eigen::Index>(take->frameCount() - 1, Eigen::Index(std::floor(upper * 120.0)));
+            const auto values = take->values.col(channel).segment(first, last - first + 1);
+            double low = 1e300, high = -1e300;
+            for (auto point = curve->data()->constBegin(); point != curve->data()->constEnd(); ++point) {
+                low = std::min(low, point->value);
+                high = std::max(high, point->value);
+            }
+            REQUIRE(low <= values.minCoeff());
+            REQUIRE(high >= values.maxCoeff());
+        }
+    };
+    checkCurves(0.0, take->duration());
+
+    const int samplings = grid.samplingCount();
+    QSignalSpy fullReplots(grid.plot(), &QCustomPlot::beforeReplot);
+    for (int frame = 0; frame < 120; ++frame) grid.setCursorTime(1000.0 + frame / 60.0);
+    REQUIRE(grid.samplingCount() == samplings);
+    REQUIRE(fullReplots.count() == 0);
+    const auto channel3 = *widgets::findChannel(*take, grid.graphCell(3).part, grid.graphCell(3).dof);
+    REQUIRE(grid.graphPointValue(3, 0).value() == Approx(*widgets::valueAt(*take, channel3, 1000.0 + 119 / 60.0)));
+
+    // Zoom to a 10 s window: resampled once, every frame in view drawn.
+    grid.setTimeRange(1800.0, 1810.0);
+    REQUIRE(grid.samplingCount() == samplings + 1);
+    checkCurves(1800.0, 1810.0);
+    // The view's width changes: resampled at the new width, in the replot.
+    grid.resize(500, 700);
+    grid.plot()->replot();
+    REQUIRE(grid.samplingCount() == samplings + 2);
+    checkCurves(1800.0, 1810.0);
+}
