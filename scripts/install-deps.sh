@@ -17,6 +17,8 @@ packages=(
   # Blender 3.4: the real client the BVH and glTF exports are checked against (tests/cli)
   blender
   python3 python3-numpy python3-pywt python3-statsmodels
+  # Snakemake: the batch workflow over motion-capture libraries (workflows/Snakefile)
+  snakemake
 )
 
 missing=()

@@ -10,6 +10,10 @@ namespace bunraku::analysis {
 struct RunControl {
     std::stop_token stop;                   ///< triggered by the caller to abandon the work
     std::function<void(double)> progress;   ///< called with the finished fraction, may be empty
+    /// Threads the work may use where it splits into independent items (cells, takes, channels:
+    /// analysis/core/parallel.h); the results do not depend on it. Progress may then be reported
+    /// from any of them, one call at a time.
+    int threads = 1;
 
     bool cancelled() const { return stop.stop_requested(); }
     void report(double fraction) const

@@ -3,12 +3,14 @@
 #include "analysis/pipeline/stages.h"
 
 #include "analysis/axis/axis_channels.h"
+#include "analysis/core/parallel.h"
 #include "analysis/body/body_description.h"
 #include "analysis/decompose/emotion_weight.h"
 
 #include <cmath>
 #include <map>
 #include <mutex>
+#include <vector>
 
 namespace bunraku::analysis::pipeline {
 namespace {
@@ -71,27 +73,55 @@ Result<AxisOutput> runAxes(const NormaliseOutput& normalised, const std::string&
     const AxisOptions axisOptions = parameters.axisOptions();
     const auto model = defaultAxisModel(axisOptions);
     AxisOutput out;
-    const std::size_t total = std::max<std::size_t>(1, normalised.cells.size());
-    std::size_t done = 0;
+    // Functions (their neutral cells), then their emotional cells: independent items, each
+    // computed on control.threads threads into its own slot and gathered in cell order.
+    std::vector<const CellNormalisation*> neutrals;
+    std::vector<std::pair<std::size_t, const CellNormalisation*>> emotional; // (function, cell)
     for (const auto& neutral : normalised.cells) {
         if (neutral.emotion != neutralEmotion) continue;
-        if (control.cancelled()) return makeError(ErrorCode::Cancelled, "motion axes cancelled");
-        auto basis = prepareDesign(*model, neutral.average, axisOptions, RunControl{control.stop, {}});
-        if (!basis)
-            return makeError(basis.error().code, "motion axis of the " + neutral.function + "/" + neutral.emotion +
-                                                     " average take: " + basis.error().message);
-        FunctionAxis function;
-        function.function = neutral.function;
-        function.boundaries = suggestPhraseBoundaries(basis->coordinates);
-        function.basis = std::make_shared<const DesignBasis>(std::move(basis).value());
+        for (const auto& cell : normalised.cells)
+            if (cell.function == neutral.function && cell.emotion != neutralEmotion) emotional.emplace_back(neutrals.size(), &cell);
+        neutrals.push_back(&neutral);
+    }
+    const std::size_t total = std::max<std::size_t>(1, neutrals.size() + emotional.size());
+    std::mutex progress;
+    std::size_t done = 0;
+    auto report = [&] {
+        const std::lock_guard lock(progress);
         control.report(double(++done) / double(total));
-        for (const auto& cell : normalised.cells) {
-            if (cell.function != neutral.function || cell.emotion == neutralEmotion) continue;
-            if (control.cancelled()) return makeError(ErrorCode::Cancelled, "motion axes cancelled");
+    };
+    auto cancelledOr = [](Status status) -> Status {
+        if (!status && status.error().code == ErrorCode::Cancelled) return makeError(ErrorCode::Cancelled, "motion axes cancelled");
+        return status;
+    };
+    out.functions.resize(neutrals.size());
+    Status status = parallelFor(
+        neutrals.size(), control.threads,
+        [&](std::size_t f) -> Status {
+            const CellNormalisation& neutral = *neutrals[f];
+            auto basis = prepareDesign(*model, neutral.average, axisOptions, RunControl{control.stop, {}});
+            if (!basis)
+                return makeError(basis.error().code, "motion axis of the " + neutral.function + "/" + neutral.emotion +
+                                                         " average take: " + basis.error().message);
+            FunctionAxis& function = out.functions[f];
+            function.function = neutral.function;
+            function.boundaries = suggestPhraseBoundaries(basis->coordinates);
+            function.basis = std::make_shared<const DesignBasis>(std::move(basis).value());
+            report();
+            return okStatus();
+        },
+        control.stop);
+    if (!status) return cancelledOr(status).error();
+    out.cells.resize(emotional.size());
+    status = parallelFor(
+        emotional.size(), control.threads,
+        [&](std::size_t c) -> Status {
+            const FunctionAxis& function = out.functions[emotional[c].first];
+            const CellNormalisation& cell = *emotional[c].second;
             const std::string name = cellName(cell.function, cell.emotion);
             auto axis = computeMotionAxis(*model, cell.average, axisOptions, RunControl{control.stop, {}});
             if (!axis) return makeError(axis.error().code, "motion axis of the " + name + " average take: " + axis.error().message);
-            CellAxis result;
+            CellAxis& result = out.cells[c];
             result.function = cell.function;
             result.emotion = cell.emotion;
             result.world_T_axis = axis->world_T_axis;
@@ -104,11 +134,11 @@ Result<AxisOutput> runAxes(const NormaliseOutput& normalised, const std::string&
             const DesignedMotion designed = designMotion(*function.basis, result.extracted.phase.curve, result.extracted.gains);
             result.designRelativeError = relativeError(designed.axisCoordinates, result.coordinates);
             result.undesignedRelativeError = relativeError(function.basis->coordinates, result.coordinates);
-            out.cells.push_back(std::move(result));
-            control.report(double(++done) / double(total));
-        }
-        out.functions.push_back(std::move(function));
-    }
+            report();
+            return okStatus();
+        },
+        control.stop);
+    if (!status) return cancelledOr(status).error();
     control.report(1.0);
     return out;
 }

@@ -90,9 +90,11 @@ Result<ChainResult> runChain(const CorpusInput& corpus, const ChainParameters& p
     result.corpus = corpus;
     result.keys = chainKeys(corpus.key, parameters);
     auto control = [&](Stage stage) {
-        return RunControl{options.stop, [&options, stage](double fraction) {
+        return RunControl{options.stop,
+                          [&options, stage](double fraction) {
                               if (options.progress) options.progress(stage, fraction);
-                          }};
+                          },
+                          options.threads};
     };
     auto failed = [](Stage stage, const Error& error) {
         return makeError(error.code, std::string(stageTitle(stage)) + ": " + error.message);

@@ -49,8 +49,11 @@ struct ChainOptions {
     bool fluctuations = true;
     bool axes = true;
     std::stop_token stop;
-    /// (stage, fraction of that stage done), from the computing thread.
+    /// (stage, fraction of that stage done), from a computing thread, one call at a time.
     std::function<void(Stage, double)> progress;
+    /// Threads for the stages that split into cells or channels (RunControl::threads); the
+    /// results are the same for any count.
+    int threads = 1;
 };
 
 /// Runs every stage in order; the first error stops the chain (its message names the stage).

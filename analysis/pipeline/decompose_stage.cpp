@@ -2,7 +2,10 @@
 // fluctuation analysis of its eta (4.3.2: spectra, Table 4.1's ARMA parameters).
 #include "analysis/pipeline/stages.h"
 
+#include "analysis/core/parallel.h"
+
 #include <algorithm>
+#include <mutex>
 
 namespace bunraku::analysis::pipeline {
 
@@ -72,14 +75,24 @@ Result<FluctuationOutput> runFluctuations(const Decomposition& d, const Fluctuat
     }
     if (control.cancelled()) return makeError(ErrorCode::Cancelled, "fluctuation analysis cancelled");
     control.report(0.2);
-    // Table 4.1: ARMA(p, q) per take, averaged per cell, for every channel.
-    for (Eigen::Index ch = 0; ch < channels; ++ch) {
-        if (control.cancelled()) return makeError(ErrorCode::Cancelled, "fluctuation analysis cancelled");
-        auto table = armaCellTable(d, ch, parameters.armaP, parameters.armaQ);
-        out.armaTables.push_back(table ? std::move(table).value() : std::vector<ArmaCellRow>{});
-        out.armaErrors.push_back(table ? std::string() : table.error().message);
-        control.report(0.2 + 0.8 * double(ch + 1) / double(channels));
-    }
+    // Table 4.1: ARMA(p, q) per take, averaged per cell, for every channel: channels are
+    // independent, fitted on control.threads threads into their own slots.
+    out.armaTables.resize(std::size_t(channels));
+    out.armaErrors.resize(std::size_t(channels));
+    std::mutex progress;
+    std::size_t done = 0;
+    const Status status = parallelFor(
+        std::size_t(channels), control.threads,
+        [&](std::size_t ch) -> Status {
+            auto table = armaCellTable(d, Eigen::Index(ch), parameters.armaP, parameters.armaQ);
+            out.armaTables[ch] = table ? std::move(table).value() : std::vector<ArmaCellRow>{};
+            out.armaErrors[ch] = table ? std::string() : table.error().message;
+            const std::lock_guard lock(progress);
+            control.report(0.2 + 0.8 * double(++done) / double(channels));
+            return okStatus();
+        },
+        control.stop);
+    if (!status) return makeError(ErrorCode::Cancelled, "fluctuation analysis cancelled");
     return out;
 }
 

@@ -2,9 +2,12 @@
 // evaluated (3.8) and averaged (3.7).
 #include "analysis/pipeline/stages.h"
 
+#include "analysis/core/parallel.h"
 #include "analysis/normalise/average_take.h"
 
 #include <algorithm>
+#include <mutex>
+#include <optional>
 #include <string>
 
 namespace bunraku::analysis::pipeline {
@@ -126,22 +129,40 @@ Result<NormaliseOutput> runNormalise(const Corpus& preprocessed, const Normalise
     for (const auto& function : preprocessed.functions())
         for (const auto& emotion : preprocessed.emotions())
             if (!preprocessed.cell(function, emotion).empty()) cells.emplace_back(function, emotion);
+    // Cells are independent: normalised on control.threads threads, each into its own slot,
+    // then gathered in cell order (the same result for any thread count).
+    std::vector<std::optional<CellNormalisation>> results(cells.size());
+    std::mutex progress;
+    std::size_t done = 0;
+    const Status status = parallelFor(
+        cells.size(), control.threads,
+        [&](std::size_t c) -> Status {
+            const auto& [function, emotion] = cells[c];
+            auto cell = normaliseCell(function, emotion, preprocessed.cell(function, emotion), parameters, control);
+            if (!cell) return cell.error();
+            results[c] = std::move(cell).value();
+            const std::lock_guard lock(progress);
+            control.report(double(++done) / double(cells.size()));
+            return okStatus();
+        },
+        control.stop);
+    if (!status) {
+        if (status.error().code == ErrorCode::Cancelled) return makeError(ErrorCode::Cancelled, "normalisation cancelled");
+        return status.error();
+    }
     out.normalised = preprocessed;
     for (std::size_t c = 0; c < cells.size(); ++c) {
-        if (control.cancelled()) return makeError(ErrorCode::Cancelled, "normalisation cancelled");
         const auto& [function, emotion] = cells[c];
-        auto cell = normaliseCell(function, emotion, preprocessed.cell(function, emotion), parameters, control);
-        if (!cell) return cell.error();
-        for (std::size_t k = 0; k < cell->takeIndices.size(); ++k) {
+        CellNormalisation& cell = *results[c];
+        for (std::size_t k = 0; k < cell.takeIndices.size(); ++k) {
             for (auto& take : out.normalised.takes)
                 if (take.labels.function == function && take.labels.emotion == emotion &&
-                    take.labels.takeIndex == cell->takeIndices[k]) {
-                    take = cell->normalisations[k].normalised;
-                    take.labels.takeIndex = cell->takeIndices[k];
+                    take.labels.takeIndex == cell.takeIndices[k]) {
+                    take = cell.normalisations[k].normalised;
+                    take.labels.takeIndex = cell.takeIndices[k];
                 }
         }
-        out.cells.push_back(std::move(cell).value());
-        control.report(double(c + 1) / double(cells.size()));
+        out.cells.push_back(std::move(cell));
     }
     return out;
 }
