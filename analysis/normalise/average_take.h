@@ -26,4 +26,13 @@ struct AverageOptions {
 Result<Take> averageTake(const std::vector<const Take*>& takes, const AverageOptions& options = {},
                          const RunControl& control = {});
 
+/// The same average from matchings already made: `toBase[k]` is takes[k] normalised to the base
+/// take with options.normalise (normaliseTakes(*takes[options.baseTake], takes, options.normalise),
+/// entries of the base and the excluded takes unused). A cell normalised to the base anyway (thesis
+/// 3.6.1's suggested reference is the base of its 3.7 average) is not matched a second time.
+/// Bit for bit averageTake(takes, options). InvalidArgument as averageTake, and when toBase does
+/// not hold one normalisation per take on the base's frames.
+Result<Take> averageTakeFrom(const std::vector<const Take*>& takes, const AverageOptions& options,
+                             const std::vector<TakeNormalisation>& toBase);
+
 } // namespace bunraku::analysis
