@@ -1,8 +1,5 @@
 #include "app/analysis_controller.h"
 
-#include "analysis/axis/axis_channels.h"
-#include "analysis/axis/inertia_axis.h"
-#include "analysis/body/body_description.h"
 #include "analysis/core/puppet_layout.h"
 #include "analysis/io/atomic_file.h"
 #include "analysis/report/html_report.h"
@@ -34,6 +31,7 @@ QString AnalysisController::slotTitle(int slot)
     case kDecomposeSlot: return tr("Decomposition");
     case kAxesSlot: return tr("Motion axes");
     case kTakeAxisSlot: return tr("Motion axis of take A");
+    case kTakeAxisBSlot: return tr("Motion axis of take B");
     }
     return QString();
 }
@@ -49,13 +47,17 @@ AnalysisController::AnalysisController(Document& document, QObject* parent, std:
     connect(&document, &Document::parametersChanged, this, [this](int sections) {
         if (sections & (kPreprocessSection | kNormaliseSection | kDecomposeSection | kAxisSection)) update();
         if (sections & kWeightSection) synthesiseWeighted();
+        if (sections & kAxisSection) {
+            requestTakeAxis(TakeSlot::A);
+            requestTakeAxis(TakeSlot::B);
+        }
     });
     connect(&document, &Document::selectionChanged, this, [this](TakeSlot slot) {
+        requestTakeAxis(slot);
         if (slot != TakeSlot::A) return;
         resolveCell();
         publishNormalised();
         synthesiseWeighted();
-        requestTakeAxis();
     });
     corpusChanged();
 }
@@ -81,7 +83,8 @@ void AnalysisController::corpusChanged()
     }
     resolveCell();
     update();
-    requestTakeAxis();
+    requestTakeAxis(TakeSlot::A);
+    requestTakeAxis(TakeSlot::B);
 }
 
 void AnalysisController::update()
@@ -153,10 +156,12 @@ void AnalysisController::stageFinished(int slot)
         m_axes = m_scheduler->result<pl::AxisOutput>(slot);
         break;
     case kTakeAxisSlot: {
-        const auto axis = m_scheduler->result<analysis::Take>(slot);
-        if (axis)
-            m_document.setLiveTake(QStringLiteral("axis"), tr("motion axis of %1").arg(QString::fromStdString(axis->labels.source.substr(8))),
-                                   axis);
+        const auto axis = m_scheduler->result<pl::TakeAxis>(slot);
+        if (axis) {
+            const pl::Shared<analysis::Take> coordinates(axis, &axis->coordinates);
+            m_document.setLiveTake(QStringLiteral("axis"),
+                                   tr("motion axis of %1").arg(QString::fromStdString(coordinates->labels.source.substr(8))), coordinates);
+        }
         break;
     }
     }
@@ -221,20 +226,30 @@ void AnalysisController::synthesiseWeighted()
     emit weightedChanged();
 }
 
-void AnalysisController::requestTakeAxis()
+void AnalysisController::requestTakeAxis(TakeSlot slot)
 {
-    const QString idA = m_document.selectedId(TakeSlot::A);
-    const TakePointer take = m_document.take(idA);
-    if (!take || idA == QStringLiteral("live/axis") || !analysis::hasPuppetLayout(*take)) return;
-    const pl::StageKey key = pl::KeyBuilder("take-axis").add(pl::takeKey(*take)).key();
-    m_scheduler->request(kTakeAxisSlot, key, [take](const analysis::RunControl& control) -> analysis::Result<StageValue> {
-        static const analysis::AxisModel model = analysis::makeAxisModel(analysis::defaultBodyDescription());
-        auto axis = analysis::computeMotionAxis(model, *take, {}, control);
-        if (!axis) return axis.error();
-        auto axisTake = std::make_shared<analysis::Take>(analysis::axisTake(*axis));
-        axisTake->labels.source = "axis of " + take->displayName();
-        return erase<analysis::Take>(std::move(axisTake));
-    });
+    const int id = takeAxisSlot(slot);
+    const TakePointer take = m_document.selectedTake(slot);
+    TakePointer& asked = m_axisTakes[slot == TakeSlot::A ? 0 : 1];
+    if (!take || !analysis::hasPuppetLayout(*take)) { // nothing to pose (an axis take, for one)
+        asked.reset();
+        m_scheduler->clear(id);
+        return;
+    }
+    const pl::AxisParameters parameters = m_document.parameters().axis;
+    asked = take;
+    m_scheduler->request(id, pl::takeAxisKey(pl::takeKey(*take), parameters),
+                         [take, parameters](const analysis::RunControl& control) -> analysis::Result<StageValue> {
+                             auto axis = pl::runTakeAxis(*take, parameters, control);
+                             if (!axis) return axis.error();
+                             return erase<pl::TakeAxis>(std::make_shared<const pl::TakeAxis>(std::move(axis).value()));
+                         });
+}
+
+pl::Shared<pl::TakeAxis> AnalysisController::takeAxis(TakeSlot slot, const TakePointer& take) const
+{
+    if (!take || m_axisTakes[slot == TakeSlot::A ? 0 : 1] != take) return nullptr;
+    return m_scheduler->result<pl::TakeAxis>(takeAxisSlot(slot));
 }
 
 analysis::Result<std::string> AnalysisController::reportHtml() const

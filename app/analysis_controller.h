@@ -8,7 +8,10 @@
 ///
 /// It is the only publisher of the analysis's live takes: "normalised" (take A on its cell's
 /// reference time), "weighted" (y + a z of take A's cell) and "axis" (take A's motion axis).
-/// Views read them from the document and never write them.
+/// Views read them from the document and never write them. The motion axes of the shown takes
+/// A and B (pipeline::runTakeAxis, keyed by each take's content and the axis parameters) are
+/// scheduler jobs too: the 3D view draws them (takeAxis) and take A's is the "axis" take, one
+/// computation per key for both.
 
 #include "app/document.h"
 #include "app/stage_scheduler.h"
@@ -26,8 +29,9 @@ namespace bunraku::app {
 class AnalysisController : public QObject {
     Q_OBJECT
 public:
-    /// Scheduler slots: the pipeline's stages, and take A's motion axis.
-    enum Slot { kPreprocessSlot = 1, kNormaliseSlot = 2, kDecomposeSlot = 3, kAxesSlot = 5, kTakeAxisSlot = 10 };
+    /// Scheduler slots: the pipeline's stages, and the motion axes of takes A and B.
+    enum Slot { kPreprocessSlot = 1, kNormaliseSlot = 2, kDecomposeSlot = 3, kAxesSlot = 5, kTakeAxisSlot = 10, kTakeAxisBSlot = 11 };
+    static int takeAxisSlot(TakeSlot slot) { return slot == TakeSlot::A ? kTakeAxisSlot : kTakeAxisBSlot; }
     static QString slotTitle(int slot);
 
     /// `executor` null: the thread pool (tests pass a manual one).
@@ -43,6 +47,10 @@ public:
     analysis::pipeline::Shared<analysis::pipeline::DecomposeOutput> decomposed() const { return m_decomposed; }
     analysis::pipeline::Shared<analysis::pipeline::AxisOutput> axes() const { return m_axes; }
     bool isCurrent(int slot) const;
+    /// The motion axis of `take` shown in `slot`: null unless it is the take the slot's axis was
+    /// asked for and that axis is computed for the current axis parameters (never another
+    /// take's or older parameters').
+    analysis::pipeline::Shared<analysis::pipeline::TakeAxis> takeAxis(TakeSlot slot, const TakePointer& take) const;
     /// The keys of every stage for the document's corpus and parameters.
     analysis::pipeline::ChainKeys keys() const { return m_keys; }
 
@@ -74,7 +82,7 @@ private:
     void resolveCell();
     void publishNormalised();
     void synthesiseWeighted();
-    void requestTakeAxis();
+    void requestTakeAxis(TakeSlot slot);
 
     Document& m_document;
     StageScheduler* m_scheduler = nullptr;
@@ -89,7 +97,7 @@ private:
     std::string m_emotion;
     TakePointer m_weighted;
     QString m_weightError;
-    TakePointer m_axisSource;
+    TakePointer m_axisTakes[2]; ///< the takes the axis slots were last asked for
 };
 
 } // namespace bunraku::app

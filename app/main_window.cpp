@@ -9,7 +9,6 @@
 #include "app/offscreen_view.h"
 #include "app/phrase_marks.h"
 #include "app/playback_controller.h"
-#include "app/recomputer.h"
 #include "app/video_export_dialog.h"
 #include "app/viewport_panel.h"
 
@@ -140,8 +139,8 @@ void MainWindow::createViews()
     m_inspector = new widgets::InspectorWidget(this);
     m_graphs = new widgets::GraphPanel(this);
     m_timeline = new widgets::TimelineWidget(this);
-    m_viewportPanel = new ViewportPanel(*m_document, this);
     m_analysis = new AnalysisController(*m_document, this);
+    m_viewportPanel = new ViewportPanel(*m_document, *m_analysis, this);
     m_design = new DesignController(*m_document, *m_analysis, this);
     m_designPanel = new DesignPanel(*m_document, *m_design, this);
     m_normalisePanel = new NormalisePanel(*m_document, *m_analysis, this);
@@ -167,7 +166,6 @@ void MainWindow::createViews()
     inspectorDock->raise();
     timelineDock->setFeatures(timelineDock->features() & ~QDockWidget::DockWidgetVerticalTitleBar);
     resizeDocks({corpusDock, viewDock, graphsDock}, {380, 400, 800}, Qt::Horizontal);
-    trackRecomputer(m_viewportPanel->recomputer());
     // One status entry per analysis stage: its progress while it runs, its error when it fails
     // (the panel showing the stage's result shows the error too).
     connect(&m_analysis->scheduler(), &StageScheduler::stateChanged, this, &MainWindow::showStageStatus);
@@ -352,23 +350,6 @@ void MainWindow::saveLayout() const
     settings.setValue(kStateKey, saveState(kLayoutVersion));
 }
 
-void MainWindow::trackRecomputer(Recomputer* recomputer)
-{
-    connect(recomputer, &Recomputer::stateChanged, this, [this, recomputer](Recomputer::State state) {
-        if (state == Recomputer::State::Running)
-            m_busy.insert(recomputer);
-        else
-            m_busy.remove(recomputer);
-        m_progress->setVisible(!m_busy.isEmpty());
-        if (state == Recomputer::State::Failed) {
-            m_status->setText(tr("%1 failed: %2").arg(recomputer->objectName(), recomputer->lastError()));
-            qWarning("%s failed: %s", qPrintable(recomputer->objectName()), qPrintable(recomputer->lastError()));
-        }
-    });
-    connect(recomputer, &Recomputer::progressChanged, this,
-            [this](double fraction) { m_progress->setValue(int(fraction * 1000)); });
-}
-
 QString MainWindow::stageStatusText() const { return m_stages->text(); }
 
 void MainWindow::showStageStatus()
@@ -377,7 +358,7 @@ void MainWindow::showStageStatus()
     QStringList parts;
     double least = 1.0;
     for (int slot : {AnalysisController::kPreprocessSlot, AnalysisController::kNormaliseSlot, AnalysisController::kDecomposeSlot,
-                     AnalysisController::kAxesSlot, AnalysisController::kTakeAxisSlot}) {
+                     AnalysisController::kAxesSlot, AnalysisController::kTakeAxisSlot, AnalysisController::kTakeAxisBSlot}) {
         if (scheduler.state(slot) == SlotState::Running) {
             parts << tr("%1 %2 %").arg(AnalysisController::slotTitle(slot)).arg(int(scheduler.progress(slot) * 100.0 + 0.5));
             least = std::min(least, scheduler.progress(slot));
@@ -388,7 +369,7 @@ void MainWindow::showStageStatus()
     m_stages->setText(parts.join(QStringLiteral(" \u00b7 ")));
     m_stages->setToolTip(tr("Analysis stages running in the background (each recomputes only when its own inputs change)"));
     const bool running = scheduler.busy();
-    m_progress->setVisible(running || !m_busy.isEmpty());
+    m_progress->setVisible(running);
     if (running) m_progress->setValue(int(least * 1000));
 }
 

@@ -8,7 +8,6 @@
 #include "app/video_export.h"
 
 #include <QMainWindow>
-#include <QSet>
 
 #include <vector>
 
@@ -32,7 +31,6 @@ class EmotionPanel;
 class NormalisePanel;
 class FileController;
 class PlaybackController;
-class Recomputer;
 class ViewportPanel;
 
 class MainWindow : public QMainWindow {
@@ -63,8 +61,6 @@ public:
     /// Restores the saved geometry and dock layout (QSettings), if any.
     void restoreSavedLayout();
     void saveLayout() const;
-    /// Registers a background computation so its progress shows in the status bar.
-    void trackRecomputer(Recomputer* recomputer);
     /// The status bar's text of the analysis stages (running stages with their progress).
     QString stageStatusText() const;
     /// File > Export Report: the analysis report of the open corpus (HTML) written to `file`;
@@ -130,7 +126,6 @@ private:
     QProgressBar* m_progress = nullptr;
     QLabel* m_status = nullptr;
     QLabel* m_stages = nullptr;
-    QSet<Recomputer*> m_busy;
 };
 
 } // namespace bunraku::app

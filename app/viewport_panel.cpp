@@ -1,11 +1,9 @@
 #include "app/viewport_panel.h"
 
-#include "app/recomputer.h"
+#include "app/analysis_controller.h"
 
 #include "widgets/viewport_widget.h"
 
-#include "analysis/axis/axis_channels.h"
-#include "analysis/axis/inertia_axis.h"
 #include "analysis/core/puppet_layout.h"
 #include "analysis/body/body_description.h"
 
@@ -13,44 +11,24 @@
 #include <QHBoxLayout>
 #include <QVBoxLayout>
 
-#include <algorithm>
+#include <utility>
 
 namespace bunraku::app {
 namespace {
 
-using AxisPoses = std::vector<std::vector<analysis::RigidTransform>>;
-
-/// A finished axis job: the takes it computed for and their axes (empty where it failed).
-struct AxisResult {
-    std::vector<TakePointer> takes;
-    AxisPoses axes;
-};
-
-render::SceneContent sceneOf(const std::vector<TakePointer>& takes, const AxisPoses& axes)
+/// The shown takes that can pose the puppet (an axis take, for one, cannot), with their slot.
+std::vector<std::pair<TakeSlot, TakePointer>> shownTakes(const Document& document)
 {
-    render::SceneContent scene;
-    scene.body = analysis::defaultBodyDescription();
-    for (std::size_t i = 0; i < takes.size(); ++i) {
-        render::TakeSlot slot;
-        slot.take = *takes[i];
-        if (i < axes.size()) slot.world_T_axis = axes[i];
-        scene.takes.push_back(std::move(slot));
-    }
-    return scene;
-}
-
-/// The shown takes that can pose the puppet (an axis take, for one, cannot).
-std::vector<TakePointer> shownTakes(const Document& document)
-{
-    std::vector<TakePointer> takes;
+    std::vector<std::pair<TakeSlot, TakePointer>> takes;
     for (TakeSlot slot : {TakeSlot::A, TakeSlot::B})
-        if (TakePointer take = document.selectedTake(slot); take && analysis::hasPuppetLayout(*take)) takes.push_back(take);
+        if (TakePointer take = document.selectedTake(slot); take && analysis::hasPuppetLayout(*take)) takes.emplace_back(slot, take);
     return takes;
 }
 
 } // namespace
 
-ViewportPanel::ViewportPanel(Document& document, QWidget* parent) : QWidget(parent), m_document(document)
+ViewportPanel::ViewportPanel(Document& document, AnalysisController& analysis, QWidget* parent)
+    : QWidget(parent), m_document(document), m_analysis(analysis)
 {
     m_viewport = new widgets::ViewportWidget(this);
     m_viewport->setObjectName("viewport");
@@ -78,41 +56,14 @@ ViewportPanel::ViewportPanel(Document& document, QWidget* parent) : QWidget(pare
     layout->addLayout(toggles);
     layout->addWidget(m_viewport, 1);
 
-    // The axes of the shown takes, computed off the GUI thread, then added to the scene.
-    m_axes = new Recomputer(
-        document,
-        [this]() -> Job {
-            const auto takes = shownTakes(m_document);
-            if (takes.empty()) return {};
-            return [takes](const analysis::RunControl& control) -> JobOutput {
-                static const analysis::AxisModel model = analysis::makeAxisModel(analysis::defaultBodyDescription());
-                AxisResult result{takes, {}};
-                for (const auto& take : takes) {
-                    auto axis = analysis::computeMotionAxis(model, *take, {}, control);
-                    result.axes.push_back(axis ? axis->world_T_axis : std::vector<analysis::RigidTransform>{});
-                }
-                return {result, {}};
-            };
-        },
-        [this](const JobOutput& output) {
-            if (!output.value.has_value()) return;
-            const auto result = std::any_cast<AxisResult>(output.value);
-            m_knownAxes.clear();
-            for (std::size_t i = 0; i < result.takes.size(); ++i) m_knownAxes.emplace_back(result.takes[i], result.axes[i]);
-            // The takes the axes were computed for (the serial check drops results of takes no
-            // longer shown).
-            const auto& takes = result.takes;
-            const auto& axes = result.axes;
-            m_viewport->setScene(sceneOf(takes, axes));
-            m_viewport->setTime(m_document.currentTime());
-        },
-        this, 60, [this] { return m_sceneSerial; });
-    m_axes->setObjectName(tr("Motion axis"));
-
     // Uploading a scene costs about one frame (it happens once, at the next paint, however many
-    // scenes were set before it): a changed take shows at once.
+    // scenes were set before it): a changed take shows at once, its axis when computed.
     connect(&document, &Document::selectionChanged, this, &ViewportPanel::rebuildScene);
     connect(&document, &Document::corpusChanged, this, &ViewportPanel::rebuildScene);
+    // An axis slot that finished, restarted for other inputs or was cleared.
+    connect(&analysis.scheduler(), &StageScheduler::stateChanged, this, [this](int slot) {
+        if (slot == AnalysisController::kTakeAxisSlot || slot == AnalysisController::kTakeAxisBSlot) refreshAxes();
+    });
     connect(&document, &Document::currentTimeChanged, m_viewport, &widgets::ViewportWidget::setTime);
     // A body part (face, torso, ...) selects the graphs of the take part that drives it.
     connect(m_viewport, &widgets::ViewportWidget::partPicked, this, [this](int, const QString& bodyPart) {
@@ -128,17 +79,30 @@ ViewportPanel::ViewportPanel(Document& document, QWidget* parent) : QWidget(pare
 
 void ViewportPanel::rebuildScene()
 {
-    ++m_sceneSerial; // also when nothing is shown: a pending axis result is stale either way
     const auto takes = shownTakes(m_document);
+    m_drawnAxes.clear();
     if (takes.empty()) return;
-    AxisPoses axes; // the known axes of takes that did not change; the others are recomputed
-    for (const auto& take : takes) {
-        const auto known = std::find_if(m_knownAxes.begin(), m_knownAxes.end(), [&](const auto& entry) { return entry.first == take; });
-        axes.push_back(known != m_knownAxes.end() ? known->second : std::vector<analysis::RigidTransform>{});
+    render::SceneContent scene;
+    scene.body = analysis::defaultBodyDescription();
+    for (const auto& [slot, take] : takes) {
+        render::TakeSlot shown;
+        shown.take = *take;
+        // The axis of this very take (and the current axis parameters), or none until it is computed.
+        const auto axis = m_analysis.takeAxis(slot, take);
+        if (axis) shown.world_T_axis = axis->world_T_axis;
+        m_drawnAxes.push_back(axis);
+        scene.takes.push_back(std::move(shown));
     }
-    m_viewport->setScene(sceneOf(takes, axes));
+    m_viewport->setScene(std::move(scene));
     m_viewport->setTime(m_document.currentTime());
-    m_axes->schedule();
+}
+
+void ViewportPanel::refreshAxes()
+{
+    const auto takes = shownTakes(m_document);
+    if (takes.size() != m_drawnAxes.size()) return rebuildScene();
+    for (std::size_t i = 0; i < takes.size(); ++i)
+        if (m_analysis.takeAxis(takes[i].first, takes[i].second) != m_drawnAxes[i]) return rebuildScene();
 }
 
 void ViewportPanel::applyVisibility()

@@ -113,6 +113,24 @@ Result<AxisOutput> runAxes(const NormaliseOutput& normalised, const std::string&
     return out;
 }
 
+StageKey takeAxisKey(StageKey take, const AxisParameters& p)
+{
+    return KeyBuilder("take-axis").add(take).add(int(p.frontBack)).add(p.massSpacing).key();
+}
+
+Result<TakeAxis> runTakeAxis(const Take& take, const AxisParameters& parameters, const RunControl& control)
+{
+    if (auto status = validate(parameters); !status) return status.error();
+    const AxisOptions options = parameters.axisOptions();
+    auto axis = computeMotionAxis(*defaultAxisModel(options), take, options, control);
+    if (!axis) return makeError(axis.error().code, "motion axis of " + take.displayName() + ": " + axis.error().message);
+    TakeAxis out;
+    out.coordinates = axisTake(*axis);
+    out.coordinates.labels.source = "axis of " + take.displayName();
+    out.world_T_axis = std::move(axis->world_T_axis);
+    return out;
+}
+
 Result<Take> weightedTake(const DecomposeOutput& decomposed, const std::string& function, const std::string& emotion, double weight)
 {
     return weightEmotion(decomposed.components, function, emotion, weight);

@@ -163,6 +163,21 @@ StageKey axisKey(StageKey normalised, const AxisParameters& parameters);
 Result<AxisOutput> runAxes(const NormaliseOutput& normalised, const std::string& neutralEmotion,
                            const AxisParameters& parameters, const RunControl& control = {});
 
+// ---- the motion axis of one take (thesis 5.2.1), on demand: what the 3D view draws -------------
+
+/// A take's motion axis: per frame, and as the 6 axis-coordinate channels (axis_channels.h)
+/// labelled "axis of <the take's name>".
+struct TakeAxis {
+    std::vector<RigidTransform> world_T_axis;
+    Take coordinates;
+};
+
+/// Keyed on the take's content (takeKey) and the axis parameters the axis depends on (the
+/// front-back axis and the mass-point spacing), so each take's axis is computed once.
+StageKey takeAxisKey(StageKey take, const AxisParameters& parameters);
+/// On the default body, with the parameters' axis options (as the motion-axes stage).
+Result<TakeAxis> runTakeAxis(const Take& take, const AxisParameters& parameters, const RunControl& control = {});
+
 // ---- emotion weight and design (thesis 4.5, 5.5): cheap, computed on demand -------------------
 
 /// x = y + a z of one cell (eq. 4.45), labelled as weightEmotion labels it.

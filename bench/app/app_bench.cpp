@@ -5,10 +5,10 @@
 // - a warp control-point drag step to the designed take shown in the graphs and the 3D view
 //   (target < 16 ms; counters: every step changed the take, 3D frames drawn per step);
 // - the 3D view alone: a moving frame, a still (multisampled) frame, a replaced scene.
+#include "app/analysis_controller.h"
 #include "app/design_controller.h"
 #include "app/file_controller.h"
 #include "app/main_window.h"
-#include "app/recomputer.h"
 #include "app/viewport_panel.h"
 
 #include "widgets/graph_grid.h"
@@ -40,9 +40,7 @@ std::unique_ptr<app::MainWindow> g_window;
 /// and reruns, so it would load the CPU for the whole measurement.
 void waitIdle(app::MainWindow& main)
 {
-    const auto recomputers = main.findChildren<app::Recomputer*>();
-    (void)QTest::qWaitFor([&] { return std::none_of(recomputers.begin(), recomputers.end(), [](auto* r) { return r->busy(); }); },
-                          120000);
+    (void)QTest::qWaitFor([&] { return !main.analysis().scheduler().busy(); }, 120000);
     QTest::qWait(200);
 }
 

@@ -56,6 +56,33 @@ TEST_CASE("a parameter changes the keys of its stage and those below it, nothing
     CHECK(corpusKey(changed) != demo().key);
 }
 
+TEST_CASE("a take's motion axis is keyed by its content and the axis parameters it depends on", "[pipeline][keys]")
+{
+    const Take& take = demo().corpus->takes[4];
+    const AxisParameters base;
+    const StageKey key = takeAxisKey(takeKey(take), base);
+    AxisParameters other = base;
+    other.tau = 7; // phase matching only: not the axis
+    CHECK(takeAxisKey(takeKey(take), other) == key);
+    other.massSpacing = 2.0;
+    CHECK(takeAxisKey(takeKey(take), other) != key);
+    other = base;
+    other.frontBack = FrontBackAxis::Principal;
+    CHECK(takeAxisKey(takeKey(take), other) != key);
+    Take changed = take;
+    changed.values(3, 1) += 1e-9;
+    CHECK(takeAxisKey(takeKey(changed), base) != key);
+
+    auto axis = runTakeAxis(take, base);
+    REQUIRE(axis.ok());
+    CHECK(axis->world_T_axis.size() == std::size_t(take.frameCount()));
+    CHECK(axis->coordinates.channelCount() == 6);
+    CHECK(axis->coordinates.labels.source == "axis of " + take.displayName());
+    AxisParameters invalid = base;
+    invalid.massSpacing = 0.01;
+    CHECK_THAT(runTakeAxis(take, invalid).error().message, Catch::Contains("massSpacing"));
+}
+
 TEST_CASE("the whole chain on the demo corpus follows the thesis and reruns only what a change invalidates", "[pipeline][chain]")
 {
     StageCache cache;
