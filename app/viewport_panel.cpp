@@ -8,7 +8,9 @@
 #include "analysis/body/body_description.h"
 
 #include <QCheckBox>
+#include <QComboBox>
 #include <QHBoxLayout>
+#include <QLabel>
 #include <QVBoxLayout>
 
 #include <utility>
@@ -16,7 +18,8 @@
 namespace bunraku::app {
 namespace {
 
-/// The shown takes that can pose the puppet (an axis take, for one, cannot), with their slot.
+/// The shown takes, with their slot: those that can pose the puppet (an axis take, for one,
+/// cannot). The scene's take slots are these, in this order.
 std::vector<std::pair<TakeSlot, TakePointer>> shownTakes(const Document& document)
 {
     std::vector<std::pair<TakeSlot, TakePointer>> takes;
@@ -49,6 +52,19 @@ ViewportPanel::ViewportPanel(Document& document, AnalysisController& analysis, Q
         toggles->addWidget(box);
         connect(box, &QCheckBox::toggled, this, &ViewportPanel::applyVisibility);
     }
+    for (int slot = 0; slot < 2; ++slot) {
+        auto* box = new QComboBox(this);
+        box->setObjectName(slot == 0 ? "figureA" : "figureB");
+        box->addItem(tr("Puppet"), int(render::FigureStyle::Puppet));
+        box->addItem(tr("Skeleton"), int(render::FigureStyle::Skeleton));
+        box->addItem(tr("Both"), int(render::FigureStyle::PuppetAndSkeleton));
+        box->setToolTip(slot == 0 ? tr("Figure of take A: the puppet, the performer's skeleton (takes read from BVH), or both")
+                                  : tr("Figure of take B: the puppet, the performer's skeleton (takes read from BVH), or both"));
+        connect(box, &QComboBox::currentIndexChanged, this, &ViewportPanel::applyVisibility);
+        toggles->addWidget(new QLabel(slot == 0 ? tr("A:") : tr("B:"), this));
+        toggles->addWidget(box);
+        m_figures[slot] = box;
+    }
     toggles->addStretch(1);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
@@ -74,6 +90,10 @@ ViewportPanel::ViewportPanel(Document& document, AnalysisController& analysis, Q
             }
         emit partPicked(bodyPart);
     });
+    connect(m_viewport, &widgets::ViewportWidget::bonePicked, this, [this](int sceneSlot, const QString& joint, const QString& part) {
+        const auto shown = shownTakes(m_document); // the scene's takes are the shown slots, in order
+        emit bonePicked(sceneSlot < int(shown.size()) ? int(shown[std::size_t(sceneSlot)].first) : sceneSlot, joint, part);
+    });
     rebuildScene();
 }
 
@@ -95,6 +115,7 @@ void ViewportPanel::rebuildScene()
     }
     m_viewport->setScene(std::move(scene));
     m_viewport->setTime(m_document.currentTime());
+    applyVisibility(); // take B may now be the scene's first take
 }
 
 void ViewportPanel::refreshAxes()
@@ -112,6 +133,9 @@ void ViewportPanel::applyVisibility()
     visibility.axis = m_axis->isChecked();
     visibility.orbits = m_orbits->isChecked();
     visibility.grid = m_grid->isChecked();
+    const auto shown = shownTakes(m_document);
+    for (std::size_t s = 0; s < shown.size() && s < visibility.figures.size(); ++s)
+        visibility.figures[s] = render::FigureStyle(m_figures[int(shown[s].first)]->currentData().toInt());
     m_viewport->setVisibility(visibility);
 }
 
