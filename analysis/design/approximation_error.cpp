@@ -28,27 +28,36 @@ Result<ApproximationError> approximationErrorByScale(const Eigen::MatrixXd& func
     ApproximationError result;
     result.relativeError = Eigen::MatrixXd::Constant(options.maxScale, dofs, std::numeric_limits<double>::quiet_NaN());
     result.meanRelativeError = Eigen::VectorXd::Constant(options.maxScale, std::numeric_limits<double>::quiet_NaN());
+    for (int c = 1; c <= options.maxScale; ++c) result.scales.push_back(c);
+    // The approximation is linear in the signal and, for the integer scales 1..c (each with
+    // share 1 of the scale axis), x minus the sum of the single scales' reconstructions: so
+    // A_e - A_f = d - sum_{s <= c} R_s(d) with d = emotional - functional, one reconstruction
+    // per DOF (cwtScaleContributions) instead of one per largest scale and signal.
     std::vector<double> scales;
-    for (int c = 1; c <= options.maxScale; ++c) {
+    for (int c = 1; c <= options.maxScale; ++c) scales.push_back(double(c));
+    for (Eigen::Index q = 0; q < dofs; ++q) {
         if (control.cancelled()) return makeError(ErrorCode::Cancelled, "approximation error cancelled");
-        result.scales.push_back(c);
-        scales.push_back(double(c));
+        const double norm = functional.col(q).norm();
+        if (!(norm > 0.0)) continue;
+        const Eigen::VectorXd difference = emotionalOnFunctionalTime.col(q) - functional.col(q);
+        auto parts = cwtScaleContributions(difference, scales, options.cwt);
+        if (!parts) return parts.error();
+        Eigen::VectorXd residual = difference;
+        for (int c = 1; c <= options.maxScale; ++c) {
+            residual -= parts->col(c - 1);
+            result.relativeError(c - 1, q) = residual.norm() / norm; // eq. 5.18
+        }
+        control.report(double(q + 1) / double(dofs));
+    }
+    for (int c = 1; c <= options.maxScale; ++c) {
         double sum = 0.0;
         int counted = 0;
-        for (Eigen::Index q = 0; q < dofs; ++q) {
-            const double norm = functional.col(q).norm();
-            if (!(norm > 0.0)) continue;
-            auto af = cwtApproximation(functional.col(q), scales, options.cwt);
-            if (!af) return af.error();
-            auto ae = cwtApproximation(emotionalOnFunctionalTime.col(q), scales, options.cwt);
-            if (!ae) return ae.error();
-            const double error = (*ae - *af).norm() / norm; // eq. 5.18
-            result.relativeError(c - 1, q) = error;
-            sum += error;
-            ++counted;
-        }
+        for (Eigen::Index q = 0; q < dofs; ++q)
+            if (std::isfinite(result.relativeError(c - 1, q))) {
+                sum += result.relativeError(c - 1, q);
+                ++counted;
+            }
         if (counted > 0) result.meanRelativeError(c - 1) = sum / counted;
-        control.report(double(c) / options.maxScale);
     }
     return result;
 }

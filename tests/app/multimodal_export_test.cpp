@@ -5,6 +5,7 @@
 
 #include "app/multimodal_export.h"
 #include "app/multimodal_export_controller.h"
+#include "app/multimodal_export_dialog.h"
 #include "app/offscreen_view.h"
 
 #include "analysis/synth/demo_corpus.h"
@@ -12,7 +13,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include <QComboBox>
 #include <QImage>
+#include <QLineEdit>
+#include <QSpinBox>
 
 #include <cstdlib>
 #include <fstream>
@@ -337,4 +341,44 @@ TEST_CASE("bunraku render --multimodal: the view region is the plain render, the
     CHECK(app::existingFrames(QString::fromStdString((folder / "seq").string())).size() == 4);
     CHECK(run("render " + take + " --multimodal --frames 0:3 --size 320x240 -o '" + (folder / "seq").string() + "'", "again.txt") != 0);
     CHECK(run("render " + take + " --multimodal --frames 0:3 --mp4 x.mp4 -o '" + (folder / "seq2").string() + "'", "mp4.txt") != 0);
+}
+
+TEST_CASE("File > Export Multimodal Video exports what the dialog was given", "[app][multimodal]")
+{
+    auto window = exportWindow(0.0);
+    REQUIRE(window);
+    window->graphPanel()->setGraphLayout(GraphLayout::Single);
+    const auto folder = test::scratchDir("multimodal-menu");
+    QAction* action = nullptr;
+    for (auto* candidate : window->findChildren<QAction*>())
+        if (candidate->objectName() == "exportMultimodalVideo") action = candidate;
+    REQUIRE(action != nullptr);
+    bool answered = false;
+    QTimer::singleShot(0, [&] { // the dialog runs its own event loop: fill it in from there
+        auto* dialog = qobject_cast<app::MultimodalExportDialog*>(QApplication::activeModalWidget());
+        if (dialog == nullptr) return;
+        // it starts from the graph dock's layout
+        auto* layout = dialog->findChild<QComboBox*>("layout");
+        REQUIRE(layout);
+        CHECK(widgets::GraphLayout(layout->currentData().toInt()) == GraphLayout::Single);
+        layout->setCurrentIndex(layout->findData(int(GraphLayout::OneDof)));
+        auto* format = dialog->findChild<QComboBox*>("format");
+        format->setCurrentIndex(format->findData(int(app::VideoFormat::PngSequence)));
+        dialog->findChild<QSpinBox*>("firstFrame")->setValue(2);
+        dialog->findChild<QSpinBox*>("lastFrame")->setValue(4);
+        auto* size = dialog->findChild<QComboBox*>("size");
+        size->setCurrentIndex(size->findData(QSize(1280, 720)));
+        dialog->findChild<QLineEdit*>("output")->setText(QString::fromStdString((folder / "frames").string()));
+        const app::MultimodalExportChoice choice = dialog->choice();
+        CHECK(choice.layout.layout == GraphLayout::OneDof);
+        CHECK(choice.video.firstFrame == 2);
+        CHECK(choice.video.lastFrame == 4);
+        dialog->accept();
+        answered = true;
+    });
+    action->trigger();
+    REQUIRE(answered);
+    const auto frames = app::existingFrames(QString::fromStdString((folder / "frames").string()));
+    REQUIRE(frames.size() == 3);
+    CHECK(QImage(QDir(QString::fromStdString((folder / "frames").string())).filePath(frames[2])).size() == QSize(1280, 720));
 }

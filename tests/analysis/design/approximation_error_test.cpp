@@ -1,4 +1,5 @@
 #include "analysis/design/approximation_error.h"
+#include "analysis/wavelet/cwt_reconstruction.h"
 
 #include <catch2/catch.hpp>
 
@@ -52,6 +53,30 @@ TEST_CASE("a difference above a scale's frequency leaves the approximations of t
     CHECK(e[11] < 0.25 * e[0]);
     CHECK(e[15] < 0.25 * e[0]);
     CHECK(error->meanRelativeError[15] == e[15]);
+}
+
+TEST_CASE("the approximation error is eq. 5.18 of the two approximations, scale by scale")
+{
+    Eigen::MatrixXd functional(106, 2), emotional(106, 2);
+    functional.col(0) = sine(106, 0.031, 12.0) + Eigen::VectorXd::Constant(106, 80.0);
+    functional.col(1) = sine(106, 0.09, 3.0);
+    emotional.col(0) = sine(106, 0.029, 15.0) + Eigen::VectorXd::Constant(106, 78.0) + sine(106, 0.17, 1.0);
+    emotional.col(1) = sine(106, 0.08, 2.0);
+    auto error = approximationErrorByScale(functional, emotional);
+    REQUIRE(error.ok());
+    for (int c : {1, 5, 16}) {
+        std::vector<double> scales;
+        for (int s = 1; s <= c; ++s) scales.push_back(s);
+        for (Eigen::Index q = 0; q < 2; ++q) {
+            auto af = cwtApproximation(functional.col(q), scales);
+            auto ae = cwtApproximation(emotional.col(q), scales);
+            REQUIRE(af.ok());
+            REQUIRE(ae.ok());
+            const double direct = (*ae - *af).norm() / functional.col(q).norm();
+            CHECK(error->relativeError(c - 1, q) == Approx(direct).epsilon(1e-9));
+        }
+        CHECK(error->meanRelativeError(c - 1) == Approx(0.5 * (error->relativeError(c - 1, 0) + error->relativeError(c - 1, 1))));
+    }
 }
 
 TEST_CASE("the approximation error rejects mismatched or bad input")
