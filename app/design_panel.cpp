@@ -3,7 +3,10 @@
 #include "app/design_controller.h"
 #include "app/document.h"
 
+#include "analysis/axis/axis_channels.h"
+
 #include "widgets/gain_table.h"
+#include "widgets/scale_error_plot.h"
 #include "widgets/warp_curve_editor.h"
 
 #include <QHBoxLayout>
@@ -19,6 +22,7 @@ DesignPanel::DesignPanel(Document& document, DesignController& controller, QWidg
 {
     m_editor = new widgets::WarpCurveEditor(this);
     m_gains = new widgets::GainTable(this);
+    m_scaleError = new widgets::ScaleErrorPlot(this);
     m_inputs = new QLabel(tr("Preparing the design..."), this);
     m_inputs->setWordWrap(true);
     m_timing = new QLabel(this);
@@ -41,8 +45,10 @@ DesignPanel::DesignPanel(Document& document, DesignController& controller, QWidg
     auto* splitter = new QSplitter(Qt::Vertical, this);
     splitter->addWidget(m_editor);
     splitter->addWidget(m_gains);
+    splitter->addWidget(m_scaleError);
     splitter->setStretchFactor(0, 3);
     splitter->setStretchFactor(1, 2);
+    splitter->setStretchFactor(2, 2);
     auto* buttons = new QHBoxLayout;
     buttons->addWidget(showDesigned);
     buttons->addWidget(extractedGains);
@@ -112,6 +118,9 @@ void DesignPanel::refresh()
     m_editor->setCurve(m_controller.warpCurve());
     m_gains->setGains(m_controller.gains());
     m_gains->setExtracted(m_controller.extractedGains());
+    std::vector<std::string> dofs;
+    for (const auto& channel : analysis::axisCoordinateChannels()) dofs.push_back(channel.name());
+    m_scaleError->setError(m_controller.approximationError(), dofs, m_controller.targetCell());
     showStatus();
 }
 

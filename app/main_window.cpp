@@ -6,6 +6,7 @@
 #include "app/emotion_panel.h"
 #include "app/file_controller.h"
 #include "app/help_controller.h"
+#include "app/multimodal_export_controller.h"
 #include "app/normalise_panel.h"
 #include "app/offscreen_view.h"
 #include "app/phrase_marks.h"
@@ -199,6 +200,9 @@ void MainWindow::createMenus()
     report->setToolTip(tr("The analysis report of the open corpus as one HTML file (figures and tables, the thesis's values beside)"));
     auto* video = file->addAction(tr("Export 3D View &Video..."), this, &MainWindow::chooseViewVideo);
     video->setObjectName("exportViewVideoAction");
+    m_multimodal = new MultimodalExportController(*m_document, *m_graphs, *m_viewportPanel, this);
+    connect(m_multimodal, &MultimodalExportController::message, m_status, &QLabel::setText);
+    file->addAction(m_multimodal->action());
     file->addSeparator();
     auto* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);
@@ -555,6 +559,7 @@ QVariantMap MainWindow::viewState() const
     return {{"graphLayout", int(m_graphs->grid()->graphLayout())},
             {"twoTakeMode", int(m_graphs->grid()->twoTakeMode())},
             {"valueScale", int(m_graphs->grid()->valueScale())},
+            {"thesisTicks", m_graphs->grid()->thesisTicks()},
             {"part", m_graphs->selectedPart()},
             {"speed", m_timeline->speed()}};
 }
@@ -564,6 +569,7 @@ void MainWindow::restoreViewState(const QVariantMap& state)
     if (state.contains("graphLayout")) m_graphs->setGraphLayout(widgets::GraphLayout(state["graphLayout"].toInt()));
     if (state.contains("twoTakeMode")) m_graphs->setTwoTakeMode(widgets::TwoTakeMode(state["twoTakeMode"].toInt()));
     if (state.contains("valueScale")) m_graphs->setValueScale(widgets::ValueScale(state["valueScale"].toInt()));
+    if (state.contains("thesisTicks")) m_graphs->setThesisTicks(state["thesisTicks"].toBool());
     if (state.contains("part")) m_graphs->selectPart(state["part"].toString());
     if (state.contains("graphLayout")) m_graphs->setGraphLayout(widgets::GraphLayout(state["graphLayout"].toInt()));
     if (state.contains("speed")) m_timeline->setSpeed(state["speed"].toDouble());

@@ -31,6 +31,7 @@ class EmotionPanel;
 class NormalisePanel;
 class ExportController;
 class FileController;
+class MultimodalExportController;
 class PlaybackController;
 class ViewportPanel;
 
@@ -55,6 +56,8 @@ public:
     DesignPanel* designPanel() const { return m_designPanel; }
     NormalisePanel* normalisePanel() const { return m_normalisePanel; }
     EmotionPanel* emotionPanel() const { return m_emotionPanel; }
+    /// File > Export Multimodal Video...
+    MultimodalExportController& multimodalExport() { return *m_multimodal; }
     const std::vector<QDockWidget*>& docks() const { return m_docks; }
     QDockWidget* dock(const QString& objectName) const;
 
@@ -123,6 +126,7 @@ private:
     DesignPanel* m_designPanel = nullptr;
     NormalisePanel* m_normalisePanel = nullptr;
     EmotionPanel* m_emotionPanel = nullptr;
+    MultimodalExportController* m_multimodal = nullptr;
     std::vector<QDockWidget*> m_docks;
     QByteArray m_defaultState;
     QMenu* m_viewMenu = nullptr;

@@ -126,6 +126,35 @@ void GraphGrid::setValueScale(ValueScale scale)
     m_plot->replot();
 }
 
+void GraphGrid::setThesisTicks(bool on)
+{
+    if (on == m_thesisTicks) return;
+    m_thesisTicks = on;
+    applyTickers();
+    m_plot->replot();
+}
+
+void GraphGrid::applyTickers()
+{
+    for (auto& graph : m_graphs) {
+        // time: every 2 s (thesis 6.3.3), and by default multiples of 2 s when zoomed out
+        auto time = QSharedPointer<QCPAxisTickerFixed>::create();
+        time->setTickStep(2.0);
+        time->setScaleStrategy(m_thesisTicks ? QCPAxisTickerFixed::ssNone : QCPAxisTickerFixed::ssMultiples);
+        graph.rect->axis(QCPAxis::atBottom)->setTicker(time);
+        if (m_thesisTicks) {
+            auto value = QSharedPointer<QCPAxisTickerFixed>::create();
+            value->setTickStep(10.0); // value ticks every 10 units (thesis 6.3.3)
+            value->setScaleStrategy(QCPAxisTickerFixed::ssNone);
+            graph.rect->axis(QCPAxis::atLeft)->setTicker(value);
+        } else {
+            auto value = QSharedPointer<QCPAxisTicker>::create();
+            value->setTickCount(3);
+            graph.rect->axis(QCPAxis::atLeft)->setTicker(value);
+        }
+    }
+}
+
 void GraphGrid::setSelectedChannel(const std::string& part, const std::string& dof)
 {
     if (part == m_options.selectedPart && dof == m_options.selectedDof) return;
@@ -167,12 +196,7 @@ void GraphGrid::rebuild(bool allData)
             graph.rect->axis(QCPAxis::atRight)->setVisible(false);
             timeAxis->setTickLabelFont(tickFont);
             valueAxis->setTickLabelFont(tickFont);
-            valueAxis->ticker()->setTickCount(3);
-            // 2 s time ticks as in the thesis's graphs; tick labels only under the bottom row.
-            auto ticker = QSharedPointer<QCPAxisTickerFixed>::create();
-            ticker->setTickStep(2.0);
-            ticker->setScaleStrategy(QCPAxisTickerFixed::ssMultiples);
-            timeAxis->setTicker(ticker);
+            // tick labels only under the bottom row; the tickers: applyTickers
             timeAxis->setTickLabels(cell.row == lastRow);
             timeAxis->setRange(m_rangeLower, m_rangeUpper);
             connect(timeAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this,
@@ -226,6 +250,7 @@ void GraphGrid::rebuild(bool allData)
             m_plot->setCurrentLayer("main");
             m_graphs.push_back(graph);
         }
+        applyTickers();
         allData = true;
     }
 

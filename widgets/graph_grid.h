@@ -60,6 +60,10 @@ public:
     void setGraphLayout(GraphLayout layout);
     void setTwoTakeMode(TwoTakeMode mode);
     void setValueScale(ValueScale scale);
+    /// The thesis's ticks (6.3.3): value ticks every 10 units and time ticks every 2 s at any
+    /// zoom. Off: about 3 value ticks per graph and time ticks at multiples of 2 s.
+    void setThesisTicks(bool on);
+    bool thesisTicks() const { return m_thesisTicks; }
     /// The part and DOF used by the OnePart, OneDof and Single layouts.
     void setSelectedChannel(const std::string& part, const std::string& dof);
 
@@ -125,6 +129,8 @@ private:
     /// (all of them when `allData`).
     void rebuild(bool allData = true);
     void applyValueRanges();
+    /// The tickers of every graph for m_thesisTicks.
+    void applyTickers();
     /// Autoscales and replots if data changed while the ranges were held.
     void settleValueRanges();
     void updateCursorItems();
@@ -144,6 +150,7 @@ private:
     QTimer m_settle;            ///< autoscales after a burst of data changes
     GraphLayoutOptions m_options;
     ValueScale m_scale = ValueScale::PerGraph;
+    bool m_thesisTicks = false;
     GraphColours m_colours;
     std::vector<Graph> m_graphs;
     double m_cursorTime = 0.0;

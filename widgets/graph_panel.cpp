@@ -1,5 +1,6 @@
 #include "widgets/graph_panel.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -41,6 +42,9 @@ GraphPanel::GraphPanel(QWidget* parent) : QWidget(parent), m_grid(new GraphGrid(
     m_scale->setObjectName("valueScale");
     m_scale->addItem(tr("Scale per graph"), int(ValueScale::PerGraph));
     m_scale->addItem(tr("Scale per DOF"), int(ValueScale::PerDof));
+    m_thesisTicks = new QCheckBox(tr("Thesis ticks"), this);
+    m_thesisTicks->setObjectName("thesisTicks");
+    m_thesisTicks->setToolTip(tr("Value ticks every 10 units and time ticks every 2 s, as the thesis's graphs"));
     m_layout->setToolTip(tr("Which graphs to show"));
     m_part->setToolTip(tr("The part shown by the 'one part' and 'single' layouts"));
     m_dof->setToolTip(tr("The DOF shown by the 'one DOF' and 'single' layouts"));
@@ -52,6 +56,7 @@ GraphPanel::GraphPanel(QWidget* parent) : QWidget(parent), m_grid(new GraphGrid(
     controls->addWidget(m_dof);
     controls->addWidget(m_mode);
     controls->addWidget(m_scale);
+    controls->addWidget(m_thesisTicks);
     auto* hint = new QLabel(tr("drag: scrub   wheel: zoom   Shift+drag: pan   double click: whole take"), this);
     hint->setEnabled(false);
     controls->addWidget(hint, 1, Qt::AlignRight);
@@ -67,6 +72,7 @@ GraphPanel::GraphPanel(QWidget* parent) : QWidget(parent), m_grid(new GraphGrid(
             [this] { m_grid->setTwoTakeMode(TwoTakeMode(m_mode->currentData().toInt())); });
     connect(m_scale, &QComboBox::currentIndexChanged, this,
             [this] { m_grid->setValueScale(ValueScale(m_scale->currentData().toInt())); });
+    connect(m_thesisTicks, &QCheckBox::toggled, m_grid, &GraphGrid::setThesisTicks);
     connect(m_part, &QComboBox::currentIndexChanged, this, &GraphPanel::applySelection);
     connect(m_dof, &QComboBox::currentIndexChanged, this, &GraphPanel::applySelection);
 }
@@ -92,6 +98,7 @@ void GraphPanel::setTakes(std::shared_ptr<const analysis::Take> takeA, std::shar
 void GraphPanel::setGraphLayout(GraphLayout layout) { m_layout->setCurrentIndex(m_layout->findData(int(layout))); }
 void GraphPanel::setTwoTakeMode(TwoTakeMode mode) { m_mode->setCurrentIndex(m_mode->findData(int(mode))); }
 void GraphPanel::setValueScale(ValueScale scale) { m_scale->setCurrentIndex(m_scale->findData(int(scale))); }
+void GraphPanel::setThesisTicks(bool on) { m_thesisTicks->setChecked(on); }
 
 void GraphPanel::selectPart(const QString& part)
 {

@@ -58,6 +58,7 @@ StageKey axisKey(StageKey normalised, const AxisParameters& p)
         .add(p.searchBand)
         .add(p.maxScale)
         .add(p.approximationWeight)
+        .add(int(p.level))
         .add(int(p.path))
         .add(p.controlSpacing)
         .add(p.refinementPasses)
@@ -104,6 +105,12 @@ Result<AxisOutput> runAxes(const NormaliseOutput& normalised, const std::string&
             const DesignedMotion designed = designMotion(*function.basis, result.extracted.phase.curve, result.extracted.gains);
             result.designRelativeError = relativeError(designed.axisCoordinates, result.coordinates);
             result.undesignedRelativeError = relativeError(function.basis->coordinates, result.coordinates);
+            ApproximationErrorOptions approximation;
+            approximation.maxScale = parameters.maxScale;
+            auto errors = approximationErrorByScale(function.basis->coordinates, result.extracted.emotionalOnFunctionalTime,
+                                                    approximation, RunControl{control.stop, {}});
+            if (!errors) return makeError(errors.error().code, "approximation error of " + name + ": " + errors.error().message);
+            result.approximation = std::move(errors).value();
             out.cells.push_back(std::move(result));
             control.report(double(++done) / double(total));
         }

@@ -15,6 +15,7 @@
 #include "analysis/decompose/km2o_decomposition.h"
 #include "analysis/decompose/least_squares.h"
 #include "analysis/decompose/spectrum.h"
+#include "analysis/design/approximation_error.h"
 #include "analysis/design/motion_design.h"
 #include "analysis/normalise/take_normalisation.h"
 #include "analysis/normalise/variance_evaluation.h"
@@ -149,6 +150,9 @@ struct CellAxis {
     DesignParameters extracted;      ///< phase, phase-adjusted axis, gains
     double designRelativeError = 0;  ///< designed (extracted parameters) vs emotional axis, eq. 5.18
     double undesignedRelativeError = 0; ///< functional vs emotional axis
+    /// 5.4.1: eq. 5.18 per largest scale c = 1..maxScale and axis DOF, functional axis vs the
+    /// phase-adjusted emotional axis (Fig. 5.16).
+    ApproximationError approximation;
 };
 
 struct AxisOutput {

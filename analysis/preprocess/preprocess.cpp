@@ -296,18 +296,12 @@ Result<PreprocessResult> preprocessCorpus(const Corpus& corpus, const Preprocess
         for (const auto& function : out.functions()) {
             const int ref = functionReference(out, function, options);
             if (ref < 0) continue;
-            const Eigen::RowVectorXd start = out.takes[std::size_t(ref)].values.row(0);
+            const Take reference = out.takes[std::size_t(ref)];
             for (std::size_t i = 0; i < out.takes.size(); ++i) {
                 Take& take = out.takes[i];
                 if (take.labels.function != function) continue;
                 reports[i].isPositionReference = int(i) == ref;
-                const auto parts = sixDofParts(take);
-                for (std::size_t p = 0; p < parts.size(); ++p) {
-                    const Eigen::Index c = parts[p].firstChannel;
-                    const Eigen::Vector3d offset = (start.segment(c, 3) - take.values.row(0).segment(c, 3)).transpose();
-                    take.values.middleCols(c, 3).rowwise() += offset.transpose();
-                    reports[i].positionOffsets[p] = offset;
-                }
+                if (int(i) != ref) reports[i].positionOffsets = alignStartPosition(take, reference, options.positionAlignment);
             }
         }
     }

@@ -2,8 +2,9 @@
 /// Preprocessing of a corpus, thesis 2.2: (1) pad every take to the longest with its last frame,
 /// (2) unwrap angles (the thesis remapped to 0..360; we unwrap), (3) align the start times of the
 /// K takes of each function x emotion cell to the cell's time reference (automatic: the median
-/// onset among its longest takes), (4) translate each take so each part's first-frame position
-/// equals that of its function's reference take.
+/// onset among its longest takes), (4) translate each take so its first-frame position matches
+/// that of its function's reference take: by default one rigid translation of the whole body
+/// (start_position.h; per-part offsets as an option).
 /// Two steps the thesis implies but does not name: after unwrapping, every angle channel is
 /// moved by whole turns so its first value lies within 180 deg of the function's reference take
 /// (the thesis's 0..360 remapping kept all takes on one branch; per-take unwrapping does not),
@@ -19,6 +20,7 @@
 #include "analysis/core/result.h"
 #include "analysis/core/run_control.h"
 #include "analysis/preprocess/start_alignment.h"
+#include "analysis/preprocess/start_position.h"
 
 #include <Eigen/Core>
 
@@ -33,6 +35,8 @@ struct PreprocessOptions {
     bool alignStart = true;
     bool alignPosition = true;
     bool alignHeading = true;
+    /// Step (4): one rigid translation per take (thesis) or one offset per part.
+    PositionAlignment positionAlignment = PositionAlignment::Rigid;
     /// The part whose start yaw defines the whole-body heading.
     std::string headingPart = "shoulder";
     StartAlignMethod alignMethod = StartAlignMethod::Onset;
@@ -69,7 +73,7 @@ struct TakeReport {
     bool isTimeReference = false;
     double onsetFrame = 0.0;         ///< start of motion before shifting (fractional frame, departureOnset; when aligning start)
     bool isPositionReference = false;
-    std::vector<Eigen::Vector3d> positionOffsets; ///< cm added per 6-DOF part (sixDofParts order)
+    std::vector<Eigen::Vector3d> positionOffsets; ///< cm added per 6-DOF part (sixDofParts order; all equal when rigid)
     int branchTurns = 0;             ///< whole turns added to angle channels to meet the reference's branch
     double headingOffsetDeg = 0.0;   ///< degrees added to every yaw channel, in (-180, 180]
     bool isHeadingReference = false; ///< the function's heading (and angle branch) reference

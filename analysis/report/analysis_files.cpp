@@ -201,6 +201,7 @@ Result<std::vector<OutputFile>> analysisDataFiles(const ChainResult& chain, cons
     std::string arma = "channel,function,emotion,takes";
     for (int m = 1; m <= fluctuations.armaP; ++m) arma += ",a" + std::to_string(m);
     for (int n = 0; n <= fluctuations.armaQ; ++n) arma += ",b" + std::to_string(n);
+    for (int n = 0; n <= fluctuations.armaQ; ++n) arma += ",b" + std::to_string(n) + "_thesis";
     arma += ",innovation_variance,fpe\n";
     for (std::size_t ch = 0; ch < fluctuations.armaTables.size(); ++ch)
         for (const auto& row : fluctuations.armaTables[ch]) {
@@ -208,6 +209,7 @@ Result<std::vector<OutputFile>> analysisDataFiles(const ChainResult& chain, cons
             arma += fluctuations.channelNames[ch] + "," + row.function + "," + row.emotion + "," + std::to_string(row.takes);
             for (int m = 0; m < fluctuations.armaP; ++m) arma += "," + shortestNumber(row.mean.a(m));
             for (int n = 0; n <= fluctuations.armaQ; ++n) arma += "," + shortestNumber(row.mean.b(n));
+            for (int n = 0; n <= fluctuations.armaQ; ++n) arma += "," + shortestNumber(row.mean.bThesis(n));
             arma += "," + shortestNumber(row.mean.innovationVariance) + "," + shortestNumber(row.mean.fpe) + "\n";
         }
     files.push_back({"arma_table.csv", arma});
@@ -236,6 +238,18 @@ Result<std::vector<OutputFile>> analysisDataFiles(const ChainResult& chain, cons
             phase += std::to_string(t) + "," + shortestNumber(cell.extracted.phase.emotionalToFunctional[t]) + "\n";
         files.push_back({"phase_" + stem + ".csv", phase});
         files.push_back({"gains_" + stem + ".csv", gainsCsv(cell.extracted.gains)});
+        // 5.4.1, eq. 5.18, Fig. 5.16: one row per largest scale c, one column per axis DOF and the mean
+        const ApproximationError& approximation = cell.approximation;
+        std::string scales = "scale";
+        for (const auto& channel : axisCoordinateChannels()) scales += "," + channel.name();
+        scales += ",mean\n";
+        for (std::size_t c = 0; c < approximation.scales.size(); ++c) {
+            scales += std::to_string(approximation.scales[c]);
+            for (Eigen::Index q = 0; q < approximation.relativeError.cols(); ++q)
+                scales += "," + shortestNumber(approximation.relativeError(Eigen::Index(c), q));
+            scales += "," + shortestNumber(approximation.meanRelativeError(Eigen::Index(c))) + "\n";
+        }
+        files.push_back({"approximation_" + stem + ".csv", scales});
         axes.push_back({{"function", cell.function},
                         {"emotion", cell.emotion},
                         {"phrase_boundaries", chain.axes->function(cell.function)->boundaries},

@@ -123,6 +123,7 @@ struct PhaseArguments {
     double approximationWeight = 8.0;
     std::string path = "greedy";
     std::string weighting = "none";
+    std::string level = "first-frame";
     int spacing = 8;
 };
 
@@ -137,6 +138,10 @@ void addPhaseOptions(CLI::App* command, PhaseArguments& arguments)
         ->check(CLI::IsMember({"greedy", "optimal"}));
     command->add_option("--weighting", arguments.weighting, "none (thesis, default) or standardise")
         ->check(CLI::IsMember({"none", "standardise"}));
+    command->add_option("--level", arguments.level,
+                        "Level of each axis coordinate before the transform: none (eq. 5.16, default) or first-frame "
+                        "(minus its first frame)")
+        ->check(CLI::IsMember({"none", "first-frame"}));
     command->add_option("--control-spacing", arguments.spacing, "Frames between warp control points (default 8)")
         ->check(CLI::PositiveNumber);
 }
@@ -150,6 +155,7 @@ an::PhaseOptions phaseOptions(const PhaseArguments& arguments)
     options.match.approximationWeight = arguments.approximationWeight;
     options.match.path = arguments.path == "optimal" ? an::PathMethod::Optimal : an::PathMethod::Greedy;
     options.match.weighting = arguments.weighting == "standardise" ? an::ChannelWeighting::Standardise : an::ChannelWeighting::None;
+    options.match.level = arguments.level == "first-frame" ? an::LevelAlignment::FirstFrame : an::LevelAlignment::None;
     options.controlPointSpacing = arguments.spacing;
     return options;
 }
@@ -288,6 +294,7 @@ void runDesign(const DesignCommandArguments& arguments)
 struct ExperimentArguments {
     std::string corpus;
     std::string means = "measured";
+    std::string position = "rigid";
     bool json = false;
     AxisArguments axis;
     PhaseArguments phase;
@@ -304,6 +311,7 @@ void runExperiment(const ExperimentArguments& arguments)
         return std::move(read).value();
     }();
     an::DesignCorpusOptions corpusOptions;
+    an::preprocess::parsePositionAlignment(arguments.position, corpusOptions.preprocess.positionAlignment);
     an::Corpus corpus;
     if (arguments.means == "measured") {
         corpus = unwrap(an::io::readCorpus(arguments.corpus));
@@ -424,6 +432,10 @@ void addMotionAxisCommands(CommandSet& commands)
                             "'measured' (default): the preprocessed takes of each cell averaged by the thesis 3.7 average take; "
                             "'truth': the ground truth's noiseless cell motions")
             ->check(CLI::IsMember({"truth", "measured"}));
+        command->add_option("--position", arguments->position,
+                            "Start-position step of the preprocessing (thesis 2.2-4): rigid (one translation per take, "
+                            "default) or per-part")
+            ->check(CLI::IsMember({"rigid", "per-part"}));
         command->add_flag("--json", arguments->json, "Print a machine-readable summary");
         addAxisOptions(command, arguments->axis);
         addPhaseOptions(command, arguments->phase);

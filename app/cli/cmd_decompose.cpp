@@ -21,6 +21,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -146,6 +147,7 @@ std::string armaTakesCsv(const Decomposition& d, ArmaOrderSearch search, int max
     out << std::setprecision(8) << "function,emotion,take,channel,p,q,fpe,innovation_variance";
     for (int m = 1; m <= maxOrder; ++m) out << ",a" << m;
     for (int n = 0; n <= maxOrder; ++n) out << ",b" << n;
+    for (int n = 0; n <= maxOrder; ++n) out << ",b" << n << "_thesis";
     out << '\n';
     ArmaOrderOptions options;
     options.maxOrder = maxOrder;
@@ -161,6 +163,7 @@ std::string armaTakesCsv(const Decomposition& d, ArmaOrderSearch search, int max
                 << d.channels[ch].name() << ',' << m.p << ',' << m.q << ',' << m.fpe << ',' << m.innovationVariance;
             for (int i = 0; i < maxOrder; ++i) out << ',' << (i < m.p ? std::to_string(m.a(i)) : "");
             for (int i = 0; i <= maxOrder; ++i) out << ',' << (i <= m.q ? std::to_string(m.b(i)) : "");
+            for (int i = 0; i <= maxOrder; ++i) out << ',' << (i <= m.q ? std::to_string(m.bThesis(i)) : "");
             out << '\n';
         }
     }
@@ -173,6 +176,7 @@ std::string armaTableCsv(const Decomposition& d, int p, int q)
     out << std::setprecision(6) << std::fixed << "channel,function,emotion,takes";
     for (int m = 1; m <= p; ++m) out << ",a" << m;
     for (int n = 0; n <= q; ++n) out << ",b" << n;
+    for (int n = 0; n <= q; ++n) out << ",b" << n << "_thesis";
     out << ",innovation_variance,fpe\n";
     for (std::size_t ch = 0; ch < d.channels.size(); ++ch) {
         auto rows = armaCellTable(d, Eigen::Index(ch), p, q);
@@ -182,6 +186,7 @@ std::string armaTableCsv(const Decomposition& d, int p, int q)
             out << d.channels[ch].name() << ',' << row.function << ',' << row.emotion << ',' << row.takes;
             for (int m = 0; m < p; ++m) out << ',' << row.mean.a(m);
             for (int n = 0; n <= q; ++n) out << ',' << row.mean.b(n);
+            for (int n = 0; n <= q; ++n) out << ',' << row.mean.bThesis(n);
             out << ',' << row.mean.innovationVariance << ',' << row.mean.fpe << '\n';
         }
     }
@@ -343,6 +348,8 @@ struct ExperimentArgs {
     double noise = 0.0;
     int firstOffset = -1;
     std::string initialTimes = "full";
+    std::string noiseSharing = "per-cell";
+    int takes = 5;
     bool json = false;
 };
 
@@ -373,7 +380,15 @@ void runExperiment(const ExperimentArgs& args)
     if (args.noise > 0.0) options.noiseScale = args.noise;
     if (args.firstOffset >= 0) options.reading.firstWindowOffset = args.firstOffset;
     options.reading.initialTimes = args.initialTimes == "thesis" ? InitialTimeRange::Thesis : InitialTimeRange::Full;
+    options.noise = args.noiseSharing == "shared" ? NoiseSharing::SharedAcrossCells : NoiseSharing::PerCell;
+    options.takes = args.takes;
     const auto result = unwrap(runKm2oExperiment(options));
+    const auto printed = thesisTable44Printed(result.finalTime);
+    // Table 4.4 as printed beside each M (T = 1000 in units of 0.1 %, so also "read as %").
+    std::vector<double> asPrinted;
+    for (int m : result.correlationLengths)
+        asPrinted.push_back(m >= 3 && m <= 20 && !printed.empty() ? printed[std::size_t(m - 3)]
+                                                                  : std::numeric_limits<double>::quiet_NaN());
     if (args.json) {
         auto clean = [](const std::vector<double>& v) {
             nlohmann::json a = nlohmann::json::array();
@@ -384,19 +399,25 @@ void runExperiment(const ExperimentArgs& args)
                    {"M", result.correlationLengths},
                    {"P_percent", clean(result.errorPercent)},
                    {"thesis_P_percent", clean(result.thesisErrorPercent)},
+                   {"thesis_printed", clean(asPrinted)},
                    {"seeds", args.seeds},
+                   {"takes", options.takes},
+                   {"noise_sharing", args.noiseSharing},
                    {"first_window_offset", options.reading.firstWindowOffset},
                    {"initial_times", args.initialTimes}});
         return;
     }
-    std::cout << "KM2O exogenous-input identification of the eq. 4.39 ARX series, T = " << result.finalTime << ", "
-              << args.seeds << " seed(s); P = relative error (eq. 4.40) averaged over the six inputs\n";
-    std::cout << "   M    P [%]   thesis Table 4.4 [%]\n";
+    std::cout << "KM2O exogenous-input identification of the eq. 4.39 ARX series, T = " << result.finalTime << ", K = "
+              << options.takes << ", " << args.seeds << " seed(s), noise " << args.noiseSharing
+              << "; P = relative error (eq. 4.40) averaged over the six inputs\n";
+    const bool tenths = result.finalTime == 1000;
+    std::cout << "   M    P [%]   thesis Table 4.4 [%]" << (tenths ? "   (printed, read as %)" : "") << "\n";
     for (std::size_t i = 0; i < result.correlationLengths.size(); ++i) {
         std::cout << std::setw(4) << result.correlationLengths[i] << std::setw(9) << std::fixed << std::setprecision(3)
                   << result.errorPercent[i] << "   ";
         if (std::isfinite(result.thesisErrorPercent[i])) std::cout << std::setw(8) << result.thesisErrorPercent[i];
         else std::cout << "       -";
+        if (tenths && std::isfinite(asPrinted[i])) std::cout << std::setw(25) << asPrinted[i];
         std::cout << "\n";
     }
 }
@@ -456,6 +477,11 @@ void addDecompositionCommands(CommandSet& commands)
         ->check(CLI::Range(0, 100));
     exp->add_option("--initial-times", experimentArgs->initialTimes, "T0 range: full (0..T-M) or thesis (0..T-M-1)")
         ->check(CLI::IsMember({"full", "thesis"}));
+    exp->add_option("--noise-sharing", experimentArgs->noiseSharing,
+                    "per-cell (an independent w_k(t) per cell, default) or shared (one w_k(t) for all six cells: eq. "
+                    "4.39 puts no i, j on w)")
+        ->check(CLI::IsMember({"per-cell", "shared"}));
+    exp->add_option("--takes", experimentArgs->takes, "K, takes per cell (default 5, as the thesis)")->check(CLI::Range(2, 1000));
     exp->add_flag("--json", experimentArgs->json, "Print JSON");
     exp->callback([experimentArgs] { runExperiment(*experimentArgs); });
 }

@@ -274,6 +274,7 @@ struct PreprocessArguments {
     std::string output;
     bool noPad = false, noUnwrap = false, noAlignStart = false, noAlignPosition = false, noAlignHeading = false;
     std::string headingPart = "shoulder";
+    std::string position = "rigid";
     std::string method = "onset";
     int referenceTake = 0;
     int maxShift = 30;
@@ -340,6 +341,7 @@ void runPreprocess(const PreprocessArguments& arguments)
     options.alignStart = !arguments.noAlignStart;
     options.alignPosition = !arguments.noAlignPosition;
     options.alignHeading = !arguments.noAlignHeading;
+    pre::parsePositionAlignment(arguments.position, options.positionAlignment);
     options.headingPart = arguments.headingPart;
     options.alignMethod = arguments.method == "xcorr" ? pre::StartAlignMethod::CrossCorrelation : pre::StartAlignMethod::Onset;
     options.referenceTakeIndex = arguments.referenceTake;
@@ -376,6 +378,7 @@ void runPreprocess(const PreprocessArguments& arguments)
         printJson({{"input", arguments.input},
                    {"output", arguments.output},
                    {"steps", {{"pad", options.pad}, {"unwrap", options.unwrap}, {"align_start", options.alignStart}, {"align_position", options.alignPosition}, {"align_heading", options.alignHeading}}},
+                   {"position_alignment", arguments.position},
                    {"align_method", arguments.method},
                    {"takes", result.corpus.takes.size()},
                    {"channels", result.corpus.takes.front().channelCount()},
@@ -387,7 +390,7 @@ void runPreprocess(const PreprocessArguments& arguments)
     }
     std::cout << "preprocessed " << report.takes.size() << " takes into " << arguments.output << " (steps:"
               << (options.unwrap ? " unwrap" : "") << (options.pad ? " pad" : "")
-              << (options.alignStart ? " align-start(" + arguments.method + ")" : std::string()) << (options.alignPosition ? " align-position" : "")
+              << (options.alignStart ? " align-start(" + arguments.method + ")" : std::string()) << (options.alignPosition ? " align-position(" + arguments.position + ")" : std::string())
               << (options.alignHeading ? " align-heading(" + options.headingPart + ")" : std::string())
               << ")\n";
     std::cout << "  " << std::left << std::setw(28) << "take" << std::right << std::setw(8) << "padded" << std::setw(10) << "unwraps"
@@ -434,6 +437,10 @@ void addIoCommands(CommandSet& commands)
         preprocess->add_flag("--no-unwrap", arguments->noUnwrap, "Do not unwrap angles");
         preprocess->add_flag("--no-align-start", arguments->noAlignStart, "Do not align start times");
         preprocess->add_flag("--no-align-position", arguments->noAlignPosition, "Do not align start positions");
+        preprocess->add_option("--position", arguments->position,
+                               "Start-position alignment: rigid (one translation per take, keeping the geometry between "
+                               "the parts; thesis 2.2-4, default) or per-part (each part to the reference's start)")
+            ->check(CLI::IsMember({"rigid", "per-part"}));
         preprocess->add_flag("--no-align-heading", arguments->noAlignHeading,
                              "Do not align the whole-body heading (start yaw of the heading part)");
         preprocess->add_option("--heading-part", arguments->headingPart, "Part whose start yaw is the whole-body heading")

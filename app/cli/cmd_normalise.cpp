@@ -294,42 +294,81 @@ nlohmann::json methodsJson(const std::vector<an::MethodError>& methods)
         out.push_back({{"name", method.name},
                        {"mean_abs_error_frames", method.meanAbsErrorFrames},
                        {"max_abs_error_frames", method.maxAbsErrorFrames},
+                       {"shape_rms", method.shapeRms},
                        {"scales", method.scales}});
     return out;
 }
 
+/// "28..36" for consecutive scales, else the list.
+std::string scaleText(const std::vector<double>& scales)
+{
+    if (scales.empty()) return "-";
+    bool consecutive = true;
+    for (std::size_t i = 1; i < scales.size(); ++i) consecutive = consecutive && scales[i] == scales[i - 1] + 1.0;
+    std::ostringstream out;
+    if (consecutive) {
+        out << scales.front() << ".." << scales.back();
+    } else {
+        for (std::size_t i = 0; i < scales.size(); ++i) out << (i ? "," : "") << scales[i];
+    }
+    return out.str();
+}
+
+void printNoiseTable(const std::string& title, const an::NoiseExperimentResult& result)
+{
+    std::cout << title << "\n    method                     scales     mean |err|   max |err|   shape RMS\n";
+    for (const auto& method : result.methods)
+        std::cout << "    " << std::left << std::setw(27) << method.name << std::setw(9) << scaleText(method.scales) << std::right
+                  << std::fixed << std::setprecision(3) << std::setw(12) << method.meanAbsErrorFrames << std::setw(12)
+                  << method.maxAbsErrorFrames << std::setw(12) << method.shapeRms << "\n";
+}
+
 void runNoise(bool json)
 {
-    const an::NoiseExperimentOptions thesis;
-    const an::NoiseExperimentResult result = unwrap(an::runNoiseExperiment(thesis));
-    an::NoiseExperimentOptions constrained = thesis;
-    constrained.path = an::PathMethod::Optimal;
-    constrained.tau = 4;
-    const an::NoiseExperimentResult modern = unwrap(an::runNoiseExperiment(constrained));
+    // Thesis 3.4 with its own bands (ThesisNoiseBands), and the workbench's variant (scales
+    // 14..20 and 1..20 on the same signals), each as the thesis matched (single frames, no time
+    // constraint) and with windows and the optimal monotone path.
+    const an::NoiseExperimentOptions ours;
+    const an::NoiseExperimentOptions thesis = an::thesisBandOptions(ours);
+    auto constrainedOf = [](an::NoiseExperimentOptions options) {
+        options.path = an::PathMethod::Optimal;
+        options.tau = 4;
+        return options;
+    };
+    const an::NoiseExperimentResult thesisResult = unwrap(an::runNoiseExperiment(thesis));
+    const an::NoiseExperimentResult thesisConstrained = unwrap(an::runNoiseExperiment(constrainedOf(thesis)));
+    const an::NoiseExperimentResult result = unwrap(an::runNoiseExperiment(ours));
+    const an::NoiseExperimentResult modern = unwrap(an::runNoiseExperiment(constrainedOf(ours)));
+    const an::ThesisNoiseBands bands;
     if (json) {
-        printJson({{"methods", methodsJson(result.methods)},
+        printJson({{"thesis_bands",
+                    {{"bands",
+                      {{"below_noise_of_reference_frequency", {bands.lowestOfReference, bands.highestOfReference}},
+                       {"with_noise_band_of_noise_frequency_max", bands.highestOfNoise}}},
+                     {"methods", methodsJson(thesisResult.methods)},
+                     {"with_time_constraint", {{"path", "optimal"}, {"tau", 4}, {"methods", methodsJson(thesisConstrained.methods)}}}}},
+                   {"methods", methodsJson(result.methods)},
                    {"setup",
-                    {{"frames", thesis.frames},
-                     {"reference_frequency", thesis.referenceFrequency},
-                     {"sample_frequency", thesis.sampleFrequency},
-                     {"phase_shift_rad", thesis.phaseShiftRadians},
-                     {"noise_amplitude", thesis.noiseAmplitude},
-                     {"noise_frequency", thesis.noiseFrequency},
-                     {"tau", thesis.tau},
-                     {"tcmp", thesis.searchBand},
+                    {{"frames", ours.frames},
+                     {"reference_frequency", ours.referenceFrequency},
+                     {"sample_frequency", ours.sampleFrequency},
+                     {"phase_shift_rad", ours.phaseShiftRadians},
+                     {"noise_amplitude", ours.noiseAmplitude},
+                     {"noise_frequency", ours.noiseFrequency},
+                     {"tau", ours.tau},
+                     {"tcmp", ours.searchBand},
                      {"path", "independent (thesis 3.3/3.4 single-frame matching)"}}},
-                   {"with_time_constraint", {{"path", "optimal"}, {"tau", constrained.tau}, {"methods", methodsJson(modern.methods)}}}});
+                   {"with_time_constraint", {{"path", "optimal"}, {"tau", 4}, {"methods", methodsJson(modern.methods)}}}});
         return;
     }
-    std::cout << "thesis 3.4: sine 0.025 cycles/frame; sample 1.1x, phase -0.4 rad, + 0.4 sin at 4x as noise\n"
-              << "mean |error| vs the true warp, frames (single-frame matching, T_cmp 20):\n";
-    for (const auto& method : result.methods)
-        std::cout << "  " << std::left << std::setw(26) << method.name << std::right << std::fixed << std::setprecision(3)
-                  << method.meanAbsErrorFrames << "\n";
-    std::cout << "with windows (tau 4) and the optimal monotone path:\n";
-    for (const auto& method : modern.methods)
-        std::cout << "  " << std::left << std::setw(26) << method.name << std::right << std::fixed << std::setprecision(3)
-                  << method.meanAbsErrorFrames << "\n";
+    std::cout << "thesis 3.4: sine 0.025 cycles/frame, 200 frames; sample 1.1x, phase -0.4 rad, + 0.4 sin at 4x as noise\n"
+              << "error vs the true warp (frames) and RMS of the normalised noiseless sample vs the reference\n";
+    printNoiseTable("thesis bands (0.894-1.151 x the signal's frequency; with noise: up to 2 x the noise's), single frames, "
+                    "T_cmp 20:",
+                    thesisResult);
+    printNoiseTable("thesis bands, windows (tau 4) and the optimal monotone path:", thesisConstrained);
+    printNoiseTable("workbench bands (14..20 below the noise; 1..20 with it), single frames, T_cmp 20:", result);
+    printNoiseTable("workbench bands, windows (tau 4) and the optimal monotone path:", modern);
 }
 
 struct TruthArguments {

@@ -9,6 +9,7 @@ void addAllCommands(CommandSet& commands)
     addNormalisationCommands(commands);
     addDecompositionCommands(commands);
     addMotionAxisCommands(commands);
+    addApproximationCommands(commands);
     addAnalyseCommands(commands);
     addRenderCommands(commands);
     addHelpCommands(commands);

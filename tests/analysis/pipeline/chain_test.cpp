@@ -168,3 +168,35 @@ TEST_CASE("a cancelled chain stops with Cancelled", "[pipeline][chain]")
     REQUIRE_FALSE(chain.ok());
     CHECK(chain.error().code == ErrorCode::Cancelled);
 }
+
+TEST_CASE("the axis stage's per-scale approximation error has the shape of Fig. 5.16", "[pipeline][approximation]")
+{
+    const ChainParameters parameters;
+    auto preprocessed = preprocessStage(demo(), parameters.preprocess, nullptr);
+    REQUIRE(preprocessed.ok());
+    auto normalised = normaliseStage(chainKeys(demo().key, parameters).preprocess, **preprocessed, parameters.normalise, nullptr);
+    REQUIRE(normalised.ok());
+    auto axes = axisStage(chainKeys(demo().key, parameters).normalise, **normalised, "none", parameters.axis, nullptr);
+    REQUIRE(axes.ok());
+    REQUIRE((*axes)->cells.size() == 4);
+    for (const CellAxis& cell : (*axes)->cells) {
+        INFO(cell.function << "/" << cell.emotion);
+        const ApproximationError& error = cell.approximation;
+        REQUIRE(error.scales.size() == 16);
+        REQUIRE(error.relativeError.rows() == 16);
+        REQUIRE(error.relativeError.cols() == 6);
+        CHECK(error.relativeError.allFinite());
+        // falling with the largest scale (thesis: "the approximations grow alike as the scale grows")
+        for (Eigen::Index c = 1; c < 16; ++c) CHECK(error.meanRelativeError[c] <= error.meanRelativeError[c - 1] + 1e-12);
+        CHECK(error.meanRelativeError[15] < error.meanRelativeError[0]);
+        // ... but not to nothing: the emotional axis differs in its slow parts (the amplitude
+        // component), so some DOF stay far apart at scale 16 - why 5.4.2 turns to Fourier series
+        CHECK(error.relativeError.row(15).maxCoeff() > 0.1);
+        // scale 1's approximation is nearly the signal: its error is the relative difference of the axes
+        const Eigen::MatrixXd& functional = (*axes)->function(cell.function)->basis->coordinates;
+        const Eigen::MatrixXd& emotional = cell.extracted.emotionalOnFunctionalTime;
+        for (Eigen::Index q = 0; q < 6; ++q)
+            CHECK(error.relativeError(0, q) ==
+                  Approx((emotional.col(q) - functional.col(q)).norm() / functional.col(q).norm()).epsilon(0.1));
+    }
+}
