@@ -8,6 +8,7 @@
 #include "analysis/axis/inertia_axis.h"
 #include "analysis/core/puppet_layout.h"
 #include "analysis/body/body_description.h"
+#include "analysis/body/body_fit.h"
 
 #include <QCheckBox>
 #include <QHBoxLayout>
@@ -33,6 +34,9 @@ render::SceneContent sceneOf(const std::vector<TakePointer>& takes, const AxisPo
     for (std::size_t i = 0; i < takes.size(); ++i) {
         render::TakeSlot slot;
         slot.take = *takes[i];
+        // A take with its performer's skeleton is drawn with the puppet fitted to it.
+        if (slot.take.skeleton)
+            slot.body = std::make_shared<const analysis::BodyDescription>(analysis::bodyForTake(scene.body, slot.take));
         if (i < axes.size()) slot.world_T_axis = axes[i];
         scene.takes.push_back(std::move(slot));
     }
@@ -88,7 +92,11 @@ ViewportPanel::ViewportPanel(Document& document, QWidget* parent) : QWidget(pare
                 static const analysis::AxisModel model = analysis::makeAxisModel(analysis::defaultBodyDescription());
                 AxisResult result{takes, {}};
                 for (const auto& take : takes) {
-                    auto axis = analysis::computeMotionAxis(model, *take, {}, control);
+                    // The axis of a take with a skeleton integrates over the puppet fitted to it.
+                    const analysis::AxisModel own = take->skeleton
+                                                        ? analysis::makeAxisModel(analysis::bodyForTake(model.body, *take))
+                                                        : analysis::AxisModel{};
+                    auto axis = analysis::computeMotionAxis(take->skeleton ? own : model, *take, {}, control);
                     result.axes.push_back(axis ? axis->world_T_axis : std::vector<analysis::RigidTransform>{});
                 }
                 return {result, {}};

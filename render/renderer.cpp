@@ -40,6 +40,8 @@ Mesh partnerMesh()
 
 struct Renderer::Slot {
     analysis::Take take;
+    analysis::BodyDescription body; ///< the scene's body, or the take's own
+    std::vector<GpuMesh> meshes;    ///< the take's own body's meshes; empty: the scene's
     analysis::BodyBinding binding;
     std::vector<analysis::RigidTransform> world_T_axis;
     glm::vec3 centre{0.0f};
@@ -92,8 +94,10 @@ void Renderer::releaseSceneBuffers()
 {
     for (GpuMesh& mesh : m_partMeshes) mesh.release(*m_gl);
     m_partMeshes.clear();
-    for (Slot& slot : m_slots)
+    for (Slot& slot : m_slots) {
         for (GpuMesh& orbit : slot.orbits) orbit.release(*m_gl);
+        for (GpuMesh& mesh : slot.meshes) mesh.release(*m_gl);
+    }
     m_slots.clear();
     m_grid.release(*m_gl);
 }
@@ -131,7 +135,15 @@ analysis::Status Renderer::setScene(const SceneContent& scene, const LayoutOptio
         const TakeSlot& source = scene.takes[s];
         Slot slot;
         slot.take = source.take;
-        slot.binding = analysis::bindBody(m_body, slot.take).value();
+        slot.body = source.body ? *source.body : m_body;
+        const std::vector<Mesh> ownMeshes = source.body ? buildPuppetMeshes(slot.body) : std::vector<Mesh>{};
+        for (const Mesh& mesh : ownMeshes) {
+            GpuMesh gpu;
+            gpu.upload(*m_gl, mesh);
+            slot.meshes.push_back(std::move(gpu));
+        }
+        const std::vector<Mesh>& slotMeshes = source.body ? ownMeshes : meshes;
+        slot.binding = analysis::bindBody(slot.body, slot.take).value();
         slot.world_T_axis = source.world_T_axis;
         slot.centre = takeCentre(slot.take, m_body.mirrorFramePart.empty() ? "shoulder" : m_body.mirrorFramePart);
         const auto sensors = analysis::sixDofParts(slot.take);
@@ -146,10 +158,10 @@ analysis::Status Renderer::setScene(const SceneContent& scene, const LayoutOptio
             slot.orbits.push_back(std::move(orbit));
         }
         // The floor: under the lowest vertex of the puppet at the first frame.
-        const auto poses = analysis::worldPartPoses(m_body, slot.binding, slot.take, 0);
-        for (std::size_t p = 0; p < meshes.size(); ++p) {
+        const auto poses = analysis::worldPartPoses(slot.body, slot.binding, slot.take, 0);
+        for (std::size_t p = 0; p < slotMeshes.size(); ++p) {
             const glm::mat4 world_T_part = toMatrix(poses[p]);
-            for (const Vertex& vertex : meshes[p].vertices)
+            for (const Vertex& vertex : slotMeshes[p].vertices)
                 lowest = std::min(lowest, (world_T_part * glm::vec4(vertex.position, 1.0f)).z);
         }
         m_slots.push_back(std::move(slot));
@@ -164,7 +176,7 @@ void Renderer::setFrame(Eigen::Index frame)
 {
     for (Slot& slot : m_slots) {
         slot.frame = std::clamp<Eigen::Index>(frame, 0, slot.take.frameCount() - 1);
-        const auto poses = analysis::worldPartPoses(m_body, slot.binding, slot.take, slot.frame);
+        const auto poses = analysis::worldPartPoses(slot.body, slot.binding, slot.take, slot.frame);
         slot.take_T_part.resize(poses.size());
         for (std::size_t p = 0; p < poses.size(); ++p) slot.take_T_part[p] = toMatrix(poses[p]);
     }
@@ -174,7 +186,7 @@ void Renderer::setTime(double seconds)
 {
     for (Slot& slot : m_slots) {
         slot.frame = frameAtTime(slot.take, seconds);
-        const auto poses = analysis::worldPartPoses(m_body, slot.binding, slot.take, slot.frame);
+        const auto poses = analysis::worldPartPoses(slot.body, slot.binding, slot.take, slot.frame);
         slot.take_T_part.resize(poses.size());
         for (std::size_t p = 0; p < poses.size(); ++p) slot.take_T_part[p] = toMatrix(poses[p]);
     }
@@ -271,13 +283,14 @@ void Renderer::drawScene(const Camera& camera, QSize size, bool partIds)
         const Slot& slot = m_slots[s];
         const glm::mat4 root = takeRoot(int(s), camera);
         if (m_visibility.puppet) {
-            for (std::size_t p = 0; p < m_partMeshes.size() && p < slot.take_T_part.size(); ++p) {
+            const std::vector<GpuMesh>& meshes = slot.meshes.empty() ? m_partMeshes : slot.meshes;
+            for (std::size_t p = 0; p < meshes.size() && p < slot.take_T_part.size(); ++p) {
                 setModel(root * slot.take_T_part[p]);
                 if (partIds)
                     setColour(glm::vec3(float(1 + int(p) + kIdsPerSlot * int(s)) / 255.0f, 0.0f, 0.0f), false, false);
                 else
                     setColour(glm::vec3(1.0f), true, true);
-                m_partMeshes[p].draw(gl);
+                meshes[p].draw(gl);
             }
         }
         if (partIds) continue;

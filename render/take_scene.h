@@ -18,7 +18,9 @@ struct TakeSceneOptions {
     analysis::AxisOptions axis;   ///< mass-point lattice of the axis computation
 };
 
-/// One or two takes on `body`; validateScene's errors, or the axis module's.
+/// One or two takes on `body`: a take with a skeleton whose parts are bound gets `body` fitted
+/// to its performer (analysis/body/body_fit.h) as its own body, and its motion axis is computed
+/// over that body. validateScene's errors, or the axis module's.
 analysis::Result<SceneContent> makeTakeScene(const analysis::BodyDescription& body, std::vector<analysis::Take> takes,
                                              const TakeSceneOptions& options = {},
                                              const analysis::RunControl& control = {});

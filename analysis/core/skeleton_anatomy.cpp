@@ -130,8 +130,12 @@ Result<SkeletonLandmarks> findLandmarks(const SkeletalMotion& motion, const Part
         l.estimated.push_back("hips");
     }
 
-    // The neck's base: the chest's child on the way to the head.
-    l.neckBase = isAncestor(skeleton, chest, head) && head != chest ? at(childTowards(skeleton, chest, head)) : l.neck;
+    // The neck's base: the chest's child on the way to the head, or the chest itself when the
+    // head hangs from it (3ds Max Biped's arms branch from its Neck).
+    if (isAncestor(skeleton, chest, head) && head != chest)
+        l.neckBase = parentOf(head) == chest ? l.chest : at(childTowards(skeleton, chest, head));
+    else
+        l.neckBase = l.neck;
 
     // The top of the head: a joint or End Site beyond the head, or an estimate along the neck.
     double chainLength = 0.0;

@@ -34,7 +34,9 @@ struct SkeletonLandmarks {
     Eigen::Vector3d neck = Eigen::Vector3d::Zero();     ///< the head joint's parent (base of the skull or neck)
     Eigen::Vector3d headTop = Eigen::Vector3d::Zero();  ///< the top of the head
     Eigen::Vector3d chest = Eigen::Vector3d::Zero();    ///< the shoulder part's joint
-    Eigen::Vector3d neckBase = Eigen::Vector3d::Zero(); ///< the first joint from the chest towards the head
+    /// The base of the neck: the first joint from the chest towards the head, or the chest
+    /// when the head hangs from it.
+    Eigen::Vector3d neckBase = Eigen::Vector3d::Zero();
     Eigen::Vector3d hips = Eigen::Vector3d::Zero();     ///< the pelvis (first joint where the legs branch)
     /// The upper-arm (shoulder) joints: the arm joint's parent on the bound side and the joint
     /// at the same depth of the other arm chain; `otherShoulderFound` false when there is none.
