@@ -72,6 +72,9 @@ inline constexpr std::uintmax_t kMaxBvhFileBytes = std::uintmax_t(2) << 30;
 Result<BvhFile> parseBvh(const std::string& text, const std::string& sourceName);
 /// Reads a regular file of at most kMaxBvhFileBytes (a pipe or device is refused) and parses it.
 Result<BvhFile> readBvh(const std::filesystem::path& file);
+/// The hierarchy and only the first `frames` motion rows (fewer when the file has fewer; what
+/// follows them is not read): enough to map the parts or preview the first pose of a big file.
+Result<BvhFile> readBvhStart(const std::filesystem::path& file, Eigen::Index frames = 1);
 
 /// How position channels of a joint combine with its OFFSET.
 enum class BvhPositionMode {

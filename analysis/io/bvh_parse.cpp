@@ -206,7 +206,8 @@ public:
     {
     }
 
-    std::optional<Error> scan(Eigen::MatrixXd& values)
+    /// Reads values.rows() rows; `whole`: the text must end after them (else the rest is not read).
+    std::optional<Error> scan(Eigen::MatrixXd& values, bool whole = true)
     {
         const Eigen::Index frames = values.rows();
         const Eigen::Index width = values.cols();
@@ -233,6 +234,7 @@ public:
                 ++m_line;
             }
         }
+        if (!whole) return std::nullopt;
         skipBlankLines();
         if (m_p != m_end)
             return parseError(m_source, m_line, "more motion rows than 'Frames: " + std::to_string(frames) + "'");
@@ -302,7 +304,10 @@ private:
 
 } // namespace
 
-Result<BvhFile> parseBvh(const std::string& text, const std::string& sourceName)
+namespace {
+
+/// parseBvh, reading at most `rowLimit` motion rows when given.
+Result<BvhFile> parse(const std::string& text, const std::string& sourceName, std::optional<long> rowLimit)
 {
     LineReader reader(text);
     detail::TextLine line;
@@ -370,13 +375,15 @@ Result<BvhFile> parseBvh(const std::string& text, const std::string& sourceName)
         return parseError(sourceName, framesLine.number,
                           "'Frames: " + std::to_string(frames) + "' but the " + std::to_string(left) + " bytes after 'Frame Time' hold at most " +
                               std::to_string(fit) + " rows of " + std::to_string(width) + " values");
-    file.motion.values.resize(Eigen::Index(frames), Eigen::Index(width));
+    const long rows = rowLimit ? std::min(frames, *rowLimit) : frames;
+    file.motion.values.resize(Eigen::Index(rows), Eigen::Index(width));
     MotionScanner scanner(text, reader.offset(), timeLine.number + 1, sourceName);
-    if (auto error = scanner.scan(file.motion.values)) return *error;
+    if (auto error = scanner.scan(file.motion.values, !rowLimit)) return *error;
     return file;
 }
 
-Result<BvhFile> readBvh(const std::filesystem::path& path)
+/// The whole regular file (at most kMaxBvhFileBytes), read in one piece.
+Result<std::string> readBvhText(const std::filesystem::path& path)
 {
     namespace fs = std::filesystem;
     const std::string name = path.string();
@@ -398,7 +405,25 @@ Result<BvhFile> readBvh(const std::filesystem::path& path)
     std::fclose(stream);
     if (failed) return makeError(ErrorCode::Io, name + ": read error");
     text.resize(read); // a file that shrank while being read is parsed as it was read
-    return parseBvh(text, name);
+    return text;
+}
+
+} // namespace
+
+Result<BvhFile> parseBvh(const std::string& text, const std::string& sourceName) { return parse(text, sourceName, std::nullopt); }
+
+Result<BvhFile> readBvh(const std::filesystem::path& path)
+{
+    auto text = readBvhText(path);
+    if (!text) return text.error();
+    return parse(*text, path.string(), std::nullopt);
+}
+
+Result<BvhFile> readBvhStart(const std::filesystem::path& path, Eigen::Index frames)
+{
+    auto text = readBvhText(path);
+    if (!text) return text.error();
+    return parse(*text, path.string(), long(std::max<Eigen::Index>(frames, 0)));
 }
 
 } // namespace bunraku::analysis::io
