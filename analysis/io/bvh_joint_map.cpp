@@ -113,23 +113,20 @@ Topology readTopology(const BvhSkeleton& skeleton, const Tree& tree, const std::
     }
     if (chest < 0) return t;
     t.chest = chest;
-    // Arms: the pair of children with the most similar subtrees (ties: the larger pair).
+    // Arms: the pair of children with the most similar subtrees (ties: the larger pair, then
+    // the earlier). The most similar pair is adjacent once sorted by size: n log n, not n^2.
     const auto& c = tree.children[std::size_t(chest)];
+    std::vector<int> bySize(c.begin(), c.end());
+    std::stable_sort(bySize.begin(), bySize.end(), [&](int x, int y) { return tree.size[std::size_t(x)] < tree.size[std::size_t(y)]; });
     int a = -1, b = -1;
-    for (std::size_t i = 0; i < c.size(); ++i)
-        for (std::size_t k = i + 1; k < c.size(); ++k) {
-            const int si = tree.size[std::size_t(c[i])], sk = tree.size[std::size_t(c[k])];
-            if (a < 0) {
-                a = c[i];
-                b = c[k];
-                continue;
-            }
-            const int best = std::abs(tree.size[std::size_t(a)] - tree.size[std::size_t(b)]);
-            if (std::abs(si - sk) < best || (std::abs(si - sk) == best && si + sk > tree.size[std::size_t(a)] + tree.size[std::size_t(b)])) {
-                a = c[i];
-                b = c[k];
-            }
+    for (std::size_t i = 0; i + 1 < bySize.size(); ++i) {
+        const int si = tree.size[std::size_t(bySize[i])], sk = tree.size[std::size_t(bySize[i + 1])];
+        const int best = a < 0 ? 0 : tree.size[std::size_t(b)] - tree.size[std::size_t(a)];
+        if (a < 0 || sk - si < best || (sk - si == best && si + sk > tree.size[std::size_t(a)] + tree.size[std::size_t(b)])) {
+            a = std::min(bySize[i], bySize[i + 1]);
+            b = std::max(bySize[i], bySize[i + 1]);
         }
+    }
     int neck = -1;
     for (int k : c)
         if (k != a && k != b && (neck < 0 || tree.size[std::size_t(k)] > tree.size[std::size_t(neck)])) neck = k;

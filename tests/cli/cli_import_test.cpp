@@ -144,3 +144,58 @@ TEST_CASE("bad BVH files get one-line errors naming the file and the line")
         CHECK_THAT(run.err, Contains(c.where) && Contains(c.what));
     }
 }
+
+TEST_CASE("corpus makes a corpus folder from files, reporting each file's map and any resampling")
+{
+    const auto dir = bunraku::test::scratchDir("cli_corpus");
+    const auto families = bunraku::test::bvhFamilies();
+    std::filesystem::create_directories(dir / "in");
+    for (const std::string name : {"dataset-2_wave_happy_001", "dataset-2_wave_happy_002", "dataset-2_wave_calm_001"})
+        bunraku::test::writeText(dir / "in" / (name + ".bvh"), bunraku::test::fixtureBvh(families[4])); // classic naming
+    std::string fast = bunraku::test::fixtureBvh(families[4]);
+    fast.replace(fast.find("Frame Time: 0.0333333"), 21, "Frame Time: 0.0166667");
+    bunraku::test::writeText(dir / "in" / "dataset-2_wave_calm_002.bvh", fast);
+
+    // The default pattern reads "dataset-2" as the function: a pattern says what the names mean.
+    const auto run = runBunraku({"corpus", (dir / "in").string(), "-o", (dir / "out").string(), "--pattern",
+                                 "{any}_{function}_{emotion}_{take}", "--neutral", "calm", "--json"});
+    INFO(run.err);
+    REQUIRE(run.exitCode == 0);
+    const json report = json::parse(run.out);
+    CHECK(report["rate_hz"] == 30.0);
+    CHECK(report["neutral_emotion"] == "calm");
+    CHECK(report["functions"] == json::array({"wave"}));
+    REQUIRE(report["takes"].size() == 4);
+    for (const auto& take : report["takes"]) CHECK_THAT(take["part_map"].get<std::string>(), Contains("arm=RightElbow (name)"));
+    CHECK(report["takes"][1]["rate_hz"] == 60.0);
+    CHECK(report["takes"][1]["resampled"] == true);
+    CHECK_THAT(report["notes"][0].get<std::string>(), Contains("resampled to it: dataset-2_wave_calm_002.bvh (60 Hz)"));
+
+    const auto info = runBunraku({"info", (dir / "out").string()});
+    REQUIRE(info.exitCode == 0);
+    CHECK_THAT(info.out, Contains("wave/calm/2") && Contains("(with its skeleton)"));
+
+    const auto text = runBunraku({"corpus", (dir / "in").string(), "-o", (dir / "out2").string(), "--pattern", "{any}_{function}_{emotion}_{take}"});
+    REQUIRE(text.exitCode == 0);
+    CHECK_THAT(text.out, Contains("note: corpus rate 30 Hz (the rate most files have); resampled to it") &&
+                             Contains("note: neutral emotion 'calm' (the first; give --neutral to choose)"));
+
+    const auto bad = runBunraku({"corpus", (dir / "in").string(), "-o", (dir / "out3").string(), "--pattern", "{function}.{emotion}"});
+    CHECK(bunraku::test::isOneLineError(bad.exitCode, bad.err));
+    CHECK_THAT(bad.err, Contains("dataset-2_wave_calm_001.bvh: the file name does not match the pattern '{function}.{emotion}'"));
+}
+
+TEST_CASE("corpus of the bandai files: every take mapped, the neutral emotion found")
+{
+    const auto files = bunraku::test::bandaiFilesOrSkip();
+    if (files.empty()) return;
+    const auto dir = bunraku::test::scratchDir("cli_corpus_bandai");
+    const auto run = runBunraku({"corpus", bunraku::test::bandaiDir().string(), "-o", (dir / "bandai").string(), "--json"});
+    INFO(run.err);
+    REQUIRE(run.exitCode == 0);
+    const json report = json::parse(run.out);
+    CHECK(report["takes"].size() == files.size());
+    CHECK(report["neutral_emotion"] == "normal");
+    CHECK(report["emotions"].size() == 5);
+    for (const auto& take : report["takes"]) CHECK_THAT(take["part_map"].get<std::string>(), Contains("hand=Hand_R (name)"));
+}
