@@ -267,14 +267,14 @@ Result<std::shared_ptr<const SkeletalMotion>> bvhToSkeletalMotion(const BvhFile&
     for (std::size_t k = 0; k < motion->movingJoints.size(); ++k) movingSlot[std::size_t(motion->movingJoints[k])] = int(k);
 
     const bool replace = options.kinematics.positionMode == BvhPositionMode::ReplaceOffset;
-    for (Eigen::Index f = 0; f < frames; ++f) {
-        const auto row = file.motion.values.row(f);
-        for (std::size_t j = 0; j < slots; ++j) {
-            const BvhJoint& joint = file.skeleton.joints[j];
+    // Joint by joint: each joint's channels are contiguous columns of the (column-major) matrix.
+    for (std::size_t j = 0; j < slots; ++j) {
+        const BvhJoint& joint = file.skeleton.joints[j];
+        for (Eigen::Index f = 0; f < frames; ++f) {
             Eigen::Vector3d translation = joint.offset;
             Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();
             for (std::size_t k = 0; k < joint.channels.size(); ++k) {
-                const double value = row(joint.firstChannel + Eigen::Index(k));
+                const double value = file.motion.values(f, joint.firstChannel + Eigen::Index(k));
                 const int axis = channelAxis(joint.channels[k]);
                 if (isPositionChannel(joint.channels[k])) {
                     translation[axis] = replace ? value : translation[axis] + value;
