@@ -11,7 +11,7 @@ analysis::Result<SceneContent> makeTakeScene(const analysis::BodyDescription& bo
     scene.body = body;
     for (analysis::Take& take : takes) {
         TakeSlot slot{std::move(take), {}};
-        if (slot.take.skeleton) slot.body = std::make_shared<const analysis::BodyDescription>(analysis::bodyForTake(body, slot.take));
+        if (options.fitToSkeleton && slot.take.skeleton) slot.body = std::make_shared<const analysis::BodyDescription>(analysis::bodyForTake(body, slot.take));
         scene.takes.push_back(std::move(slot));
     }
     if (auto status = validateScene(scene); !status.ok()) return status.error();

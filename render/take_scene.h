@@ -15,6 +15,8 @@ namespace bunraku::render {
 
 struct TakeSceneOptions {
     bool computeAxes = true;      ///< the motion axis of every take (else no axis is drawn)
+    /// A take with a skeleton gets the body fitted to it (else every take is on `body` as given).
+    bool fitToSkeleton = true;
     analysis::AxisOptions axis;   ///< mass-point lattice of the axis computation
 };
 

@@ -267,29 +267,39 @@ Result<std::shared_ptr<const SkeletalMotion>> bvhToSkeletalMotion(const BvhFile&
     for (std::size_t k = 0; k < motion->movingJoints.size(); ++k) movingSlot[std::size_t(motion->movingJoints[k])] = int(k);
 
     const bool replace = options.kinematics.positionMode == BvhPositionMode::ReplaceOffset;
+    const Eigen::Quaterniond file_R_world = world_R_file.conjugate();
     // Joint by joint: each joint's channels are contiguous columns of the (column-major) matrix.
+    struct ChannelUse {
+        const double* column;
+        int axis;
+        bool position;
+    };
+    std::vector<ChannelUse> uses;
     for (std::size_t j = 0; j < slots; ++j) {
         const BvhJoint& joint = file.skeleton.joints[j];
+        uses.clear();
+        for (std::size_t k = 0; k < joint.channels.size(); ++k)
+            uses.push_back({file.motion.values.col(joint.firstChannel + Eigen::Index(k)).data(), channelAxis(joint.channels[k]),
+                            isPositionChannel(joint.channels[k])});
+        const bool moving = movingSlot[j] >= 0;
+        Eigen::Quaterniond* rotations = motion->rotations.data() + j;
         for (Eigen::Index f = 0; f < frames; ++f) {
             Eigen::Vector3d translation = joint.offset;
             Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();
-            for (std::size_t k = 0; k < joint.channels.size(); ++k) {
-                const double value = file.motion.values(f, joint.firstChannel + Eigen::Index(k));
-                const int axis = channelAxis(joint.channels[k]);
-                if (isPositionChannel(joint.channels[k])) {
-                    translation[axis] = replace ? value : translation[axis] + value;
+            for (const ChannelUse& use : uses) {
+                const double value = use.column[f];
+                if (use.position) {
+                    translation[use.axis] = replace ? value : translation[use.axis] + value;
                 } else {
                     const double half = 0.5 * value * M_PI / 180.0;
                     Eigen::Quaterniond step(std::cos(half), 0.0, 0.0, 0.0);
-                    step.vec()[axis] = std::sin(half);
+                    step.vec()[use.axis] = std::sin(half);
                     rotation = rotation * step;
                 }
             }
-            Eigen::Quaterniond world = world_R_file * rotation * world_R_file.conjugate();
-            motion->rotation(f, int(j)) = world.normalized();
-            const Eigen::Vector3d t = C * (scale * translation);
-            if (movingSlot[j] >= 0) motion->movingTranslations.block<1, 3>(f, 3 * movingSlot[j]) = t.transpose();
-            else if (f == 0) motion->staticTranslations[j] = t;
+            rotations[std::size_t(f) * slots] = (world_R_file * rotation * file_R_world).normalized();
+            if (moving) motion->movingTranslations.block<1, 3>(f, 3 * movingSlot[j]) = (C * (scale * translation)).transpose();
+            else if (f == 0) motion->staticTranslations[j] = C * (scale * translation);
         }
     }
     if (auto valid = validateSkeletalMotion(*motion); !valid)

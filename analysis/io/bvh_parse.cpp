@@ -10,6 +10,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <unordered_set>
 
 namespace bunraku::analysis::io {
@@ -307,7 +308,7 @@ private:
 namespace {
 
 /// parseBvh, reading at most `rowLimit` motion rows when given.
-Result<BvhFile> parse(const std::string& text, const std::string& sourceName, std::optional<long> rowLimit)
+Result<BvhFile> parse(std::string_view text, const std::string& sourceName, std::optional<long> rowLimit)
 {
     LineReader reader(text);
     detail::TextLine line;
@@ -382,8 +383,15 @@ Result<BvhFile> parse(const std::string& text, const std::string& sourceName, st
     return file;
 }
 
-/// The whole regular file (at most kMaxBvhFileBytes), read in one piece.
-Result<std::string> readBvhText(const std::filesystem::path& path)
+/// The bytes of a regular file of at most kMaxBvhFileBytes, read in one piece into a buffer that
+/// is not zero-filled first (a 135 MB take would be written twice).
+struct FileBytes {
+    std::unique_ptr<char[]> data;
+    std::size_t size = 0;
+    std::string_view view() const { return std::string_view(data.get(), size); }
+};
+
+Result<FileBytes> readBvhBytes(const std::filesystem::path& path)
 {
     namespace fs = std::filesystem;
     const std::string name = path.string();
@@ -399,13 +407,12 @@ Result<std::string> readBvhText(const std::filesystem::path& path)
                                             std::to_string(kMaxBvhFileBytes) + " a BVH file may have");
     std::FILE* stream = std::fopen(name.c_str(), "rb");
     if (stream == nullptr) return makeError(ErrorCode::Io, name + ": cannot open for reading");
-    std::string text(std::size_t(size), '\0');
-    const std::size_t read = std::fread(text.data(), 1, text.size(), stream);
+    FileBytes bytes{std::unique_ptr<char[]>(new char[std::max<std::size_t>(std::size_t(size), 1)]), 0};
+    bytes.size = std::fread(bytes.data.get(), 1, std::size_t(size), stream); // a file that shrank is parsed as it was read
     const bool failed = std::ferror(stream) != 0;
     std::fclose(stream);
     if (failed) return makeError(ErrorCode::Io, name + ": read error");
-    text.resize(read); // a file that shrank while being read is parsed as it was read
-    return text;
+    return bytes;
 }
 
 } // namespace
@@ -414,16 +421,16 @@ Result<BvhFile> parseBvh(const std::string& text, const std::string& sourceName)
 
 Result<BvhFile> readBvh(const std::filesystem::path& path)
 {
-    auto text = readBvhText(path);
-    if (!text) return text.error();
-    return parse(*text, path.string(), std::nullopt);
+    auto bytes = readBvhBytes(path);
+    if (!bytes) return bytes.error();
+    return parse(bytes->view(), path.string(), std::nullopt);
 }
 
 Result<BvhFile> readBvhStart(const std::filesystem::path& path, Eigen::Index frames)
 {
-    auto text = readBvhText(path);
-    if (!text) return text.error();
-    return parse(*text, path.string(), long(std::max<Eigen::Index>(frames, 0)));
+    auto bytes = readBvhBytes(path);
+    if (!bytes) return bytes.error();
+    return parse(bytes->view(), path.string(), long(std::max<Eigen::Index>(frames, 0)));
 }
 
 } // namespace bunraku::analysis::io
