@@ -5,6 +5,7 @@
 #include "app/design_panel.h"
 #include "app/emotion_panel.h"
 #include "app/file_controller.h"
+#include "app/help_controller.h"
 #include "app/normalise_panel.h"
 #include "app/offscreen_view.h"
 #include "app/phrase_marks.h"
@@ -223,12 +224,10 @@ void MainWindow::createMenus()
     m_viewMenu->addSeparator();
     m_viewMenu->addAction(tr("&Reset Layout"), this, &MainWindow::resetLayout);
 
+    auto* helpController = new HelpController(this);
     auto* help = menuBar()->addMenu(tr("&Help"));
-    help->addAction(tr("&About"), this, [this] {
-        QMessageBox::about(this, tr("About Bunraku Motion Workbench"),
-                           tr("<b>Bunraku Motion Workbench</b><p>Normalisation, emotion decomposition and design of "
-                              "puppet motion, after Hattori (2000). See docs/USER-GUIDE.md.</p>"));
-    });
+    help->addAction(helpController->userGuideAction());
+    help->addAction(helpController->aboutAction());
 }
 
 void MainWindow::connectDocument()

@@ -12,6 +12,7 @@ void addAllCommands(CommandSet& commands)
     addMotionAxisCommands(commands);
     addAnalyseCommands(commands);
     addRenderCommands(commands);
+    addHelpCommands(commands);
 }
 
 } // namespace bunraku::app::cli
