@@ -24,12 +24,12 @@ Take importedTake(const io::BvhFile& file)
     return std::move(take).value();
 }
 
-/// World z range of a body part's solid at a frame (its mass-point lattice, 0.5 cm apart).
+/// World z range of a body part's solid at a frame (its mass-point lattice, 1 cm apart).
 std::pair<double, double> heightRange(const BodyDescription& body, const Take& take, const std::string& part)
 {
     const int index = body.partIndex(part);
     REQUIRE(index >= 0);
-    const auto points = sampleMassPoints(body, MassPointOptions{0.5})[std::size_t(index)];
+    const auto points = sampleMassPoints(body, MassPointOptions{1.0})[std::size_t(index)];
     const RigidTransform world_T_part = worldPartPoses(body, take, 0)[std::size_t(index)];
     double low = 1e9, high = -1e9;
     for (Eigen::Index k = 0; k < points.positions.cols(); ++k) {
