@@ -56,6 +56,8 @@ JointMapDialog::JointMapDialog(const analysis::io::BvhFile& file, const QString&
 
     m_message = new QLabel(this);
     m_message->setWordWrap(true);
+    m_message->setMinimumHeight(4 * fontMetrics().lineSpacing()); // room for the longest message
+    m_message->setAlignment(Qt::AlignLeft | Qt::AlignTop);
     m_image = new QLabel(this);
     m_image->setMinimumSize(kPreviewSize, kPreviewSize);
     m_image->setAlignment(Qt::AlignCenter);
@@ -146,7 +148,7 @@ void JointMapDialog::update()
             render::Camera camera;
             camera.angleDeg = 300.0f;
             camera.elevationDeg = 10.0f;
-            camera.distance = float(std::max(top, 30.0) * 2.6);
+            camera.distance = float(std::max(top, 30.0) * 2.1);
             camera.target = {0.0f, 0.0f, float(top * 0.55)};
             render::SceneVisibility visibility;
             visibility.axis = false;

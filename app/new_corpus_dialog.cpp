@@ -64,6 +64,8 @@ NewCorpusDialog::NewCorpusDialog(QWidget* parent) : QDialog(parent)
     m_table = new QTableWidget(0, ColumnCount, this);
     m_table->setHorizontalHeaderLabels({tr("File"), tr("Function"), tr("Emotion"), tr("Take"), tr("Part map")});
     m_table->horizontalHeader()->setSectionResizeMode(MapColumn, QHeaderView::Stretch);
+    m_table->setWordWrap(false);
+    m_table->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_table->setMinimumSize(720, 260);
     connect(m_table, &QTableWidget::itemChanged, this, [this](QTableWidgetItem* item) {
         if (m_filling) return;
@@ -158,9 +160,10 @@ void NewCorpusDialog::addInputs(const QStringList& paths)
     }
     m_filling = false;
     if (m_output->text().isEmpty() && !m_files.empty())
-        m_output->setText(QString::fromStdString((m_files.front().parent_path() / "corpus").string()));
+        m_output->setText(QString::fromStdString((std::filesystem::absolute(m_files.front()).lexically_normal().parent_path() / "corpus").string()));
     relabel();
     remap();
+    for (int column : {FileColumn, FunctionColumn, EmotionColumn, TakeColumn}) m_table->resizeColumnToContents(column);
 }
 
 void NewCorpusDialog::setPattern(const QString& pattern) { m_pattern->setText(pattern); }
@@ -278,7 +281,14 @@ void NewCorpusDialog::validate()
         if (!emotion.isEmpty() && !emotions.contains(emotion)) emotions << emotion;
         if (const QString mapError = m_table->item(row, MapColumn)->data(Qt::UserRole).toString(); !mapError.isEmpty()) fail(mapError);
     }
-    if (m_output->text().trimmed().isEmpty()) fail(tr("Choose the corpus folder to create."));
+    if (m_output->text().trimmed().isEmpty()) {
+        fail(tr("Choose the corpus folder to create."));
+    } else {
+        // The nearest existing folder above the output must be writable (shared data often is not).
+        QFileInfo parent(QFileInfo(m_output->text().trimmed()).absolutePath());
+        while (!parent.exists() && !parent.isRoot()) parent = QFileInfo(parent.absolutePath());
+        if (!parent.isWritable()) fail(tr("%1 cannot be written: choose another corpus folder.").arg(parent.absoluteFilePath()));
+    }
     // The neutral emotion: automatic or one of the table's emotions.
     const QString chosen = m_neutral->currentIndex() > 0 ? m_neutral->currentText() : QString();
     const bool blocked = m_neutral->blockSignals(true);
