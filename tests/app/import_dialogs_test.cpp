@@ -15,12 +15,14 @@
 
 #include <catch2/catch.hpp>
 
+#include <QApplication>
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QLineEdit>
 #include <QMimeData>
 #include <QPushButton>
 #include <QTableWidget>
+#include <QTimer>
 
 using namespace bunraku;
 namespace fs = std::filesystem;
@@ -211,4 +213,31 @@ TEST_CASE("new corpus from the bandai files in the workbench", "[app][import]")
     CHECK(corpus.takes.size() == files.size());
     CHECK(corpus.neutralEmotion == "normal");
     CHECK(corpus.rateHz == 30.0);
+}
+
+TEST_CASE("File > Import Take of a BVH file takes the map chosen in the joint dialog", "[app][import]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    const auto dir = test::scratchDir("app_import_dialog");
+    const auto file = writeFixtures(dir, {"mixamo.bvh"}).front();
+    window->files().setDialogsEnabled(true);
+    bool shown = false;
+    // When the dialog opens: the left side, then OK, as a user would.
+    QTimer::singleShot(0, [&] {
+        auto* dialog = qobject_cast<app::JointMapDialog*>(QApplication::activeModalWidget());
+        if (dialog == nullptr) return;
+        shown = true;
+        dialog->sideBox()->setCurrentIndex(1);
+        QTest::mouseClick(okButton(*dialog), Qt::LeftButton);
+    });
+    const bool imported = window->files().importTakeFile(QString::fromStdString(file.string()));
+    window->files().setDialogsEnabled(false);
+    REQUIRE(shown);
+    REQUIRE(imported);
+    const auto take = window->document().selectedTake(app::TakeSlot::A);
+    REQUIRE(take->skeleton);
+    const auto& skeleton = *take->skeleton->skeleton;
+    CHECK(skeleton.binding("arm")->joint == skeleton.find("mixamorig:LeftForeArm"));
+    CHECK(skeleton.binding("hand")->joint == skeleton.find("mixamorig:LeftHand"));
 }
