@@ -53,7 +53,7 @@ public:
                                const analysis::io::CorpusBuildOptions& options, const QString& folder);
     /// File > New Corpus from Files: the dialog, then createCorpusFromFiles. `inputs` preset it.
     void chooseFilesForCorpus(const QStringList& inputs = {});
-    /// Writes take A (.csv or .bvh by extension).
+    /// Writes take A (.bvh, .glb or .csv by extension; ExportController writes A or B).
     bool exportTake(const QString& file);
     bool saveProject(const QString& file);
     bool openProject(const QString& file);
@@ -72,8 +72,6 @@ public:
     QAction* openDemoAction() const { return m_openDemo; }
     QAction* newCorpusAction() const { return m_newCorpus; }
     QAction* importAction() const { return m_import; }
-    QAction* exportCsvAction() const { return m_exportCsv; }
-    QAction* exportBvhAction() const { return m_exportBvh; }
     QAction* openProjectAction() const { return m_openProject; }
     QAction* saveProjectAction() const { return m_save; }
     QAction* saveProjectAsAction() const { return m_saveAs; }
@@ -95,7 +93,6 @@ private:
     /// Shows awaited live takes that have been published.
     void showPendingLiveTakes();
     void chooseAndImport();
-    void chooseAndExport(const QString& suffix);
 
     Document& m_document;
     QWidget* m_window;
@@ -112,8 +109,6 @@ private:
     QAction* m_openDemo = nullptr;
     QAction* m_newCorpus = nullptr;
     QAction* m_import = nullptr;
-    QAction* m_exportCsv = nullptr;
-    QAction* m_exportBvh = nullptr;
     QAction* m_openProject = nullptr;
     QAction* m_save = nullptr;
     QAction* m_saveAs = nullptr;

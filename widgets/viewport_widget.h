@@ -81,6 +81,9 @@ public slots:
 signals:
     /// A click (no drag) on a body part of take `takeSlot` (0 = left/first, 1 = right/second).
     void partPicked(int takeSlot, const QString& partName);
+    /// A click on a bone of take `takeSlot`'s skeleton: its joint, and the puppet part the joint
+    /// carries ("" when none; partPicked follows when there is one).
+    void bonePicked(int takeSlot, const QString& jointName, const QString& partName);
     /// A click on the background.
     void backgroundPicked();
     void cameraChanged();
@@ -120,6 +123,7 @@ private:
     render::SceneVisibility m_visibility;
     render::Camera m_camera;
     bool m_cameraChosen = false; ///< set by setCamera or the mouse: scenes no longer reframe it
+    bool m_reframe = false; ///< frame the scene again at the next paint (unless the camera was chosen)
     int m_frame = 0;
     std::optional<double> m_time; ///< when set, wins over m_frame
     QPoint m_pressPosition;
