@@ -3,8 +3,10 @@
 #include "app/commands.h"
 #include "app/document.h"
 #include "app/joint_map_dialog.h"
+#include "app/new_corpus_dialog.h"
 
 #include "analysis/io/bvh.h"
+#include "analysis/io/bvh_joint_map.h"
 #include "analysis/io/corpus_io.h"
 #include "analysis/io/take_reader.h"
 #include "analysis/synth/demo_corpus.h"
@@ -12,6 +14,10 @@
 #include "render/take_export.h"
 
 #include <QAction>
+#include <QEventLoop>
+#include <QFutureWatcher>
+#include <QProgressDialog>
+#include <QtConcurrent/QtConcurrentRun>
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -20,7 +26,9 @@
 #include <QSettings>
 #include <QStandardPaths>
 
+#include <atomic>
 #include <filesystem>
+#include <stop_token>
 
 namespace bunraku::app {
 namespace {
@@ -41,6 +49,8 @@ FileController::FileController(Document& document, QWidget* window) : QObject(wi
     m_openCorpus = new QAction(tr("&Open Corpus Folder..."), this);
     m_openCorpus->setShortcut(QKeySequence::Open);
     m_openDemo = new QAction(tr("Open &Demo Corpus"), this);
+    m_newCorpus = new QAction(tr("&New Corpus from Files..."), this);
+    m_newCorpus->setToolTip(tr("Make a corpus of take files (BVH, CSV, FASTRAK): labels from their names, one part map, one rate"));
     m_import = new QAction(tr("&Import Take..."), this);
     m_import->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_I));
     m_import->setToolTip(tr("Import a take from CSV, BVH or FASTRAK"));
@@ -59,6 +69,9 @@ FileController::FileController(Document& document, QWidget* window) : QObject(wi
         if (!maybeSave()) return;
         const QString folder = QFileDialog::getExistingDirectory(m_window, tr("Open corpus folder"));
         if (!folder.isEmpty()) openCorpusFolder(folder);
+    });
+    connect(m_newCorpus, &QAction::triggered, this, [this] {
+        if (maybeSave()) chooseFilesForCorpus();
     });
     connect(m_import, &QAction::triggered, this, &FileController::chooseAndImport);
     connect(m_openProject, &QAction::triggered, this, [this] {
@@ -143,37 +156,106 @@ bool FileController::openPath(const QString& path)
 bool FileController::importTakeFile(const QString& file, const QString& jointMap)
 {
     analysis::io::ImportOptions options;
+    options.bvh.guessUnits = true;
+    const QString title = tr("Cannot import %1").arg(QFileInfo(file).fileName());
     const auto format = analysis::io::takeFileFormat(toPath(file));
+    analysis::Result<analysis::Take> take = analysis::makeError(analysis::ErrorCode::InvalidArgument, "");
+    QString mapNote;
     if (format == analysis::io::TakeFileFormat::Bvh) {
+        // Parsed once; the part map comes from the automatic map, the given text or the dialog.
+        auto bvh = analysis::io::readBvh(toPath(file));
+        if (!bvh) {
+            report(title, bvh.error());
+            return false;
+        }
         if (!jointMap.isEmpty()) {
             auto map = analysis::io::parseJointMap(jointMap.toStdString());
             if (!map) {
-                report(tr("Cannot import %1").arg(QFileInfo(file).fileName()), map.error());
+                report(title, map.error());
                 return false;
             }
             options.bvh.jointMap = map.value();
         } else if (m_dialogs) {
-            auto bvh = analysis::io::readBvh(toPath(file));
-            if (!bvh) {
-                report(tr("Cannot import %1").arg(QFileInfo(file).fileName()), bvh.error());
-                return false;
-            }
-            JointMapDialog dialog(bvh->skeleton, QFileInfo(file).fileName(), m_window);
+            analysis::io::BvhFile start{bvh->skeleton, {bvh->motion.values.topRows(std::min<Eigen::Index>(1, bvh->motion.values.rows())),
+                                                        bvh->motion.frameTime},
+                                        bvh->source};
+            JointMapDialog dialog(start, QFileInfo(file).fileName(), m_window);
             if (dialog.exec() != QDialog::Accepted) return false;
             options.bvh.jointMap = dialog.jointMap();
+            options.bvh.side = dialog.side();
         }
+        auto imported = analysis::io::importBvhPuppet(*bvh, options.bvh);
+        if (!imported) {
+            report(title, imported.error());
+            return false;
+        }
+        mapNote = tr(" (part map: %1)").arg(QString::fromStdString(imported->map->describe()));
+        take = std::move(imported->take);
+    } else {
+        take = analysis::io::readTakeFile(toPath(file), options);
     }
-    auto take = analysis::io::readTakeFile(toPath(file), options);
     if (!take) {
-        report(tr("Cannot import %1").arg(QFileInfo(file).fileName()), take.error());
+        report(title, take.error());
         return false;
     }
     const QString absolute = QFileInfo(file).absoluteFilePath();
     auto pointer = std::make_shared<const analysis::Take>(std::move(take).value());
     m_document.undoStack()->push(new ImportTake(&m_document, std::move(pointer), QFileInfo(file).fileName(), absolute));
     addRecent(absolute);
-    emit statusMessage(tr("Imported %1").arg(absolute));
+    emit statusMessage(tr("Imported %1%2").arg(absolute, mapNote));
     return true;
+}
+
+bool FileController::createCorpusFromFiles(const std::vector<analysis::io::CorpusSource>& sources,
+                                           const analysis::io::CorpusBuildOptions& options, const QString& folder)
+{
+    const auto work = [sources, options, folder](const analysis::RunControl& control) -> analysis::Result<analysis::io::CorpusBuild> {
+        auto build = analysis::io::buildCorpus(sources, options, control);
+        if (!build) return build;
+        if (auto written = analysis::io::writeCorpus(build->corpus, toPath(folder)); !written) return written.error();
+        return build;
+    };
+    analysis::Result<analysis::io::CorpusBuild> result = analysis::makeError(analysis::ErrorCode::Cancelled, "not run");
+    if (!m_dialogs) {
+        result = work({});
+    } else {
+        QProgressDialog progress(tr("Reading %n take file(s)...", nullptr, int(sources.size())), tr("Cancel"), 0, 1000, m_window);
+        progress.setWindowModality(Qt::WindowModal);
+        progress.setMinimumDuration(300);
+        std::stop_source stop;
+        std::atomic<double> done{0.0};
+        QFutureWatcher<analysis::Result<analysis::io::CorpusBuild>> watcher;
+        QEventLoop loop;
+        connect(&watcher, &QFutureWatcherBase::finished, &loop, &QEventLoop::quit);
+        connect(&progress, &QProgressDialog::canceled, this, [&stop] { stop.request_stop(); });
+        QTimer poll;
+        connect(&poll, &QTimer::timeout, &progress, [&] { progress.setValue(int(1000.0 * done.load())); });
+        poll.start(100);
+        watcher.setFuture(QtConcurrent::run([&]() {
+            analysis::RunControl control{stop.get_token(), [&done](double fraction) { done.store(fraction); }};
+            return work(control);
+        }));
+        loop.exec();
+        result = watcher.result();
+    }
+    if (!result) {
+        report(tr("Cannot make the corpus"), result.error());
+        return false;
+    }
+    if (!openCorpusFolder(folder)) return false;
+    QStringList notes;
+    for (const auto& note : result->notes) notes << QString::fromStdString(note);
+    emit statusMessage(tr("Made the corpus %1 from %n file(s)", nullptr, int(sources.size())).arg(folder) +
+                       (notes.isEmpty() ? QString() : QStringLiteral("; ") + notes.join(QStringLiteral("; "))));
+    return true;
+}
+
+void FileController::chooseFilesForCorpus(const QStringList& inputs)
+{
+    NewCorpusDialog dialog(m_window);
+    dialog.addInputs(inputs);
+    if (dialog.exec() != QDialog::Accepted) return;
+    createCorpusFromFiles(dialog.sources(), dialog.buildOptions(), dialog.outputFolder());
 }
 
 bool FileController::exportTake(const QString& file)
@@ -236,6 +318,7 @@ bool FileController::applyStateNow(const ProjectState& state)
     if (!opened) return false;
     for (const auto& recipe : state.imported) {
         analysis::io::ImportOptions options;
+        options.bvh.guessUnits = true; // as importTakeFile
         auto take = analysis::io::readTakeFile(toPath(recipe.path), options);
         if (!take) {
             report(tr("Cannot re-import a take of the project"), take.error());

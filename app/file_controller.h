@@ -9,6 +9,7 @@
 #include "app/project_file.h"
 
 #include "analysis/core/result.h"
+#include "analysis/io/corpus_builder.h"
 
 #include <QObject>
 #include <QString>
@@ -45,6 +46,13 @@ public:
     bool openPath(const QString& path);
     /// Imports a take; `jointMap` ("head=Head,...", may be empty) applies to BVH files.
     bool importTakeFile(const QString& file, const QString& jointMap = {});
+    /// Builds a corpus from take files (analysis/io/corpus_builder.h, as `bunraku corpus`),
+    /// writes it to `folder` and opens it. With dialogs the work runs off the GUI thread behind a
+    /// progress dialog that can cancel it; the notes (rates, neutral emotion) go to the status bar.
+    bool createCorpusFromFiles(const std::vector<analysis::io::CorpusSource>& sources,
+                               const analysis::io::CorpusBuildOptions& options, const QString& folder);
+    /// File > New Corpus from Files: the dialog, then createCorpusFromFiles. `inputs` preset it.
+    void chooseFilesForCorpus(const QStringList& inputs = {});
     /// Writes take A (.bvh, .glb or .csv by extension; ExportController writes A or B).
     bool exportTake(const QString& file);
     bool saveProject(const QString& file);
@@ -62,6 +70,7 @@ public:
 
     QAction* openCorpusAction() const { return m_openCorpus; }
     QAction* openDemoAction() const { return m_openDemo; }
+    QAction* newCorpusAction() const { return m_newCorpus; }
     QAction* importAction() const { return m_import; }
     QAction* openProjectAction() const { return m_openProject; }
     QAction* saveProjectAction() const { return m_save; }
@@ -98,6 +107,7 @@ private:
     std::function<void(const QVariantMap&)> m_restoreView;
     QAction* m_openCorpus = nullptr;
     QAction* m_openDemo = nullptr;
+    QAction* m_newCorpus = nullptr;
     QAction* m_import = nullptr;
     QAction* m_openProject = nullptr;
     QAction* m_save = nullptr;

@@ -185,6 +185,7 @@ void MainWindow::createMenus()
     auto* file = menuBar()->addMenu(tr("&File"));
     file->addAction(m_files->openDemoAction());
     file->addAction(m_files->openCorpusAction());
+    file->addAction(m_files->newCorpusAction());
     file->addMenu(m_files->recentMenu());
     file->addSeparator();
     file->addAction(m_files->openProjectAction());

@@ -6,6 +6,7 @@
 
 #include "analysis/core/puppet_layout.h"
 #include "analysis/body/body_description.h"
+#include "analysis/body/body_fit.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -107,6 +108,9 @@ void ViewportPanel::rebuildScene()
     for (const auto& [slot, take] : takes) {
         render::TakeSlot shown;
         shown.take = *take;
+        // A take with its performer's skeleton is drawn with the puppet fitted to it.
+        if (take->skeleton)
+            shown.body = std::make_shared<const analysis::BodyDescription>(analysis::bodyForTake(scene.body, *take));
         // The axis of this very take (and the current axis parameters), or none until it is computed.
         const auto axis = m_analysis.takeAxis(slot, take);
         if (axis) shown.world_T_axis = axis->world_T_axis;

@@ -44,6 +44,8 @@ Mesh partnerMesh()
 
 struct Renderer::Slot {
     analysis::Take take;
+    analysis::BodyDescription body; ///< the scene's body, or the take's own
+    std::vector<GpuMesh> meshes;    ///< the take's own body's meshes; empty: the scene's
     analysis::BodyBinding binding;
     std::vector<analysis::RigidTransform> world_T_axis;
     glm::vec3 centre{0.0f};
@@ -117,6 +119,7 @@ void Renderer::releaseSceneBuffers()
     m_partMeshes.clear();
     for (Slot& slot : m_slots) {
         for (GpuMesh& orbit : slot.orbits) orbit.release(*m_gl);
+        for (GpuMesh& mesh : slot.meshes) mesh.release(*m_gl);
         if (slot.skeleton) slot.skeleton->release(*m_gl);
     }
     m_slots.clear();
@@ -158,7 +161,15 @@ analysis::Status Renderer::setScene(const SceneContent& scene, const LayoutOptio
         const TakeSlot& source = scene.takes[s];
         Slot slot;
         slot.take = source.take;
-        slot.binding = analysis::bindBody(m_body, slot.take).value();
+        slot.body = source.body ? *source.body : m_body;
+        const std::vector<Mesh> ownMeshes = source.body ? buildPuppetMeshes(slot.body) : std::vector<Mesh>{};
+        for (const Mesh& mesh : ownMeshes) {
+            GpuMesh gpu;
+            gpu.upload(*m_gl, mesh);
+            slot.meshes.push_back(std::move(gpu));
+        }
+        const std::vector<Mesh>& slotMeshes = source.body ? ownMeshes : meshes;
+        slot.binding = analysis::bindBody(slot.body, slot.take).value();
         slot.world_T_axis = source.world_T_axis;
         slot.centre = takeCentre(slot.take, m_body.mirrorFramePart.empty() ? "shoulder" : m_body.mirrorFramePart);
         const auto sensors = analysis::sixDofParts(slot.take);
@@ -185,8 +196,8 @@ analysis::Status Renderer::setScene(const SceneContent& scene, const LayoutOptio
             if (low > high) low = high = 0.0f;
         };
         std::vector<glm::mat4> partPoses;
-        for (const auto& pose : analysis::worldPartPoses(m_body, slot.binding, slot.take, 0)) partPoses.push_back(toMatrix(pose));
-        extent(meshes, partPoses, slot.puppetLowest, slot.puppetHighest);
+        for (const auto& pose : analysis::worldPartPoses(slot.body, slot.binding, slot.take, 0)) partPoses.push_back(toMatrix(pose));
+        extent(slotMeshes, partPoses, slot.puppetLowest, slot.puppetHighest);
         if (slot.take.skeleton) {
             slot.skeleton = skeletonFigure(*slot.take.skeleton, reusable);
             // Joint spheres are the figure's extremes (bones are thinner).
@@ -230,7 +241,7 @@ std::shared_ptr<Renderer::SkeletonFigure> Renderer::skeletonFigure(const analysi
 
 void Renderer::updatePoses(Slot& slot) const
 {
-    const auto poses = analysis::worldPartPoses(m_body, slot.binding, slot.take, slot.frame);
+    const auto poses = analysis::worldPartPoses(slot.body, slot.binding, slot.take, slot.frame);
     slot.take_T_part.resize(poses.size());
     for (std::size_t p = 0; p < poses.size(); ++p) slot.take_T_part[p] = toMatrix(poses[p]);
     slot.take_T_joint.clear();
@@ -389,13 +400,14 @@ void Renderer::drawScene(const Camera& camera, QSize size, bool partIds)
         const Slot& slot = m_slots[s];
         const glm::mat4 root = takeRoot(int(s), camera);
         if (puppetDrawn(int(s))) {
-            for (std::size_t p = 0; p < m_partMeshes.size() && p < slot.take_T_part.size(); ++p) {
+            const std::vector<GpuMesh>& meshes = slot.meshes.empty() ? m_partMeshes : slot.meshes;
+            for (std::size_t p = 0; p < meshes.size() && p < slot.take_T_part.size(); ++p) {
                 setModel(root * slot.take_T_part[p]);
                 if (partIds)
                     setColour(glm::vec3(float(1 + int(p) + kIdsPerSlot * int(s)) / 255.0f, 0.0f, 0.0f), false, false);
                 else
                     setColour(glm::vec3(1.0f), true, true);
-                m_partMeshes[p].draw(gl);
+                meshes[p].draw(gl);
             }
         }
         if (skeletonDrawn(int(s))) {

@@ -1,6 +1,7 @@
 #include "analysis/io/corpus_io.h"
 
 #include "analysis/io/atomic_file.h"
+#include "analysis/io/skeleton_io.h"
 #include "analysis/io/text_format.h"
 #include "analysis/io/text_scan.h"
 
@@ -62,6 +63,36 @@ Result<double> numberField(const ManifestReader& reader, const json& object, con
     return value;
 }
 
+/// A plain file name inside the corpus folder, or an error.
+Result<fs::path> fileInFolder(const ManifestReader& reader, const std::string& where, const char* key, const std::string& name,
+                              const fs::path& folder)
+{
+    const fs::path relative(name);
+    const bool climbs = std::any_of(relative.begin(), relative.end(), [](const fs::path& part) { return part == ".."; });
+    if (relative.empty() || relative.is_absolute() || name.front() == '.' || climbs)
+        return reader.error(where, std::string("\"") + key + "\" must be a file name inside the corpus folder, found \"" + name + "\"");
+    std::error_code ec;
+    if (!fs::is_regular_file(folder / relative, ec))
+        return reader.error(where, std::string("\"") + key + "\": no such file \"" + name + "\" in " + folder.string());
+    return folder / relative;
+}
+
+/// The take's skeleton and motion when its entry names them (skeleton_io.h), else null.
+Result<std::shared_ptr<const SkeletalMotion>> readTakeSkeleton(const ManifestReader& reader, const json& entry, const std::string& where,
+                                                               const fs::path& folder, double rateHz)
+{
+    if (!entry.contains("skeleton") && !entry.contains("motion")) return std::shared_ptr<const SkeletalMotion>();
+    auto skeletonName = stringField(reader, entry, "skeleton", where);
+    if (!skeletonName) return skeletonName.error();
+    auto motionName = stringField(reader, entry, "motion", where);
+    if (!motionName) return motionName.error();
+    auto skeletonFile = fileInFolder(reader, where, "skeleton", *skeletonName, folder);
+    if (!skeletonFile) return skeletonFile.error();
+    auto motionFile = fileInFolder(reader, where, "motion", *motionName, folder);
+    if (!motionFile) return motionFile.error();
+    return readSkeletalMotion(*skeletonFile, *motionFile, rateHz);
+}
+
 json manifestOf(const Corpus& corpus, const std::vector<std::string>& files)
 {
     json channels = json::array();
@@ -75,6 +106,11 @@ json manifestOf(const Corpus& corpus, const std::vector<std::string>& files)
                       {"take", take.labels.takeIndex},
                       {"file", files[i]},
                       {"frames", take.frameCount()}};
+        if (take.skeleton) { // skeleton_io.h: beside the take's CSV
+            const std::string stem = files[i].substr(0, files[i].size() - 4);
+            entry["skeleton"] = stem + ".skeleton.json";
+            entry["motion"] = stem + ".motion.csv";
+        }
         if (!take.labels.source.empty()) entry["source"] = take.labels.source;
         takes.push_back(entry);
     }
@@ -206,6 +242,14 @@ Result<Corpus> readCorpus(const fs::path& folder)
                 return makeError(ErrorCode::Parse, (folder / relative).string() + ": " + std::to_string(take->frameCount()) +
                                                        " frames, but corpus.json says " + nlohmann::json(*frames).dump());
         }
+        if (auto skeleton = readTakeSkeleton(reader, entry, where, folder, corpus.rateHz); !skeleton) {
+            return skeleton.error();
+        } else if (*skeleton) {
+            if ((**skeleton).frameCount() != take->frameCount())
+                return makeError(ErrorCode::Parse, (folder / relative).string() + ": " + std::to_string(take->frameCount()) +
+                                                       " frames, but its skeleton's motion has " + std::to_string((**skeleton).frameCount()));
+            take->skeleton = *skeleton;
+        }
         corpus.takes.push_back(std::move(*take));
     }
     if (corpus.takes.empty()) return reader.error("\"takes\"", "expected at least one take");
@@ -257,6 +301,12 @@ Status writeCorpus(const Corpus& corpus, const fs::path& folder)
         used.insert(name);
         files.push_back(name);
         if (auto written = writeTakeCsv(take, temp / name); !written) return fail(written.error());
+        if (take.skeleton) {
+            const std::string stem = name.substr(0, name.size() - 4);
+            if (auto written = writeSkeletalMotion(*take.skeleton, take.rateHz, temp / (stem + ".skeleton.json"), temp / (stem + ".motion.csv"));
+                !written)
+                return fail(written.error());
+        }
     }
     if (auto written = writeFileAtomically(temp / "corpus.json", manifestOf(corpus, files).dump(2) + "\n"); !written)
         return fail(written.error());

@@ -4,6 +4,7 @@
 
 #include "analysis/axis/axis_channels.h"
 #include "analysis/body/body_description.h"
+#include "analysis/body/body_fit.h"
 #include "analysis/decompose/emotion_weight.h"
 
 #include <cmath>
@@ -129,7 +130,10 @@ Result<TakeAxis> runTakeAxis(const Take& take, const AxisParameters& parameters,
 {
     if (auto status = validate(parameters); !status) return status.error();
     const AxisOptions options = parameters.axisOptions();
-    auto axis = computeMotionAxis(*defaultAxisModel(options), take, options, control);
+    // The axis of a take with its performer's skeleton integrates over the puppet fitted to it.
+    const auto model = take.skeleton ? std::make_shared<const AxisModel>(makeAxisModel(bodyForTake(defaultBodyDescription(), take), options))
+                                     : defaultAxisModel(options);
+    auto axis = computeMotionAxis(*model, take, options, control);
     if (!axis) return makeError(axis.error().code, "motion axis of " + take.displayName() + ": " + axis.error().message);
     TakeAxis out;
     out.coordinates = axisTake(*axis);

@@ -305,6 +305,12 @@ Result<PreprocessResult> preprocessCorpus(const Corpus& corpus, const Preprocess
             }
         }
     }
+    // The steps move the part channels, not the joints: a skeleton kept from the source would
+    // no longer match its take (nor its frame count once padded), so a changed take leaves it.
+    for (std::size_t i = 0; i < out.takes.size(); ++i)
+        if (out.takes[i].skeleton && (out.takes[i].values.rows() != corpus.takes[i].values.rows() ||
+                                      out.takes[i].values != corpus.takes[i].values))
+            out.takes[i].skeleton.reset();
     control.report(1.0);
     return result;
 }

@@ -5,6 +5,7 @@
 #include "analysis/axis/axis_channels.h"
 #include "analysis/axis/inertia_axis.h"
 #include "analysis/body/body_description.h"
+#include "analysis/body/body_fit.h"
 #include "analysis/core/puppet_layout.h"
 #include "analysis/design/design_corpus.h"
 #include "analysis/design/design_experiment.h"
@@ -52,11 +53,13 @@ an::AxisOptions axisOptions(const AxisArguments& arguments)
     return options;
 }
 
-an::AxisModel axisModel(const AxisArguments& arguments)
+/// The body given with --body, else the shipped puppet, fitted to `take`'s skeleton when it
+/// has one (analysis/body/body_fit.h: the axis of a BVH take is its performer's).
+an::AxisModel axisModel(const AxisArguments& arguments, const an::Take* take = nullptr)
 {
-    const an::BodyDescription body =
-        arguments.body.empty() ? an::defaultBodyDescription() : unwrap(an::loadBodyDescription(arguments.body));
-    return an::makeAxisModel(body, axisOptions(arguments));
+    if (!arguments.body.empty()) return an::makeAxisModel(unwrap(an::loadBodyDescription(arguments.body)), axisOptions(arguments));
+    const an::BodyDescription& puppet = an::defaultBodyDescription();
+    return an::makeAxisModel(take ? an::bodyForTake(puppet, *take) : puppet, axisOptions(arguments));
 }
 
 an::MotionAxis motionAxis(const an::AxisModel& model, const an::Take& take, const AxisArguments& arguments)
@@ -86,7 +89,7 @@ struct AxisCommandArguments {
 void runAxis(const AxisCommandArguments& arguments)
 {
     const an::Take take = unwrap(an::io::readTakeFile(arguments.take));
-    const an::AxisModel model = axisModel(arguments.axis);
+    const an::AxisModel model = axisModel(arguments.axis, &take);
     const an::MotionAxis axis = motionAxis(model, take, arguments.axis);
     an::Take out = an::axisTake(axis);
     if (arguments.coordinates) {
@@ -258,7 +261,7 @@ void runDesign(const DesignCommandArguments& arguments)
 {
     requireTakeOutput(arguments.output);
     const an::Take take = unwrap(an::io::readTakeFile(arguments.take));
-    const an::AxisModel model = axisModel(arguments.axis);
+    const an::AxisModel model = axisModel(arguments.axis, &take);
     const an::DesignBasis basis = unwrap(an::prepareDesign(model, take, axisOptions(arguments.axis)));
     const an::WarpCurve warp = arguments.warp.empty() ? an::identityWarp(take.frameCount()) : unwrap(an::readWarpCsv(arguments.warp));
     if (!warp.points.empty() && warp.points.back().source > double(take.frameCount() - 1) + 1e-9)

@@ -311,6 +311,7 @@ void runRender(const RenderArguments& args)
 
     render::TakeSceneOptions sceneOptions;
     sceneOptions.computeAxes = visibility.axis;
+    sceneOptions.fitToSkeleton = args.body.empty() && args.meshes.empty(); // a body or meshes given are drawn as given
     render::SceneContent scene = unwrap(render::makeTakeScene(body, std::move(takes), sceneOptions));
     for (const std::string& entry : args.meshes) {
         const auto equals = entry.find('=');

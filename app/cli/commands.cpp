@@ -5,6 +5,7 @@ namespace bunraku::app::cli {
 void addAllCommands(CommandSet& commands)
 {
     addIoCommands(commands);
+    addCorpusCommands(commands);
     addDemoCommands(commands);
     addNormalisationCommands(commands);
     addDecompositionCommands(commands);

@@ -6,6 +6,8 @@ namespace bunraku::app::cli {
 
 /// info, convert, preprocess (cmd_io.cpp)
 void addIoCommands(CommandSet& commands);
+/// corpus (cmd_corpus.cpp)
+void addCorpusCommands(CommandSet& commands);
 /// demo (cmd_demo.cpp)
 void addDemoCommands(CommandSet& commands);
 /// normalise, experiment noise|truth (cmd_normalise.cpp)
