@@ -8,7 +8,8 @@
 
 #include "app/file_controller.h"
 #include "app/main_window.h"
-#include "app/recomputer.h"
+#include "app/analysis_controller.h"
+#include "app/stage_scheduler.h"
 
 #include <benchmark/benchmark.h>
 
@@ -41,8 +42,7 @@ app::MainWindow& window()
 
 bool idle(app::MainWindow& main)
 {
-    const auto recomputers = main.findChildren<app::Recomputer*>();
-    return std::none_of(recomputers.begin(), recomputers.end(), [](auto* r) { return r->busy(); });
+    return !main.analysis().scheduler().busy();
 }
 
 /// Argument 0: until shown; 1: until its motion axis is computed too.
