@@ -1,5 +1,7 @@
 #include "analysis/normalise/average_take.h"
 
+#include "analysis/skeleton/skeleton_blend.h"
+
 #include <algorithm>
 #include <string>
 
@@ -62,27 +64,48 @@ Result<Take> averageTake(const std::vector<const Take*>& takes, const AverageOpt
     auto normalised = normaliseTakes(base, others, options.normalise, control);
     if (!normalised) return normalised.error();
 
-    // Thesis 3.7: t_bar = mean_k t_k, x_bar = mean_k x_k(t_k), the base contributing t_b itself.
+    // Thesis 3.7: t_bar = mean_k t_k, x_bar = mean_k x_k(t_k), the base contributing t_b itself;
+    // angles as rotation coordinates about the base's mean part orientations.
     const Eigen::Index frames = base.frameCount();
     const double members_count = double(others.size() + 1);
+    const RotationChart chart = normalised->empty() ? meanPartChart({&base}) : normalised->front().chart;
+    const Eigen::MatrixXd baseCoordinates = rotationCoordinates(base, chart);
     Take average;
     average.channels = base.channels;
     average.rateHz = base.rateHz;
     average.labels = base.labels;
     average.labels.takeIndex = 0;
     average.labels.source = "average of takes " + members + " (base " + std::to_string(base.labels.takeIndex) + ")";
-    average.values.resize(frames, base.channelCount());
+    Eigen::MatrixXd coordinates(frames, base.channelCount());
     const Eigen::VectorXd baseTimes = Eigen::VectorXd::LinSpaced(frames, 0.0, double(frames - 1));
     for (Eigen::Index c = 0; c < base.channelCount(); ++c) {
         Eigen::VectorXd time = baseTimes;
-        Eigen::VectorXd value = base.values.col(c);
+        Eigen::VectorXd value = baseCoordinates.col(c);
         for (const auto& one : *normalised) {
             time += one.correspondence.col(c).cast<double>();
-            value += one.normalised.values.col(c);
+            value += one.coordinates.col(c);
         }
         time /= members_count;
         value /= members_count;
-        average.values.col(c) = resampleMonotone(time, value, frames);
+        coordinates.col(c) = resampleMonotone(time, value, frames);
+    }
+    average.values = eulerFromRotationCoordinates(base, coordinates, chart, Eigen::RowVectorXd(base.values.row(0)));
+
+    // The skeleton: per base frame every joint's mean rotation of the members at their body
+    // times, shown at the mean body time t_bar and resampled onto the base's frames.
+    bool skeletons = bool(base.skeleton);
+    for (const Take* take : others) skeletons = skeletons && take->skeleton;
+    if (skeletons) {
+        std::vector<BlendMember> blend{{base.skeleton.get(), baseTimes, 1.0}};
+        Eigen::VectorXd meanTime = baseTimes;
+        for (std::size_t k = 0; k < others.size(); ++k) {
+            blend.push_back({others[k]->skeleton.get(), (*normalised)[k].bodyTime, 1.0});
+            meanTime += (*normalised)[k].bodyTime;
+        }
+        meanTime /= members_count;
+        auto mean = meanSkeletalMotion(blend);
+        // Takes on other skeletons average their channels only.
+        if (mean) average.skeleton = resampleSkeletalMotion(**mean, resampleMonotone(meanTime, baseTimes, frames));
     }
     control.report(1.0);
     return average;

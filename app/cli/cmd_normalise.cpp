@@ -32,6 +32,7 @@ struct MatchArguments {
     std::string path = "greedy";
     std::string weighting = "none";
     std::string level = "first-frame";
+    std::string timeScale = "auto";
     double approximationWeight = 0.0;
 };
 
@@ -91,6 +92,9 @@ an::NormaliseOptions normaliseOptions(const MatchArguments& arguments)
     options.match.path = arguments.path == "optimal" ? an::PathMethod::Optimal : an::PathMethod::Greedy;
     options.match.weighting = arguments.weighting == "standardise" ? an::ChannelWeighting::Standardise : an::ChannelWeighting::None;
     options.match.level = arguments.level == "none" ? an::LevelAlignment::None : an::LevelAlignment::FirstFrame;
+    options.match.timeScaling = arguments.timeScale == "global" ? an::TimeScaling::Global
+                                : arguments.timeScale == "none" ? an::TimeScaling::None
+                                                                : an::TimeScaling::Auto;
     return options;
 }
 
@@ -112,6 +116,11 @@ void addMatchOptions(CLI::App* command, MatchArguments& arguments)
         ->capture_default_str();
     command->add_option("--level", arguments.level, "Level alignment before the transform: first-frame or none")
         ->check(CLI::IsMember({"first-frame", "none"}))
+        ->capture_default_str();
+    command->add_option("--time-scale", arguments.timeScale,
+                        "Takes of other lengths: auto (a global time scale first when the lengths differ by more than "
+                        "half of T_cmp), global (always) or none (the thesis: the band alone)")
+        ->check(CLI::IsMember({"auto", "global", "none"}))
         ->capture_default_str();
     command->add_option("--approximation-weight", arguments.approximationWeight,
                         "Weight M of the approximation term (thesis eq. 5.17; 0 = off)")
