@@ -122,6 +122,7 @@ struct PhaseArguments {
     double approximationWeight = 8.0;
     std::string path = "greedy";
     std::string weighting = "none";
+    std::string timeScale = "auto";
     int spacing = 8;
 };
 
@@ -138,6 +139,10 @@ void addPhaseOptions(CLI::App* command, PhaseArguments& arguments)
         ->check(CLI::IsMember({"none", "standardise"}));
     command->add_option("--control-spacing", arguments.spacing, "Frames between warp control points (default 8)")
         ->check(CLI::PositiveNumber);
+    command->add_option("--time-scale", arguments.timeScale,
+                        "Takes of other lengths: auto (default: a global time scale first when the lengths differ by more "
+                        "than half of T_cmp), global (always) or none (the band alone)")
+        ->check(CLI::IsMember({"auto", "global", "none"}));
 }
 
 an::PhaseOptions phaseOptions(const PhaseArguments& arguments)
@@ -149,6 +154,9 @@ an::PhaseOptions phaseOptions(const PhaseArguments& arguments)
     options.match.approximationWeight = arguments.approximationWeight;
     options.match.path = arguments.path == "optimal" ? an::PathMethod::Optimal : an::PathMethod::Greedy;
     options.match.weighting = arguments.weighting == "standardise" ? an::ChannelWeighting::Standardise : an::ChannelWeighting::None;
+    options.match.timeScaling = arguments.timeScale == "global" ? an::TimeScaling::Global
+                                : arguments.timeScale == "none" ? an::TimeScaling::None
+                                                                : an::TimeScaling::Auto;
     options.controlPointSpacing = arguments.spacing;
     return options;
 }
