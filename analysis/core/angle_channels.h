@@ -30,13 +30,14 @@ namespace bunraku::analysis {
 /// Base rotations of `tracks` rotation tracks (a take's 6-DOF parts, a skeleton's joints):
 /// one per frame, or one for the whole take (`frames` = 1).
 struct RotationChart {
-    Eigen::Index frames = 0;              ///< rows of base; 1 = the same base at every frame
+    Eigen::Index frames = 0;              ///< rows of base (at least 1 when tracks > 0); 1 = the same base at every frame
     int tracks = 0;
     std::vector<Eigen::Quaterniond> base; ///< frames x tracks, base[frame * tracks + track]
 
+    /// The base of `track` at `frame`; frames past the chart's last use its last row.
     const Eigen::Quaterniond& at(Eigen::Index frame, int track) const
     {
-        const Eigen::Index row = frames == 1 ? 0 : frame;
+        const Eigen::Index row = frame < frames ? frame : frames - 1;
         return base[std::size_t(row) * std::size_t(tracks) + std::size_t(track)];
     }
 };
