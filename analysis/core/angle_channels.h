@@ -50,8 +50,10 @@ enum class ChartTime {
 /// world_R_part of one 6-DOF part at every frame.
 std::vector<Eigen::Quaterniond> partRotations(const Take& take, const SixDofPart& part);
 
-/// The mean orientation (meanRotation) of each 6-DOF part of the first take over `takes`,
-/// tracks in sixDofParts order. PerFrame uses the frames of the shortest take. Empty chart
+/// The mean orientation of each 6-DOF part of the first take over `takes`, over all their
+/// frames (Constant) or at each frame (PerFrame; the frames of the shortest take): the chordal
+/// mean (chordalMeanRotation), as central as a chart needs and unchanged by a constant turn of
+/// the part frames (it maps q C to mean C). Tracks in sixDofParts order. Empty chart
 /// (tracks 0) for no takes or no 6-DOF parts.
 RotationChart meanPartChart(const std::vector<const Take*>& takes, ChartTime time = ChartTime::Constant);
 

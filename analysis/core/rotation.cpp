@@ -49,28 +49,37 @@ Eigen::Vector3d nearestRotationVector(const Eigen::Quaterniond& q, const Eigen::
     return (angle + k * turn) * axis;
 }
 
+Eigen::Quaterniond chordalMeanRotation(std::span<const Eigen::Quaterniond> rotations, std::span<const double> weights)
+{
+    if (rotations.empty()) return Eigen::Quaterniond::Identity();
+    // Quaternions sign-aligned with the first, summed.
+    Eigen::Vector4d sum = Eigen::Vector4d::Zero();
+    const Eigen::Vector4d first = rotations[0].coeffs();
+    for (std::size_t k = 0; k < rotations.size(); ++k) {
+        const Eigen::Vector4d c = rotations[k].coeffs();
+        sum += (weights.empty() ? 1.0 : weights[k]) * (c.dot(first) < 0.0 ? -c : c);
+    }
+    const double norm = sum.norm();
+    if (!(norm > 1e-12)) return rotations[0].normalized();
+    return Eigen::Quaterniond(sum / norm);
+}
+
 Eigen::Quaterniond meanRotation(std::span<const Eigen::Quaterniond> rotations, std::span<const double> weights)
 {
     if (rotations.empty()) return Eigen::Quaterniond::Identity();
     auto weight = [&](std::size_t k) { return weights.empty() ? 1.0 : weights[k]; };
-    // Chordal start: quaternions sign-aligned with the first, summed.
-    Eigen::Vector4d sum = Eigen::Vector4d::Zero();
-    const Eigen::Vector4d first = rotations[0].coeffs();
     double total = 0.0;
-    for (std::size_t k = 0; k < rotations.size(); ++k) {
-        const Eigen::Vector4d c = rotations[k].normalized().coeffs();
-        sum += weight(k) * (c.dot(first) < 0.0 ? -c : c);
-        total += weight(k);
-    }
-    if (!(total > 0.0) || sum.norm() < 1e-12) return rotations[0].normalized();
-    Eigen::Quaterniond mean(sum.normalized());
-    // Gauss-Newton on the sum of squared geodesic distances.
+    for (std::size_t k = 0; k < rotations.size(); ++k) total += weight(k);
+    if (!(total > 0.0)) return rotations[0].normalized();
+    Eigen::Quaterniond mean = chordalMeanRotation(rotations, weights);
+    // Gauss-Newton on the sum of squared geodesic distances (quadratic convergence from the
+    // chordal start; 1e-12 rad is far below any motion capture's resolution).
     for (int iteration = 0; iteration < 20; ++iteration) {
         Eigen::Vector3d step = Eigen::Vector3d::Zero();
         for (std::size_t k = 0; k < rotations.size(); ++k) step += weight(k) * logMap(mean.conjugate() * rotations[k]);
         step /= total;
         mean = (mean * expMap(step)).normalized();
-        if (step.norm() < 1e-14) break;
+        if (step.norm() < 1e-12) break;
     }
     return mean;
 }

@@ -120,7 +120,7 @@ Result<SkeletonChart> meanSkeletonChart(const std::vector<std::shared_ptr<const 
     for (Eigen::Index f = 0; f < frames; ++f)
         for (int j = 0; j < slots; ++j) {
             for (std::size_t k = 0; k < raw.size(); ++k) samples[k] = raw[k]->rotation(f, j);
-            chart.rotations.base[std::size_t(f) * std::size_t(slots) + std::size_t(j)] = meanRotation(samples);
+            chart.rotations.base[std::size_t(f) * std::size_t(slots) + std::size_t(j)] = chordalMeanRotation(samples);
         }
     return chart;
 }

@@ -43,7 +43,8 @@ struct SkeletonChart {
     }
 };
 
-/// Per frame (the shortest motion's frames) each joint's mean rotation over `motions`.
+/// Per frame (the shortest motion's frames) each joint's mean rotation over `motions` (the
+/// chordal mean: a chart needs a base near the data, not the exact mean).
 /// InvalidArgument for no motions or incompatible ones.
 Result<SkeletonChart> meanSkeletonChart(const std::vector<std::shared_ptr<const SkeletalMotion>>& motions);
 
