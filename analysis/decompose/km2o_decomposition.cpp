@@ -82,29 +82,17 @@ Result<Evaluation> evaluate(const Decomposition& layout, const std::vector<Prepa
     return out;
 }
 
-} // namespace
-
-Result<Km2oDecomposition> decomposeKm2o(const Corpus& corpus, const Km2oDecompositionOptions& options, const RunControl& control)
+/// The cells of every function of `layout`, their takes from `corpus`; InvalidArgument for a
+/// cell with fewer than 2 takes.
+Result<std::vector<FunctionCells>> functionCells(const Corpus& corpus, const Decomposition& layout)
 {
-    auto layout = decomposeLeastSquares(corpus); // checks the corpus, gives the cell order and means
-    if (!layout) return layout.error();
-    const Eigen::Index frames = layout->frameCount();
-    const int maxM = maxCorrelationLength(frames);
-    auto outOfRange = [&](int m) {
-        return makeError(ErrorCode::InvalidArgument, "KM2O: correlation length M = " + std::to_string(m) + " outside 1..M_max = " +
-                                                         std::to_string(maxM) + " (M_max = floor(3 sqrt(T+1)) - 1, T = " +
-                                                         std::to_string(frames - 1) + ", thesis eq. 4.30)");
-    };
-    if (options.correlationLength < 0 || options.correlationLength > maxM) return outOfRange(options.correlationLength);
-    if (options.lastCandidateLength < 0 || options.lastCandidateLength > maxM) return outOfRange(options.lastCandidateLength);
-
     std::vector<FunctionCells> families;
-    for (std::size_t i = 0; i < layout->functions.size(); ++i) {
+    for (std::size_t i = 0; i < layout.functions.size(); ++i) {
         FunctionCells family;
         family.function = int(i);
-        for (std::size_t c = 0; c < layout->emotions.size(); ++c) {
-            const auto& cell = layout->emotions[c];
-            if (cell.function != layout->functions[i].function) continue;
+        for (std::size_t c = 0; c < layout.emotions.size(); ++c) {
+            const auto& cell = layout.emotions[c];
+            if (cell.function != layout.functions[i].function) continue;
             auto takes = corpus.cell(cell.function, cell.emotion);
             if (takes.size() < 2)
                 return makeError(ErrorCode::InvalidArgument, "KM2O decomposition: cell " + cell.function + "/" + cell.emotion +
@@ -115,6 +103,58 @@ Result<Km2oDecomposition> decomposeKm2o(const Corpus& corpus, const Km2oDecompos
         }
         families.push_back(std::move(family));
     }
+    return families;
+}
+
+/// The skeletons' y and z by the same KM2O reading as the channels: the skeleton coordinates of
+/// every take decomposed as channels of their own.
+Result<SkeletalComponents> skeletalKm2o(const LinearCorpus& linear, const ExogenousOptions& reading)
+{
+    LinearCorpus skeletal;
+    skeletal.corpus = linear.corpus;
+    skeletal.functions = linear.functions;
+    std::vector<Channel> channels;
+    for (Eigen::Index c = 0; c < linear.skeletonCoordinates.front().cols(); ++c) {
+        // Appended piecewise: GCC 12 reports a false -Wrestrict on "c" + std::to_string at -O3.
+        std::string dof = "c";
+        dof.append(std::to_string(c));
+        channels.push_back({"skeleton", dof, ""});
+    }
+    for (std::size_t k = 0; k < skeletal.corpus.takes.size(); ++k) {
+        skeletal.corpus.takes[k].channels = channels;
+        skeletal.corpus.takes[k].values = linear.skeletonCoordinates[k];
+    }
+    const Decomposition layout = decomposeLinear(skeletal);
+    auto families = functionCells(skeletal.corpus, layout);
+    if (!families) return families.error();
+    auto prepared = prepareChannels(layout, *families, reading.correlationLength);
+    if (!prepared) return prepared.error();
+    auto evaluation = evaluate(layout, *prepared, reading);
+    if (!evaluation) return evaluation.error();
+    return SkeletalComponents{linear.skeletonCharts, std::move(evaluation->functions), std::move(evaluation->emotions)};
+}
+
+} // namespace
+
+Result<Km2oDecomposition> decomposeKm2o(const Corpus& corpus, const Km2oDecompositionOptions& options, const RunControl& control)
+{
+    if (auto status = checkDecomposable(corpus); !status) return status.error();
+    // Orientations and skeletons in linear coordinates (linear_corpus.h); least squares gives
+    // the cell order and means.
+    const LinearCorpus linear = lineariseCorpus(corpus);
+    Decomposition layout = decomposeLinear(linear);
+    const Eigen::Index frames = layout.frameCount();
+    const int maxM = maxCorrelationLength(frames);
+    auto outOfRange = [&](int m) {
+        return makeError(ErrorCode::InvalidArgument, "KM2O: correlation length M = " + std::to_string(m) + " outside 1..M_max = " +
+                                                         std::to_string(maxM) + " (M_max = floor(3 sqrt(T+1)) - 1, T = " +
+                                                         std::to_string(frames - 1) + ", thesis eq. 4.30)");
+    };
+    if (options.correlationLength < 0 || options.correlationLength > maxM) return outOfRange(options.correlationLength);
+    if (options.lastCandidateLength < 0 || options.lastCandidateLength > maxM) return outOfRange(options.lastCandidateLength);
+
+    auto families = functionCells(linear.corpus, layout);
+    if (!families) return families.error();
 
     Km2oDecomposition result;
     if (options.correlationLength > 0) {
@@ -127,7 +167,7 @@ Result<Km2oDecomposition> decomposeKm2o(const Corpus& corpus, const Km2oDecompos
     // diff-series autocovariances) once; then every candidate M.
     if (result.candidateLengths.empty()) return outOfRange(0);
     const int longest = *std::max_element(result.candidateLengths.begin(), result.candidateLengths.end());
-    auto prepared = prepareChannels(*layout, families, longest);
+    auto prepared = prepareChannels(layout, *families, longest);
     if (!prepared) return prepared.error();
     double bestError = 0.0;
     Evaluation best;
@@ -135,7 +175,7 @@ Result<Km2oDecomposition> decomposeKm2o(const Corpus& corpus, const Km2oDecompos
         if (control.cancelled()) return makeError(ErrorCode::Cancelled, "KM2O decomposition cancelled");
         ExogenousOptions reading = options.reading;
         reading.correlationLength = result.candidateLengths[index];
-        auto evaluation = evaluate(*layout, *prepared, reading);
+        auto evaluation = evaluate(layout, *prepared, reading);
         if (!evaluation) return evaluation.error();
         const double meanError = evaluation->cellErrorPercent.size() > 0 ? evaluation->cellErrorPercent.mean() : 0.0;
         result.meanErrorPercent.push_back(meanError);
@@ -146,14 +186,22 @@ Result<Km2oDecomposition> decomposeKm2o(const Corpus& corpus, const Km2oDecompos
         }
         control.report(double(index + 1) / double(result.candidateLengths.size()));
     }
-    result.components = std::move(layout).value();
+    result.components = std::move(layout);
     for (std::size_t f = 0; f < best.functions.size(); ++f) result.components.functions[f].values = std::move(best.functions[f]);
     for (std::size_t c = 0; c < best.emotions.size(); ++c) result.components.emotions[c].values = std::move(best.emotions[c]);
     result.cellErrorPercent = std::move(best.cellErrorPercent);
     result.meanCellErrorPercent = bestError;
+    if (result.components.skeleton) {
+        if (control.cancelled()) return makeError(ErrorCode::Cancelled, "KM2O decomposition cancelled");
+        ExogenousOptions reading = options.reading;
+        reading.correlationLength = result.correlationLength;
+        auto skeletal = skeletalKm2o(linear, reading);
+        if (!skeletal) return skeletal.error();
+        result.components.skeleton = std::move(skeletal).value();
+    }
     // eta = x - y - z with the KM2O components.
     for (auto& eta : result.components.fluctuations) {
-        const Take* take = corpus.find(eta.labels.function, eta.labels.emotion, eta.labels.takeIndex);
+        const Take* take = linear.corpus.find(eta.labels.function, eta.labels.emotion, eta.labels.takeIndex);
         const int cell = result.components.cellIndex(eta.labels.function, eta.labels.emotion);
         const auto* y = result.components.function(eta.labels.function);
         if (take && y && cell >= 0)

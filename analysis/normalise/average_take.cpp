@@ -1,5 +1,7 @@
 #include "analysis/normalise/average_take.h"
 
+#include "analysis/skeleton/skeleton_blend.h"
+
 #include <algorithm>
 #include <string>
 
@@ -72,30 +74,51 @@ Result<Members> membersOf(const std::vector<const Take*>& takes, const AverageOp
 }
 
 /// Thesis 3.7: t_bar = mean_k t_k, x_bar = mean_k x_k(t_k), the base contributing t_b itself;
-/// `normalised` holds the other members normalised to the base, in the members' order.
-Take averageOf(const Members& members, const std::vector<const TakeNormalisation*>& normalised)
+/// angles as rotation coordinates about the base's mean part orientations. `normalised` holds
+/// the other members normalised to the base, in the members' order.
+Take averageOf(const std::vector<const Take*>& takes, const Members& members, const std::vector<const TakeNormalisation*>& normalised)
 {
     const Take& base = *members.base;
     const Eigen::Index frames = base.frameCount();
     const double members_count = double(normalised.size() + 1);
+    const RotationChart chart = normalised.empty() ? meanPartChart({&base}) : normalised.front()->chart;
+    const Eigen::MatrixXd baseCoordinates = rotationCoordinates(base, chart);
     Take average;
     average.channels = base.channels;
     average.rateHz = base.rateHz;
     average.labels = base.labels;
     average.labels.takeIndex = 0;
     average.labels.source = "average of takes " + members.names + " (base " + std::to_string(base.labels.takeIndex) + ")";
-    average.values.resize(frames, base.channelCount());
+    Eigen::MatrixXd coordinates(frames, base.channelCount());
     const Eigen::VectorXd baseTimes = Eigen::VectorXd::LinSpaced(frames, 0.0, double(frames - 1));
     for (Eigen::Index c = 0; c < base.channelCount(); ++c) {
         Eigen::VectorXd time = baseTimes;
-        Eigen::VectorXd value = base.values.col(c);
+        Eigen::VectorXd value = baseCoordinates.col(c);
         for (const TakeNormalisation* one : normalised) {
             time += one->correspondence.col(c).cast<double>();
-            value += one->normalised.values.col(c);
+            value += one->coordinates.col(c);
         }
         time /= members_count;
         value /= members_count;
-        average.values.col(c) = resampleMonotone(time, value, frames);
+        coordinates.col(c) = resampleMonotone(time, value, frames);
+    }
+    average.values = eulerFromRotationCoordinates(base, coordinates, chart, Eigen::RowVectorXd(base.values.row(0)));
+
+    // The skeleton: per base frame every joint's mean rotation of the members at their body
+    // times, shown at the mean body time t_bar and resampled onto the base's frames.
+    bool skeletons = bool(base.skeleton);
+    for (int k : members.others) skeletons = skeletons && takes[std::size_t(k)]->skeleton;
+    if (skeletons) {
+        std::vector<BlendMember> blend{{base.skeleton.get(), baseTimes, 1.0}};
+        Eigen::VectorXd meanTime = baseTimes;
+        for (std::size_t k = 0; k < members.others.size(); ++k) {
+            blend.push_back({takes[std::size_t(members.others[k])]->skeleton.get(), normalised[k]->bodyTime, 1.0});
+            meanTime += normalised[k]->bodyTime;
+        }
+        meanTime /= members_count;
+        auto mean = meanSkeletalMotion(blend);
+        // Takes on other skeletons average their channels only.
+        if (mean) average.skeleton = resampleSkeletalMotion(**mean, resampleMonotone(meanTime, baseTimes, frames));
     }
     return average;
 }
@@ -112,7 +135,7 @@ Result<Take> averageTake(const std::vector<const Take*>& takes, const AverageOpt
     if (!normalised) return normalised.error();
     std::vector<const TakeNormalisation*> pointers;
     for (const auto& one : *normalised) pointers.push_back(&one);
-    Take average = averageOf(*members, pointers);
+    Take average = averageOf(takes, *members, pointers);
     control.report(1.0);
     return average;
 }
@@ -130,12 +153,13 @@ Result<Take> averageTakeFrom(const std::vector<const Take*>& takes, const Averag
         const TakeNormalisation& one = toBase[std::size_t(k)];
         if (one.normalised.values.rows() != members->base->frameCount() ||
             one.normalised.values.cols() != members->base->channelCount() || one.correspondence.rows() != members->base->frameCount() ||
-            one.correspondence.cols() != members->base->channelCount())
+            one.correspondence.cols() != members->base->channelCount() || one.coordinates.rows() != members->base->frameCount() ||
+            one.coordinates.cols() != members->base->channelCount() || one.bodyTime.size() != members->base->frameCount())
             return makeError(ErrorCode::InvalidArgument, "average take: the normalisation of take " + takes[std::size_t(k)]->displayName() +
                                                              " is not on the base take's frames and channels");
         pointers.push_back(&one);
     }
-    return averageOf(*members, pointers);
+    return averageOf(takes, *members, pointers);
 }
 
 } // namespace bunraku::analysis

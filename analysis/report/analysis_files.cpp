@@ -1,6 +1,7 @@
 #include "analysis/report/analysis_files.h"
 
 #include "analysis/axis/axis_channels.h"
+#include "analysis/decompose/emotion_weight.h"
 #include "analysis/io/atomic_file.h"
 #include "analysis/io/take_csv.h"
 #include "analysis/io/text_format.h"
@@ -151,9 +152,13 @@ Result<std::vector<OutputFile>> analysisDataFiles(const ChainResult& chain, cons
     }
 
     const Decomposition& d = chain.decomposed->components;
-    for (const auto& y : d.functions)
-        if (auto s = addTake(componentTake(d, y.values, {y.function, "", 0, "y"}), "y_" + io::fileSafeLabel(y.function) + ".csv"); !s)
-            return s.error();
+    for (const auto& y : d.functions) {
+        // y as a pose (Euler angles); z's angle columns are rotation coordinates (docs/FORMATS.md)
+        auto pose = functionComponentTake(d, y.function);
+        if (!pose) return pose.error();
+        pose->labels = {y.function, "", 0, "y"};
+        if (auto s = addTake(*pose, "y_" + io::fileSafeLabel(y.function) + ".csv"); !s) return s.error();
+    }
     for (const auto& z : d.emotions)
         if (auto s = addTake(componentTake(d, z.values, {z.function, z.emotion, 0, "z"}), "z_" + cellStem(z.function, z.emotion) + ".csv");
             !s)

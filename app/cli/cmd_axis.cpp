@@ -127,6 +127,7 @@ struct PhaseArguments {
     std::string path = "greedy";
     std::string weighting = "none";
     std::string level = "first-frame";
+    std::string timeScale = "auto";
     int spacing = 8;
 };
 
@@ -142,11 +143,15 @@ void addPhaseOptions(CLI::App* command, PhaseArguments& arguments)
     command->add_option("--weighting", arguments.weighting, "none (thesis, default) or standardise")
         ->check(CLI::IsMember({"none", "standardise"}));
     command->add_option("--level", arguments.level,
-                        "Level of each axis coordinate before the transform: none (eq. 5.16, default) or first-frame "
-                        "(minus its first frame)")
+                        "Level of each axis coordinate before the transform: first-frame (minus its first frame, default) "
+                        "or none (eq. 5.16 read literally)")
         ->check(CLI::IsMember({"none", "first-frame"}));
     command->add_option("--control-spacing", arguments.spacing, "Frames between warp control points (default 8)")
         ->check(CLI::PositiveNumber);
+    command->add_option("--time-scale", arguments.timeScale,
+                        "Takes of other lengths: auto (default: a global time scale first when the lengths differ by more "
+                        "than half of T_cmp), global (always) or none (the band alone)")
+        ->check(CLI::IsMember({"auto", "global", "none"}));
 }
 
 an::PhaseOptions phaseOptions(const PhaseArguments& arguments)
@@ -159,6 +164,9 @@ an::PhaseOptions phaseOptions(const PhaseArguments& arguments)
     options.match.path = arguments.path == "optimal" ? an::PathMethod::Optimal : an::PathMethod::Greedy;
     options.match.weighting = arguments.weighting == "standardise" ? an::ChannelWeighting::Standardise : an::ChannelWeighting::None;
     options.match.level = arguments.level == "first-frame" ? an::LevelAlignment::FirstFrame : an::LevelAlignment::None;
+    options.match.timeScaling = arguments.timeScale == "global" ? an::TimeScaling::Global
+                                : arguments.timeScale == "none" ? an::TimeScaling::None
+                                                                : an::TimeScaling::Auto;
     options.controlPointSpacing = arguments.spacing;
     return options;
 }

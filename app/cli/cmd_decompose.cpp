@@ -204,15 +204,38 @@ nlohmann::json truthErrors(const Decomposition& d, const synth::DemoGroundTruth&
     auto rms = [](const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
         return std::sqrt((a - b).squaredNorm() / double(std::max<Eigen::Index>(1, a.size())));
     };
-    for (const auto& f : d.functions) {
+    // y as a pose (Euler angles, compared modulo 360); z as rotation coordinates about the
+    // function's chart on both sides (the truth's z is the difference of its cell motion and y).
+    auto truthTake = [&](const Eigen::MatrixXd& values) {
+        Take take;
+        take.values = values;
+        take.channels = d.channels;
+        return take;
+    };
+    for (std::size_t i = 0; i < d.functions.size(); ++i) {
+        const auto& f = d.functions[i];
         const auto* t = truth.function(f.function);
         if (!t || t->motion.rows() != f.values.rows() || t->motion.cols() != f.values.cols()) continue;
-        out["y"][f.function] = {{"relative_error_percent", percent(f.values, t->motion)}, {"rms", rms(f.values, t->motion)}};
+        Eigen::MatrixXd y = unwrap(functionComponentTake(d, f.function)).values;
+        for (Eigen::Index c = 0; c < y.cols(); ++c)
+            if (d.channels[std::size_t(c)].unit == "deg")
+                for (Eigen::Index r = 0; r < y.rows(); ++r) y(r, c) = t->motion(r, c) + std::remainder(y(r, c) - t->motion(r, c), 360.0);
+        out["y"][f.function] = {{"relative_error_percent", percent(y, t->motion)}, {"rms", rms(y, t->motion)}};
     }
     for (const auto& z : d.emotions) {
         const auto* t = truth.cell(z.function, z.emotion);
-        if (!t || t->emotionComponent.rows() != z.values.rows() || t->emotionComponent.cols() != z.values.cols()) continue;
-        out["z"][z.function + "/" + z.emotion] = {{"rms", rms(z.values, t->emotionComponent)}};
+        const auto* y = truth.function(z.function);
+        const int function = [&] {
+            for (std::size_t i = 0; i < d.functions.size(); ++i)
+                if (d.functions[i].function == z.function) return int(i);
+            return -1;
+        }();
+        if (!t || !y || function < 0 || t->motion.rows() != z.values.rows() || t->motion.cols() != z.values.cols() ||
+            y->motion.rows() != z.values.rows())
+            continue;
+        const RotationChart& chart = d.charts[std::size_t(function)];
+        const Eigen::MatrixXd trueZ = rotationCoordinates(truthTake(t->motion), chart) - rotationCoordinates(truthTake(y->motion), chart);
+        out["z"][z.function + "/" + z.emotion] = {{"rms", rms(z.values, trueZ)}};
     }
     return out;
 }
@@ -250,8 +273,12 @@ void runDecompose(const DecomposeArgs& args)
         outputs.emplace_back(name, io::formatTakeCsv(take));
     };
     aboutCorpus(args.corpus.path, [&] {
-        for (const auto& f : d.functions)
-            addTake(asTake(d, f.values, {f.function, "", 0, "y"}), "y_" + io::fileSafeLabel(f.function) + ".csv");
+        // y as a pose (Euler angles); z and eta are differences: rotation coordinates (deg).
+        for (const auto& f : d.functions) {
+            Take y = unwrap(functionComponentTake(d, f.function));
+            y.labels = {f.function, "", 0, "y"};
+            addTake(y, "y_" + io::fileSafeLabel(f.function) + ".csv");
+        }
         for (const auto& z : d.emotions)
             addTake(asTake(d, z.values, {z.function, z.emotion, 0, "z"}),
                     "z_" + io::fileSafeLabel(z.function) + "_" + io::fileSafeLabel(z.emotion) + ".csv");

@@ -35,6 +35,7 @@ struct MatchArguments {
     std::string path = "greedy";
     std::string weighting = "none";
     std::string level = "first-frame";
+    std::string timeScale = "auto";
     double approximationWeight = 0.0;
 };
 
@@ -94,6 +95,9 @@ an::NormaliseOptions normaliseOptions(const MatchArguments& arguments)
     options.match.path = arguments.path == "optimal" ? an::PathMethod::Optimal : an::PathMethod::Greedy;
     options.match.weighting = arguments.weighting == "standardise" ? an::ChannelWeighting::Standardise : an::ChannelWeighting::None;
     options.match.level = arguments.level == "none" ? an::LevelAlignment::None : an::LevelAlignment::FirstFrame;
+    options.match.timeScaling = arguments.timeScale == "global" ? an::TimeScaling::Global
+                                : arguments.timeScale == "none" ? an::TimeScaling::None
+                                                                : an::TimeScaling::Auto;
     return options;
 }
 
@@ -462,6 +466,12 @@ void addNormalisationCommands(CommandSet& commands)
         command->add_option("--reference", arguments->reference, "Reference take index in every cell (default: suggested)");
         command->add_flag("--json", arguments->json, "Print a machine-readable summary");
         addMatchOptions(command, arguments->match);
+        // The workbench and `normalise` use auto; the experiment compares the readings.
+        command->add_option("--time-scale", arguments->match.timeScale,
+                            "Takes of other lengths: auto (a global time scale first when the lengths differ by more "
+                            "than half of T_cmp), global (always) or none (the thesis: the band alone)")
+            ->check(CLI::IsMember({"auto", "global", "none"}))
+            ->capture_default_str();
         command->callback([arguments] { runTruth(*arguments); });
     }
 }
