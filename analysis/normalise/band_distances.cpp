@@ -1,5 +1,7 @@
 #include "analysis/normalise/band_distances.h"
 
+#include "analysis/wavelet/simd_level.h"
+
 #include <algorithm>
 #include <cstddef>
 
@@ -38,6 +40,7 @@ constexpr int kVectors = 2;
 } // namespace avx2
 #pragma GCC pop_options
 
+#ifndef BUNRAKU_NO_AVX512
 #pragma GCC push_options
 #pragma GCC target("avx512f,avx512vl,avx2,fma")
 namespace avx512 {
@@ -47,15 +50,16 @@ constexpr int kVectors = 4;
 } // namespace avx512
 #pragma GCC pop_options
 #endif
+#endif
 
 std::vector<BandKernel> availableBandKernels()
 {
     std::vector<BandKernel> kernels{BandKernel::Plain};
 #ifdef BUNRAKU_BAND_SIMD
-    if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) kernels.push_back(BandKernel::Avx2);
-    if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx2")
-        && __builtin_cpu_supports("fma"))
-        kernels.push_back(BandKernel::Avx512);
+    if (simdLevel() >= SimdLevel::Avx2) kernels.push_back(BandKernel::Avx2);
+#ifndef BUNRAKU_NO_AVX512
+    if (simdLevel() >= SimdLevel::Avx512) kernels.push_back(BandKernel::Avx512);
+#endif
 #endif
     return kernels;
 }
@@ -63,8 +67,10 @@ std::vector<BandKernel> availableBandKernels()
 void bandDistancesWith(BandKernel kernel, const BandTile& tile)
 {
     switch (kernel) {
-#ifdef BUNRAKU_BAND_SIMD
+#if defined(BUNRAKU_BAND_SIMD) && !defined(BUNRAKU_NO_AVX512)
     case BandKernel::Avx512: avx512::bandDistances(tile); return;
+#endif
+#ifdef BUNRAKU_BAND_SIMD
     case BandKernel::Avx2: avx2::bandDistances(tile); return;
 #endif
     default: bandDistancesPlain(tile); return;
@@ -73,8 +79,8 @@ void bandDistancesWith(BandKernel kernel, const BandTile& tile)
 
 void bandDistances(const BandTile& tile)
 {
-    static const BandKernel best = availableBandKernels().back();
-    bandDistancesWith(best, tile);
+    const SimdLevel level = simdLevel();
+    bandDistancesWith(level == SimdLevel::Avx512 ? BandKernel::Avx512 : level == SimdLevel::Avx2 ? BandKernel::Avx2 : BandKernel::Plain, tile);
 }
 
 const char* bandKernelName(BandKernel kernel)

@@ -1,5 +1,7 @@
 #include "analysis/normalise/distance_kernel.h"
 
+#include "analysis/wavelet/simd_level.h"
+
 #include <algorithm>
 #include <limits>
 
@@ -202,11 +204,7 @@ __attribute__((target("avx2,fma"))) std::size_t prefixAvx2(const double* values,
     return cost ? last : 0;
 }
 
-bool cpuHasAvx2()
-{
-    static const bool has = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-    return has;
-}
+bool cpuHasAvx2() { return simdLevel() >= SimdLevel::Avx2; }
 #endif
 
 } // namespace
