@@ -1,13 +1,19 @@
 #pragma once
-/// The project file (JSON, "bunraku-project" version 1): the corpus reference, the recipes of
-/// derived takes (imported files), the undoable parameters (edits) and the view state. Live
-/// results are not stored: they are recomputed from the parameters. Saves are atomic (QSaveFile).
+/// The project file (JSON, "bunraku-project" version 2): the corpus reference, the recipes of
+/// derived takes (imported files), the typed analysis parameters (pipeline/parameters_json.h)
+/// and the view state. Live results are not stored: they are recomputed from the parameters.
+/// Saves are atomic (QSaveFile). Reading checks everything before using it: the parameters
+/// (types and ranges: `"maxScale": 2e9` or a negative tau is refused naming the parameter, and
+/// nothing is allocated from a value), take ids ("corpus/N", "imported/N", "live/name"), the
+/// time and the view's values; a file over 64 MB or that is not a regular file is refused.
+/// Version 1 files (flat "panel.name" parameter keys) are read and converted.
 ///
-/// {"format": "bunraku-project", "version": 1, "corpus": "demo" | "/abs/folder",
-///  "imported": [{"path": ..., "label": ...}], "parameters": {key: value},
+/// {"format": "bunraku-project", "version": 2, "corpus": "demo" | "/abs/folder",
+///  "imported": [{"path": ..., "label": ...}], "parameters": {"normalise": {...}, ...},
 ///  "takeA": id, "takeB": id, "time_s": t, "view": {...}}
 
 #include "analysis/core/result.h"
+#include "analysis/pipeline/stage_parameters.h"
 
 #include <QString>
 #include <QVariantMap>
@@ -23,7 +29,7 @@ struct ImportedTakeRecipe {
 struct ProjectState {
     QString corpus; ///< "demo" or the corpus folder
     QVector<ImportedTakeRecipe> imported;
-    QVariantMap parameters;
+    analysis::pipeline::ChainParameters parameters;
     QString takeA;
     QString takeB;
     double timeSeconds = 0.0;
@@ -31,7 +37,7 @@ struct ProjectState {
 };
 
 inline constexpr const char* kProjectFormatName = "bunraku-project";
-inline constexpr int kProjectFormatVersion = 1;
+inline constexpr int kProjectFormatVersion = 2;
 /// The file name suffix of project files.
 inline constexpr const char* kProjectSuffix = ".bunraku.json";
 

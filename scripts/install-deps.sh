@@ -11,7 +11,7 @@ packages=(
   libeigen3-dev libglm-dev nlohmann-json3-dev libcli11-dev catch2
   libfftw3-dev libassimp-dev libbenchmark-dev
   xvfb xauth libgl1-mesa-dri libglx-mesa0 libegl-mesa0 mesa-utils
-  fonts-dejavu-core ffmpeg
+  fonts-dejavu-core ffmpeg chromium
   python3 python3-numpy python3-pywt python3-statsmodels
 )
 

@@ -9,6 +9,7 @@ void addAllCommands(CommandSet& commands)
     addNormalisationCommands(commands);
     addDecompositionCommands(commands);
     addMotionAxisCommands(commands);
+    addAnalyseCommands(commands);
     addRenderCommands(commands);
 }
 

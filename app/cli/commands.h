@@ -14,6 +14,8 @@ void addNormalisationCommands(CommandSet& commands);
 void addDecompositionCommands(CommandSet& commands);
 /// axis, phase, gains, design, experiment design (cmd_axis.cpp)
 void addMotionAxisCommands(CommandSet& commands);
+/// analyse (cmd_analyse.cpp)
+void addAnalyseCommands(CommandSet& commands);
 /// render (cmd_render.cpp)
 void addRenderCommands(CommandSet& commands);
 } // namespace bunraku::app::cli
