@@ -5,8 +5,33 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <cstdlib>
+#include <new>
+
+#ifdef __linux__
+#include <sys/mman.h>
+#endif
 
 namespace bunraku::analysis {
+
+namespace detail {
+
+void FreeWords::operator()(std::uint64_t* words) const { std::free(words); }
+
+WordBuffer allocateWords(std::size_t count)
+{
+    constexpr std::size_t kHugePage = std::size_t(2) << 20;
+    const std::size_t bytes = std::max<std::size_t>(count, 1) * sizeof(std::uint64_t);
+    const std::size_t rounded = (bytes + kHugePage - 1) / kHugePage * kHugePage;
+    void* memory = bytes < kHugePage ? std::malloc(bytes) : std::aligned_alloc(kHugePage, rounded);
+    if (!memory) throw std::bad_alloc();
+#ifdef __linux__
+    if (bytes >= kHugePage) madvise(memory, rounded, MADV_HUGEPAGE);
+#endif
+    return WordBuffer(static_cast<std::uint64_t*>(memory));
+}
+
+} // namespace detail
 
 namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
@@ -21,13 +46,13 @@ PathBuilder::PathBuilder(int searchBand, Eigen::Index referenceFrames, Eigen::In
     const std::size_t width = std::size_t(2 * searchBand + 1);
     if (optimal) {
         m_segment = detail::dpSegment(width);
-        m_previous.assign(4 * m_segment, kInfinity);
-        m_current.assign(4 * m_segment, kInfinity);
-        m_segmentPrefix.assign(4 * m_segment, kInfinity);
-        m_nextSegmentPrefix.assign(4 * m_segment, kInfinity);
-        m_costs.assign(4 * m_segment, kInfinity);
+        m_previous.assign(detail::kDpLanes * m_segment, kInfinity);
+        m_current.assign(detail::kDpLanes * m_segment, kInfinity);
+        m_segmentPrefix.assign(detail::kDpLanes * m_segment, kInfinity);
+        m_nextSegmentPrefix.assign(detail::kDpLanes * m_segment, kInfinity);
+        m_costs.assign(detail::kDpLanes * m_segment, kInfinity);
         m_words = detail::dpWords(m_segment);
-        m_drops.assign(std::size_t(referenceFrames) * m_words, 0);
+        m_drops = detail::allocateWords(std::size_t(referenceFrames) * m_words);
     } else {
         m_greedy = Eigen::VectorXi::Zero(referenceFrames);
     }
@@ -81,13 +106,14 @@ void PathBuilder::addOptimalRow(const detail::DpCost& cost, Eigen::Index lowColu
         detail::dpFirstRow(cost, width, std::size_t(lowColumn), std::size_t(highColumn), m_current.data(), m_nextSegmentPrefix.data());
     else
         detail::dpRow(m_segmentPrefix.data(), cost, width, std::size_t(lowColumn), std::size_t(highColumn),
-                      m_drops.data() + std::size_t(m_row - 1) * m_words, m_current.data(), m_nextSegmentPrefix.data());
+                      m_drops.get() + std::size_t(m_row - 1) * m_words,
+                      m_row + 1 == m_referenceFrames ? m_current.data() : nullptr, m_nextSegmentPrefix.data());
     std::swap(m_previous, m_current);
     std::swap(m_segmentPrefix, m_nextSegmentPrefix);
     ++m_row;
 }
 
-Eigen::Index PathBuilder::slidingRowLength(int searchBand) { return Eigen::Index(4 * detail::dpSegment(std::size_t(2 * searchBand + 1))); }
+Eigen::Index PathBuilder::slidingRowLength(int searchBand) { return Eigen::Index(detail::kDpLanes * detail::dpSegment(std::size_t(2 * searchBand + 1))); }
 
 void PathBuilder::addRow(double* running, const double* entering, const double* leaving)
 {
@@ -113,15 +139,15 @@ Eigen::VectorXi PathBuilder::finish(double* totalCost)
     }
     const Eigen::Index width = 2 * m_band + 1;
     const std::size_t last = std::size_t(m_referenceFrames - 1) * m_words;
-    detail::dpDropBits(m_segmentPrefix.data(), std::size_t(width), m_drops.data() + last);
-    Eigen::Index best = detail::lastDropAtOrBelow(m_drops.data() + last, std::size_t(width - 1), m_segment);
+    detail::dpDropBits(m_segmentPrefix.data(), std::size_t(width), m_drops.get() + last);
+    Eigen::Index best = detail::lastDropAtOrBelow(m_drops.get() + last, std::size_t(width - 1), m_segment);
     const double bestCost = best >= 0 ? m_previous[detail::dpEntry(std::size_t(best), m_segment)] : kInfinity;
     Eigen::VectorXi path(m_referenceFrames);
     for (Eigen::Index t = m_referenceFrames - 1; t >= 0; --t) {
         assert(best >= 0);
         path[t] = int(t - m_band + best);
         if (t > 0)
-            best = detail::lastDropAtOrBelow(m_drops.data() + std::size_t(t - 1) * m_words,
+            best = detail::lastDropAtOrBelow(m_drops.get() + std::size_t(t - 1) * m_words,
                                              std::size_t(std::min<Eigen::Index>(best + 1, width - 1)), m_segment);
     }
     if (totalCost) *totalCost = bestCost;

@@ -10,12 +10,21 @@
 
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <vector>
 
 namespace bunraku::analysis {
 
 namespace detail {
 struct DpCost;
+
+struct FreeWords {
+    void operator()(std::uint64_t* words) const;
+};
+/// Uninitialised words; large buffers on transparent huge pages where the system offers them
+/// (one page fault per 2 MB instead of per 4 kB).
+using WordBuffer = std::unique_ptr<std::uint64_t[], FreeWords>;
+WordBuffer allocateWords(std::size_t count);
 }
 
 /// Window costs in the band: row t_ref, column j <-> sample frame t_ref - searchBand + j.
@@ -60,13 +69,13 @@ private:
     // greedy and independent
     Eigen::VectorXi m_greedy;
     double m_greedyCost = 0;
-    // optimal: rows interleaved (detail::dpEntry), 4 m_segment entries each
+    // optimal: rows interleaved (detail::dpEntry), kDpLanes m_segment entries each
     std::size_t m_segment = 0;
     std::vector<double> m_previous, m_current;             // D of the last row and the next
-    std::vector<double> m_segmentPrefix, m_nextSegmentPrefix; // their prefix minima within each quarter
-    std::vector<double> m_costs;                             // a cost row padded to 4 m_segment entries
+    std::vector<double> m_segmentPrefix, m_nextSegmentPrefix; // their prefix minima within each segment
+    std::vector<double> m_costs;                             // a cost row padded to kDpLanes m_segment entries
     std::size_t m_words = 0;            // 64-bit words of drop bits per row
-    std::vector<std::uint64_t> m_drops; // row t: where the prefix minimum of row t drops
+    detail::WordBuffer m_drops;         // row t: where the prefix minimum of row t drops
 };
 
 /// Thesis 3.5.3: for t_ref = 0, 1, ... choose the cheapest t_smp >= the previous choice (ties to

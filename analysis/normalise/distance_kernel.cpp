@@ -67,7 +67,7 @@ void dpRowPlain(const double* segmentPrefix, const DpCost& cost, std::size_t wid
         const double value = c < low || c > high ? kInfinity : cost.running[c] + next;
         if (c % segment == 0) run = kInfinity;
         run = std::min(run, value);
-        d[dpEntry(c, segment)] = value;
+        if (d) d[dpEntry(c, segment)] = value;
         nextSegmentPrefix[dpEntry(c, segment)] = run;
     }
 }
@@ -153,7 +153,7 @@ struct RowOutput {
             column = _mm256_add_pd(column, _mm256_set1_pd(1.0));
         }
         run = _mm256_min_pd(run, value);
-        _mm256_storeu_pd(d + 4 * k, value);
+        if (d) _mm256_storeu_pd(d + 4 * k, value);
         _mm256_storeu_pd(segmentPrefix + 4 * k, run);
     }
 };

@@ -20,9 +20,10 @@ void windowSlide(double* running, const double* entering, const double* leaving,
 /// multiple of 4 with 4 S > width), so the four quarters of a row run side by side in the
 /// vector lanes and the prefix minimum needs no shuffles. Entries of columns >= width are
 /// padding: infinity in D rows. Drop bits use the same order (dpWords(S) words a row).
+inline constexpr std::size_t kDpLanes = 4;
 std::size_t dpSegment(std::size_t width);
-inline std::size_t dpEntry(std::size_t column, std::size_t segment) { return 4 * (column % segment) + column / segment; }
-inline std::size_t dpWords(std::size_t segment) { return (4 * segment + 63) / 64; }
+inline std::size_t dpEntry(std::size_t column, std::size_t segment) { return kDpLanes * (column % segment) + column / segment; }
+inline std::size_t dpWords(std::size_t segment) { return (kDpLanes * segment + 63) / 64; }
 
 /// A row's costs in column order, readable for 4 S entries, those >= width +infinity. With
 /// `entering` and `leaving` (4 S entries, 0 past width) the costs are window sums slid one row
@@ -41,8 +42,9 @@ void dpFirstRow(const DpCost& cost, std::size_t width, std::size_t low, std::siz
 /// D_t(c) = cost(c) + P(min(c + 1, width - 1)) for low <= c <= high and infinity elsewhere
 /// (thesis 3.5.3's monotone path: the previous row's column c + 1 is the same sample frame);
 /// `bits` gets row t - 1's drops (bit dpEntry(c) set where P strictly drops at c, so the first
-/// minimum of D_{t-1}(0 .. c) is the highest set bit at or below c); d = D_t and
-/// nextSegmentPrefix its quarter prefix minima.
+/// minimum of D_{t-1}(0 .. c) is the highest set bit at or below c); d = D_t (skipped when null:
+/// the next row needs only its quarter prefix minima) and nextSegmentPrefix those minima. Every
+/// word of `bits` is written.
 void dpRow(const double* segmentPrefix, const DpCost& cost, std::size_t width, std::size_t low, std::size_t high,
            std::uint64_t* bits, double* d, double* nextSegmentPrefix);
 

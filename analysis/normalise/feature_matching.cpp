@@ -24,6 +24,16 @@ constexpr Eigen::Index kTileRows = 480;
 
 Eigen::Index roundUp(Eigen::Index value, Eigen::Index step) { return (value + step - 1) / step * step; }
 
+// norms[i] = sum_k series[k * stride + i]^2 for from <= i < to, summed over k in order.
+void squaredNorms(const double* series, Eigen::Index stride, Eigen::Index count, Eigen::Index from, Eigen::Index to, double* norms)
+{
+    std::fill(norms + from, norms + to, 0.0);
+    for (Eigen::Index k = 0; k < count; ++k) {
+        const double* values = series + k * stride;
+        for (Eigen::Index i = from; i < to; ++i) norms[i] += values[i] * values[i];
+    }
+}
+
 // Feature-major copy of the listed feature columns of frames first + from .. first + to - 1
 // (one tile's worth, so it stays in cache): out[k * stride + (i - first)] = features(clamp(i),
 // columns[k]), and norms[i - first] the squared norm of those values. Window indices beyond
@@ -51,11 +61,18 @@ void featureMajor(const Features& features, const std::vector<Eigen::Index>& col
             std::fill(target + inTo, target + to, series[last]);
         }
     }
-    std::fill(norms + from, norms + to, 0.0);
-    for (std::size_t k = 0; k < columns.size(); ++k) {
-        const double* values = out + Eigen::Index(k) * stride;
-        for (Eigen::Index i = from; i < to; ++i) norms[i] += values[i] * values[i];
-    }
+    squaredNorms(out, stride, Eigen::Index(columns.size()), from, to, norms);
+}
+
+// The columns listed are consecutive series of column-major features (a coupling set's own
+// features): tiles away from the takes' ends are then read in place, not copied.
+template <class Features>
+bool consecutiveSeries(const std::vector<Eigen::Index>& columns)
+{
+    if constexpr (Features::IsRowMajor) return false;
+    for (std::size_t k = 0; k < columns.size(); ++k)
+        if (columns[k] != columns[0] + Eigen::Index(k)) return false;
+    return true;
 }
 
 // The path once every row is in, its cost and its smooth (sub-frame) warp.
@@ -88,7 +105,8 @@ Result<MatchResult> matchBand(const Features& reference, const Features& sample,
     const auto features = Eigen::Index(columns.size());
     const bool greedy = options.path == PathMethod::Greedy;
     // Tile copies, padded with the edge frames: position p of `a` is reference frame
-    // tileStart + p, of `b` sample frame tileStart - T_cmp + p.
+    // tileStart + p, of `b` sample frame tileStart - T_cmp + p (or the same positions of the
+    // features themselves, read in place).
     const Eigen::Index tileRows = std::min(kTileRows, roundUp(referenceFrames + 2 * tau, kBlock));
     const Eigen::Index referenceLength = tileRows;
     const Eigen::Index sampleLength = roundUp(tileRows + width + Eigen::Index(detail::kBandReadAhead), 4);
@@ -110,6 +128,11 @@ Result<MatchResult> matchBand(const Features& reference, const Features& sample,
     const Eigen::Index progressEvery = std::max<Eigen::Index>(kRestart, roundUp(referenceFrames / 50, kBlock));
     Eigen::Index tileStart = 0;
     Eigen::Index tileEnd = -tau; // rows tileStart .. tileEnd - 1 are in the copies
+    const bool inPlace = consecutiveSeries<Features>(columns);
+    const double* aBase = a.data();
+    const double* bBase = b.data();
+    Eigen::Index aStride = referenceLength;
+    Eigen::Index bStride = sampleLength;
     Eigen::Index t = 0;          // the next reference frame to add to the path
     for (Eigen::Index i0 = -tau; t < referenceFrames; i0 += kBlock) {
         const Eigen::Index count = std::min(kBlock, lastRow + 1 - i0);
@@ -117,17 +140,32 @@ Result<MatchResult> matchBand(const Features& reference, const Features& sample,
             if (control.cancelled()) return makeError(ErrorCode::Cancelled, "matching cancelled");
             tileStart = i0;
             tileEnd = std::min(i0 + tileRows, lastRow + 1);
-            featureMajor(reference, columns, tileStart, 0, tileEnd - tileStart, referenceLength, a.data(), aNorms.data());
-            featureMajor(sample, columns, tileStart - band, 0, tileEnd - tileStart + width + Eigen::Index(detail::kBandReadAhead),
-                         sampleLength, b.data(), bNorms.data());
+            const Eigen::Index sampleFrom = tileStart - band;
+            const Eigen::Index sampleCount = tileEnd - tileStart + width + Eigen::Index(detail::kBandReadAhead);
+            if (inPlace && tileStart >= 0 && tileEnd <= referenceFrames && sampleFrom >= 0 && sampleFrom + sampleCount <= sampleFrames) {
+                // The norms pass also brings the tile's features into cache for the kernel.
+                aBase = reference.data() + columns[0] * referenceFrames + tileStart;
+                aStride = referenceFrames;
+                bBase = sample.data() + columns[0] * sampleFrames + sampleFrom;
+                bStride = sampleFrames;
+                squaredNorms(aBase, aStride, features, 0, tileEnd - tileStart, aNorms.data());
+                squaredNorms(bBase, bStride, features, 0, sampleCount, bNorms.data());
+            } else {
+                featureMajor(reference, columns, tileStart, 0, tileEnd - tileStart, referenceLength, a.data(), aNorms.data());
+                featureMajor(sample, columns, sampleFrom, 0, sampleCount, sampleLength, b.data(), bNorms.data());
+                aBase = a.data();
+                aStride = referenceLength;
+                bBase = b.data();
+                bStride = sampleLength;
+            }
         }
         const Eigen::Index offset = i0 - tileStart;
         detail::BandTile tile;
-        tile.a = a.data() + offset;
-        tile.aStride = std::size_t(referenceLength);
+        tile.a = aBase + offset;
+        tile.aStride = std::size_t(aStride);
         tile.aNorms = aNorms.data() + offset;
-        tile.b = b.data() + offset;
-        tile.bStride = std::size_t(sampleLength);
+        tile.b = bBase + offset;
+        tile.bStride = std::size_t(bStride);
         tile.bNorms = bNorms.data() + offset;
         tile.features = std::size_t(features);
         tile.count = std::size_t(count);

@@ -134,8 +134,9 @@ private:
     std::unique_ptr<double, Free> m_data;
 };
 
-// Output rows per kernel call: a multiple of every kernel's row block (6 and 12).
-constexpr std::size_t kChunk = 120;
+// Output rows per kernel call: a multiple of every kernel's row block (6 and 12). The chunk's
+// interleaved input (its rows plus the filters' reach) stays in the first-level cache.
+constexpr std::size_t kChunk = 240;
 
 struct ScaleSetup {
     const double* weights;
@@ -193,31 +194,32 @@ Status directTransform(const double* input, Eigen::Index frames, Eigen::Index ch
     const Eigen::Index length = (frames + segments - 1) / segments; // output frames per lane
     const Eigen::Index lanes = channels * segments;
     const Eigen::Index groups = (lanes + Eigen::Index(kLanes) - 1) / Eigen::Index(kLanes);
-    const Eigen::Index rows = length + span - 1;
-    AlignedBuffer x(std::size_t(rows) * kLanes);
+    AlignedBuffer x((kChunk + std::size_t(span)) * kLanes);
     AlignedBuffer scratch(kChunk * kLanes);
     const Eigen::Index reportEvery = std::max<Eigen::Index>(Eigen::Index(kChunk), groups * length / 64);
     Eigen::Index done = 0;
     Eigen::Index reported = 0;
     for (Eigen::Index g = 0; g < groups; ++g) {
-        // Lane l holds channel c's frames k * length - pad + r in row r (zero outside the take).
-        std::fill(x.data(), x.data() + rows * Eigen::Index(kLanes), 0.0);
-        for (Eigen::Index l = 0; l < Eigen::Index(kLanes); ++l) {
-            const Eigen::Index lane = g * Eigen::Index(kLanes) + l;
-            if (lane >= lanes) break;
-            const double* series = input + (lane / segments) * frames;
-            const Eigen::Index first = (lane % segments) * length - pad; // frame of row 0
-            const Eigen::Index from = std::clamp<Eigen::Index>(-first, 0, rows);
-            const Eigen::Index to = std::clamp<Eigen::Index>(frames - first, from, rows);
-            double* target = x.data() + l;
-            for (Eigen::Index r = from; r < to; ++r) target[r * Eigen::Index(kLanes)] = series[first + r];
-        }
         for (Eigen::Index t0 = 0; t0 < length; t0 += Eigen::Index(kChunk)) {
             if (control.cancelled()) return makeError(ErrorCode::Cancelled, "cwt cancelled");
             const Eigen::Index count = std::min<Eigen::Index>(Eigen::Index(kChunk), length - t0);
+            // Row r of the chunk, lane l: channel c's frame k * length + t0 - pad + r (zero
+            // outside the take).
+            const Eigen::Index rows = count + span - 1;
+            std::fill(x.data(), x.data() + rows * Eigen::Index(kLanes), 0.0);
+            for (Eigen::Index l = 0; l < Eigen::Index(kLanes); ++l) {
+                const Eigen::Index lane = g * Eigen::Index(kLanes) + l;
+                if (lane >= lanes) break;
+                const double* series = input + (lane / segments) * frames;
+                const Eigen::Index first = (lane % segments) * length + t0 - pad; // frame of row 0
+                const Eigen::Index from = std::clamp<Eigen::Index>(-first, 0, rows);
+                const Eigen::Index to = std::clamp<Eigen::Index>(frames - first, from, rows);
+                double* target = x.data() + l;
+                for (Eigen::Index r = from; r < to; ++r) target[r * Eigen::Index(kLanes)] = series[first + r];
+            }
             for (Eigen::Index s = 0; s < scales; ++s) {
                 const ScaleSetup& one = setup[std::size_t(s)];
-                convolveLanes({x.data() + (t0 + one.delay) * Eigen::Index(kLanes), one.weights, one.taps, one.factor,
+                convolveLanes({x.data() + one.delay * Eigen::Index(kLanes), one.weights, one.taps, one.factor,
                                std::size_t(count), scratch.data()},
                               level);
                 double* targets[kLanes] = {};
