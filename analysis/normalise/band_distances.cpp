@@ -129,11 +129,18 @@ void bandDistancesWith(BandKernel kernel, const BandTile& tile)
     }
 }
 
-void bandDistances(const BandTile& tile)
+BandKernel currentBandKernel()
 {
-    const SimdLevel level = simdLevel();
-    bandDistancesWith(level == SimdLevel::Avx512 ? BandKernel::Avx512 : level == SimdLevel::Avx2 ? BandKernel::Avx2 : BandKernel::Plain, tile);
+#ifdef BUNRAKU_BAND_SIMD
+#ifndef BUNRAKU_NO_AVX512
+    if (simdLevel() >= SimdLevel::Avx512) return BandKernel::Avx512;
+#endif
+    if (simdLevel() >= SimdLevel::Avx2) return BandKernel::Avx2;
+#endif
+    return BandKernel::Plain;
 }
+
+void bandDistances(const BandTile& tile) { bandDistancesWith(currentBandKernel(), tile); }
 
 const char* bandKernelName(BandKernel kernel)
 {

@@ -51,4 +51,7 @@ void bandDistancesWith(BandKernel kernel, const BandTile& tile);
 /// The kernel's name: "plain", "avx2" or "avx512".
 const char* bandKernelName(BandKernel kernel);
 
+/// The kernel bandDistances runs at the current level (simdLevel()).
+BandKernel currentBandKernel();
+
 } // namespace bunraku::analysis::detail

@@ -230,6 +230,15 @@ bool avx2() { return simdLevel() >= SimdLevel::Avx2; }
 
 } // namespace
 
+const char* scanKernelName(SimdLevel level)
+{
+#ifdef BUNRAKU_AVX2_KERNEL
+    if (level >= SimdLevel::Avx2) return "avx2";
+#endif
+    (void)level;
+    return "plain";
+}
+
 void windowStart(const double* const* rows, std::size_t length, std::size_t columns, double* running)
 {
 #ifdef BUNRAKU_AVX2_KERNEL

@@ -4,10 +4,16 @@
 /// (simdLevel(), analysis/wavelet/simd_level.h) and a plain one that gives the same results
 /// exactly (these loops only add, subtract and compare).
 
+#include "analysis/wavelet/simd_level.h"
+
 #include <cstddef>
 #include <cstdint>
 
 namespace bunraku::analysis::detail {
+
+/// The window sums' and dynamic programme's kernel at a level: "plain" or "avx2" (AVX-512 runs
+/// the AVX2 one).
+const char* scanKernelName(SimdLevel level);
 
 /// Window sums down the rows of e (each column is one diagonal of the band), one row at a time:
 /// windowStart sets running[o] = sum_{s = 0 .. length - 1} rows[s][o] for o < columns, adding

@@ -76,6 +76,25 @@ Result<CwtFilterBank> makeCwtFilterBank(const std::vector<double>& scales, const
     return bank;
 }
 
+namespace {
+
+// The FFT method: coefficient(t) = -sqrt(scale) (signal conv kernel)(t + offset + 1), overlap-save.
+Status fftTransform(detail::BlockConvolver& convolver, const Eigen::VectorXd& signal, const CwtFilterBank& bank,
+                    Eigen::Ref<Eigen::MatrixXd> out, const RunControl& control)
+{
+    std::vector<std::size_t> offsets;
+    std::vector<double> factors;
+    for (std::size_t s = 0; s < bank.scales.size(); ++s) {
+        offsets.push_back(std::size_t(detail::centralOffset(bank.kernels[s].size() - 1) + 1));
+        factors.push_back(-std::sqrt(bank.scales[s]));
+    }
+    if (!convolver.convolve(signal, offsets, factors, out, control.stop)) return makeError(ErrorCode::Cancelled, "cwt cancelled");
+    control.report(1.0);
+    return okStatus();
+}
+
+} // namespace
+
 Result<CwtResult> cwt(const Eigen::VectorXd& signal, const CwtFilterBank& bank, const RunControl& control)
 {
     const Eigen::Index n = signal.size();
@@ -86,20 +105,9 @@ Result<CwtResult> cwt(const Eigen::VectorXd& signal, const CwtFilterBank& bank, 
     result.scales = bank.scales;
     result.coefficients.resize(n, Eigen::Index(bank.scales.size()));
 
-    const bool useFft = resolvedCwtMethod(n, bank) == CwtMethod::Fft;
-    if (useFft) {
-        Eigen::Index longest = 0;
-        for (const auto& kernel : bank.kernels) longest = std::max(longest, kernel.size());
-        const std::size_t fftLength = detail::fastFftLength(std::size_t(n + longest - 1));
-        detail::FftConvolver convolver(signal, fftLength);
-        for (std::size_t s = 0; s < bank.scales.size(); ++s) {
-            if (control.cancelled()) return makeError(ErrorCode::Cancelled, "cwt cancelled");
-            const Eigen::VectorXd& kernel = bank.kernels[s];
-            const Eigen::Index offset = detail::centralOffset(kernel.size() - 1) + 1;
-            result.coefficients.col(Eigen::Index(s)) =
-                -std::sqrt(bank.scales[s]) * convolver.convolve(kernel, std::size_t(offset), std::size_t(n));
-            control.report(double(s + 1) / double(bank.scales.size()));
-        }
+    if (resolvedCwtMethod(n, bank) == CwtMethod::Fft) {
+        detail::BlockConvolver convolver(bank.kernels);
+        if (auto status = fftTransform(convolver, signal, bank, result.coefficients, control); !status) return status.error();
         return result;
     }
     const detail::CoefficientLayout layout{result.coefficients.data(), 1, 0, n};
@@ -121,10 +129,11 @@ Status transformChannels(const Eigen::MatrixXd& input, const CwtFilterBank& bank
     if (!input.allFinite()) return makeError(ErrorCode::InvalidArgument, "cwt: the signal contains NaN or infinity");
     out.resize(frames, channels * scales);
     if (resolvedCwtMethod(frames, bank) == CwtMethod::Fft) {
+        detail::BlockConvolver convolver(bank.kernels);
+        Eigen::MatrixXd one(frames, scales);
         for (Eigen::Index c = 0; c < channels; ++c) {
-            auto one = cwt(input.col(c), bank, RunControl{control.stop, {}});
-            if (!one) return one.error();
-            out.middleCols(c * scales, scales) = one->coefficients;
+            if (auto status = fftTransform(convolver, input.col(c), bank, one, RunControl{control.stop, {}}); !status) return status;
+            out.middleCols(c * scales, scales) = one;
             control.report(double(c + 1) / double(channels));
         }
         return okStatus();

@@ -18,7 +18,7 @@ namespace bunraku::analysis {
 enum class CwtMethod {
     Automatic, ///< Direct for short signals and filters, Fft otherwise
     Direct,    ///< time-domain convolution, O(N * filter length) per scale
-    Fft,       ///< FFTW3 convolution, O(N log N) per scale; agrees with Direct to 1e-9 relative
+    Fft,       ///< FFTW3 convolution by overlap-save, O(N log L) per scale; agrees with Direct to 1e-9 relative
 };
 
 struct CwtOptions {
