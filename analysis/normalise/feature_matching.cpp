@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -110,10 +111,12 @@ Result<MatchResult> matchBand(const Features& reference, const Features& sample,
     const Eigen::Index tileRows = std::min(kTileRows, roundUp(referenceFrames + 2 * tau, kBlock));
     const Eigen::Index referenceLength = tileRows;
     const Eigen::Index sampleLength = roundUp(tileRows + width + Eigen::Index(detail::kBandReadAhead), 4);
-    std::vector<double> a(std::size_t(referenceLength * features));
-    std::vector<double> aNorms(static_cast<std::size_t>(referenceLength));
-    std::vector<double> b(std::size_t(sampleLength * features));
-    std::vector<double> bNorms(static_cast<std::size_t>(sampleLength));
+    // (Left uninitialised: every entry the kernels read is copied in first, and tiles read in
+    // place never touch the copies.)
+    const std::unique_ptr<double[]> a(new double[std::size_t(referenceLength * features)]);
+    const std::unique_ptr<double[]> aNorms(new double[std::size_t(referenceLength)]);
+    const std::unique_ptr<double[]> b(new double[std::size_t(sampleLength * features)]);
+    const std::unique_ptr<double[]> bNorms(new double[std::size_t(sampleLength)]);
     // Distance rows -tau .. referenceFrames - 1 + tau; row i in slot (i + tau) mod ringRows. Row
     // t's window slides in row t + tau and out row t - tau - 1, while the block just computed
     // holds up to kBlock rows past t + tau.
@@ -129,8 +132,8 @@ Result<MatchResult> matchBand(const Features& reference, const Features& sample,
     Eigen::Index tileStart = 0;
     Eigen::Index tileEnd = -tau; // rows tileStart .. tileEnd - 1 are in the copies
     const bool inPlace = consecutiveSeries<Features>(columns);
-    const double* aBase = a.data();
-    const double* bBase = b.data();
+    const double* aBase = a.get();
+    const double* bBase = b.get();
     Eigen::Index aStride = referenceLength;
     Eigen::Index bStride = sampleLength;
     Eigen::Index t = 0;          // the next reference frame to add to the path
@@ -148,14 +151,14 @@ Result<MatchResult> matchBand(const Features& reference, const Features& sample,
                 aStride = referenceFrames;
                 bBase = sample.data() + columns[0] * sampleFrames + sampleFrom;
                 bStride = sampleFrames;
-                squaredNorms(aBase, aStride, features, 0, tileEnd - tileStart, aNorms.data());
-                squaredNorms(bBase, bStride, features, 0, sampleCount, bNorms.data());
+                squaredNorms(aBase, aStride, features, 0, tileEnd - tileStart, aNorms.get());
+                squaredNorms(bBase, bStride, features, 0, sampleCount, bNorms.get());
             } else {
-                featureMajor(reference, columns, tileStart, 0, tileEnd - tileStart, referenceLength, a.data(), aNorms.data());
-                featureMajor(sample, columns, sampleFrom, 0, sampleCount, sampleLength, b.data(), bNorms.data());
-                aBase = a.data();
+                featureMajor(reference, columns, tileStart, 0, tileEnd - tileStart, referenceLength, a.get(), aNorms.get());
+                featureMajor(sample, columns, sampleFrom, 0, sampleCount, sampleLength, b.get(), bNorms.get());
+                aBase = a.get();
                 aStride = referenceLength;
-                bBase = b.data();
+                bBase = b.get();
                 bStride = sampleLength;
             }
         }
@@ -163,10 +166,10 @@ Result<MatchResult> matchBand(const Features& reference, const Features& sample,
         detail::BandTile tile;
         tile.a = aBase + offset;
         tile.aStride = std::size_t(aStride);
-        tile.aNorms = aNorms.data() + offset;
+        tile.aNorms = aNorms.get() + offset;
         tile.b = bBase + offset;
         tile.bStride = std::size_t(bStride);
-        tile.bNorms = bNorms.data() + offset;
+        tile.bNorms = bNorms.get() + offset;
         tile.features = std::size_t(features);
         tile.count = std::size_t(count);
         tile.width = std::size_t(width);
