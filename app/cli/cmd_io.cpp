@@ -1,11 +1,12 @@
 // Subcommands: info, convert, preprocess.
 #include "app/cli/commands.h"
+#include "app/cli/output_guard.h"
 
 #include "analysis/core/puppet_layout.h"
-#include "analysis/io/atomic_file.h"
 #include "analysis/io/bvh.h"
 #include "analysis/io/corpus_io.h"
 #include "analysis/io/take_reader.h"
+#include "analysis/io/text_format.h"
 #include "analysis/preprocess/preprocess.h"
 #include "analysis/synth/demo_corpus_io.h"
 
@@ -15,6 +16,7 @@
 #include <iostream>
 #include <limits>
 #include <memory>
+#include <optional>
 
 namespace bunraku::app::cli {
 namespace {
@@ -34,7 +36,7 @@ struct ImportArguments {
     std::string upAxis = "auto";
     std::string units = "cm";
     bool allJoints = false;
-    double rateHz = 0.0;
+    std::optional<double> rateHz;
     std::string fastrakUnits = "cm";
 };
 
@@ -58,7 +60,7 @@ void addImportOptions(CLI::App* command, ImportArguments& arguments)
         ->capture_default_str();
 }
 
-io::ImportOptions importOptions(const ImportArguments& arguments)
+io::ImportOptions importOptions(const ImportArguments& arguments, const std::string& path)
 {
     io::ImportOptions options;
     io::JointMap map;
@@ -69,10 +71,11 @@ io::ImportOptions importOptions(const ImportArguments& arguments)
     options.bvh.upAxis = arguments.upAxis == "y" ? io::BvhUpAxis::Y : arguments.upAxis == "z" ? io::BvhUpAxis::Z : io::BvhUpAxis::Auto;
     options.bvh.unitScale = arguments.units == "m" ? 100.0 : arguments.units == "mm" ? 0.1 : arguments.units == "in" ? 2.54 : 1.0;
     options.bvhLayout = arguments.allJoints ? io::BvhTakeLayout::AllJoints : io::BvhTakeLayout::PuppetParts;
-    if (arguments.rateHz != 0.0) {
-        if (!(arguments.rateHz > 0.0)) throw CliError("--rate must be a positive number of Hz");
-        options.csv.rateHz = arguments.rateHz;
-        options.fastrak.rateHz = arguments.rateHz;
+    if (arguments.rateHz) {
+        if (!analysis::plausibleRate(*arguments.rateHz))
+            throw CliError(path + ": --rate " + io::shortestNumber(*arguments.rateHz) + ": " + analysis::rateExpectation());
+        options.csv.rateHz = *arguments.rateHz;
+        options.fastrak.rateHz = *arguments.rateHz;
     }
     options.fastrak.units = arguments.fastrakUnits == "in" ? io::FastrakUnits::Inches : io::FastrakUnits::Centimetres;
     return options;
@@ -100,7 +103,7 @@ Loaded load(const std::string& pathText, const ImportArguments& arguments)
     }
     if (!fs::exists(path, ec)) throw CliError(path.string() + ": no such file or folder");
     const auto format = io::takeFileFormat(path);
-    Take take = unwrap(io::readTakeFile(path, importOptions(arguments)));
+    Take take = unwrap(io::readTakeFile(path, importOptions(arguments, pathText)));
     loaded.format = format == io::TakeFileFormat::Csv ? "csv" : format == io::TakeFileFormat::Bvh ? "bvh" : "fastrak";
     if (format == io::TakeFileFormat::Bvh) loaded.bvh = std::make_unique<io::BvhFile>(unwrap(io::readBvh(path)));
     loaded.corpus.name = path.stem().string();
@@ -235,6 +238,8 @@ struct ConvertArguments {
 
 void runConvert(const ConvertArguments& arguments)
 {
+    refuseOutputOverInputs(arguments.output, fs::is_directory(arguments.input) ? OutputKind::Folder : OutputKind::File,
+                           {arguments.input});
     const Loaded loaded = load(arguments.input, arguments.import);
     const fs::path output = arguments.output;
     std::string written;
@@ -280,58 +285,10 @@ struct PreprocessArguments {
     bool json = false;
 };
 
-/// A synthetic corpus's ground truth (DIR/truth) describes the preprocessed takes too (their
-/// cells and functions are unchanged), so it goes beside the output. It is staged in a
-/// temporary folder before the corpus is written (the output may replace the input folder) and
-/// renamed into place after; the stage is removed on any failure.
-class GroundTruthCopy {
-public:
-    GroundTruthCopy(const fs::path& input, const fs::path& output)
-    {
-        const fs::path source = synth::groundTruthFolder(input);
-        std::error_code ec;
-        if (!fs::is_regular_file(source / "truth.json", ec)) return;
-        const fs::path parent = fs::absolute(output, ec).lexically_normal().parent_path();
-        m_stage = parent / io::temporarySiblingName("truth", ".tmp-");
-        fs::create_directories(parent, ec);
-        if (!ec) fs::copy(source, m_stage, fs::copy_options::recursive, ec);
-        if (ec) fail(source.string() + ": cannot copy the ground truth: " + ec.message());
-    }
-    ~GroundTruthCopy()
-    {
-        std::error_code ignored;
-        if (!m_stage.empty()) fs::remove_all(m_stage, ignored);
-    }
-    GroundTruthCopy(const GroundTruthCopy&) = delete;
-    GroundTruthCopy& operator=(const GroundTruthCopy&) = delete;
-
-    /// Moves the staged copy into the written corpus; false when there was no ground truth.
-    bool place(const fs::path& output)
-    {
-        if (m_stage.empty()) return false;
-        std::error_code ec;
-        const fs::path target = synth::groundTruthFolder(output);
-        fs::rename(m_stage, target, ec);
-        if (ec) fail(target.string() + ": cannot place the ground truth: " + ec.message());
-        m_stage.clear();
-        return true;
-    }
-
-private:
-    [[noreturn]] void fail(const std::string& message)
-    {
-        std::error_code ignored;
-        fs::remove_all(m_stage, ignored);
-        m_stage.clear();
-        throw CliError(message);
-    }
-
-    fs::path m_stage;
-};
-
 void runPreprocess(const PreprocessArguments& arguments)
 {
     if (!io::isCorpusFolder(arguments.input)) throw CliError(arguments.input + ": not a corpus folder (no corpus.json)");
+    refuseOutputOverInputs(arguments.output, OutputKind::Folder, {arguments.input});
     const Corpus corpus = unwrap(io::readCorpus(arguments.input));
     pre::PreprocessOptions options;
     options.pad = !arguments.noPad;
@@ -345,9 +302,9 @@ void runPreprocess(const PreprocessArguments& arguments)
     options.maxShiftFrames = arguments.maxShift;
     options.onsetFraction = arguments.onsetFraction;
     auto result = unwrap(pre::preprocessCorpus(corpus, options));
-    GroundTruthCopy truth(arguments.input, arguments.output);
-    unwrap(io::writeCorpus(result.corpus, arguments.output));
-    const bool truthCopied = truth.place(arguments.output);
+    // A synthetic corpus's ground truth (DIR/truth) describes the preprocessed takes too (their
+    // cells and functions are unchanged): it is copied into the output in the same staged write.
+    const bool truthCopied = unwrap(synth::writeCorpusKeepingTruth(result.corpus, arguments.output, arguments.input));
 
     const auto& report = result.report;
     Eigen::Index frames = 0;
