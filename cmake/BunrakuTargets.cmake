@@ -10,6 +10,11 @@ function(bunraku_configure_target target)
     target_compile_options(${target} PRIVATE -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all)
     target_link_options(${target} PRIVATE -fsanitize=address,undefined)
   endif()
+  if(BUNRAKU_FUZZ) # coverage for libFuzzer, and the sanitizers that turn bugs into findings
+    target_compile_options(${target} PRIVATE -fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer
+                                             -fno-sanitize-recover=all)
+    target_link_options(${target} PRIVATE -fsanitize=address,undefined)
+  endif()
 endfunction()
 
 # bunraku_analysis_module(NAME SOURCES a.cpp ... [DEPENDS bunraku_analysis_core ...])
@@ -43,5 +48,7 @@ function(bunraku_add_test name)
     BUNRAKU_SHARED_DIR="${BUNRAKU_SHARED_DIR}"
     BUNRAKU_BINARY_DIR="${CMAKE_BINARY_DIR}")
   bunraku_configure_target(${name})
-  catch_discover_tests(${name} TEST_PREFIX "${name}: " PROPERTIES TIMEOUT 600)
+  # A case whose peer is missing prints "bunraku-test: skipped:" (tests/support/peer.h): ctest
+  # reports it as skipped, not passed (under CI=true it fails instead).
+  catch_discover_tests(${name} TEST_PREFIX "${name}: " PROPERTIES TIMEOUT 600 SKIP_REGULAR_EXPRESSION "bunraku-test: skipped:")
 endfunction()
