@@ -2,17 +2,8 @@
 
 #include <QCoreApplication>
 
-#include <chrono>
 
 namespace bunraku::app {
-namespace {
-
-qint64 steadyMilliseconds()
-{
-    return std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
-} // namespace
 
 ChangeParameter::ChangeParameter(Document* document, QString key, QVariant value, const QString& text)
     : m_document(document),
@@ -32,7 +23,7 @@ void ChangeParameter::setStep(const QString& control)
 {
     m_stepControl = control;
     m_stepSeries = m_document->stepSeries();
-    m_stepMilliseconds = steadyMilliseconds();
+    m_stepMilliseconds = m_document->clock().milliseconds();
 }
 
 bool ChangeParameter::mergeWith(const QUndoCommand* other)
@@ -68,8 +59,9 @@ void ChangeParameters::undo()
     for (auto it = m_before.begin(); it != m_before.end(); ++it) m_document->applyParameter(it.key(), it.value());
 }
 
-ImportTake::ImportTake(Document* document, TakePointer take, const QString& label, const QString& sourcePath)
-    : m_document(document), m_take{document->nextImportedId(), label, std::move(take), sourcePath, QString()}
+ImportTake::ImportTake(Document* document, TakePointer take, const QString& label, const QString& sourcePath,
+                       std::shared_ptr<const analysis::io::ImportOptions> options)
+    : m_document(document), m_take{document->nextImportedId(), label, std::move(take), sourcePath, QString(), std::move(options)}
 {
     setText(QCoreApplication::translate("commands", "Import %1").arg(label));
 }

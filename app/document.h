@@ -7,6 +7,7 @@
 /// app/commands.h, which emit the typed change signals below. View state (selection, time)
 /// and derived results are set directly and are never on the undo stack.
 
+#include "widgets/clock.h"
 #include "widgets/corpus_browser.h"
 
 #include "analysis/core/corpus.h"
@@ -22,6 +23,10 @@
 #include <memory>
 #include <vector>
 
+namespace bunraku::analysis::io {
+struct ImportOptions;
+}
+
 namespace bunraku::app {
 
 using widgets::TakeSlot;
@@ -34,6 +39,8 @@ struct DerivedTake {
     TakePointer take;
     QString sourcePath; ///< imported takes: the file; empty for live results
     QString ghostId;    ///< live results: the take drawn faintly behind it (its original)
+    /// imported takes: the options they were read with (stored in projects); null for defaults
+    std::shared_ptr<const analysis::io::ImportOptions> importOptions;
 };
 
 class Document : public QObject {
@@ -105,6 +112,9 @@ public:
     void endStepSeries() { ++m_stepSeries; }
     /// The current step series, increased by endStepSeries().
     int stepSeries() const { return m_stepSeries; }
+    /// The clock that times step series (the steady clock unless a test injects one).
+    widgets::Clock& clock() const { return *m_clock; }
+    void setClock(widgets::Clock* clock) { m_clock = clock ? clock : &widgets::steadyClock(); }
 
     // --- mutators for commands only (app/commands.cpp) ---
     void applyParameter(const QString& key, const QVariant& value);
@@ -139,6 +149,7 @@ private:
     int m_interactionSerial = 0;
     int m_stepSeries = 0;
     int m_importSerial = 0;
+    widgets::Clock* m_clock = &widgets::steadyClock();
 };
 
 } // namespace bunraku::app

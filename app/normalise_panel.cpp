@@ -145,7 +145,7 @@ NormalisePanel::NormalisePanel(Document& document, QWidget* parent) : QWidget(pa
                 for (const auto& take : cell.takes) takes.push_back(take.get());
                 int referenceIndex = int(cell.ids.indexOf(referenceId));
                 if (referenceIndex < 0) {
-                    auto suggestion = analysis::suggestReference(takes);
+                    auto suggestion = analysis::suggestReference(takes, control);
                     if (!suggestion) return {{}, QString::fromStdString(suggestion.error().message)};
                     referenceIndex = suggestion->takeIndex;
                 }

@@ -2,11 +2,15 @@
 
 #include "app/parameters.h"
 
-#include <QFile>
+#include "analysis/io/atomic_file.h"
+#include "analysis/io/import_options_json.h"
+
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QSaveFile>
+
+#include <filesystem>
+#include <string_view>
 
 namespace bunraku::app {
 namespace {
@@ -29,7 +33,10 @@ analysis::Status writeProject(const ProjectState& state, const QString& file)
     root["version"] = kProjectFormatVersion;
     root["corpus"] = state.corpus;
     QJsonArray imported;
-    for (const auto& recipe : state.imported) imported.append(QJsonObject{{"path", recipe.path}, {"label", recipe.label}});
+    for (const auto& recipe : state.imported) {
+        const QByteArray options = QByteArray::fromStdString(analysis::io::importOptionsToJson(recipe.options).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
+        imported.append(QJsonObject{{"path", recipe.path}, {"label", recipe.label}, {"options", QJsonDocument::fromJson(options).object()}});
+    }
     root["imported"] = imported;
     root["parameters"] = QJsonObject::fromVariantMap(state.parameters);
     root["takeA"] = state.takeA;
@@ -37,21 +44,21 @@ analysis::Status writeProject(const ProjectState& state, const QString& file)
     root["time_s"] = state.timeSeconds;
     root["view"] = QJsonObject::fromVariantMap(state.view);
 
-    QSaveFile out(file);
-    if (!out.open(QIODevice::WriteOnly))
-        return makeError(ErrorCode::Io, file.toStdString() + ": cannot write: " + out.errorString().toStdString());
-    out.write(QJsonDocument(root).toJson(QJsonDocument::Indented));
-    if (!out.commit())
-        return makeError(ErrorCode::Io, file.toStdString() + ": cannot write: " + out.errorString().toStdString());
-    return analysis::okStatus();
+    const QByteArray text = QJsonDocument(root).toJson(QJsonDocument::Indented);
+    return analysis::io::writeFileAtomically(std::filesystem::path(file.toStdString()),
+                                             std::string_view(text.constData(), std::size_t(text.size())));
 }
 
 analysis::Result<ProjectState> readProject(const QString& file)
 {
-    const std::string name = file.toStdString();
-    QFile in(file);
-    if (!in.open(QIODevice::ReadOnly)) return makeError(ErrorCode::Io, name + ": cannot open: " + in.errorString().toStdString());
-    const QByteArray text = in.readAll();
+    auto text = analysis::io::readTextFile(std::filesystem::path(file.toStdString()), analysis::io::kDocumentLimitBytes);
+    if (!text) return text.error();
+    return parseProject(QByteArray::fromStdString(*text), file);
+}
+
+analysis::Result<ProjectState> parseProject(const QByteArray& text, const QString& sourceName)
+{
+    const std::string name = sourceName.toStdString();
     QJsonParseError error;
     const QJsonDocument document = QJsonDocument::fromJson(text, &error);
     if (error.error != QJsonParseError::NoError)
@@ -67,10 +74,20 @@ analysis::Result<ProjectState> readProject(const QString& file)
 
     ProjectState state;
     state.corpus = root["corpus"].toString();
-    for (const auto& value : root["imported"].toArray()) {
-        const QJsonObject recipe = value.toObject();
+    const QJsonArray imported = root["imported"].toArray();
+    for (qsizetype i = 0; i < imported.size(); ++i) {
+        const QJsonObject recipe = imported[i].toObject();
         if (!recipe["path"].isString()) return parseError(name, 0, "expected \"path\" in every \"imported\" entry");
-        state.imported.push_back({recipe["path"].toString(), recipe["label"].toString()});
+        ImportedTakeRecipe item{recipe["path"].toString(), recipe["label"].toString(), {}};
+        if (recipe.contains("options")) {
+            const QByteArray options = QJsonDocument(recipe["options"].toObject()).toJson(QJsonDocument::Compact);
+            const nlohmann::json parsed = nlohmann::json::parse(options.toStdString(), nullptr, false);
+            auto read = analysis::io::importOptionsFromJson(parsed, name + ": imported[" + std::to_string(i) + "].options");
+            if (!recipe["options"].isObject() || !read)
+                return read ? parseError(name, 0, "imported[" + std::to_string(i) + "].options: expected an object") : read.error();
+            item.options = std::move(read).value();
+        }
+        state.imported.push_back(std::move(item));
     }
     const QVariantMap stored = root["parameters"].toObject().toVariantMap();
     for (auto it = stored.begin(); it != stored.end(); ++it) {

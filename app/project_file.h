@@ -1,14 +1,18 @@
 #pragma once
 /// The project file (JSON, "bunraku-project" version 1): the corpus reference, the recipes of
 /// derived takes (imported files), the undoable parameters (edits) and the view state. Live
-/// results are not stored: they are recomputed from the parameters. Saves are atomic (QSaveFile).
+/// results are not stored: they are recomputed from the parameters. Saves are atomic and durable
+/// (analysis/io/atomic_file.h); reading refuses anything but a regular file of at most
+/// io::kDocumentLimitBytes.
 ///
 /// {"format": "bunraku-project", "version": 1, "corpus": "demo" | "/abs/folder",
-///  "imported": [{"path": ..., "label": ...}], "parameters": {key: value},
+///  "imported": [{"path": ..., "label": ..., "options": {import options}}], "parameters": {key: value},
 ///  "takeA": id, "takeB": id, "time_s": t, "view": {...}}
 
 #include "analysis/core/result.h"
+#include "analysis/io/take_reader.h"
 
+#include <QByteArray>
 #include <QString>
 #include <QVariantMap>
 #include <QVector>
@@ -18,6 +22,9 @@ namespace bunraku::app {
 struct ImportedTakeRecipe {
     QString path;
     QString label;
+    /// What the take was imported with (analysis/io/import_options_json.h); the defaults for
+    /// projects written before options were stored.
+    analysis::io::ImportOptions options;
 };
 
 struct ProjectState {
@@ -39,5 +46,7 @@ inline constexpr const char* kProjectSuffix = ".bunraku.json";
 analysis::Status writeProject(const ProjectState& state, const QString& file);
 /// Reads a project; Parse errors name the file, the line and what was expected.
 analysis::Result<ProjectState> readProject(const QString& file);
+/// Parses project text; errors name `sourceName`.
+analysis::Result<ProjectState> parseProject(const QByteArray& text, const QString& sourceName);
 
 } // namespace bunraku::app

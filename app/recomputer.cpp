@@ -20,12 +20,11 @@ Recomputer::Recomputer(Document& document, std::function<Job()> snapshot, std::f
 
 Recomputer::~Recomputer()
 {
-    // Running jobs hold copies of their inputs only; cancel them and wait so none outlives us.
+    // Running jobs hold copies of their inputs only (never this object): they are told to stop
+    // and left to end at their next cancellation check, unwaited for, so closing a panel or the
+    // window never blocks on a long job. Their results go nowhere: the watchers go with us.
     m_stop.request_stop();
-    for (auto* watcher : findChildren<QFutureWatcher<JobOutput>*>()) {
-        watcher->disconnect(this);
-        watcher->waitForFinished();
-    }
+    for (auto* watcher : findChildren<QFutureWatcher<JobOutput>*>()) watcher->disconnect(this);
 }
 
 void Recomputer::schedule()

@@ -40,6 +40,8 @@ public:
     /// is dropped and the work rescheduled.
     Recomputer(Document& document, std::function<Job()> snapshot, std::function<void(const JobOutput&)> consume,
                QObject* parent = nullptr, int delayMs = 40, std::function<quint64()> version = {});
+    /// Stops running jobs (their stop token) without waiting for them: a job ends at its next
+    /// cancellation check, on its own, and its result is dropped.
     ~Recomputer() override;
 
     /// Asks for a recomputation after the coalescing delay (restarts the delay).

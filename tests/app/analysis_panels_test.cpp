@@ -152,6 +152,8 @@ TEST_CASE("steps of tau, T_cmp and the emotion weight slider merge per control",
     auto window = test::demoWindow();
     REQUIRE(window);
     auto& document = window->document();
+    widgets::ManualClock clock; // the key presses follow each other at once however slow the machine is
+    document.setClock(&clock);
     auto* tau = window->normalisePanel()->tauSpin();
     auto* band = window->normalisePanel()->searchBandSpin();
     for (int step = 0; step < 3; ++step) QTest::keyClick(tau, Qt::Key_Up);

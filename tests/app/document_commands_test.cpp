@@ -125,7 +125,9 @@ TEST_CASE("the current time is clamped to the shown takes and live takes are not
 
 TEST_CASE("consecutive steps of one control are one undo step until the control loses the focus", "[app][commands]")
 {
+    widgets::ManualClock clock; // steps follow each other at once however slow the machine is
     Document document;
+    document.setClock(&clock);
     document.setCorpus(smallCorpus(), "synthetic");
     for (int tau = 5; tau <= 9; ++tau) REQUIRE(stepParameter(document, parameters::kNormaliseTau, tau));
     REQUIRE(document.undoStack()->count() == 1);
@@ -164,6 +166,16 @@ TEST_CASE("consecutive steps of one control are one undo step until the control 
     REQUIRE(document.undoStack()->count() == 7);
     document.undoStack()->undo();
     REQUIRE(document.parameter(parameters::kNormaliseTau).toInt() == 11);
+
+    // Steps further apart than kStepMergeMilliseconds are undone one by one.
+    document.undoStack()->clear();
+    stepParameter(document, parameters::kNormaliseTau, 20);
+    clock.advance(kStepMergeMilliseconds);
+    stepParameter(document, parameters::kNormaliseTau, 21);
+    REQUIRE(document.undoStack()->count() == 1); // within the window: merged
+    clock.advance(kStepMergeMilliseconds + 1);
+    stepParameter(document, parameters::kNormaliseTau, 22);
+    REQUIRE(document.undoStack()->count() == 2);
 }
 
 TEST_CASE("several parameters set together are one undo step", "[app][commands]")

@@ -4,9 +4,11 @@
 #include <catch2/catch.hpp>
 
 #include <QTest>
+#include <QThreadPool>
 
 #include <atomic>
 #include <chrono>
+#include <memory>
 #include <thread>
 
 using namespace bunraku;
@@ -113,4 +115,31 @@ TEST_CASE("cancel stops the running job and delivers nothing", "[app][recomputer
     QTest::qWait(50);
     REQUIRE(deliveries == 0);
     REQUIRE(recomputer.state() == Recomputer::State::Cancelled);
+}
+
+TEST_CASE("destroying a recomputer does not wait for a job that ignores cancellation", "[app][recomputer]")
+{
+    Document document;
+    // Shared with the job, which outlives the recomputer (it holds copies of its inputs only).
+    auto started = std::make_shared<std::atomic<bool>>(false);
+    auto release = std::make_shared<std::atomic<bool>>(false);
+    auto finished = std::make_shared<std::atomic<bool>>(false);
+    auto recomputer = std::make_unique<Recomputer>(
+        document,
+        [=]() -> Job {
+            return [=](const analysis::RunControl&) { // a long analysis step with no cancellation check
+                *started = true;
+                for (int i = 0; i < 20000 && !*release; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+                *finished = true;
+                return JobOutput{};
+            };
+        },
+        [](const JobOutput&) {}, nullptr, 10);
+    recomputer->runNow();
+    REQUIRE(QTest::qWaitFor([&] { return started->load(); }, 5000));
+    recomputer.reset(); // a panel or the window closing
+    CHECK_FALSE(finished->load()); // returned at once, while the job still runs
+    *release = true;
+    REQUIRE(QThreadPool::globalInstance()->waitForDone(20000));
+    CHECK(finished->load());
 }
