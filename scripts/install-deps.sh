@@ -12,6 +12,7 @@ packages=(
   libfftw3-dev libassimp-dev libbenchmark-dev
   xvfb xauth libgl1-mesa-dri libglx-mesa0 libegl-mesa0 mesa-utils
   fonts-dejavu-core ffmpeg
+  clang-14 libfuzzer-14-dev
   python3 python3-numpy python3-pywt python3-statsmodels
 )
 
