@@ -1,5 +1,6 @@
 #include "app/autosave_session.h"
 
+#include "app/document.h"
 #include "app/project_file.h"
 
 #include <QCoreApplication>
@@ -102,7 +103,16 @@ QString describeProjectFile(const QString& file)
                                                                    : QObject::tr("corpus %1").arg(state->corpus);
     QStringList parts{corpus};
     if (!state->imported.isEmpty()) parts << QObject::tr("%n imported take(s)", nullptr, int(state->imported.size()));
-    if (!state->parameters.isEmpty()) parts << QObject::tr("%n edited parameter(s)", nullptr, int(state->parameters.size()));
+    // Which parts of the analysis were edited (against the thesis's defaults).
+    const int sections = changedSections(state->parameters, AnalysisParameters{});
+    const std::pair<int, const char*> names[] = {
+        {kPreprocessSection, "preprocessing"}, {kNormaliseSection, "normalisation"}, {kDecomposeSection, "decomposition"},
+        {kFluctuationSection, "fluctuations"}, {kAxisSection, "motion axis"},     {kWeightSection, "emotion weight"},
+        {kWarpSection, "warp"},                {kGainSection, "gains"},           {kBoundarySection, "phrase boundaries"}};
+    QStringList edited;
+    for (const auto& [section, name] : names)
+        if (sections & section) edited << QObject::tr(name);
+    if (!edited.isEmpty()) parts << QObject::tr("edited %1").arg(edited.join(QStringLiteral(", ")));
     return parts.join(QStringLiteral(", "));
 }
 

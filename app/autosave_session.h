@@ -19,7 +19,7 @@ namespace bunraku::app {
 struct OrphanedAutosave {
     QString path;
     QDateTime saved;  ///< when it was last written
-    QString summary;  ///< what it holds, for a person: corpus, imported takes, edited parameters
+    QString summary;  ///< what it holds, for a person: corpus, imported takes, edited analysis parts
 };
 
 class AutosaveSession {
@@ -52,8 +52,8 @@ private:
     std::unique_ptr<QLockFile> m_lock;
 };
 
-/// "demo corpus, 2 imported takes, 3 edited parameters" for a project file, or why it cannot be
-/// read.
+/// "demo corpus, 2 imported take(s), edited normalisation, gains" for a project file, or why it
+/// cannot be read.
 QString describeProjectFile(const QString& file);
 
 } // namespace bunraku::app

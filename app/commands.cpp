@@ -2,61 +2,77 @@
 
 #include <QCoreApplication>
 
-
 namespace bunraku::app {
 
-ChangeParameter::ChangeParameter(Document* document, QString key, QVariant value, const QString& text)
+ParameterCommand::ParameterCommand(Document* document, AnalysisParameters after, const QString& text, int id, int merging)
     : m_document(document),
-      m_key(std::move(key)),
-      m_before(document->parameter(m_key)),
-      m_after(std::move(value)),
+      m_before(document->parameters()),
+      m_after(std::move(after)),
+      m_id(id),
+      m_merging(merging),
       m_interaction(document->interactionId())
 {
-    setText(text.isEmpty() ? QCoreApplication::translate("commands", "Change %1").arg(m_key) : text);
+    setText(text);
 }
 
-void ChangeParameter::undo() { m_document->applyParameter(m_key, m_before); }
+void ParameterCommand::undo() { m_document->applyParameters(m_before); }
 
-void ChangeParameter::redo() { m_document->applyParameter(m_key, m_after); }
+void ParameterCommand::redo() { m_document->applyParameters(m_after); }
 
-void ChangeParameter::setStep(const QString& control)
+void ParameterCommand::setStep(const QString& control)
 {
     m_stepControl = control;
     m_stepSeries = m_document->stepSeries();
-    m_stepMilliseconds = m_document->clock().milliseconds();
+    m_stepMilliseconds = m_document->clockMilliseconds();
 }
 
-bool ChangeParameter::mergeWith(const QUndoCommand* other)
+bool ParameterCommand::mergeWith(const QUndoCommand* other)
 {
-    const auto* next = static_cast<const ChangeParameter*>(other);
-    if (next->m_key != m_key) return false;
-    const bool sameInteraction = m_interaction != 0 && next->m_interaction == m_interaction;
-    const bool sameSteps = m_interaction == 0 && next->m_interaction == 0 && !m_stepControl.isEmpty() &&
+    const auto* next = static_cast<const ParameterCommand*>(other);
+    const bool sameDrag = (m_merging & InDrag) && m_interaction != 0 && next->m_interaction == m_interaction;
+    const bool sameSteps = (m_merging & InSteps) && m_interaction == 0 && next->m_interaction == 0 && !m_stepControl.isEmpty() &&
                            next->m_stepControl == m_stepControl && next->m_stepSeries == m_stepSeries &&
                            next->m_stepMilliseconds >= m_stepMilliseconds &&
                            next->m_stepMilliseconds - m_stepMilliseconds <= kStepMergeMilliseconds;
-    if (!sameInteraction && !sameSteps) return false;
+    if (!sameDrag && !sameSteps) return false;
     m_after = next->m_after;
     m_stepMilliseconds = next->m_stepMilliseconds;
     setObsolete(m_after == m_before);
     return true;
 }
 
-ChangeParameters::ChangeParameters(Document* document, QVariantMap values, const QString& text)
-    : m_document(document), m_after(std::move(values))
+SetEmotionWeight::SetEmotionWeight(Document* document, AnalysisParameters after)
+    : ParameterCommand(document, std::move(after), QCoreApplication::translate("commands", "Set emotion weight"), kSetEmotionWeightId,
+                       InDrag | InSteps)
 {
-    for (auto it = m_after.begin(); it != m_after.end(); ++it) m_before.insert(it.key(), document->parameter(it.key()));
-    setText(text);
 }
 
-void ChangeParameters::redo()
+MoveWarpPoint::MoveWarpPoint(Document* document, AnalysisParameters after, const QString& text)
+    : ParameterCommand(document, std::move(after), text.isEmpty() ? QCoreApplication::translate("commands", "Move warp point") : text,
+                       kMoveWarpPointId, InDrag)
 {
-    for (auto it = m_after.begin(); it != m_after.end(); ++it) m_document->applyParameter(it.key(), it.value());
 }
 
-void ChangeParameters::undo()
+SetPhraseGain::SetPhraseGain(Document* document, AnalysisParameters after)
+    : ParameterCommand(document, std::move(after), QCoreApplication::translate("commands", "Set phrase gain"), kSetPhraseGainId,
+                       InDrag | InSteps)
 {
-    for (auto it = m_before.begin(); it != m_before.end(); ++it) m_document->applyParameter(it.key(), it.value());
+}
+
+MovePhraseBoundary::MovePhraseBoundary(Document* document, AnalysisParameters after)
+    : ParameterCommand(document, std::move(after), QCoreApplication::translate("commands", "Move phrase boundary"),
+                       kMovePhraseBoundaryId, InDrag)
+{
+}
+
+AddPhraseBoundary::AddPhraseBoundary(Document* document, AnalysisParameters after)
+    : ParameterCommand(document, std::move(after), QCoreApplication::translate("commands", "Add phrase boundary"), -1, Never)
+{
+}
+
+RemovePhraseBoundary::RemovePhraseBoundary(Document* document, AnalysisParameters after)
+    : ParameterCommand(document, std::move(after), QCoreApplication::translate("commands", "Remove phrase boundary"), -1, Never)
+{
 }
 
 ImportTake::ImportTake(Document* document, TakePointer take, const QString& label, const QString& sourcePath,
@@ -96,30 +112,37 @@ void RemoveImportedTake::undo()
     if (m_position >= 0) m_document->insertImportedTake(m_take, m_position);
 }
 
-bool changeParameter(Document& document, const QString& key, const QVariant& value, const QString& text)
+AnalysisParameters editedParameters(const Document& document, const std::function<void(AnalysisParameters&)>& edit)
 {
-    if (document.parameter(key) == value) return false;
-    document.undoStack()->push(new ChangeParameter(&document, key, value, text));
-    return true;
+    AnalysisParameters parameters = document.parameters();
+    edit(parameters);
+    return parameters;
 }
 
-bool stepParameter(Document& document, const QString& key, const QVariant& value, const QString& text, const QString& control)
+bool pushParameters(Document& document, ParameterCommand* command, const QString& step)
 {
-    if (document.parameter(key) == value) return false;
-    auto* command = new ChangeParameter(&document, key, value, text);
-    command->setStep(control.isEmpty() ? key : control);
+    if (command->after() == document.parameters()) {
+        delete command;
+        return false;
+    }
+    if (!step.isEmpty()) command->setStep(step);
     document.undoStack()->push(command);
     return true;
 }
 
-bool changeParameters(Document& document, const QVariantMap& values, const QString& text)
+bool changeStageParameters(Document& document, const std::function<void(AnalysisParameters&)>& edit, const QString& text,
+                           const QString& stepControl)
 {
-    QVariantMap changed;
-    for (auto it = values.begin(); it != values.end(); ++it)
-        if (document.parameter(it.key()) != it.value()) changed.insert(it.key(), it.value());
-    if (changed.isEmpty()) return false;
-    document.undoStack()->push(new ChangeParameters(&document, changed, text));
-    return true;
+    return pushParameters(document, new ChangeStageParameters(&document, editedParameters(document, edit), text), stepControl);
+}
+
+bool setEmotionWeight(Document& document, double weight)
+{
+    return pushParameters(document,
+                          new SetEmotionWeight(&document, editedParameters(document, [weight](AnalysisParameters& p) {
+                                                   p.design.emotionWeight = weight;
+                                               })),
+                          QStringLiteral("design.emotionWeight"));
 }
 
 } // namespace bunraku::app

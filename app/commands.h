@@ -1,66 +1,118 @@
 #pragma once
 /// The undo commands: the only mutators of the document's undoable state (Tiled's
-/// changevalue.h / changelayer.h). Verb-noun names; each emits the document's typed signals
-/// through the Document mutators.
+/// changevalue.h / changelayer.h). One class per verb-noun whose merging rule differs; each
+/// holds the typed parameters before and after and emits the document's typed signals.
+///
+/// Merging: inside a document interaction (Document::beginInteraction, a slider or curve drag)
+/// consecutive commands of one class merge into one undo step back to the value before the
+/// drag; outside one, a change marked as a step of a control (setStep: spin box arrows, keys,
+/// wheel) merges with the previous step of the same control when it came within
+/// kStepMergeMilliseconds (the document's clock) in the same step series
+/// (Document::endStepSeries, called when the control loses the focus). A drag that returns to
+/// its start becomes obsolete.
 
 #include "app/document.h"
 
 #include <QUndoCommand>
-#include <QVariant>
+
+#include <functional>
 
 namespace bunraku::app {
 
-/// Command ids for QUndoCommand::id() (merging).
-enum CommandId { kChangeParameterId = 1 };
+/// Command ids for QUndoCommand::id() (merging); -1: never merges.
+enum CommandId {
+    kChangeStageParametersId = 1,
+    kSetEmotionWeightId,
+    kMoveWarpPointId,
+    kSetPhraseGainId,
+    kMovePhraseBoundaryId,
+};
 
 /// Steps of one control merge while each comes within this many milliseconds of the previous.
 inline constexpr qint64 kStepMergeMilliseconds = 1000;
 
-/// Sets one parameter (generic change-value command). Pushed during a document interaction
-/// (Document::beginInteraction, e.g. a slider or curve drag), consecutive changes of the same
-/// key merge into one undo step that restores the value from before the drag. Outside an
-/// interaction, a change marked as a step of a control (setStep) merges with the previous step
-/// of the same control and key when it came within kStepMergeMilliseconds and in the same step
-/// series (Document::endStepSeries, called when the control loses the focus).
-class ChangeParameter : public QUndoCommand {
+/// Replaces the analysis parameters; the base of every parameter command.
+class ParameterCommand : public QUndoCommand {
 public:
-    ChangeParameter(Document* document, QString key, QVariant value, const QString& text = {});
-
-    /// Marks the change as one step of `control` (any name unique to the control; non-empty),
-    /// made now.
-    void setStep(const QString& control);
-
     void undo() override;
     void redo() override;
-    int id() const override { return kChangeParameterId; }
+    int id() const override { return m_id; }
     bool mergeWith(const QUndoCommand* other) override;
 
-    const QString& key() const { return m_key; }
+    /// Marks the change as one step of `control` (a name unique to the control), made now.
+    void setStep(const QString& control);
+    const AnalysisParameters& after() const { return m_after; }
+
+protected:
+    enum Merging { Never = 0, InDrag = 1, InSteps = 2 };
+    ParameterCommand(Document* document, AnalysisParameters after, const QString& text, int id, int merging);
 
 private:
     Document* m_document;
-    QString m_key;
-    QVariant m_before;
-    QVariant m_after;
+    AnalysisParameters m_before;
+    AnalysisParameters m_after;
+    int m_id;
+    int m_merging;
     int m_interaction;
     QString m_stepControl; ///< empty: not a step
     int m_stepSeries = 0;
-    qint64 m_stepMilliseconds = 0; ///< steady clock time of the latest merged step
+    qint64 m_stepMilliseconds = 0;
 };
 
-/// Sets several parameters as one undo step (phrase boundaries with the gains that follow them);
-/// redo applies them in key order, undo restores every value from before.
-class ChangeParameters : public QUndoCommand {
+/// A stage's parameters (tau, T_cmp, scales, coupling, path, reference, method, M...): steps of
+/// one control merge.
+class ChangeStageParameters : public ParameterCommand {
 public:
-    ChangeParameters(Document* document, QVariantMap values, const QString& text);
+    ChangeStageParameters(Document* document, AnalysisParameters after, const QString& text)
+        : ParameterCommand(document, std::move(after), text, kChangeStageParametersId, InSteps)
+    {
+    }
+};
 
-    void undo() override;
-    void redo() override;
+/// The emotion weight a (thesis eq. 4.45): a slider drag or its steps merge.
+class SetEmotionWeight : public ParameterCommand {
+public:
+    SetEmotionWeight(Document* document, AnalysisParameters after);
+};
 
-private:
-    Document* m_document;
-    QVariantMap m_before;
-    QVariantMap m_after;
+/// The design's warp curve (a control point dragged, added or removed): a drag merges.
+class MoveWarpPoint : public ParameterCommand {
+public:
+    MoveWarpPoint(Document* document, AnalysisParameters after, const QString& text = {});
+};
+
+/// One phrase gain (g0, g1): a slider drag or the steps of one cell's sliders merge.
+class SetPhraseGain : public ParameterCommand {
+public:
+    SetPhraseGain(Document* document, AnalysisParameters after);
+};
+
+/// A phrase boundary dragged: a drag merges.
+class MovePhraseBoundary : public ParameterCommand {
+public:
+    MovePhraseBoundary(Document* document, AnalysisParameters after);
+};
+
+/// A phrase boundary added with the gains that follow it: never merges.
+class AddPhraseBoundary : public ParameterCommand {
+public:
+    AddPhraseBoundary(Document* document, AnalysisParameters after);
+};
+
+/// A phrase boundary removed with the gains that follow it: never merges.
+class RemovePhraseBoundary : public ParameterCommand {
+public:
+    RemovePhraseBoundary(Document* document, AnalysisParameters after);
+};
+
+/// A design edit replaced at once (reset warp or gains or phrases, use the extracted gains or
+/// warp): never merges.
+class ReplaceDesignEdits : public ParameterCommand {
+public:
+    ReplaceDesignEdits(Document* document, AnalysisParameters after, const QString& text)
+        : ParameterCommand(document, std::move(after), text, -1, Never)
+    {
+    }
 };
 
 /// Adds a take read from a file under "Derived takes" and shows it as take A.
@@ -94,13 +146,17 @@ private:
     int m_position = -1;
 };
 
-/// Pushes ChangeParameter unless the value is unchanged. Returns true when pushed.
-bool changeParameter(Document& document, const QString& key, const QVariant& value, const QString& text = {});
-/// Pushes ChangeParameter marked as a step of `control` (default: the key), so consecutive
-/// spin box or slider steps become one undo step. Returns true when pushed.
-bool stepParameter(Document& document, const QString& key, const QVariant& value, const QString& text = {},
-                   const QString& control = {});
-/// Pushes ChangeParameters for the values that differ from the document's. Returns true when pushed.
-bool changeParameters(Document& document, const QVariantMap& values, const QString& text);
+/// The document's parameters with `edit` applied.
+AnalysisParameters editedParameters(const Document& document, const std::function<void(AnalysisParameters&)>& edit);
+
+/// Pushes `command` (taking ownership) unless its parameters equal the document's; `step`
+/// non-empty marks it as a step of that control. Returns true when pushed.
+bool pushParameters(Document& document, ParameterCommand* command, const QString& step = {});
+
+/// ChangeStageParameters with `edit` applied, as a step of `stepControl` when given.
+bool changeStageParameters(Document& document, const std::function<void(AnalysisParameters&)>& edit, const QString& text,
+                           const QString& stepControl = {});
+/// SetEmotionWeight (a step of the weight control outside a drag).
+bool setEmotionWeight(Document& document, double weight);
 
 } // namespace bunraku::app

@@ -1,37 +1,42 @@
 #pragma once
-/// Motion design (thesis 5.5) in the workbench: the functional take of take A's function is
-/// prepared once in the background (its motion axis, relative motion and phrase boundaries, and
-/// the phase and gains extracted from an emotional take of the same function); then every edit
-/// of the warp curve or a phrase gain re-synthesises the designed take at once (designMotion
-/// takes well under a millisecond) and publishes it as the live take "designed", with the
-/// functional take as its ghost. Edits go through ChangeParameter (design.warp, design.gains);
-/// a drag is one undo step. Phrase boundaries are added and removed one at a time, each one undo
+/// Motion design (thesis 5.5) in the workbench: the pipeline's motion-axis stage (run by the
+/// AnalysisController) prepares each function's functional take - the neutral cell's average
+/// take (3.7) - with its axis, relative motion and phrase boundaries, and extracts the phase and
+/// gains of every emotional cell. For take A's function (and take A's cell, or the function's
+/// first emotional cell) every edit of the warp curve or a phrase gain re-synthesises the
+/// designed take at once (pipeline::designFunction, well under a millisecond) and publishes it
+/// as the live take "designed" with the functional take ("functional") as its ghost. Edits are
+/// the typed undo commands MoveWarpPoint, SetPhraseGain, MovePhraseBoundary, AddPhraseBoundary,
+/// RemovePhraseBoundary and ReplaceDesignEdits; a drag is one undo step. Phrase boundaries are added and removed one at a time, each one undo
 /// step together with the gain edits that follow the new phrase structure (a split phrase's
 /// gains are copied to both halves; two merged phrases keep the gains of the longer one, the
 /// left one on a tie). The extracted gains follow the boundaries in use: the extraction's
 /// phase is kept and the gains are re-extracted per phrase (extractGainsForBoundaries, a few
 /// microseconds for the demo takes, so on the GUI thread and cached).
 ///
-/// design.boundaries holds the inner boundaries (functional frames); the structure with no
-/// inner boundary at all is stored as {0}, since the empty list means "suggested".
+/// The boundaries are typed (pipeline::PhraseBoundaries): suggested, or the inner boundaries the
+/// user set (possibly none).
 
 #include "app/document.h"
-#include "app/recomputer.h"
 
 #include "analysis/design/motion_design.h"
+#include "analysis/pipeline/stages.h"
 
 #include <QObject>
 
+#include <functional>
 #include <memory>
+#include <optional>
 
 namespace bunraku::app {
+
+class AnalysisController;
 
 class DesignController : public QObject {
     Q_OBJECT
 public:
-    explicit DesignController(Document& document, QObject* parent = nullptr);
+    DesignController(Document& document, AnalysisController& analysis, QObject* parent = nullptr);
 
-    Recomputer* recomputer() const { return m_recomputer; }
     /// True once the functional take is prepared.
     bool ready() const { return m_prepared != nullptr; }
 
@@ -74,8 +79,10 @@ public:
     Eigen::VectorXd extractedWarp() const;
     /// The extracted control points, empty when unknown.
     analysis::WarpCurve extractedCurve() const;
-    QString sourceId() const { return m_sourceId; }
-    QString targetId() const { return m_targetId; }
+    /// "live/functional": the functional take (the neutral cell's average take).
+    QString sourceId() const;
+    /// The emotional cell the phase and gains were extracted from ("function/emotion"), empty when none.
+    QString targetCell() const;
     /// The designed take, null before the preparation finished.
     TakePointer designedTake() const { return m_designed; }
     /// Wall time of the last synthesis, milliseconds.
@@ -113,24 +120,24 @@ signals:
 
 private:
     struct Prepared {
-        std::shared_ptr<const analysis::DesignBasis> basis;
-        std::vector<Eigen::Index> boundaries;
-        std::optional<analysis::DesignParameters> extracted;
-        QString sourceId;
-        QString targetId;
+        analysis::pipeline::FunctionAxis function;
+        const analysis::pipeline::CellAxis* cell = nullptr; ///< into `axes`, null without an emotional cell
+        analysis::pipeline::Shared<analysis::pipeline::AxisOutput> axes;
+        std::optional<analysis::DesignParameters> extracted() const
+        {
+            return cell ? std::optional<analysis::DesignParameters>(cell->extracted) : std::nullopt;
+        }
     };
 
     void resolveInputs();
-    Job snapshot();
-    void accept(const JobOutput& output);
     void redesign();
+    /// Pushes the design edits `edit` makes as `command` (one of the typed design commands).
+    template <class Command, class... Arguments> bool pushEdit(const std::function<void(analysis::pipeline::DesignEdits&)>& edit,
+                                                               Arguments&&... arguments);
 
     Document& m_document;
-    Recomputer* m_recomputer = nullptr;
+    AnalysisController& m_analysis;
     std::shared_ptr<const Prepared> m_prepared;
-    QString m_sourceId;
-    QString m_targetId;
-    quint64 m_inputSerial = 0;
     TakePointer m_designed;
     double m_lastMilliseconds = 0.0;
     // extractedGains() for the latest boundaries, re-extracted when they or the preparation change
@@ -141,9 +148,5 @@ private:
     mutable QString m_extractionError;  ///< the last extractedGains() call's error, empty when none
     mutable double m_lastExtractionMilliseconds = 0.0;
 };
-
-/// The warp parameter (QVariantList of [output, source]) as a curve; empty when unset.
-analysis::WarpCurve warpFromVariant(const QVariant& value);
-QVariant warpToVariant(const analysis::WarpCurve& curve);
 
 } // namespace bunraku::app

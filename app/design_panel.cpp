@@ -2,7 +2,6 @@
 
 #include "app/design_controller.h"
 #include "app/document.h"
-#include "app/parameters.h"
 
 #include "widgets/gain_table.h"
 #include "widgets/warp_curve_editor.h"
@@ -105,10 +104,10 @@ void DesignPanel::refresh()
         m_inputs->setText(tr("Preparing the design..."));
         return;
     }
-    m_inputs->setText(tr("Functional take: <b>%1</b>; correspondence extracted from <b>%2</b>. "
+    m_inputs->setText(tr("Functional take: <b>%1</b>; correspondence extracted from the average take of <b>%2</b>. "
                          "The designed take is <i>designed</i> under Derived takes.")
                           .arg(m_document.takeLabel(m_controller.sourceId()),
-                               m_controller.targetId().isEmpty() ? tr("(none)") : m_document.takeLabel(m_controller.targetId())));
+                               m_controller.targetCell().isEmpty() ? tr("(none)") : m_controller.targetCell()));
     m_editor->setExtracted(m_controller.extractedWarp());
     m_editor->setCurve(m_controller.warpCurve());
     m_gains->setGains(m_controller.gains());

@@ -1,8 +1,7 @@
 #include "app/document.h"
 
-#include "app/parameters.h"
-
 #include <algorithm>
+#include <chrono>
 
 namespace bunraku::app {
 
@@ -18,7 +17,7 @@ void Document::setCorpus(analysis::Corpus corpus, const QString& source,
     m_corpus = std::make_shared<const analysis::Corpus>(std::move(corpus));
     m_corpusSource = source;
     m_derived.clear();
-    m_parameters.clear();
+    m_parameters = {};
     m_importSerial = 0;
     ++m_version;
     m_selected[0] = m_corpus->takes.empty() ? QString() : corpusTakeId(0);
@@ -55,30 +54,6 @@ QString Document::takeLabel(const QString& id) const
     return index < 0 ? QString() : m_derived[std::size_t(index)].label;
 }
 
-std::vector<widgets::BrowserEntry> Document::browserEntries() const
-{
-    std::vector<widgets::BrowserEntry> entries;
-    for (std::size_t i = 0; i < m_corpus->takes.size(); ++i) {
-        const auto& take = m_corpus->takes[i];
-        widgets::BrowserEntry entry;
-        entry.id = corpusTakeId(i);
-        entry.function = QString::fromStdString(take.labels.function.empty() ? "(no function)" : take.labels.function);
-        entry.emotion = QString::fromStdString(take.labels.emotion.empty() ? "(no emotion)" : take.labels.emotion);
-        entry.takeIndex = take.labels.takeIndex;
-        entry.frames = int(take.frameCount());
-        entries.push_back(entry);
-    }
-    for (const auto& derived : m_derived) {
-        widgets::BrowserEntry entry;
-        entry.id = derived.id;
-        entry.label = derived.label;
-        entry.frames = derived.take ? int(derived.take->frameCount()) : 0;
-        entry.derived = true;
-        entries.push_back(entry);
-    }
-    return entries;
-}
-
 void Document::selectTake(TakeSlot slot, const QString& id)
 {
     if (m_selected[int(slot)] == id) return;
@@ -111,12 +86,6 @@ double Document::rateHz() const
     return shown && shown->rateHz > 0.0 ? shown->rateHz : 5.0;
 }
 
-QVariant Document::parameter(const QString& key) const
-{
-    const auto found = m_parameters.constFind(key);
-    return found != m_parameters.constEnd() ? *found : parameters::defaultValue(key);
-}
-
 TakePointer Document::ghostOf(const QString& id) const
 {
     const int index = indexOfDerived(id);
@@ -147,18 +116,19 @@ void Document::setLiveTake(const QString& name, const QString& label, TakePointe
     emit derivedTakesChanged();
 }
 
-void Document::restoreParameters(const QVariantMap& values)
+void Document::restoreParameters(const AnalysisParameters& values)
 {
-    QStringList changed = m_parameters.keys();
-    m_parameters.clear();
-    for (auto it = values.begin(); it != values.end(); ++it) {
-        if (it.value() != parameters::defaultValue(it.key())) m_parameters.insert(it.key(), it.value());
-        changed << it.key();
-    }
+    const int sections = changedSections(m_parameters, values);
+    m_parameters = values;
     m_undo.clear();
     ++m_version;
-    changed.removeDuplicates();
-    for (const auto& key : changed) emit parameterChanged(key);
+    if (sections != 0) emit parametersChanged(sections);
+}
+
+qint64 Document::clockMilliseconds() const
+{
+    if (m_clock) return m_clock();
+    return std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
 void Document::beginInteraction()
@@ -174,14 +144,31 @@ void Document::endInteraction()
     emit interactionChanged(false);
 }
 
-void Document::applyParameter(const QString& key, const QVariant& value)
+void Document::applyParameters(const AnalysisParameters& values)
 {
-    if (value == parameters::defaultValue(key))
-        m_parameters.remove(key);
-    else
-        m_parameters.insert(key, value);
+    const int sections = changedSections(m_parameters, values);
+    if (sections == 0) return;
+    m_parameters = values;
     ++m_version;
-    emit parameterChanged(key);
+    emit parametersChanged(sections);
+}
+
+int changedSections(const AnalysisParameters& a, const AnalysisParameters& b)
+{
+    int sections = 0;
+    if (!(a.preprocess == b.preprocess)) sections |= kPreprocessSection;
+    if (!(a.normalise == b.normalise)) sections |= kNormaliseSection;
+    if (!(a.decompose == b.decompose)) sections |= kDecomposeSection;
+    if (!(a.fluctuations == b.fluctuations)) sections |= kFluctuationSection;
+    if (!(a.axis == b.axis)) sections |= kAxisSection;
+    if (a.design.emotionWeight != b.design.emotionWeight) sections |= kWeightSection;
+    analysis::pipeline::DesignEdits warpA, warpB;
+    warpA.warp = a.design.warp;
+    warpB.warp = b.design.warp;
+    if (!(warpA == warpB)) sections |= kWarpSection;
+    if (!(a.design.gains == b.design.gains)) sections |= kGainSection;
+    if (!(a.design.boundaries == b.design.boundaries)) sections |= kBoundarySection;
+    return sections;
 }
 
 void Document::insertImportedTake(const DerivedTake& take, int position)

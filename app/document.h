@@ -3,22 +3,20 @@
 /// live results of normalisation, decomposition and design), the choice of take A and B, the
 /// current time, the analysis parameters and the undo stack (Tiled's document.h).
 ///
-/// Undoable state (parameters, imported takes) changes only through the commands in
-/// app/commands.h, which emit the typed change signals below. View state (selection, time)
-/// and derived results are set directly and are never on the undo stack.
-
-#include "widgets/clock.h"
-#include "widgets/corpus_browser.h"
+/// Undoable state (the typed analysis parameters, imported takes) changes only through the
+/// commands in app/commands.h, which emit the typed change signals below. View state
+/// (selection, time) is set directly. Derived results ("live/..." takes) are published by the
+/// AnalysisController alone - views only read them - and are never on the undo stack.
 
 #include "analysis/core/corpus.h"
 #include "analysis/core/take.h"
+#include "analysis/pipeline/stage_parameters.h"
 #include "analysis/synth/demo_corpus.h"
 
 #include <QObject>
 #include <QString>
 #include <QUndoStack>
-#include <QVariant>
-
+#include <functional>
 #include <map>
 #include <memory>
 #include <vector>
@@ -29,8 +27,26 @@ struct ImportOptions;
 
 namespace bunraku::app {
 
-using widgets::TakeSlot;
+/// The two shown takes (the corpus browser's slots map onto these).
+enum class TakeSlot { A = 0, B = 1 };
 using TakePointer = std::shared_ptr<const analysis::Take>;
+using AnalysisParameters = analysis::pipeline::ChainParameters;
+
+/// Which parts of the parameters a change touched (Document::parametersChanged).
+enum ParameterSection : int {
+    kPreprocessSection = 1,
+    kNormaliseSection = 2,
+    kDecomposeSection = 4,
+    kFluctuationSection = 8,
+    kAxisSection = 16,
+    kWeightSection = 32,
+    kWarpSection = 64,
+    kGainSection = 128,
+    kBoundarySection = 256,
+    kDesignSections = kWeightSection | kWarpSection | kGainSection | kBoundarySection,
+};
+/// The sections in which `a` and `b` differ.
+int changedSections(const AnalysisParameters& a, const AnalysisParameters& b);
 
 /// A take listed under "Derived takes": imported files and live analysis results.
 struct DerivedTake {
@@ -57,6 +73,8 @@ public:
     /// The demo corpus's ground truth, null for other corpora.
     const analysis::synth::DemoGroundTruth* demoTruth() const { return m_truth.get(); }
     const analysis::Corpus& corpus() const { return *m_corpus; }
+    /// The corpus, shared (analysis jobs keep it alive while they run).
+    std::shared_ptr<const analysis::Corpus> sharedCorpus() const { return m_corpus; }
     QString corpusSource() const { return m_corpusSource; }
 
     /// Id of the corpus take with index `index` in corpus().takes.
@@ -65,8 +83,6 @@ public:
     TakePointer take(const QString& id) const;
     /// The label the user sees for `id`.
     QString takeLabel(const QString& id) const;
-    /// Corpus takes then derived takes, as the browser lists them.
-    std::vector<widgets::BrowserEntry> browserEntries() const;
     const std::vector<DerivedTake>& derivedTakes() const { return m_derived; }
 
     /// Shows the take `id` (empty: none, allowed for B only) in `slot`. View state.
@@ -82,18 +98,18 @@ public:
     /// The frame rate of take A (Hz), 5 when none.
     double rateHz() const;
 
-    /// The parameter `key` (see app/parameters.h), or its default.
-    QVariant parameter(const QString& key) const;
-    QVariantMap parameters() const { return m_parameters; }
+    /// The analysis parameters (every stage's, and the design edits).
+    const AnalysisParameters& parameters() const { return m_parameters; }
 
-    /// Publishes a live analysis result under "live/<name>" (replacing the previous one).
-    /// Not undoable: results are recomputed from the parameters.
+    /// Publishes a live analysis result under "live/<name>" (replacing the previous one; null
+    /// removes it). For the AnalysisController only; not undoable: results are recomputed from
+    /// the parameters.
     void setLiveTake(const QString& name, const QString& label, TakePointer take, const QString& ghostId = {});
     /// The take drawn as a ghost behind `id` (a live result's original), null when none.
     TakePointer ghostOf(const QString& id) const;
 
     /// Replaces every parameter (loading a project): not undoable, clears the undo stack.
-    void restoreParameters(const QVariantMap& values);
+    void restoreParameters(const AnalysisParameters& values);
 
     QUndoStack* undoStack() { return &m_undo; }
     /// Increases with every change of the model's inputs (corpus, parameters, imports); results
@@ -112,12 +128,13 @@ public:
     void endStepSeries() { ++m_stepSeries; }
     /// The current step series, increased by endStepSeries().
     int stepSeries() const { return m_stepSeries; }
-    /// The clock that times step series (the steady clock unless a test injects one).
-    widgets::Clock& clock() const { return *m_clock; }
-    void setClock(widgets::Clock* clock) { m_clock = clock ? clock : &widgets::steadyClock(); }
+    /// Milliseconds of a monotonic clock for step merging (default std::chrono::steady_clock;
+    /// tests set their own, so no test depends on wall-clock windows).
+    qint64 clockMilliseconds() const;
+    void setClock(std::function<qint64()> clock) { m_clock = std::move(clock); }
 
     // --- mutators for commands only (app/commands.cpp) ---
-    void applyParameter(const QString& key, const QVariant& value);
+    void applyParameters(const AnalysisParameters& values);
     void insertImportedTake(const DerivedTake& take, int position);
     void removeImportedTake(const QString& id);
     int indexOfDerived(const QString& id) const;
@@ -129,9 +146,10 @@ signals:
     void derivedTakesChanged();
     /// The content of take `id` changed (a live result was recomputed).
     void takeChanged(const QString& id);
-    void selectionChanged(bunraku::widgets::TakeSlot slot);
+    void selectionChanged(bunraku::app::TakeSlot slot);
     void currentTimeChanged(double seconds);
-    void parameterChanged(const QString& key);
+    /// Parameters changed in `sections` (ParameterSection flags).
+    void parametersChanged(int sections);
     /// An interaction (a drag) began (true) or ended (false): views may hold their ranges.
     void interactionChanged(bool active);
 
@@ -142,14 +160,14 @@ private:
     std::vector<DerivedTake> m_derived;
     QString m_selected[2];
     double m_time = 0.0;
-    QVariantMap m_parameters;
+    AnalysisParameters m_parameters;
+    std::function<qint64()> m_clock;
     QUndoStack m_undo;
     quint64 m_version = 1;
     int m_interaction = 0;
     int m_interactionSerial = 0;
     int m_stepSeries = 0;
     int m_importSerial = 0;
-    widgets::Clock* m_clock = &widgets::steadyClock();
 };
 
 } // namespace bunraku::app

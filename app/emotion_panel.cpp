@@ -1,13 +1,10 @@
 #include "app/emotion_panel.h"
 
+#include "app/analysis_controller.h"
 #include "app/commands.h"
-#include "app/parameters.h"
-#include "app/recomputer.h"
 
 #include "analysis/decompose/emotion_weight.h"
-#include "analysis/decompose/km2o_decomposition.h"
-#include "analysis/decompose/least_squares.h"
-#include "analysis/preprocess/preprocess.h"
+#include "analysis/pipeline/parameters_json.h"
 
 #include <QComboBox>
 #include <QFormLayout>
@@ -22,30 +19,29 @@
 #include <cmath>
 
 namespace bunraku::app {
-
-struct EmotionModel {
-    analysis::Decomposition decomposition;
-    QString method; ///< "least-squares" | "km2o"
-    int order = 0;  ///< M (KM2O), 0 for least squares
-};
-
 namespace {
+namespace pl = analysis::pipeline;
 constexpr double kSliderScale = 100.0; // slider position = a * 100
-const QString kKm2o = QStringLiteral("km2o");
 } // namespace
 
-EmotionPanel::EmotionPanel(Document& document, QWidget* parent) : QWidget(parent), m_document(document)
+EmotionPanel::EmotionPanel(Document& document, AnalysisController& analysis, QWidget* parent)
+    : QWidget(parent), m_document(document), m_analysis(analysis)
 {
+    m_input = new QComboBox(this);
+    m_input->setObjectName("emotionInput");
+    m_input->addItem(tr("normalised takes (thesis 4.1)"), QStringLiteral("normalised"));
+    m_input->addItem(tr("preprocessed takes"), QStringLiteral("preprocessed"));
     m_method = new QComboBox(this);
+    m_method->addItem(tr("KM2O-Langevin (thesis 4.4.4)"), QStringLiteral("km2o"));
     m_method->addItem(tr("least squares (thesis 4.3.1)"), QStringLiteral("least-squares"));
-    m_method->addItem(tr("KM2O-Langevin (thesis 4.4.4)"), kKm2o);
     m_method->setObjectName("emotionMethod");
-    m_method->setToolTip(tr("Decomposition of the preprocessed corpus into function and emotion components"));
+    m_method->setToolTip(tr("Decomposition of the corpus into function and emotion components"));
     m_order = new QSpinBox(this);
     m_order->setObjectName("emotionOrder");
-    m_order->setRange(1, 64);
-    m_order->setToolTip(tr("KM2O correlation length M (thesis 4.4.4 found M = 2); must not exceed "
-                           "M_max = floor(3 sqrt(T + 1)) - 1 for T frames"));
+    m_order->setRange(0, 64);
+    m_order->setSpecialValueText(tr("chosen by P (4.4.4)"));
+    m_order->setToolTip(tr("KM2O correlation length M; 0 chooses it by the relative error P over 1..M_max as thesis 4.4.4 "
+                           "(which found M = 2); must not exceed M_max = floor(3 sqrt(T + 1)) - 1 for T frames"));
     m_weight = new QSlider(Qt::Horizontal, this);
     m_weight->setObjectName("emotionWeight");
     m_weight->setRange(int(analysis::kMinEmotionWeight * kSliderScale), int(analysis::kMaxEmotionWeight * kSliderScale));
@@ -55,6 +51,7 @@ EmotionPanel::EmotionPanel(Document& document, QWidget* parent) : QWidget(parent
     m_label->setWordWrap(true);
     auto* show = new QPushButton(tr("Show weighted as A"), this);
     auto* form = new QFormLayout;
+    form->addRow(tr("Input"), m_input);
     form->addRow(tr("Method"), m_method);
     form->addRow(tr("Correlation length M"), m_order);
     form->addRow(tr("Emotion weight a"), m_weight);
@@ -68,152 +65,107 @@ EmotionPanel::EmotionPanel(Document& document, QWidget* parent) : QWidget(parent
     connect(m_weight, &QSlider::sliderPressed, &document, &Document::beginInteraction);
     connect(m_weight, &QSlider::sliderReleased, &document, &Document::endInteraction);
     // A drag is one interaction; keyboard and wheel steps of the slider merge as steps.
-    connect(m_weight, &QSlider::valueChanged, this, [this](int position) {
-        stepParameter(m_document, parameters::kEmotionWeight, position / kSliderScale, tr("Set emotion weight"));
+    connect(m_weight, &QSlider::valueChanged, this, [this](int position) { setEmotionWeight(m_document, position / kSliderScale); });
+    connect(m_input, &QComboBox::currentIndexChanged, this, [this](int index) {
+        const bool normalised = m_input->itemData(index).toString() == QStringLiteral("normalised");
+        changeStageParameters(
+            m_document,
+            [normalised](AnalysisParameters& p) {
+                p.decompose.input = normalised ? pl::DecomposeInput::Normalised : pl::DecomposeInput::Preprocessed;
+            },
+            tr("Set decomposition input"));
     });
     connect(m_method, &QComboBox::currentIndexChanged, this, [this](int index) {
-        changeParameter(m_document, parameters::kEmotionMethod, m_method->itemData(index), tr("Set decomposition method"));
+        const bool km2o = m_method->itemData(index).toString() == QStringLiteral("km2o");
+        changeStageParameters(
+            m_document,
+            [km2o](AnalysisParameters& p) { p.decompose.method = km2o ? pl::DecomposeMethod::Km2o : pl::DecomposeMethod::LeastSquares; },
+            tr("Set decomposition method"));
     });
     // Consecutive steps of M (arrows, keys, wheel) are one undo step until the box loses the focus.
     connect(m_order, &QSpinBox::valueChanged, this, [this](int order) {
-        stepParameter(m_document, parameters::kEmotionOrder, order, tr("Set correlation length M"));
+        changeStageParameters(
+            m_document, [order](AnalysisParameters& p) { p.decompose.correlationLength = order; }, tr("Set correlation length M"),
+            QStringLiteral("decompose.M"));
     });
     connect(m_order, &QSpinBox::editingFinished, &document, &Document::endStepSeries);
     connect(show, &QPushButton::clicked, this, [this] { m_document.selectTake(TakeSlot::A, QStringLiteral("live/weighted")); });
 
-    m_recomputer = new Recomputer(
-        document,
-        [this]() -> Job {
-            if (m_document.corpus().takes.empty()) return {};
-            auto corpus = std::make_shared<const analysis::Corpus>(m_document.corpus());
-            const bool km2o = m_document.parameter(parameters::kEmotionMethod).toString() == kKm2o;
-            const int order = m_document.parameter(parameters::kEmotionOrder).toInt();
-            return [corpus, km2o, order](const analysis::RunControl& control) -> JobOutput {
-                auto prepared = analysis::preprocess::preprocessCorpus(*corpus, {}, control);
-                if (!prepared) return {{}, QString::fromStdString(prepared.error().message)};
-                if (control.cancelled()) return {{}, QStringLiteral("cancelled")};
-                if (km2o) {
-                    analysis::Km2oDecompositionOptions options;
-                    options.correlationLength = order; // the given M: no search over candidates
-                    auto decomposition = analysis::decomposeKm2o(prepared->corpus, options, control);
-                    if (!decomposition) return {{}, QString::fromStdString(decomposition.error().message)};
-                    return {std::make_shared<const EmotionModel>(EmotionModel{
-                                std::move(decomposition->components), kKm2o, decomposition->correlationLength}),
-                            {}};
-                }
-                auto decomposition = analysis::decomposeLeastSquares(prepared->corpus);
-                if (!decomposition) return {{}, QString::fromStdString(decomposition.error().message)};
-                return {std::make_shared<const EmotionModel>(
-                            EmotionModel{std::move(decomposition).value(), QStringLiteral("least-squares"), 0}),
-                        {}};
-            };
-        },
-        [this](const JobOutput& output) {
-            if (!output.value.has_value()) {
-                m_label->setText(tr("The corpus cannot be decomposed: %1").arg(output.error));
-                return;
-            }
-            m_model = std::any_cast<std::shared_ptr<const EmotionModel>>(output.value);
-            resolveCell();
-            synthesise();
-        },
-        this, 50, [this] { return m_inputSerial; });
-    m_recomputer->setObjectName(tr("Decomposition"));
+    connect(&document, &Document::parametersChanged, this, [this](int sections) {
+        if (sections & (kDecomposeSection | kWeightSection)) showParameters();
+    });
+    connect(&document, &Document::corpusChanged, this, &EmotionPanel::showParameters);
+    connect(&analysis, &AnalysisController::weightedChanged, this, &EmotionPanel::showResult);
+    connect(&analysis.scheduler(), &StageScheduler::stateChanged, this, [this](int slot) {
+        if (slot == AnalysisController::kDecomposeSlot) showResult();
+    });
     showParameters();
-
-    connect(&document, &Document::corpusChanged, this, [this] {
-        m_model.reset();
-        ++m_inputSerial;
-        m_recomputer->schedule();
-    });
-    connect(&document, &Document::selectionChanged, this, [this](TakeSlot slot) {
-        if (slot == TakeSlot::A && m_document.selectedId(TakeSlot::A).startsWith(QStringLiteral("corpus/"))) {
-            resolveCell();
-            synthesise();
-        }
-    });
-    connect(&document, &Document::parameterChanged, this, [this](const QString& key) {
-        if (key == parameters::kEmotionMethod || key == parameters::kEmotionOrder) {
-            showParameters();
-            const bool km2o = m_document.parameter(parameters::kEmotionMethod).toString() == kKm2o;
-            if (key == parameters::kEmotionOrder && !km2o) return; // M only matters for KM2O
-            ++m_inputSerial;
-            m_label->setText(tr("Decomposing the corpus..."));
-            m_recomputer->schedule();
-            return;
-        }
-        if (key != parameters::kEmotionWeight) return;
-        const QSignalBlocker block(m_weight);
-        if (!m_weight->isSliderDown())
-            m_weight->setValue(int(std::lround(m_document.parameter(key).toDouble() * kSliderScale)));
-        synthesise();
-    });
 }
 
-EmotionPanel::~EmotionPanel() = default;
+bool EmotionPanel::ready() const { return m_analysis.decomposed() != nullptr; }
 
-QString EmotionPanel::decomposedMethod() const { return m_model ? m_model->method : QString(); }
+TakePointer EmotionPanel::weightedTake() const { return m_analysis.weightedTake(); }
 
-int EmotionPanel::decomposedOrder() const { return m_model ? m_model->order : 0; }
+QString EmotionPanel::statusText() const { return m_label->text(); }
+
+QString EmotionPanel::decomposedMethod() const
+{
+    const auto decomposed = m_analysis.decomposed();
+    return decomposed ? QString::fromStdString(pl::methodName(decomposed->parameters.method)) : QString();
+}
+
+int EmotionPanel::decomposedOrder() const
+{
+    const auto decomposed = m_analysis.decomposed();
+    return decomposed && decomposed->km2o ? decomposed->km2o->correlationLength : 0;
+}
 
 void EmotionPanel::showParameters()
 {
+    const QSignalBlocker blockInput(m_input);
     const QSignalBlocker blockMethod(m_method);
     const QSignalBlocker blockOrder(m_order);
-    const QString method = m_document.parameter(parameters::kEmotionMethod).toString();
-    m_method->setCurrentIndex(std::max(0, m_method->findData(method)));
-    m_order->setValue(m_document.parameter(parameters::kEmotionOrder).toInt());
-    m_order->setEnabled(method == kKm2o);
+    const pl::DecomposeParameters& p = m_document.parameters().decompose;
+    m_input->setCurrentIndex(std::max(0, m_input->findData(QString::fromStdString(pl::inputName(p.input)))));
+    m_method->setCurrentIndex(std::max(0, m_method->findData(QString::fromStdString(pl::methodName(p.method)))));
+    m_order->setValue(p.correlationLength);
+    m_order->setEnabled(p.method == pl::DecomposeMethod::Km2o);
+    const QSignalBlocker blockWeight(m_weight);
+    if (!m_weight->isSliderDown()) m_weight->setValue(int(std::lround(m_document.parameters().design.emotionWeight * kSliderScale)));
 }
 
-void EmotionPanel::resolveCell()
+void EmotionPanel::showResult()
 {
-    if (!m_model) return;
-    const auto& decomposition = m_model->decomposition;
-    const auto known = [&](const std::string& function) {
-        return std::any_of(decomposition.emotions.begin(), decomposition.emotions.end(),
-                           [&](const auto& component) { return component.function == function; });
-    };
-    const TakePointer takeA = m_document.selectedTake(TakeSlot::A);
-    if (takeA && m_document.selectedId(TakeSlot::A).startsWith(QStringLiteral("corpus/"))) {
-        m_function = takeA->labels.function;
-        m_emotion = takeA->labels.emotion;
-    } else if (m_function.empty() || !known(m_function)) {
-        // A shows a derived take (a project may reopen on one before the decomposition is
-        // done): keep weighting the current cell, or start from the corpus's first function.
-        if (decomposition.emotions.empty()) return;
-        m_function = decomposition.emotions.front().function;
-        m_emotion = decomposition.neutralEmotion;
-    } else {
+    const auto& scheduler = m_analysis.scheduler();
+    const int slot = AnalysisController::kDecomposeSlot;
+    if (scheduler.state(slot) == SlotState::Failed) {
+        m_label->setText(tr("<span style=\"color:#b00020\">The corpus cannot be decomposed: %1</span>").arg(scheduler.error(slot).toHtmlEscaped()));
         return;
     }
-    if (m_emotion == decomposition.neutralEmotion) {
-        // The neutral emotion has z = 0: weight the first other emotion of the function instead.
-        for (const auto& component : decomposition.emotions)
-            if (component.function == m_function && component.emotion != decomposition.neutralEmotion) {
-                m_emotion = component.emotion;
-                break;
-            }
-    }
-}
-
-void EmotionPanel::synthesise()
-{
-    if (!m_model || m_function.empty()) return;
-    const double weight = m_document.parameter(parameters::kEmotionWeight).toDouble();
-    auto take = analysis::weightEmotion(m_model->decomposition, m_function, m_emotion, weight);
-    if (!take) {
-        m_label->setText(QString::fromStdString(take.error().message));
+    if (!m_analysis.weightError().isEmpty()) {
+        m_label->setText(m_analysis.weightError().toHtmlEscaped());
         return;
     }
-    m_weighted = std::make_shared<const analysis::Take>(std::move(take).value());
-    const QString label = tr("%1/%2 a=%3").arg(QString::fromStdString(m_function), QString::fromStdString(m_emotion)).arg(weight, 0, 'f', 2);
-    const QString method = m_model->method == kKm2o ? tr("KM2O, M = %1").arg(m_model->order) : tr("least squares");
-    m_label->setText(tr("Weighted take <b>%1</b>: x = y + a z, a = %2, components by %3 (the live take \"weighted\").")
-                         .arg(label)
+    const auto decomposed = m_analysis.decomposed();
+    const TakePointer weighted = m_analysis.weightedTake();
+    if (!decomposed || !weighted) {
+        m_label->setText(tr("Decomposing the corpus..."));
+        return;
+    }
+    const auto [function, emotion] = m_analysis.weightedCell();
+    const double weight = m_document.parameters().design.emotionWeight;
+    QString method = tr("least squares");
+    if (decomposed->km2o)
+        method = tr("KM2O, M = %1%2, mean P = %3 %")
+                     .arg(decomposed->km2o->correlationLength)
+                     .arg(decomposed->parameters.correlationLength == 0 ? tr(" (chosen by P)") : QString())
+                     .arg(decomposed->km2o->meanCellErrorPercent, 0, 'f', 2);
+    m_label->setText(tr("Weighted take <b>%1/%2</b>: x = y + a z, a = %3, components by %4 of the %5 takes%6 (the live take "
+                        "\"weighted\").")
+                         .arg(QString::fromStdString(function), QString::fromStdString(emotion))
                          .arg(weight, 0, 'f', 2)
-                         .arg(method));
-    m_document.setLiveTake(QStringLiteral("weighted"), label, m_weighted);
+                         .arg(method, QString::fromStdString(pl::inputName(decomposed->parameters.input)),
+                              scheduler.state(slot) == SlotState::Running ? tr("; recomputing") : QString()));
 }
 
 } // namespace bunraku::app

@@ -1,17 +1,16 @@
 #pragma once
-/// The Emotion dock (thesis ch. 4): the corpus is preprocessed (padded, unwrapped, aligned) and
-/// decomposed into function y^i and emotion z^{ij} components in the background, by least
-/// squares (thesis 4.3.1) or by the KM2O-Langevin equation with correlation length M (thesis
-/// 4.4.4; the method and M are undoable parameters and a change re-decomposes); the emotion weight a (thesis eq. 4.45, x = y + a z) is a slider, and the weighted
-/// take of take A's cell is re-synthesised on every slider step (a few microseconds) and
-/// published as the live take "weighted", so it plays as you drag. A drag is one undo step, and
-/// so are consecutive steps of M or of the slider by arrows, keys or wheel (commands.h stepParameter).
+/// The Emotion dock (thesis ch. 4), a view of the pipeline's decompose stage: the input (the
+/// chapter-3-normalised takes, the thesis's, or the preprocessed ones), the method (KM2O-Langevin
+/// 4.4.4, the thesis's, or least squares 4.3.1) and KM2O's correlation length M (0: chosen by the
+/// relative error P over 1..M_max as 4.4.4 does) are undoable parameters; a change re-decomposes
+/// in the background. The emotion weight a (thesis eq. 4.45, x = y + a z) is a slider; the
+/// AnalysisController re-synthesises the weighted take of take A's cell on every step (a few
+/// microseconds) as the live take "weighted", so it plays as you drag. A drag is one undo step,
+/// and so are consecutive steps of M or of the slider by arrows, keys or wheel.
 
 #include "app/document.h"
 
 #include <QWidget>
-
-#include <memory>
 
 class QComboBox;
 class QLabel;
@@ -20,43 +19,37 @@ class QSpinBox;
 
 namespace bunraku::app {
 
-class Recomputer;
-struct EmotionModel;
+class AnalysisController;
 
 class EmotionPanel : public QWidget {
     Q_OBJECT
 public:
-    explicit EmotionPanel(Document& document, QWidget* parent = nullptr);
-    ~EmotionPanel() override;
+    EmotionPanel(Document& document, AnalysisController& analysis, QWidget* parent = nullptr);
 
-    Recomputer* recomputer() const { return m_recomputer; }
     QSlider* weightSlider() const { return m_weight; }
     QComboBox* methodBox() const { return m_method; }
+    QComboBox* inputBox() const { return m_input; }
     QSpinBox* orderBox() const { return m_order; }
     /// The method of the decomposition in use ("least-squares" | "km2o"), empty before the first.
     QString decomposedMethod() const;
     /// The M of the KM2O decomposition in use, 0 for least squares.
     int decomposedOrder() const;
-    bool ready() const { return m_model != nullptr; }
+    bool ready() const;
     /// The latest weighted take, null before the decomposition finished.
-    TakePointer weightedTake() const { return m_weighted; }
+    TakePointer weightedTake() const;
+    QString statusText() const;
 
 private:
-    void resolveCell();
-    void synthesise();
     void showParameters();
+    void showResult();
 
     Document& m_document;
-    Recomputer* m_recomputer = nullptr;
-    std::shared_ptr<const EmotionModel> m_model;
-    TakePointer m_weighted;
-    std::string m_function;
-    std::string m_emotion;
+    AnalysisController& m_analysis;
+    QComboBox* m_input = nullptr;
     QComboBox* m_method = nullptr;
     QSpinBox* m_order = nullptr;
     QSlider* m_weight = nullptr;
     QLabel* m_label = nullptr;
-    quint64 m_inputSerial = 0; ///< bumped when the corpus, method or M change
 };
 
 } // namespace bunraku::app

@@ -1,9 +1,11 @@
 #include "app/main_window.h"
 
+#include "app/analysis_controller.h"
 #include "app/design_controller.h"
 #include "app/design_panel.h"
 #include "app/emotion_panel.h"
 #include "app/file_controller.h"
+#include "app/help_controller.h"
 #include "app/image_file.h"
 #include "app/normalise_panel.h"
 #include "app/offscreen_view.h"
@@ -42,6 +44,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 namespace bunraku::app {
 namespace {
@@ -49,6 +52,32 @@ namespace {
 const QString kGeometryKey = QStringLiteral("window/geometry");
 const QString kStateKey = QStringLiteral("window/state");
 constexpr int kLayoutVersion = 1;
+
+/// Corpus takes then derived takes, as the browser lists them.
+std::vector<widgets::BrowserEntry> browserEntries(const Document& document)
+{
+    std::vector<widgets::BrowserEntry> entries;
+    const auto& corpus = document.corpus();
+    for (std::size_t i = 0; i < corpus.takes.size(); ++i) {
+        const auto& take = corpus.takes[i];
+        widgets::BrowserEntry entry;
+        entry.id = Document::corpusTakeId(i);
+        entry.function = QString::fromStdString(take.labels.function.empty() ? "(no function)" : take.labels.function);
+        entry.emotion = QString::fromStdString(take.labels.emotion.empty() ? "(no emotion)" : take.labels.emotion);
+        entry.takeIndex = take.labels.takeIndex;
+        entry.frames = int(take.frameCount());
+        entries.push_back(entry);
+    }
+    for (const auto& derived : document.derivedTakes()) {
+        widgets::BrowserEntry entry;
+        entry.id = derived.id;
+        entry.label = derived.label;
+        entry.frames = derived.take ? int(derived.take->frameCount()) : 0;
+        entry.derived = true;
+        entries.push_back(entry);
+    }
+    return entries;
+}
 
 } // namespace
 
@@ -66,7 +95,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_document(new Do
     m_progress->setRange(0, 1000);
     m_progress->setMaximumWidth(180);
     m_progress->setVisible(false);
+    m_stages = new QLabel(this);
+    m_stages->setObjectName("stageStatus");
     statusBar()->addWidget(m_status, 1);
+    statusBar()->addPermanentWidget(m_stages);
     statusBar()->addPermanentWidget(m_progress);
     createViews();
     createMenus();
@@ -112,10 +144,11 @@ void MainWindow::createViews()
     m_graphs = new widgets::GraphPanel(this);
     m_timeline = new widgets::TimelineWidget(this);
     m_viewportPanel = new ViewportPanel(*m_document, this);
-    m_design = new DesignController(*m_document, this);
+    m_analysis = new AnalysisController(*m_document, this);
+    m_design = new DesignController(*m_document, *m_analysis, this);
     m_designPanel = new DesignPanel(*m_document, *m_design, this);
-    m_normalisePanel = new NormalisePanel(*m_document, this);
-    m_emotionPanel = new EmotionPanel(*m_document, this);
+    m_normalisePanel = new NormalisePanel(*m_document, *m_analysis, this);
+    m_emotionPanel = new EmotionPanel(*m_document, *m_analysis, this);
     auto* history = new QUndoView(m_document->undoStack(), this);
     history->setEmptyLabel(tr("<opened>"));
 
@@ -137,10 +170,14 @@ void MainWindow::createViews()
     inspectorDock->raise();
     timelineDock->setFeatures(timelineDock->features() & ~QDockWidget::DockWidgetVerticalTitleBar);
     resizeDocks({corpusDock, viewDock, graphsDock}, {380, 400, 800}, Qt::Horizontal);
-    trackRecomputer(m_design->recomputer());
     trackRecomputer(m_viewportPanel->recomputer());
-    trackRecomputer(m_normalisePanel->recomputer());
-    trackRecomputer(m_emotionPanel->recomputer());
+    // One status entry per analysis stage: its progress while it runs, its error when it fails
+    // (the panel showing the stage's result shows the error too).
+    connect(&m_analysis->scheduler(), &StageScheduler::stateChanged, this, &MainWindow::showStageStatus);
+    connect(&m_analysis->scheduler(), &StageScheduler::progressChanged, this, &MainWindow::showStageStatus);
+    connect(&m_analysis->scheduler(), &StageScheduler::failed, this, [this](int slot, const QString& message) {
+        m_status->setText(tr("%1 failed: %2").arg(AnalysisController::slotTitle(slot), message));
+    });
 }
 
 void MainWindow::createMenus()
@@ -158,6 +195,9 @@ void MainWindow::createMenus()
     file->addAction(m_files->exportCsvAction());
     file->addAction(m_files->exportBvhAction());
     file->addAction(tr("Save &Screenshot..."), this, &MainWindow::chooseScreenshot);
+    auto* report = file->addAction(tr("Export &Report..."), this, &MainWindow::chooseReport);
+    report->setObjectName("exportReportAction");
+    report->setToolTip(tr("The analysis report of the open corpus as one HTML file (figures and tables, the thesis's values beside)"));
     auto* video = file->addAction(tr("Export 3D View &Video..."), this, &MainWindow::chooseViewVideo);
     video->setObjectName("exportViewVideoAction");
     file->addSeparator();
@@ -185,12 +225,10 @@ void MainWindow::createMenus()
     m_viewMenu->addSeparator();
     m_viewMenu->addAction(tr("&Reset Layout"), this, &MainWindow::resetLayout);
 
+    auto* helpController = new HelpController(this);
     auto* help = menuBar()->addMenu(tr("&Help"));
-    help->addAction(tr("&About"), this, [this] {
-        QMessageBox::about(this, tr("About Bunraku Motion Workbench"),
-                           tr("<b>Bunraku Motion Workbench</b><p>Normalisation, emotion decomposition and design of "
-                              "puppet motion, after Hattori (2000). See docs/USER-GUIDE.md.</p>"));
-    });
+    help->addAction(helpController->userGuideAction());
+    help->addAction(helpController->aboutAction());
 }
 
 void MainWindow::connectDocument()
@@ -212,7 +250,7 @@ void MainWindow::connectDocument()
     });
 
     connect(m_browser, &widgets::CorpusBrowser::takeChosen, this,
-            [this](widgets::TakeSlot slot, const QString& id) { m_document->selectTake(slot, id); });
+            [this](widgets::TakeSlot slot, const QString& id) { m_document->selectTake(TakeSlot(int(slot)), id); });
     connect(m_graphs->grid(), &widgets::GraphGrid::timeScrubbed, m_document, &Document::setCurrentTime);
     connect(m_timeline, &widgets::TimelineWidget::timeScrubbed, m_document, &Document::setCurrentTime);
     connect(m_timeline, &widgets::TimelineWidget::playToggled, m_playback, &PlaybackController::setPlaying);
@@ -242,7 +280,7 @@ void MainWindow::connectDocument()
 
 void MainWindow::refreshEntries()
 {
-    m_browser->setEntries(m_document->browserEntries());
+    m_browser->setEntries(browserEntries(*m_document));
     refreshTakes();
 }
 
@@ -330,6 +368,48 @@ void MainWindow::trackRecomputer(Recomputer* recomputer)
     });
     connect(recomputer, &Recomputer::progressChanged, this,
             [this](double fraction) { m_progress->setValue(int(fraction * 1000)); });
+}
+
+QString MainWindow::stageStatusText() const { return m_stages->text(); }
+
+void MainWindow::showStageStatus()
+{
+    const StageScheduler& scheduler = m_analysis->scheduler();
+    QStringList parts;
+    double least = 1.0;
+    for (int slot : {AnalysisController::kPreprocessSlot, AnalysisController::kNormaliseSlot, AnalysisController::kDecomposeSlot,
+                     AnalysisController::kAxesSlot, AnalysisController::kTakeAxisSlot}) {
+        if (scheduler.state(slot) == SlotState::Running) {
+            parts << tr("%1 %2 %").arg(AnalysisController::slotTitle(slot)).arg(int(scheduler.progress(slot) * 100.0 + 0.5));
+            least = std::min(least, scheduler.progress(slot));
+        } else if (scheduler.state(slot) == SlotState::Failed) {
+            parts << tr("%1 failed").arg(AnalysisController::slotTitle(slot));
+        }
+    }
+    m_stages->setText(parts.join(QStringLiteral(" \u00b7 ")));
+    m_stages->setToolTip(tr("Analysis stages running in the background (each recomputes only when its own inputs change)"));
+    const bool running = scheduler.busy();
+    m_progress->setVisible(running || !m_busy.isEmpty());
+    if (running) m_progress->setValue(int(least * 1000));
+}
+
+bool MainWindow::exportReport(const QString& file)
+{
+    const auto status = m_analysis->exportReport(std::filesystem::path(file.toStdString()));
+    if (!status) {
+        m_status->setText(tr("Cannot export the report: %1").arg(QString::fromStdString(status.error().message)));
+        return false;
+    }
+    m_status->setText(tr("Wrote the report %1").arg(file));
+    return true;
+}
+
+void MainWindow::chooseReport()
+{
+    QString file = QFileDialog::getSaveFileName(this, tr("Export report"), QStringLiteral("report.html"), tr("HTML (*.html)"));
+    if (file.isEmpty()) return;
+    if (!file.endsWith(QStringLiteral(".html"), Qt::CaseInsensitive)) file += QStringLiteral(".html");
+    if (!exportReport(file)) QMessageBox::warning(this, tr("Export Report"), m_status->text());
 }
 
 bool MainWindow::saveScreenshot(const QString& file, QWidget* widget)

@@ -25,6 +25,7 @@ class TimelineWidget;
 
 namespace bunraku::app {
 
+class AnalysisController;
 class DesignController;
 class DesignPanel;
 class EmotionPanel;
@@ -49,6 +50,7 @@ public:
     widgets::CorpusBrowser* browser() const { return m_browser; }
     /// The 3D view dock's content.
     ViewportPanel* viewportPanel() const { return m_viewportPanel; }
+    AnalysisController& analysis() { return *m_analysis; }
     DesignController& design() { return *m_design; }
     DesignPanel* designPanel() const { return m_designPanel; }
     NormalisePanel* normalisePanel() const { return m_normalisePanel; }
@@ -63,6 +65,11 @@ public:
     void saveLayout() const;
     /// Registers a background computation so its progress shows in the status bar.
     void trackRecomputer(Recomputer* recomputer);
+    /// The status bar's text of the analysis stages (running stages with their progress).
+    QString stageStatusText() const;
+    /// File > Export Report: the analysis report of the open corpus (HTML) written to `file`;
+    /// false (and a status message) on error.
+    bool exportReport(const QString& file);
 
     /// Grabs `widget` (the whole window when null) into an image file (PNG by extension).
     bool saveScreenshot(const QString& file, QWidget* widget = nullptr);
@@ -97,6 +104,8 @@ private:
     void refreshTime(double seconds);
     void updateTitle();
     void chooseScreenshot();
+    void chooseReport();
+    void showStageStatus();
     /// File > Export 3D View Video...: the dialog, the export, then a message on error.
     void chooseViewVideo();
     QVariantMap viewState() const;
@@ -110,6 +119,7 @@ private:
     widgets::InspectorWidget* m_inspector = nullptr;
     widgets::CorpusBrowser* m_browser = nullptr;
     ViewportPanel* m_viewportPanel = nullptr;
+    AnalysisController* m_analysis = nullptr;
     DesignController* m_design = nullptr;
     DesignPanel* m_designPanel = nullptr;
     NormalisePanel* m_normalisePanel = nullptr;
@@ -119,6 +129,7 @@ private:
     QMenu* m_viewMenu = nullptr;
     QProgressBar* m_progress = nullptr;
     QLabel* m_status = nullptr;
+    QLabel* m_stages = nullptr;
     QSet<Recomputer*> m_busy;
 };
 

@@ -1,12 +1,10 @@
 #include "app/normalise_panel.h"
 
 #include "app/commands.h"
-#include "app/parameters.h"
-#include "app/recomputer.h"
+#include "app/analysis_controller.h"
 
 #include "analysis/normalise/coupling.h"
-#include "analysis/normalise/take_normalisation.h"
-#include "analysis/normalise/variance_evaluation.h"
+#include "analysis/pipeline/parameters_json.h"
 
 #include <qcustomplot.h>
 
@@ -21,40 +19,28 @@
 
 namespace bunraku::app {
 
-/// One normalisation result: the cell normalised to its reference.
-struct NormaliseOutput {
-    QStringList takeIds;            ///< the cell's takes
-    QString referenceId;
-    QString sampleId;               ///< take A
-    TakePointer normalisedSample;   ///< take A normalised
-    analysis::VarianceTable variance;
-    std::vector<Eigen::VectorXd> warps; ///< per take: reference frame -> sample frame (first coupling set)
-};
-
 namespace {
 
-struct CellTakes {
-    QStringList ids;
-    std::vector<TakePointer> takes;
-};
+namespace pl = analysis::pipeline;
 
-CellTakes cellOf(const Document& document, const analysis::Take& take)
+/// The corpus cell of take A ("function/emotion"), empty when A is not a corpus take.
+std::pair<std::string, std::string> cellOfTakeA(const Document& document)
 {
-    CellTakes cell;
-    const auto& corpus = document.corpus();
-    for (std::size_t i = 0; i < corpus.takes.size(); ++i) {
-        const auto& labels = corpus.takes[i].labels;
-        if (labels.function == take.labels.function && labels.emotion == take.labels.emotion) {
-            cell.ids << Document::corpusTakeId(i);
-            cell.takes.push_back(document.take(Document::corpusTakeId(i)));
-        }
-    }
-    return cell;
+    const QString id = document.selectedId(TakeSlot::A);
+    const TakePointer take = document.take(id);
+    if (!take || !id.startsWith(QStringLiteral("corpus/"))) return {};
+    return {take->labels.function, take->labels.emotion};
+}
+
+QVariant referenceData(const pl::ReferenceChoice& choice)
+{
+    return QString::fromStdString(pl::referenceName(choice));
 }
 
 } // namespace
 
-NormalisePanel::NormalisePanel(Document& document, QWidget* parent) : QWidget(parent), m_document(document)
+NormalisePanel::NormalisePanel(Document& document, AnalysisController& analysis, QWidget* parent)
+    : QWidget(parent), m_document(document), m_analysis(analysis)
 {
     m_reference = new QComboBox(this);
     m_reference->setObjectName("normaliseReference");
@@ -104,131 +90,113 @@ NormalisePanel::NormalisePanel(Document& document, QWidget* parent) : QWidget(pa
     layout->addWidget(m_table, 1);
     layout->addWidget(m_curves, 1);
 
-    auto push = [this](const QString& key, const QVariant& value) {
-        if (!m_updating) changeParameter(m_document, key, value);
+    // Every control edits the typed parameters through ChangeStageParameters; consecutive steps
+    // of a spin box (arrows, keys, wheel) are one undo step until it loses the focus.
+    auto edit = [this](const QString& control, const std::function<void(pl::NormaliseParameters&)>& change) {
+        if (m_updating) return;
+        changeStageParameters(
+            m_document, [&](AnalysisParameters& p) { change(p.normalise); }, tr("Change normalisation %1").arg(control),
+            QStringLiteral("normalise.") + control);
     };
-    connect(m_reference, &QComboBox::currentIndexChanged, this,
-            [this, push] { push(parameters::kNormaliseReference, m_reference->currentData().toString()); });
-    // Consecutive steps of a spin box (arrows, keys, wheel) are one undo step until it loses the focus.
-    auto step = [this](const QString& key, const QVariant& value) {
-        if (!m_updating) stepParameter(m_document, key, value);
-    };
-    connect(m_tau, &QSpinBox::valueChanged, this, [step](int value) { step(parameters::kNormaliseTau, value); });
-    connect(m_band, &QSpinBox::valueChanged, this, [step](int value) { step(parameters::kNormaliseSearchBand, value); });
-    connect(m_scales, &QSpinBox::valueChanged, this, [step](int value) { step(parameters::kNormaliseMaxScale, value); });
+    connect(m_reference, &QComboBox::currentIndexChanged, this, [this, edit] {
+        const auto [function, emotion] = cellOfTakeA(m_document);
+        if (function.empty()) return;
+        const QString data = m_reference->currentData().toString();
+        pl::ReferenceChoice choice;
+        if (data == QStringLiteral("average")) choice.kind = pl::ReferenceKind::Average;
+        else if (data != QStringLiteral("suggested")) choice = {pl::ReferenceKind::Take, data.toInt()};
+        edit(QStringLiteral("reference"), [&](pl::NormaliseParameters& p) {
+            if (choice == p.reference) p.cellReferences.erase(pl::cellName(function, emotion));
+            else p.cellReferences[pl::cellName(function, emotion)] = choice;
+        });
+    });
+    connect(m_tau, &QSpinBox::valueChanged, this, [edit](int value) { edit(QStringLiteral("tau"), [value](auto& p) { p.tau = value; }); });
+    connect(m_band, &QSpinBox::valueChanged, this,
+            [edit](int value) { edit(QStringLiteral("searchBand"), [value](auto& p) { p.searchBand = value; }); });
+    connect(m_scales, &QSpinBox::valueChanged, this,
+            [edit](int value) { edit(QStringLiteral("maxScale"), [value](auto& p) { p.maxScale = value; }); });
     for (QSpinBox* box : {m_tau, m_band, m_scales})
         connect(box, &QSpinBox::editingFinished, &document, &Document::endStepSeries);
-    connect(m_coupling, &QComboBox::currentTextChanged, this,
-            [push](const QString& text) { push(parameters::kNormaliseCoupling, text); });
-    connect(m_path, &QComboBox::currentIndexChanged, this,
-            [this, push] { push(parameters::kNormalisePath, m_path->currentData().toString()); });
+    connect(m_coupling, &QComboBox::currentTextChanged, this, [this, edit](const QString& text) {
+        const std::string spec = text.trimmed().toStdString();
+        if (spec.empty() || spec.size() > 4096) return;
+        edit(QStringLiteral("coupling"), [&](pl::NormaliseParameters& p) { p.coupling = spec; });
+    });
+    connect(m_path, &QComboBox::currentIndexChanged, this, [this, edit] {
+        const bool optimal = m_path->currentData().toString() == QStringLiteral("optimal");
+        edit(QStringLiteral("path"), [optimal](pl::NormaliseParameters& p) {
+            p.path = optimal ? analysis::PathMethod::Optimal : analysis::PathMethod::Greedy;
+        });
+    });
 
-    m_recomputer = new Recomputer(
-        document,
-        [this]() -> Job {
-            const QString sampleId = m_document.selectedId(TakeSlot::A);
-            const TakePointer sample = m_document.take(sampleId);
-            if (!sample || !sampleId.startsWith(QStringLiteral("corpus/"))) return {};
-            const CellTakes cell = cellOf(m_document, *sample);
-            QString referenceId = m_document.parameter(parameters::kNormaliseReference).toString();
-            if (!cell.ids.contains(referenceId)) referenceId.clear(); // suggested
-            analysis::NormaliseOptions options;
-            options.match.tau = m_document.parameter(parameters::kNormaliseTau).toInt();
-            options.match.searchBand = m_document.parameter(parameters::kNormaliseSearchBand).toInt();
-            options.match.scales = analysis::integerScales(m_document.parameter(parameters::kNormaliseMaxScale).toInt());
-            options.match.path = m_document.parameter(parameters::kNormalisePath).toString() == QStringLiteral("optimal")
-                                     ? analysis::PathMethod::Optimal
-                                     : analysis::PathMethod::Greedy;
-            options.coupling = m_document.parameter(parameters::kNormaliseCoupling).toString().toStdString();
-            return [cell, sampleId, referenceId, options](const analysis::RunControl& control) -> JobOutput {
-                std::vector<const analysis::Take*> takes;
-                for (const auto& take : cell.takes) takes.push_back(take.get());
-                int referenceIndex = int(cell.ids.indexOf(referenceId));
-                if (referenceIndex < 0) {
-                    auto suggestion = analysis::suggestReference(takes, control);
-                    if (!suggestion) return {{}, QString::fromStdString(suggestion.error().message)};
-                    referenceIndex = suggestion->takeIndex;
-                }
-                const analysis::Take& reference = *takes[std::size_t(referenceIndex)];
-                auto normalised = analysis::normaliseTakes(reference, takes, options, control);
-                if (!normalised) return {{}, QString::fromStdString(normalised.error().message)};
-                std::vector<const analysis::Take*> results;
-                for (const auto& n : *normalised) results.push_back(&n.normalised);
-                auto variance = analysis::varianceTable(reference, takes, results);
-                if (!variance) return {{}, QString::fromStdString(variance.error().message)};
-                auto output = std::make_shared<NormaliseOutput>();
-                output->takeIds = cell.ids;
-                output->referenceId = cell.ids[referenceIndex];
-                output->sampleId = sampleId;
-                output->variance = std::move(variance).value();
-                for (std::size_t k = 0; k < normalised->size(); ++k) {
-                    const auto& matches = (*normalised)[k].matches;
-                    output->warps.push_back(matches.empty() ? Eigen::VectorXd() : matches.front().smoothWarp);
-                    if (cell.ids[int(k)] == sampleId) {
-                        auto take = (*normalised)[k].normalised;
-                        take.labels.source = "normalised to " + reference.displayName();
-                        output->normalisedSample = std::make_shared<const analysis::Take>(std::move(take));
-                    }
-                }
-                return {std::shared_ptr<const NormaliseOutput>(std::move(output)), {}};
-            };
-        },
-        [this](const JobOutput& output) {
-            if (output.value.has_value()) accept(std::any_cast<std::shared_ptr<const NormaliseOutput>>(output.value));
-            else m_summary->setText(tr("Normalisation failed: %1").arg(output.error));
-        },
-        this, 80);
-    m_recomputer->setObjectName(tr("Normalisation"));
-
-    connect(&document, &Document::parameterChanged, this, [this](const QString& key) {
-        if (!key.startsWith(QStringLiteral("normalise."))) return;
-        refreshControls();
-        m_recomputer->schedule();
+    connect(&document, &Document::parametersChanged, this, [this](int sections) {
+        if (sections & kNormaliseSection) refreshControls();
     });
     connect(&document, &Document::selectionChanged, this, [this](TakeSlot slot) {
-        if (slot != TakeSlot::A) return;
-        const QString id = m_document.selectedId(TakeSlot::A);
-        if (!id.startsWith(QStringLiteral("corpus/"))) return; // keep the result while viewing derived takes
+        if (slot != TakeSlot::A || cellOfTakeA(m_document).first.empty()) return; // keep the cell while viewing derived takes
         refreshControls();
-        m_recomputer->schedule();
+        showResult();
     });
-    connect(&document, &Document::corpusChanged, this, [this] {
-        m_output.reset();
-        refreshControls();
+    connect(&document, &Document::corpusChanged, this, &NormalisePanel::refreshControls);
+    connect(&analysis, &AnalysisController::resultChanged, this, [this](int slot) {
+        if (slot == AnalysisController::kNormaliseSlot) showResult();
+    });
+    connect(&analysis.scheduler(), &StageScheduler::stateChanged, this, [this](int slot) {
+        if (slot == AnalysisController::kNormaliseSlot) showResult();
     });
     refreshControls();
 }
 
 NormalisePanel::~NormalisePanel() = default;
 
-TakePointer NormalisePanel::normalisedTake() const { return m_output ? m_output->normalisedSample : nullptr; }
+TakePointer NormalisePanel::normalisedTake() const
+{
+    return m_analysis.normalised() ? m_document.take(QStringLiteral("live/normalised")) : nullptr;
+}
+
+QString NormalisePanel::summaryText() const { return m_summary->text(); }
 
 void NormalisePanel::refreshControls()
 {
     m_updating = true;
-    const TakePointer takeA = m_document.selectedTake(TakeSlot::A);
-    if (takeA && m_document.selectedId(TakeSlot::A).startsWith(QStringLiteral("corpus/"))) {
-        const CellTakes cell = cellOf(m_document, *takeA);
+    const auto [function, emotion] = cellOfTakeA(m_document);
+    const pl::NormaliseParameters& parameters = m_document.parameters().normalise;
+    if (!function.empty()) {
         m_reference->clear();
-        m_reference->addItem(tr("suggested (thesis 3.6.1)"), QString());
-        for (int i = 0; i < cell.ids.size(); ++i) m_reference->addItem(m_document.takeLabel(cell.ids[i]), cell.ids[i]);
-        const int index = m_reference->findData(m_document.parameter(parameters::kNormaliseReference).toString());
-        m_reference->setCurrentIndex(std::max(0, index));
+        m_reference->addItem(tr("suggested (thesis 3.6.1)"), QStringLiteral("suggested"));
+        m_reference->addItem(tr("average take (thesis 3.7)"), QStringLiteral("average"));
+        for (const analysis::Take* take : m_document.corpus().cell(function, emotion))
+            m_reference->addItem(tr("take %1").arg(take->labels.takeIndex), QString::number(take->labels.takeIndex));
+        m_reference->setCurrentIndex(std::max(0, m_reference->findData(referenceData(parameters.referenceFor(function, emotion)))));
     }
-    m_tau->setValue(m_document.parameter(parameters::kNormaliseTau).toInt());
-    m_band->setValue(m_document.parameter(parameters::kNormaliseSearchBand).toInt());
-    m_scales->setValue(m_document.parameter(parameters::kNormaliseMaxScale).toInt());
-    m_coupling->setCurrentText(m_document.parameter(parameters::kNormaliseCoupling).toString());
-    m_path->setCurrentIndex(std::max(0, m_path->findData(m_document.parameter(parameters::kNormalisePath))));
+    m_tau->setValue(parameters.tau);
+    m_band->setValue(parameters.searchBand);
+    m_scales->setValue(parameters.maxScale);
+    m_coupling->setCurrentText(QString::fromStdString(parameters.coupling));
+    m_path->setCurrentIndex(std::max(0, m_path->findData(QString::fromStdString(pl::pathName(parameters.path)))));
     m_updating = false;
 }
 
-void NormalisePanel::accept(std::shared_ptr<const NormaliseOutput> output)
+void NormalisePanel::showResult()
 {
-    m_output = std::move(output);
-    const auto& variance = m_output->variance;
-    m_summary->setText(tr("Cell of %1 normalised to <b>%2</b>. Squared difference to the reference, summed over channels:")
-                           .arg(m_document.takeLabel(m_output->sampleId), m_document.takeLabel(m_output->referenceId)));
+    const auto& scheduler = m_analysis.scheduler();
+    const int slot = AnalysisController::kNormaliseSlot;
+    if (scheduler.state(slot) == SlotState::Failed) {
+        m_summary->setText(tr("<span style=\"color:#b00020\">Normalisation failed: %1</span>").arg(scheduler.error(slot).toHtmlEscaped()));
+        return;
+    }
+    const auto output = m_analysis.normalised();
+    const auto [function, emotion] = cellOfTakeA(m_document);
+    const pl::CellNormalisation* cell = output && !function.empty() ? output->cell(function, emotion) : nullptr;
+    if (!cell) {
+        m_summary->setText(scheduler.state(slot) == SlotState::Running ? tr("Normalising every cell...") : QString());
+        return;
+    }
+    const auto& variance = cell->variance;
+    m_summary->setText(tr("Cell %1/%2 normalised to <b>%3</b>%4. Squared difference to the reference, summed over channels:")
+                           .arg(QString::fromStdString(function), QString::fromStdString(emotion),
+                                QString::fromStdString(cell->referenceName),
+                                scheduler.state(slot) == SlotState::Running ? tr(" (recomputing)") : QString()));
     m_table->setRowCount(int(variance.takeNames.size()));
     for (int k = 0; k < int(variance.takeNames.size()); ++k) {
         m_table->setItem(k, 0, new QTableWidgetItem(QString::fromStdString(variance.takeNames[std::size_t(k)])));
@@ -236,8 +204,10 @@ void NormalisePanel::accept(std::shared_ptr<const NormaliseOutput> output)
         m_table->setItem(k, 2, new QTableWidgetItem(QString::number(variance.totalAfter[k], 'g', 4)));
     }
     m_curves->clearGraphs();
-    for (std::size_t k = 0; k < m_output->warps.size(); ++k) {
-        const Eigen::VectorXd& warp = m_output->warps[k];
+    const std::size_t count = cell->normalisations.size();
+    for (std::size_t k = 0; k < count; ++k) {
+        const auto& matches = cell->normalisations[k].matches;
+        const Eigen::VectorXd warp = matches.empty() ? Eigen::VectorXd() : matches.front().smoothWarp;
         QVector<double> x(warp.size()), y(warp.size());
         for (Eigen::Index i = 0; i < warp.size(); ++i) {
             x[i] = double(i);
@@ -245,12 +215,10 @@ void NormalisePanel::accept(std::shared_ptr<const NormaliseOutput> output)
         }
         auto* graph = m_curves->addGraph();
         graph->setData(x, y, true);
-        graph->setPen(QPen(QColor::fromHsv(int(k * 360 / std::max<std::size_t>(1, m_output->warps.size())), 200, 200), 1.5));
+        graph->setPen(QPen(QColor::fromHsv(int(k * 360 / std::max<std::size_t>(1, count)), 200, 200), 1.5));
     }
     m_curves->rescaleAxes();
     m_curves->replot();
-    m_document.setLiveTake(QStringLiteral("normalised"), tr("%1 normalised").arg(m_document.takeLabel(m_output->sampleId)),
-                           m_output->normalisedSample, m_output->sampleId);
 }
 
 } // namespace bunraku::app

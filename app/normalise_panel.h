@@ -1,10 +1,10 @@
 #pragma once
-/// The Normalisation dock (thesis 3.5-3.8): the takes of take A's function x emotion cell are
-/// normalised to a reference take (chosen, or suggested by thesis 3.6.1) with the parameters
-/// tau, T_cmp, the largest scale, the coupling and the path method. Recomputed in the
-/// background on every parameter change; the results update live: the variance table (before
-/// and after, per take), the correspondence curves, and take A normalised, published as the
-/// live take "normalised" with A as its ghost. Consecutive steps of a spin box are one undo step.
+/// The Normalisation dock (thesis 3.5-3.8), a view of the pipeline's normalise stage (every cell
+/// normalised by the AnalysisController's scheduler): take A's cell's reference (suggested by
+/// thesis 3.6.1, a take, or the 3.7 average take), tau, T_cmp, the largest scale, the coupling
+/// and the path; the variance table (before and after, per take), the correspondence curves and
+/// the stage's errors. Take A normalised is the live take "normalised" (the controller's).
+/// Consecutive steps of a spin box are one undo step.
 
 #include "app/document.h"
 
@@ -20,29 +20,28 @@ class QTableWidget;
 
 namespace bunraku::app {
 
-class Recomputer;
-struct NormaliseOutput;
+class AnalysisController;
 
 class NormalisePanel : public QWidget {
     Q_OBJECT
 public:
-    explicit NormalisePanel(Document& document, QWidget* parent = nullptr);
+    NormalisePanel(Document& document, AnalysisController& analysis, QWidget* parent = nullptr);
     ~NormalisePanel() override;
 
-    Recomputer* recomputer() const { return m_recomputer; }
     /// Take A normalised by the latest result, null before one arrived.
     TakePointer normalisedTake() const;
+    /// The summary line (the cell, its reference, or the stage's error).
+    QString summaryText() const;
     QTableWidget* varianceTable() const { return m_table; }
     QSpinBox* tauSpin() const { return m_tau; }
     QSpinBox* searchBandSpin() const { return m_band; }
 
 private:
     void refreshControls();
-    void accept(std::shared_ptr<const NormaliseOutput> output);
+    void showResult();
 
     Document& m_document;
-    Recomputer* m_recomputer = nullptr;
-    std::shared_ptr<const NormaliseOutput> m_output;
+    AnalysisController& m_analysis;
     QComboBox* m_reference = nullptr;
     QSpinBox* m_tau = nullptr;
     QSpinBox* m_band = nullptr;
@@ -52,7 +51,6 @@ private:
     QLabel* m_summary = nullptr;
     QTableWidget* m_table = nullptr;
     QCustomPlot* m_curves = nullptr;
-    QString m_cellKey;
     bool m_updating = false;
 };
 

@@ -1,6 +1,6 @@
 #include "app/project_file.h"
 
-#include "app/parameters.h"
+#include "analysis/pipeline/parameters_json.h"
 
 #include "analysis/io/atomic_file.h"
 #include "analysis/io/import_options_json.h"
@@ -8,9 +8,14 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QRegularExpression>
 
 #include <filesystem>
 #include <string_view>
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
 
 namespace bunraku::app {
 namespace {
@@ -18,10 +23,70 @@ namespace {
 using analysis::ErrorCode;
 using analysis::makeError;
 using analysis::parseError;
+using nlohmann::json;
 
-long lineOfOffset(const QByteArray& text, int offset)
+constexpr qint64 kMaxProjectBytes = 64 * 1024 * 1024;
+constexpr int kMaxImported = 10000;
+/// The view values the main window stores, with their ranges (MainWindow::viewState).
+struct ViewRange {
+    const char* key;
+    double low, high;
+};
+constexpr ViewRange kViewRanges[] = {{"graphLayout", 0, 3}, {"twoTakeMode", 0, 1}, {"valueScale", 0, 1}, {"speed", 0.1, 4.0}};
+
+long lineOfOffset(const QByteArray& text, int offset) { return 1 + long(text.left(offset).count('\n')); }
+
+/// Version 1's flat parameters ("normalise.tau": 4, "design.gains": {"p/d": [g0, g1]}, ...) in
+/// version 2's typed layout. Version 1 decomposed the preprocessed takes, by least squares
+/// unless the project chose KM2O.
+json upgradeVersion1(const json& flat)
 {
-    return 1 + long(text.left(offset).count('\n'));
+    json p = {{"decompose", {{"input", "preprocessed"}, {"method", "least-squares"}}}};
+    if (!flat.is_object()) return p;
+    auto copy = [&](const char* from, const char* section, const char* key) {
+        if (flat.contains(from)) p[section][key] = flat[from];
+    };
+    copy("normalise.tau", "normalise", "tau");
+    copy("normalise.searchBand", "normalise", "searchBand");
+    copy("normalise.maxScale", "normalise", "maxScale");
+    copy("normalise.coupling", "normalise", "coupling");
+    copy("normalise.path", "normalise", "path");
+    copy("emotion.method", "decompose", "method");
+    copy("emotion.weight", "design", "emotionWeight");
+    if (flat.contains("emotion.order") && p["decompose"]["method"] == "km2o") p["decompose"]["M"] = flat["emotion.order"];
+    if (flat.contains("design.warp") && flat["design.warp"].is_array() && !flat["design.warp"].empty()) p["design"]["warp"] = flat["design.warp"];
+    if (flat.contains("design.gains") && flat["design.gains"].is_object()) {
+        json gains = json::array();
+        for (auto it = flat["design.gains"].begin(); it != flat["design.gains"].end(); ++it) {
+            const auto slash = it.key().find('/');
+            json entry = {{"g0", it.value().is_array() && it.value().size() == 2 ? it.value()[0] : json()},
+                          {"g1", it.value().is_array() && it.value().size() == 2 ? it.value()[1] : json()}};
+            try {
+                entry["phrase"] = std::stoi(it.key().substr(0, slash));
+                entry["dof"] = std::stoi(it.key().substr(slash + 1));
+            } catch (const std::exception&) {
+                entry["phrase"] = it.key(); // refused by the reader with its name
+            }
+            gains.push_back(entry);
+        }
+        std::sort(gains.begin(), gains.end(), [](const json& a, const json& b) {
+            return a["phrase"].dump() + "/" + a["dof"].dump() < b["phrase"].dump() + "/" + b["dof"].dump();
+        });
+        p["design"]["gains"] = gains;
+    }
+    if (flat.contains("design.boundaries") && flat["design.boundaries"].is_array()) {
+        const json& b = flat["design.boundaries"];
+        if (b.empty()) p["design"]["boundaries"] = "suggested";
+        else if (b.size() == 1 && b[0] == 0) p["design"]["boundaries"] = json::array(); // version 1's "no inner boundary"
+        else p["design"]["boundaries"] = b;
+    }
+    return p;
+}
+
+bool validTakeId(const QString& id)
+{
+    static const QRegularExpression pattern(QStringLiteral("^(corpus/\\d{1,9}|imported/\\d{1,9}|live/[a-z]{1,32})$"));
+    return id.isEmpty() || pattern.match(id).hasMatch();
 }
 
 } // namespace
@@ -34,11 +99,12 @@ analysis::Status writeProject(const ProjectState& state, const QString& file)
     root["corpus"] = state.corpus;
     QJsonArray imported;
     for (const auto& recipe : state.imported) {
-        const QByteArray options = QByteArray::fromStdString(analysis::io::importOptionsToJson(recipe.options).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
+        const QByteArray options =
+            QByteArray::fromStdString(analysis::io::importOptionsToJson(recipe.options).dump(-1, ' ', false, json::error_handler_t::replace));
         imported.append(QJsonObject{{"path", recipe.path}, {"label", recipe.label}, {"options", QJsonDocument::fromJson(options).object()}});
     }
     root["imported"] = imported;
-    root["parameters"] = QJsonObject::fromVariantMap(state.parameters);
+    root["parameters"] = QJsonDocument::fromJson(QByteArray::fromStdString(analysis::pipeline::toJson(state.parameters).dump())).object();
     root["takeA"] = state.takeA;
     root["takeB"] = state.takeB;
     root["time_s"] = state.timeSeconds;
@@ -51,7 +117,8 @@ analysis::Status writeProject(const ProjectState& state, const QString& file)
 
 analysis::Result<ProjectState> readProject(const QString& file)
 {
-    auto text = analysis::io::readTextFile(std::filesystem::path(file.toStdString()), analysis::io::kDocumentLimitBytes);
+    // A regular file of at most 64 MB (a FIFO or device is refused, never waited on), read whole.
+    auto text = analysis::io::readTextFile(std::filesystem::path(file.toStdString()), std::uintmax_t(kMaxProjectBytes));
     if (!text) return text.error();
     return parseProject(QByteArray::fromStdString(*text), file);
 }
@@ -67,41 +134,71 @@ analysis::Result<ProjectState> parseProject(const QByteArray& text, const QStrin
     const QJsonObject root = document.object();
     if (root["format"].toString() != kProjectFormatName)
         return parseError(name, 0, "expected \"format\": \"bunraku-project\"");
-    if (root["version"].toInt() != kProjectFormatVersion)
-        return parseError(name, 0, "expected \"version\": 1");
+    const int version = root["version"].toInt();
+    if (version != 1 && version != kProjectFormatVersion) return parseError(name, 0, "expected \"version\": 1 or 2");
     if (!root["corpus"].isString() || root["corpus"].toString().isEmpty())
         return parseError(name, 0, "expected \"corpus\": \"demo\" or a corpus folder");
 
     ProjectState state;
     state.corpus = root["corpus"].toString();
-    const QJsonArray imported = root["imported"].toArray();
+    const QJsonValue importedValue = root["imported"];
+    if (!importedValue.isUndefined() && !importedValue.isArray()) return parseError(name, 0, "expected \"imported\": [...]");
+    if (importedValue.toArray().size() > kMaxImported) return parseError(name, 0, "more than 10000 \"imported\" takes");
+    const QJsonArray imported = importedValue.toArray();
     for (qsizetype i = 0; i < imported.size(); ++i) {
         const QJsonObject recipe = imported[i].toObject();
-        if (!recipe["path"].isString()) return parseError(name, 0, "expected \"path\" in every \"imported\" entry");
+        if (!recipe["path"].isString() || recipe["path"].toString().isEmpty())
+            return parseError(name, 0, "expected \"path\" in every \"imported\" entry");
         ImportedTakeRecipe item{recipe["path"].toString(), recipe["label"].toString(), {}};
+        // What the take was imported with (older projects: the defaults).
         if (recipe.contains("options")) {
+            const std::string where = "imported[" + std::to_string(i) + "].options";
+            if (!recipe["options"].isObject()) return parseError(name, 0, where + ": expected an object");
             const QByteArray options = QJsonDocument(recipe["options"].toObject()).toJson(QJsonDocument::Compact);
-            const nlohmann::json parsed = nlohmann::json::parse(options.toStdString(), nullptr, false);
-            auto read = analysis::io::importOptionsFromJson(parsed, name + ": imported[" + std::to_string(i) + "].options");
-            if (!recipe["options"].isObject() || !read)
-                return read ? parseError(name, 0, "imported[" + std::to_string(i) + "].options: expected an object") : read.error();
+            auto read = analysis::io::importOptionsFromJson(json::parse(options.toStdString(), nullptr, false), name + ": " + where);
+            if (!read) return read.error();
             item.options = std::move(read).value();
         }
         state.imported.push_back(std::move(item));
     }
-    const QVariantMap stored = root["parameters"].toObject().toVariantMap();
-    for (auto it = stored.begin(); it != stored.end(); ++it) {
-        QVariant value = it.value();
-        const QVariant fallback = parameters::defaultValue(it.key());
-        // JSON numbers come back as doubles: give each parameter its declared type again.
-        if (fallback.isValid() && value.metaType() != fallback.metaType() && value.canConvert(fallback.metaType()))
-            value.convert(fallback.metaType());
-        state.parameters.insert(it.key(), value);
+    // The parameters: strictly typed and range-checked before anything uses them.
+    json parameters = json::object();
+    try {
+        const json whole = json::parse(text.toStdString());
+        if (whole.contains("parameters")) parameters = whole["parameters"];
+    } catch (const json::exception& parse) {
+        return parseError(name, 0, std::string("expected JSON: ") + parse.what());
+    }
+    if (version == 1) parameters = upgradeVersion1(parameters);
+    auto typed = analysis::pipeline::chainParametersFromJson(parameters, name);
+    if (!typed) return typed.error();
+    state.parameters = std::move(typed).value();
+
+    for (const char* key : {"takeA", "takeB"}) {
+        const QJsonValue value = root[key];
+        if (!value.isUndefined() && !value.isNull() && (!value.isString() || !validTakeId(value.toString())))
+            return parseError(name, 0, std::string("expected \"") + key + "\": a take id (corpus/N, imported/N or live/name)");
     }
     state.takeA = root["takeA"].toString();
     state.takeB = root["takeB"].toString();
-    state.timeSeconds = root["time_s"].toDouble();
-    state.view = root["view"].toObject().toVariantMap();
+    const QJsonValue time = root["time_s"];
+    if (!time.isUndefined() && (!time.isDouble() || !std::isfinite(time.toDouble()) || time.toDouble() < 0.0 || time.toDouble() > 1e9))
+        return parseError(name, 0, "expected \"time_s\": seconds in [0, 1e9]");
+    state.timeSeconds = time.toDouble();
+    const QJsonValue view = root["view"];
+    if (!view.isUndefined() && !view.isObject()) return parseError(name, 0, "expected \"view\": {...}");
+    const QJsonObject viewObject = view.toObject();
+    for (const ViewRange& range : kViewRanges) {
+        const QJsonValue value = viewObject[range.key];
+        if (value.isUndefined()) continue;
+        if (!value.isDouble() || !(value.toDouble() >= range.low && value.toDouble() <= range.high) ||
+            (range.high > 1.5 && range.low == 0 && value.toDouble() != std::floor(value.toDouble())))
+            return parseError(name, 0, std::string("expected \"view\".\"") + range.key + "\" in " + QString::number(range.low).toStdString() +
+                                           ".." + QString::number(range.high).toStdString());
+    }
+    if (viewObject.contains("part") && (!viewObject["part"].isString() || viewObject["part"].toString().size() > 256))
+        return parseError(name, 0, "expected \"view\".\"part\": a part name");
+    state.view = viewObject.toVariantMap();
     return state;
 }
 

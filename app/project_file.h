@@ -1,16 +1,22 @@
 #pragma once
-/// The project file (JSON, "bunraku-project" version 1): the corpus reference, the recipes of
-/// derived takes (imported files), the undoable parameters (edits) and the view state. Live
-/// results are not stored: they are recomputed from the parameters. Saves are atomic and durable
-/// (analysis/io/atomic_file.h); reading refuses anything but a regular file of at most
-/// io::kDocumentLimitBytes.
+/// The project file (JSON, "bunraku-project" version 2): the corpus reference, the recipes of
+/// derived takes (imported files, each with the options it was imported with:
+/// analysis/io/import_options_json.h), the typed analysis parameters
+/// (pipeline/parameters_json.h) and the view state. Live results are not stored: they are
+/// recomputed from the parameters. Saves are atomic and durable (analysis/io/atomic_file.h).
+/// Reading checks everything before using it: the parameters (types and ranges: `"maxScale": 2e9`
+/// or a negative tau is refused naming the parameter, and nothing is allocated from a value),
+/// the import options, take ids ("corpus/N", "imported/N", "live/name"), the time and the view's
+/// values; a file over 64 MB or that is not a regular file (a FIFO, /dev/zero) is refused before
+/// anything is read. Version 1 files (flat "panel.name" parameter keys) are read and converted.
 ///
-/// {"format": "bunraku-project", "version": 1, "corpus": "demo" | "/abs/folder",
-///  "imported": [{"path": ..., "label": ..., "options": {import options}}], "parameters": {key: value},
+/// {"format": "bunraku-project", "version": 2, "corpus": "demo" | "/abs/folder",
+///  "imported": [{"path": ..., "label": ..., "options": {...}}], "parameters": {"normalise": {...}, ...},
 ///  "takeA": id, "takeB": id, "time_s": t, "view": {...}}
 
 #include "analysis/core/result.h"
 #include "analysis/io/take_reader.h"
+#include "analysis/pipeline/stage_parameters.h"
 
 #include <QByteArray>
 #include <QString>
@@ -30,7 +36,7 @@ struct ImportedTakeRecipe {
 struct ProjectState {
     QString corpus; ///< "demo" or the corpus folder
     QVector<ImportedTakeRecipe> imported;
-    QVariantMap parameters;
+    analysis::pipeline::ChainParameters parameters;
     QString takeA;
     QString takeB;
     double timeSeconds = 0.0;
@@ -38,7 +44,7 @@ struct ProjectState {
 };
 
 inline constexpr const char* kProjectFormatName = "bunraku-project";
-inline constexpr int kProjectFormatVersion = 1;
+inline constexpr int kProjectFormatVersion = 2;
 /// The file name suffix of project files.
 inline constexpr const char* kProjectSuffix = ".bunraku.json";
 

@@ -105,17 +105,6 @@ ViewportPanel::ViewportPanel(Document& document, QWidget* parent) : QWidget(pare
             const auto& axes = result.axes;
             m_viewport->setScene(sceneOf(takes, axes));
             m_viewport->setTime(m_document.currentTime());
-            // The motion axis of the first take is a take too: its 6 channels can be graphed.
-            if (!takes.empty() && !axes.empty() && !axes.front().empty() && takes.front() != m_axisSource) {
-                m_axisSource = takes.front(); // publish once per source take (no update loop)
-                analysis::MotionAxis axis;
-                axis.world_T_axis = axes.front();
-                axis.rateHz = takes.front()->rateHz;
-                axis.labels = takes.front()->labels;
-                auto take = std::make_shared<const analysis::Take>(analysis::axisTake(axis));
-                m_document.setLiveTake(QStringLiteral("axis"), tr("motion axis of %1").arg(QString::fromStdString(takes.front()->displayName())),
-                                       take);
-            }
         },
         this, 60, [this] { return m_sceneSerial; });
     m_axes->setObjectName(tr("Motion axis"));

@@ -1,7 +1,8 @@
 #pragma once
 /// The 3D view dock: the renderer's ViewportWidget showing take A (and B side by side), with
 /// toggles for the puppet, the motion axis, the orbits and the floor grid. The motion axes are
-/// computed in the background and added when ready; a click on a part selects its graphs.
+/// computed in the background and added when ready (for drawing only: the graphable "axis" take
+/// is the AnalysisController's); a click on a part selects its graphs.
 /// A changed take (a designed take on every step of a warp drag) is shown at the next paint:
 /// replacing the scene costs about one frame, so changes are not delayed.
 
@@ -48,7 +49,6 @@ private:
     QCheckBox* m_orbits = nullptr;
     QCheckBox* m_grid = nullptr;
     quint64 m_sceneSerial = 0;
-    TakePointer m_axisSource; ///< the take whose motion axis was last published
     /// The motion axis (world_T_axis per frame) of each take it was last computed for: a rebuilt
     /// scene keeps the axes of takes that did not change.
     std::vector<std::pair<TakePointer, std::vector<analysis::RigidTransform>>> m_knownAxes;

@@ -14,7 +14,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         return 0;
     }
     fuzz::expect(analysis::validateWarpCurve(*curve).ok(), "an accepted warp curve is valid");
-    fuzz::expect(curve->outputFrames >= 1 && double(curve->outputFrames) <= analysis::kMaxWarpFrame + 1, "output frames bounded");
+    fuzz::expect(curve->outputFrames >= 1 && double(curve->outputFrames) <= analysis::kWarpCsvMaxFrame + 1, "output frames bounded");
     const double last = curve->points.back().output;
     for (const double x : {0.0, 0.5 * last, last, last + 1.0}) {
         const double source = analysis::evaluateWarp(*curve, x);

@@ -11,7 +11,9 @@ packages=(
   libeigen3-dev libglm-dev nlohmann-json3-dev libcli11-dev catch2
   libfftw3-dev libassimp-dev libbenchmark-dev
   xvfb xauth libgl1-mesa-dri libglx-mesa0 libegl-mesa0 mesa-utils
-  fonts-dejavu-core ffmpeg
+  fonts-dejavu-core ffmpeg chromium
+  librsvg2-bin help2man file dpkg-dev
+  lintian desktop-file-utils appstream shared-mime-info man-db strace
   clang-14 libfuzzer-14-dev
   python3 python3-numpy python3-pywt python3-statsmodels
 )

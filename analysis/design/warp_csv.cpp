@@ -58,14 +58,14 @@ Result<WarpCurve> parseWarpCsv(const std::string& text, const std::string& sourc
             if (parsed.status != detail::NumberStatus::Ok)
                 return parseError(sourceName, line.number,
                                   std::string(names[i]) + ": expected a finite number, found " + detail::quoted(fields[std::size_t(i)]));
-            if (parsed.value < 0.0 || parsed.value > kMaxWarpFrame)
+            if (parsed.value < 0.0 || parsed.value > kWarpCsvMaxFrame)
                 return parseError(sourceName, line.number,
                                   std::string(names[i]) + ": " + detail::quoted(fields[std::size_t(i)]) + " is outside [0, " +
-                                      detail::shortText(kMaxWarpFrame) + "] frames");
+                                      detail::shortText(kWarpCsvMaxFrame) + "] frames");
             *values[i] = parsed.value;
         }
-        if (curve.points.size() == kMaxWarpPoints)
-            return parseError(sourceName, line.number, "more than " + std::to_string(kMaxWarpPoints) + " control points");
+        if (curve.points.size() == kWarpCsvMaxPoints)
+            return parseError(sourceName, line.number, "more than " + std::to_string(kWarpCsvMaxPoints) + " control points");
         if (!curve.points.empty() && point.output <= curve.points.back().output)
             return parseError(sourceName, line.number, "output_frame must increase from line to line");
         if (!curve.points.empty() && point.source < curve.points.back().source)

@@ -12,6 +12,7 @@
 #include "analysis/io/staged_folder.h"
 #include "analysis/io/take_csv.h"
 #include "analysis/io/text_format.h"
+#include "analysis/pipeline/stages.h"
 #include "analysis/preprocess/preprocess.h"
 #include "analysis/synth/demo_corpus.h"
 
@@ -78,17 +79,18 @@ struct Outcome {
     std::optional<Km2oDecomposition> km2o; ///< with --method km2o
 };
 
+/// The pipeline's decompose stage (analysis/pipeline), as the workbench runs it, on the corpus
+/// as given (already preprocessed or normalised by the user).
 Outcome decompose(const Corpus& corpus, const DecomposeSettings& settings)
 {
-    if (settings.method == Method::LeastSquares) {
-        if (settings.correlationLength != 0) throw CliError("--M applies to --method km2o only");
-        return {unwrap(decomposeLeastSquares(corpus)), std::nullopt};
-    }
-    Km2oDecompositionOptions options;
-    options.correlationLength = settings.correlationLength;
-    auto result = unwrap(decomposeKm2o(corpus, options));
-    Decomposition components = result.components;
-    return {std::move(components), std::move(result)};
+    if (settings.method == Method::LeastSquares && settings.correlationLength != 0)
+        throw CliError("--M applies to --method km2o only");
+    pipeline::DecomposeParameters parameters;
+    parameters.input = pipeline::DecomposeInput::Preprocessed;
+    parameters.method = settings.method == Method::Km2o ? pipeline::DecomposeMethod::Km2o : pipeline::DecomposeMethod::LeastSquares;
+    parameters.correlationLength = settings.correlationLength;
+    pipeline::DecomposeOutput output = unwrap(pipeline::runDecompose(corpus, parameters));
+    return {std::move(output.components), std::move(output.km2o)};
 }
 
 /// Table 4.5 layout: one row per channel, one P^{ij} [%] column per cell.
@@ -209,7 +211,7 @@ nlohmann::json truthErrors(const Decomposition& d, const synth::DemoGroundTruth&
 
 struct DecomposeArgs {
     CorpusInput corpus;
-    std::string method = "ls";
+    std::string method = "km2o"; // thesis 4.4.4: KM2O, M chosen by P
     int correlationLength = 0;
     std::string output;
     std::string truth;
@@ -310,7 +312,7 @@ struct EmotionArgs {
     std::string function;
     std::string emotion;
     double weight = 1.0;
-    std::string method = "ls";
+    std::string method = "km2o";
     int correlationLength = 0;
     std::string output;
 };
@@ -406,7 +408,7 @@ void addDecompositionCommands(CommandSet& commands)
         "decompose", "Decompose a corpus into function y^i, emotion z^{ij} and fluctuation eta (thesis ch. 4); write "
                      "components, spectra and ARMA tables");
     dec->add_option("corpus", decomposeArgs->corpus.path, "Corpus folder (corpus.json)")->required();
-    dec->add_option("--method", decomposeArgs->method, "ls (least squares, 4.3.1) or km2o (KM2O-Langevin, 4.4)")
+    dec->add_option("--method", decomposeArgs->method, "km2o (KM2O-Langevin, 4.4.4; default) or ls (least squares, 4.3.1)")
         ->check(CLI::IsMember({"ls", "km2o"}));
     dec->add_option("--M", decomposeArgs->correlationLength,
                     "KM2O correlation length M (1..M_max); default: chosen by reconstruction error");
@@ -431,7 +433,7 @@ void addDecompositionCommands(CommandSet& commands)
     emo->add_option("--function", emotionArgs->function, "Function label, e.g. greeting")->required();
     emo->add_option("--emotion", emotionArgs->emotion, "Emotion label, e.g. friendly")->required();
     emo->add_option("--weight", emotionArgs->weight, "Emotion weight a in [0, 3] (1 = as performed)")->required();
-    emo->add_option("--method", emotionArgs->method, "ls or km2o")->check(CLI::IsMember({"ls", "km2o"}));
+    emo->add_option("--method", emotionArgs->method, "km2o (default, M chosen by P unless --M) or ls")->check(CLI::IsMember({"ls", "km2o"}));
     emo->add_option("--M", emotionArgs->correlationLength, "KM2O correlation length");
     emo->add_option("-o,--output", emotionArgs->output, "Output take CSV")->required();
     emo->add_flag("--pad", emotionArgs->corpus.pad, "Pad takes to the longest by repeating the last frame");

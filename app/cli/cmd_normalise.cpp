@@ -10,6 +10,7 @@
 #include "analysis/normalise/take_normalisation.h"
 #include "analysis/normalise/truth_experiment.h"
 #include "analysis/normalise/variance_evaluation.h"
+#include "analysis/pipeline/stages.h"
 #include "analysis/preprocess/preprocess.h"
 #include "analysis/synth/demo_corpus.h"
 #include "analysis/synth/demo_corpus_io.h"
@@ -24,6 +25,7 @@ namespace bunraku::app::cli {
 namespace {
 
 namespace an = bunraku::analysis;
+namespace pl = bunraku::analysis::pipeline;
 
 struct MatchArguments {
     int tau = 4;
@@ -134,14 +136,32 @@ std::string takeCsv(const an::Take& take, const std::string& name)
     return an::io::formatTakeCsv(take);
 }
 
+pl::NormaliseParameters normaliseParameters(const MatchArguments& arguments)
+{
+    pl::NormaliseParameters parameters;
+    parameters.coupling = arguments.coupling;
+    parameters.tau = arguments.tau;
+    parameters.searchBand = arguments.tcmp;
+    parameters.scales = parseScales(arguments.scales);
+    parameters.approximationWeight = arguments.approximationWeight;
+    parameters.path = arguments.path == "optimal" ? an::PathMethod::Optimal : an::PathMethod::Greedy;
+    parameters.weighting = arguments.weighting == "standardise" ? an::ChannelWeighting::Standardise : an::ChannelWeighting::None;
+    parameters.level = arguments.level == "none" ? an::LevelAlignment::None : an::LevelAlignment::FirstFrame;
+    if (auto valid = pl::validate(parameters); !valid) throw CliError(valid.error().message);
+    return parameters;
+}
+
 void runNormalise(const NormaliseArguments& arguments)
 {
     refuseOutputOverInputs(arguments.output, OutputKind::Folder, {arguments.corpus});
     an::Corpus corpus = unwrap(an::io::readCorpus(arguments.corpus));
-    // Thesis 2.2 first (pad, unwrap, align start times and start positions), unless told not to.
-    if (!arguments.noPreprocess) corpus = unwrap(an::preprocess::preprocessCorpus(corpus)).corpus;
-    const std::vector<const an::Take*> raw = corpus.cell(arguments.function, arguments.emotion);
-    if (raw.empty()) {
+    // Thesis 2.2 first (pad, unwrap, align start times and start positions) - the pipeline's
+    // preprocess stage, as the workbench runs it - unless told not to (angles are unwrapped then too).
+    pl::PreprocessParameters preprocessing;
+    if (arguments.noPreprocess)
+        preprocessing.pad = preprocessing.alignStart = preprocessing.alignHeading = preprocessing.alignPosition = false;
+    corpus = unwrap(pl::runPreprocess(corpus, preprocessing)).corpus;
+    if (corpus.cell(arguments.function, arguments.emotion).empty()) {
         std::string cells;
         for (const auto& f : corpus.functions())
             for (const auto& e : corpus.emotions())
@@ -149,57 +169,35 @@ void runNormalise(const NormaliseArguments& arguments)
         throw CliError("no takes for " + arguments.function + "/" + arguments.emotion + " in " + arguments.corpus
                        + " (cells: " + cells + ")");
     }
-    // Angles continuous (thesis 2.2 step 2) also when preprocessing is off.
-    std::vector<an::Take> takes;
-    for (const an::Take* take : raw) {
-        takes.push_back(*take);
-        an::preprocess::unwrapAngles(takes.back());
-    }
-    std::vector<const an::Take*> cell;
-    for (const auto& take : takes) cell.push_back(&take);
-    auto indexOfTake = [&](int takeIndex, const std::string& what) {
-        for (std::size_t k = 0; k < cell.size(); ++k)
-            if (cell[k]->labels.takeIndex == takeIndex) return int(k);
-        throw CliError(what + ": the cell has no take " + std::to_string(takeIndex));
-    };
-
-    const an::NormaliseOptions options = normaliseOptions(arguments.match);
-    const an::ReferenceSuggestion suggestion = unwrap(an::suggestReference(cell));
-    an::Take reference;
-    std::string referenceName;
-    if (arguments.reference.empty() || arguments.reference == "average") {
-        if (arguments.reference.empty() && !arguments.exclude.empty())
-            throw CliError("--exclude applies to --reference average");
-        if (arguments.reference.empty()) {
-            reference = *cell[std::size_t(suggestion.takeIndex)];
-            referenceName = "take " + std::to_string(reference.labels.takeIndex) + " (suggested)";
-        } else {
-            an::AverageOptions average;
-            average.normalise = options;
-            average.baseTake = arguments.base > 0 ? indexOfTake(arguments.base, "--base") : suggestion.takeIndex;
-            for (int k : arguments.exclude) {
-                average.excludedTakes.push_back(indexOfTake(k, "--exclude"));
-                if (average.excludedTakes.back() == average.baseTake)
-                    throw CliError("take " + std::to_string(k) + " is the base of the average; choose another with --base");
-            }
-            reference = unwrap(an::averageTake(cell, average));
-            referenceName = std::to_string(cell.size() - average.excludedTakes.size()) + "ave";
-        }
-    } else {
-        int index = 0;
+    // The pipeline's normalise stage on this cell alone.
+    an::Corpus cellCorpus = corpus;
+    cellCorpus.takes.clear();
+    for (const an::Take* take : corpus.cell(arguments.function, arguments.emotion)) cellCorpus.takes.push_back(*take);
+    pl::NormaliseParameters parameters = normaliseParameters(arguments.match);
+    if (!arguments.exclude.empty() && arguments.reference != "average") throw CliError("--exclude applies to --reference average");
+    if (arguments.reference == "average") {
+        parameters.reference = {pl::ReferenceKind::Average, 0};
+        parameters.averageBase = arguments.base;
+        parameters.averageExcluded = arguments.exclude;
+        parameters.averageExcludesOutliers = false; // --reference average: every take unless --exclude
+    } else if (!arguments.reference.empty()) {
         try {
-            index = std::stoi(arguments.reference);
+            std::size_t used = 0;
+            parameters.reference = {pl::ReferenceKind::Take, std::stoi(arguments.reference, &used)};
+            if (used != arguments.reference.size()) throw std::invalid_argument(arguments.reference);
         } catch (const std::exception&) {
             throw CliError("--reference: expected a take index or 'average', got '" + arguments.reference + "'");
         }
-        reference = *cell[std::size_t(indexOfTake(index, "--reference"))];
-        referenceName = "take " + std::to_string(index);
     }
-
-    const std::vector<an::TakeNormalisation> normalised = unwrap(an::normaliseTakes(reference, cell, options));
-    std::vector<const an::Take*> normalisedTakes;
-    for (const auto& one : normalised) normalisedTakes.push_back(&one.normalised);
-    const an::VarianceTable table = unwrap(an::varianceTable(reference, cell, normalisedTakes));
+    const pl::NormaliseOutput output = unwrap(pl::runNormalise(cellCorpus, parameters));
+    const pl::CellNormalisation& result = output.cells.front();
+    std::vector<const an::Take*> cell = corpus.cell(arguments.function, arguments.emotion);
+    const an::NormaliseOptions options = parameters.options();
+    const an::ReferenceSuggestion& suggestion = result.suggestion;
+    const an::Take& reference = result.referenceTake;
+    const std::string& referenceName = result.referenceName;
+    const std::vector<an::TakeNormalisation>& normalised = result.normalisations;
+    const an::VarianceTable& table = result.variance;
 
     // Every output is built in a hidden folder and swapped in at the end: a killed run leaves
     // the previous output whole, never some files of each.

@@ -9,7 +9,9 @@ void addAllCommands(CommandSet& commands)
     addNormalisationCommands(commands);
     addDecompositionCommands(commands);
     addMotionAxisCommands(commands);
+    addAnalyseCommands(commands);
     addRenderCommands(commands);
+    addHelpCommands(commands);
 }
 
 } // namespace bunraku::app::cli

@@ -14,6 +14,10 @@ void addNormalisationCommands(CommandSet& commands);
 void addDecompositionCommands(CommandSet& commands);
 /// axis, phase, gains, design, experiment design (cmd_axis.cpp)
 void addMotionAxisCommands(CommandSet& commands);
+/// analyse (cmd_analyse.cpp)
+void addAnalyseCommands(CommandSet& commands);
 /// render (cmd_render.cpp)
 void addRenderCommands(CommandSet& commands);
+/// help (cmd_help.cpp)
+void addHelpCommands(CommandSet& commands);
 } // namespace bunraku::app::cli

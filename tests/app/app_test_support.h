@@ -2,12 +2,11 @@
 /// Shared set-up of the app tests: settings and autosaves go to a scratch folder, never to the
 /// user's; windows open without dialogs and with the default layout.
 
-#include "app/design_controller.h"
-#include "app/emotion_panel.h"
+#include "app/analysis_controller.h"
 #include "app/file_controller.h"
 #include "app/main_window.h"
-#include "app/normalise_panel.h"
 #include "app/recomputer.h"
+#include "app/stage_scheduler.h"
 #include "app/viewport_panel.h"
 
 #include "tests/support/test_paths.h"
@@ -55,10 +54,7 @@ inline std::unique_ptr<app::MainWindow> demoWindow()
 /// event loop, so a test comparing an export with the view's size waits for this first.
 inline bool waitUntilIdle(app::MainWindow& window, int timeoutMs = 60000)
 {
-    const auto idle = [&window] {
-        return !window.design().recomputer()->busy() && !window.viewportPanel()->recomputer()->busy() &&
-               !window.normalisePanel()->recomputer()->busy() && !window.emotionPanel()->recomputer()->busy();
-    };
+    const auto idle = [&window] { return !window.analysis().scheduler().busy() && !window.viewportPanel()->recomputer()->busy(); };
     if (!QTest::qWaitFor(idle, timeoutMs)) return false;
     QCoreApplication::sendPostedEvents(); // the layout requests the finished work posted
     QCoreApplication::processEvents();

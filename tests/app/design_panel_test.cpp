@@ -3,7 +3,8 @@
 #include "app/commands.h"
 #include "app/design_controller.h"
 #include "app/design_panel.h"
-#include "app/parameters.h"
+#include "app/analysis_controller.h"
+#include "app/commands.h"
 
 #include "widgets/gain_table.h"
 #include "widgets/scrub_bar.h"
@@ -30,7 +31,7 @@ namespace {
 
 bool waitForDesign(app::MainWindow& window)
 {
-    return QTest::qWaitFor([&] { return window.design().ready() && !window.design().recomputer()->busy(); }, 60000);
+    return QTest::qWaitFor([&] { return window.design().ready() && !window.analysis().scheduler().busy(); }, 60000);
 }
 
 /// A left-button drag in 5 moves from `from` to `to` (widget coordinates).
@@ -53,7 +54,7 @@ TEST_CASE("the design is prepared in the background and the designed take is lis
     auto window = test::demoWindow();
     REQUIRE(window);
     REQUIRE(waitForDesign(*window));
-    INFO(window->design().recomputer()->lastError().toStdString());
+    INFO(window->analysis().scheduler().error(app::AnalysisController::kAxesSlot).toStdString());
     const auto designed = window->document().take(QStringLiteral("live/designed"));
     REQUIRE(designed);
     const auto source = window->document().take(window->design().sourceId());
@@ -477,10 +478,9 @@ TEST_CASE("dragging a boundary keeps phrases 2 frames long, and missing extracte
     REQUIRE(design.extractionError().isEmpty());
     REQUIRE_FALSE(window->designPanel()->statusText().contains(QStringLiteral("No extracted gains")));
     // A project can still hold a 1-frame phrase: the panel says why there are no extracted gains.
-    QVariantList inner;
-    inner << qlonglong(1);
-    for (std::size_t i = 2; i + 1 < suggested.size(); ++i) inner << qlonglong(suggested[i]);
-    app::changeParameter(window->document(), app::parameters::kDesignBoundaries, inner, QStringLiteral("test"));
+    analysis::pipeline::PhraseBoundaries inner{false, {1}};
+    for (std::size_t i = 2; i + 1 < suggested.size(); ++i) inner.inner.push_back(suggested[i]);
+    app::changeStageParameters(window->document(), [&](app::AnalysisParameters& p) { p.design.boundaries = inner; }, QStringLiteral("test"));
     REQUIRE(design.boundaries()[1] == 1);
     REQUIRE(design.extractedGains().phrases.empty());
     REQUIRE_FALSE(design.extractionError().isEmpty());

@@ -3,7 +3,8 @@
 #include "app/commands.h"
 #include "app/design_controller.h"
 #include "app/emotion_panel.h"
-#include "app/parameters.h"
+#include "app/analysis_controller.h"
+#include "app/commands.h"
 
 #include "widgets/graph_panel.h"
 #include "widgets/corpus_browser.h"
@@ -110,8 +111,8 @@ TEST_CASE("a saved project reopens to the same state", "[app][files]")
         auto& document = window->document();
         REQUIRE(window->files().exportTake(takeFile));
         REQUIRE(window->files().importTakeFile(takeFile));
-        app::changeParameter(document, app::parameters::kNormaliseTau, 6);
-        app::changeParameter(document, app::parameters::kEmotionWeight, 1.75);
+        app::changeStageParameters(document, [](app::AnalysisParameters& p) { p.normalise.tau = 6; }, QStringLiteral("tau"));
+        app::setEmotionWeight(document, 1.75);
         takeB = app::Document::corpusTakeId(12);
         document.selectTake(TakeSlot::A, app::Document::corpusTakeId(3));
         document.selectTake(TakeSlot::B, takeB);
@@ -128,8 +129,8 @@ TEST_CASE("a saved project reopens to the same state", "[app][files]")
     REQUIRE(window->files().openProject(project));
     const auto& document = window->document();
     REQUIRE(document.corpusSource() == QStringLiteral("demo"));
-    REQUIRE(document.parameter(app::parameters::kNormaliseTau).toInt() == 6);
-    REQUIRE(document.parameter(app::parameters::kEmotionWeight).toDouble() == 1.75);
+    REQUIRE(document.parameters().normalise.tau == 6);
+    REQUIRE(document.parameters().design.emotionWeight == 1.75);
     REQUIRE(document.selectedId(TakeSlot::A) == app::Document::corpusTakeId(3));
     REQUIRE(document.selectedId(TakeSlot::B) == takeB);
     REQUIRE(document.currentTime() == Approx(5.4));
@@ -209,11 +210,11 @@ TEST_CASE("autosave writes the unsaved work and a saved project removes it", "[a
     auto& files = window->files();
     QFile::remove(files.autosavePath());
     REQUIRE_FALSE(files.autosave()); // nothing to save
-    app::changeParameter(window->document(), app::parameters::kNormaliseSearchBand, 12);
+    app::changeStageParameters(window->document(), [](app::AnalysisParameters& p) { p.normalise.searchBand = 12; }, QStringLiteral("band"));
     REQUIRE(files.autosave());
     const auto recovered = app::readProject(files.autosavePath());
     REQUIRE(recovered.ok());
-    REQUIRE(recovered->parameters.value(app::parameters::kNormaliseSearchBand).toInt() == 12);
+    REQUIRE(recovered->parameters.normalise.searchBand == 12);
     REQUIRE(files.saveProject(scratchFile("autosave-project", "p.bunraku.json")));
     REQUIRE_FALSE(QFile::exists(files.autosavePath()));
 }
@@ -225,4 +226,49 @@ TEST_CASE("opening a missing corpus folder is an error message, not a crash", "[
     REQUIRE_FALSE(window->files().openCorpusFolder(QStringLiteral("/nonexistent/corpus")));
     REQUIRE(window->files().lastError().contains(QStringLiteral("/nonexistent/corpus")));
     REQUIRE(window->document().corpus().takes.size() == 30);
+}
+
+TEST_CASE("projects with out-of-range parameters, take ids, times or view values are refused and change nothing", "[app][files]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    const QString file = scratchFile("invalid-project", "invalid.bunraku.json");
+    const std::string head = R"({"format": "bunraku-project", "version": 2, "corpus": "demo", )";
+    const std::vector<std::pair<std::string, std::string>> cases{
+        {R"("parameters": {"normalise": {"maxScale": 2e9}})", "parameters.normalise.maxScale"},
+        {R"("parameters": {"normalise": {"maxScale": 100000}})", "parameters.normalise.maxScale"},
+        {R"("parameters": {"normalise": {"tau": -4}})", "parameters.normalise.tau"},
+        {R"("parameters": {"design": {"emotionWeight": "heavy"}})", "parameters.design.emotionWeight"},
+        {R"("parameters": {"design": {"warp": [[0, 0], [1e300, 5]]}})", "parameters.design.warp[1]"},
+        {R"("takeA": "corpus/../../etc")", "takeA"},
+        {R"("time_s": -3)", "time_s"},
+        {R"("view": {"graphLayout": 99})", "graphLayout"},
+        {R"("view": {"speed": 1e308})", "speed"},
+    };
+    for (const auto& [body, named] : cases) {
+        INFO(body);
+        {
+            std::ofstream out(file.toStdString());
+            out << head << body << "}\n";
+        }
+        changeStageParameters(window->document(), [](app::AnalysisParameters& p) { p.normalise.tau = 5; }, QStringLiteral("tau"));
+        REQUIRE_FALSE(window->files().openProject(file));
+        CHECK(window->files().lastError().contains(QStringLiteral("invalid.bunraku.json")));
+        CHECK(window->files().lastError().contains(QString::fromStdString(named)));
+        CHECK(window->document().parameters().normalise.tau == 5); // nothing changed
+    }
+    // Version 1's flat keys are still read, into the typed parameters.
+    {
+        std::ofstream out(file.toStdString());
+        out << R"({"format": "bunraku-project", "version": 1, "corpus": "demo", "parameters": {"normalise.tau": 6, )"
+            << R"("emotion.weight": 1.5, "design.boundaries": [0], "design.gains": {"1/2": [0.5, 2.0]}}})";
+    }
+    REQUIRE(window->files().openProject(file));
+    const auto& p = window->document().parameters();
+    CHECK(p.normalise.tau == 6);
+    CHECK(p.design.emotionWeight == 1.5);
+    CHECK(p.design.boundaries == analysis::pipeline::PhraseBoundaries{false, {}}); // "no inner boundary"
+    REQUIRE(p.design.gain(1, 2));
+    CHECK(p.design.gain(1, 2)->g1 == 2.0);
+    CHECK(p.decompose.method == analysis::pipeline::DecomposeMethod::LeastSquares); // as version 1 decomposed
 }

@@ -1,7 +1,8 @@
 #include "tests/app/app_test_support.h"
 
 #include "app/commands.h"
-#include "app/parameters.h"
+#include "app/analysis_controller.h"
+#include "app/commands.h"
 #include "app/playback_controller.h"
 #include "app/viewport_panel.h"
 
@@ -204,13 +205,13 @@ TEST_CASE("undo and redo from the Edit menu's shortcuts change the model", "[app
     auto& document = window->document();
     window->activateWindow();
     REQUIRE(QTest::qWaitForWindowActive(window.get()));
-    app::changeParameter(document, app::parameters::kNormaliseTau, 6);
+    app::changeStageParameters(document, [](app::AnalysisParameters& p) { p.normalise.tau = 6; }, QStringLiteral("tau"));
     REQUIRE(window->isWindowModified());
     QTest::keyClick(window.get(), Qt::Key_Z, Qt::ControlModifier);
-    REQUIRE(document.parameter(app::parameters::kNormaliseTau).toInt() == 4);
+    REQUIRE(document.parameters().normalise.tau == 4);
     REQUIRE_FALSE(window->isWindowModified());
     QTest::keyClick(window.get(), Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
-    REQUIRE(document.parameter(app::parameters::kNormaliseTau).toInt() == 6);
+    REQUIRE(document.parameters().normalise.tau == 6);
 }
 
 TEST_CASE("the 3D view poses the puppet at the frame of the current time", "[app][window][viewport]")

@@ -5,7 +5,6 @@
 
 #include "app/autosave_session.h"
 #include "app/commands.h"
-#include "app/parameters.h"
 #include "app/recovery_dialog.h"
 
 #include "analysis/io/corpus_io.h"
@@ -104,15 +103,15 @@ TEST_CASE("two running workbenches keep separate autosaves", "[app][session]")
     REQUIRE(first);
     REQUIRE(second);
     REQUIRE(first->files().autosavePath() != second->files().autosavePath());
-    app::changeParameter(first->document(), app::parameters::kNormaliseTau, 6);
-    app::changeParameter(second->document(), app::parameters::kNormaliseTau, 7);
+    app::changeStageParameters(first->document(), [](app::AnalysisParameters& p) { p.normalise.tau = 6; }, QStringLiteral("tau"));
+    app::changeStageParameters(second->document(), [](app::AnalysisParameters& p) { p.normalise.tau = 7; }, QStringLiteral("tau"));
     REQUIRE(first->files().autosave());
     REQUIRE(second->files().autosave());
     first->files().setUnsavedAnswerForTesting([] { return int(QMessageBox::Discard); });
     REQUIRE(first->close()); // discards its own work: its autosave goes, the other's stays
     REQUIRE_FALSE(QFile::exists(first->files().autosavePath()));
     REQUIRE(QFile::exists(second->files().autosavePath()));
-    REQUIRE(app::readProject(second->files().autosavePath())->parameters.value(app::parameters::kNormaliseTau).toInt() == 7);
+    REQUIRE(app::readProject(second->files().autosavePath())->parameters.normalise.tau == 7);
     // A running workbench's autosave is never offered as an orphan.
     for (const auto& orphan : first->files().autosaveSession().orphans())
         REQUIRE(orphan.path != second->files().autosavePath());
@@ -124,7 +123,7 @@ TEST_CASE("an orphaned autosave is offered with its time and content, and recove
     REQUIRE(window);
     app::ProjectState state;
     state.corpus = QStringLiteral("demo");
-    state.parameters.insert(app::parameters::kNormaliseTau, 9);
+    state.parameters.normalise.tau = 9;
     state.takeA = app::Document::corpusTakeId(5);
     const QString orphan = orphanedAutosave(autosaveFolder(*window), state);
 
@@ -132,7 +131,7 @@ TEST_CASE("an orphaned autosave is offered with its time and content, and recove
     const auto found = std::find_if(orphans.begin(), orphans.end(), [&](const app::OrphanedAutosave& o) { return o.path == orphan; });
     REQUIRE(found != orphans.end());
     CHECK(found->summary.contains(QStringLiteral("demo corpus")));
-    CHECK(found->summary.contains(QStringLiteral("1 edited parameter")));
+    CHECK(found->summary.contains(QStringLiteral("edited normalisation")));
     CHECK(std::abs(found->saved.secsTo(QDateTime::currentDateTime())) < 600);
 
     // The dialog lists it; Recover opens it into the window.
@@ -152,7 +151,7 @@ TEST_CASE("an orphaned autosave is offered with its time and content, and recove
     window->files().setDialogsEnabled(false);
     REQUIRE(listed.contains(QStringLiteral("demo corpus")));
     auto& document = window->document();
-    REQUIRE(document.parameter(app::parameters::kNormaliseTau).toInt() == 9);
+    REQUIRE(document.parameters().normalise.tau == 9);
     REQUIRE(document.selectedId(TakeSlot::A) == app::Document::corpusTakeId(5));
     // Unsaved work: the title is marked, the autosave is this window's and stays.
     REQUIRE_FALSE(document.undoStack()->isClean());
@@ -201,7 +200,7 @@ TEST_CASE("dropping a corpus folder or project on unsaved work asks first", "[ap
     REQUIRE(window);
     const auto dir = test::scratchDir("drop-asks");
     REQUIRE(analysis::io::writeCorpus(window->document().corpus(), dir / "corpus").ok());
-    app::changeParameter(window->document(), app::parameters::kNormaliseTau, 6);
+    app::changeStageParameters(window->document(), [](app::AnalysisParameters& p) { p.normalise.tau = 6; }, QStringLiteral("tau"));
     REQUIRE(window->files().autosave());
     const QString autosave = window->files().autosavePath();
 
@@ -223,7 +222,7 @@ TEST_CASE("dropping a corpus folder or project on unsaved work asks first", "[ap
     drop(QString::fromStdString((dir / "corpus").string()));
     REQUIRE(QTest::qWaitFor([&] { return asked == 1; }, 5000)); // the drop opens once the event is over
     REQUIRE(window->document().corpusSource() == QStringLiteral("demo")); // not replaced
-    REQUIRE(window->document().parameter(app::parameters::kNormaliseTau).toInt() == 6);
+    REQUIRE(window->document().parameters().normalise.tau == 6);
     REQUIRE(QFile::exists(autosave));
 
     window->files().setUnsavedAnswerForTesting([&asked] {

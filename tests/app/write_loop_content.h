@@ -62,14 +62,19 @@ inline analysis::Corpus corpusOf(int version)
     return corpus;
 }
 
-inline QString payloadOf(int version) { return QString(200000 + 1000 * (version % 5), QChar(u'a' + version % 26)); }
+/// A project of about 200 KB: imported takes, each version's count and paths its own.
+inline int importsOf(int version) { return 300 + 10 * (version % 5); }
+inline QString importPathOf(int version, int index)
+{
+    return QStringLiteral("/data/v%1/take_%2_with_a_long_name_to_make_the_project_file_large.csv").arg(version).arg(index);
+}
 
 inline app::ProjectState projectOf(int version)
 {
     app::ProjectState state;
     state.corpus = QStringLiteral("demo");
-    state.parameters.insert(QStringLiteral("check.payload"), payloadOf(version));
-    state.view.insert(QStringLiteral("version"), version);
+    for (int i = 0; i < importsOf(version); ++i) state.imported.push_back({importPathOf(version, i), QStringLiteral("take"), {}});
+    state.parameters.normalise.tau = 1 + version % 50;
     state.timeSeconds = version;
     return state;
 }
@@ -129,10 +134,11 @@ inline Verdict verify(Kind kind, const std::filesystem::path& target)
     case Kind::Project: {
         auto state = app::readProject(QString::fromStdString(target.string()));
         if (!state) return verdict.problem = state.error().message, verdict;
-        verdict.version = state->view.value(QStringLiteral("version"), -1).toInt();
-        if (state->parameters.value(QStringLiteral("check.payload")).toString() != payloadOf(verdict.version) ||
-            state->timeSeconds != verdict.version)
-            verdict.problem = "content of another version";
+        verdict.version = int(state->timeSeconds);
+        if (state->imported.size() != importsOf(verdict.version) || state->parameters.normalise.tau != 1 + verdict.version % 50)
+            return verdict.problem = "content of another version", verdict;
+        for (int i = 0; i < importsOf(verdict.version); ++i)
+            if (state->imported[i].path != importPathOf(verdict.version, i)) return verdict.problem = "content of another version", verdict;
         return verdict;
     }
     case Kind::Frames: {

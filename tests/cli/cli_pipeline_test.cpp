@@ -117,7 +117,7 @@ TEST_CASE("bunraku emotion with weight 0 gives y and with weight 1 gives y + z",
     runJson({"decompose", demo.string(), "--pad", "--method", "ls", "-o", out.string(), "--json"});
     const auto zero = dir / "a0.csv", one = dir / "a1.csv";
     for (const auto& [weight, file] : {std::pair{"0", zero}, std::pair{"1", one}}) {
-        const auto run = runBunraku({"emotion", demo.string(), "--pad", "--function", "serving-tea", "--emotion", "hostile",
+        const auto run = runBunraku({"emotion", demo.string(), "--pad", "--method", "ls", "--function", "serving-tea", "--emotion", "hostile",
                                      "--weight", weight, "-o", file.string()});
         INFO(run.err);
         REQUIRE(run.exitCode == 0);

@@ -1,0 +1,159 @@
+// The motion-axis stage (thesis 5: axes 5.2.1, phrases 5.2.2, phase 5.3, gains 5.4) and the
+// on-demand emotion weight (4.5) and design (5.5).
+#include "analysis/pipeline/stages.h"
+
+#include "analysis/axis/axis_channels.h"
+#include "analysis/body/body_description.h"
+#include "analysis/decompose/emotion_weight.h"
+
+#include <cmath>
+#include <map>
+#include <mutex>
+
+namespace bunraku::analysis::pipeline {
+namespace {
+
+/// The axis model of the default body for the given options, built once per lattice step and
+/// front-back choice (it depends on nothing else).
+std::shared_ptr<const AxisModel> defaultAxisModel(const AxisOptions& options)
+{
+    static std::mutex mutex;
+    static std::map<std::pair<double, int>, std::shared_ptr<const AxisModel>> models;
+    const std::lock_guard lock(mutex);
+    auto& model = models[{options.massPoints.spacing, int(options.frontBack)}];
+    if (!model) model = std::make_shared<const AxisModel>(makeAxisModel(defaultBodyDescription(), options));
+    return model;
+}
+
+std::vector<std::string> axisDofNames()
+{
+    std::vector<std::string> names;
+    for (const auto& channel : axisCoordinateChannels()) names.push_back(channel.name());
+    return names;
+}
+
+} // namespace
+
+const FunctionAxis* AxisOutput::function(const std::string& name) const
+{
+    for (const auto& one : functions)
+        if (one.function == name) return &one;
+    return nullptr;
+}
+
+const CellAxis* AxisOutput::cell(const std::string& functionName, const std::string& emotion) const
+{
+    for (const auto& one : cells)
+        if (one.function == functionName && one.emotion == emotion) return &one;
+    return nullptr;
+}
+
+StageKey axisKey(StageKey normalised, const AxisParameters& p)
+{
+    return KeyBuilder("axes")
+        .add(normalised)
+        .add(int(p.frontBack))
+        .add(p.massSpacing)
+        .add(p.tau)
+        .add(p.searchBand)
+        .add(p.maxScale)
+        .add(p.approximationWeight)
+        .add(int(p.path))
+        .add(p.controlSpacing)
+        .add(p.refinementPasses)
+        .key();
+}
+
+Result<AxisOutput> runAxes(const NormaliseOutput& normalised, const std::string& neutralEmotion, const AxisParameters& parameters,
+                           const RunControl& control)
+{
+    if (auto status = validate(parameters); !status) return status.error();
+    const AxisOptions axisOptions = parameters.axisOptions();
+    const auto model = defaultAxisModel(axisOptions);
+    AxisOutput out;
+    const std::size_t total = std::max<std::size_t>(1, normalised.cells.size());
+    std::size_t done = 0;
+    for (const auto& neutral : normalised.cells) {
+        if (neutral.emotion != neutralEmotion) continue;
+        if (control.cancelled()) return makeError(ErrorCode::Cancelled, "motion axes cancelled");
+        auto basis = prepareDesign(*model, neutral.average, axisOptions, RunControl{control.stop, {}});
+        if (!basis)
+            return makeError(basis.error().code, "motion axis of the " + neutral.function + "/" + neutral.emotion +
+                                                     " average take: " + basis.error().message);
+        FunctionAxis function;
+        function.function = neutral.function;
+        function.boundaries = suggestPhraseBoundaries(basis->coordinates);
+        function.basis = std::make_shared<const DesignBasis>(std::move(basis).value());
+        control.report(double(++done) / double(total));
+        for (const auto& cell : normalised.cells) {
+            if (cell.function != neutral.function || cell.emotion == neutralEmotion) continue;
+            if (control.cancelled()) return makeError(ErrorCode::Cancelled, "motion axes cancelled");
+            const std::string name = cellName(cell.function, cell.emotion);
+            auto axis = computeMotionAxis(*model, cell.average, axisOptions, RunControl{control.stop, {}});
+            if (!axis) return makeError(axis.error().code, "motion axis of the " + name + " average take: " + axis.error().message);
+            CellAxis result;
+            result.function = cell.function;
+            result.emotion = cell.emotion;
+            result.world_T_axis = axis->world_T_axis;
+            result.coordinates = axisCoordinates(axis->world_T_axis);
+            ExtractionOptions options = parameters.extractionOptions();
+            options.boundaries = function.boundaries;
+            auto extracted = extractDesign(function.basis->coordinates, result.coordinates, options, RunControl{control.stop, {}});
+            if (!extracted) return makeError(extracted.error().code, "phase and gains of " + name + ": " + extracted.error().message);
+            result.extracted = std::move(extracted).value();
+            const DesignedMotion designed = designMotion(*function.basis, result.extracted.phase.curve, result.extracted.gains);
+            result.designRelativeError = relativeError(designed.axisCoordinates, result.coordinates);
+            result.undesignedRelativeError = relativeError(function.basis->coordinates, result.coordinates);
+            out.cells.push_back(std::move(result));
+            control.report(double(++done) / double(total));
+        }
+        out.functions.push_back(std::move(function));
+    }
+    control.report(1.0);
+    return out;
+}
+
+Result<Take> weightedTake(const DecomposeOutput& decomposed, const std::string& function, const std::string& emotion, double weight)
+{
+    return weightEmotion(decomposed.components, function, emotion, weight);
+}
+
+std::vector<Eigen::Index> boundariesInUse(const FunctionAxis& function, const PhraseBoundaries& edits)
+{
+    const Eigen::Index last = function.basis ? function.basis->functional.frameCount() - 1 : 0;
+    if (edits.suggested || last < 2) return function.boundaries;
+    std::vector<Eigen::Index> result{0};
+    for (const Eigen::Index frame : edits.inner) {
+        if (frame <= result.back() || frame >= last) return function.boundaries; // not valid for this take
+        result.push_back(frame);
+    }
+    result.push_back(last);
+    return result;
+}
+
+WarpCurve warpInUse(const FunctionAxis& function, const DesignEdits& edits)
+{
+    if (edits.warp && validateWarpCurve(*edits.warp).ok()) return *edits.warp;
+    const Eigen::Index frames = function.basis ? function.basis->functional.frameCount() : 0;
+    return frames > 1 ? identityWarp(frames) : WarpCurve{};
+}
+
+GainSet gainsInUse(const FunctionAxis& function, const DesignEdits& edits, const std::vector<std::string>& dofNames)
+{
+    GainSet set = unitGains(boundariesInUse(function, edits.boundaries), dofNames.empty() ? axisDofNames() : dofNames);
+    for (const GainEdit& edit : edits.gains) {
+        if (edit.phrase < 0 || std::size_t(edit.phrase) >= set.phrases.size()) continue;
+        auto& dofs = set.phrases[std::size_t(edit.phrase)].dofs;
+        if (edit.dof < 0 || std::size_t(edit.dof) >= dofs.size()) continue;
+        dofs[std::size_t(edit.dof)].g0 = edit.g0;
+        dofs[std::size_t(edit.dof)].g1 = edit.g1;
+    }
+    return set;
+}
+
+DesignedMotion designFunction(const FunctionAxis& function, const DesignEdits& edits)
+{
+    return designMotion(*function.basis, warpInUse(function, edits), gainsInUse(function, edits, {}));
+}
+
+} // namespace bunraku::analysis::pipeline

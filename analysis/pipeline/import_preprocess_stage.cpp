@@ -1,0 +1,71 @@
+// The import and preprocess stages (thesis 2, 2.2) and the names of every stage.
+#include "analysis/pipeline/stages.h"
+
+#include "analysis/io/corpus_io.h"
+#include "analysis/synth/demo_corpus.h"
+
+namespace bunraku::analysis::pipeline {
+
+const char* stageName(Stage stage)
+{
+    switch (stage) {
+    case Stage::Import: return "import";
+    case Stage::Preprocess: return "preprocess";
+    case Stage::Normalise: return "normalise";
+    case Stage::Decompose: return "decompose";
+    case Stage::Fluctuations: return "fluctuations";
+    case Stage::Axes: return "axes";
+    }
+    return "?";
+}
+
+const char* stageTitle(Stage stage)
+{
+    switch (stage) {
+    case Stage::Import: return "Import";
+    case Stage::Preprocess: return "Preprocessing (2.2)";
+    case Stage::Normalise: return "Normalisation (3)";
+    case Stage::Decompose: return "Decomposition (4)";
+    case Stage::Fluctuations: return "Spectra and ARMA (4.3.2)";
+    case Stage::Axes: return "Motion axes, phase and gains (5)";
+    }
+    return "?";
+}
+
+Result<CorpusInput> makeCorpusInput(Corpus corpus)
+{
+    if (auto status = validateCorpus(corpus); !status) return status.error();
+    CorpusInput input;
+    input.key = corpusKey(corpus);
+    input.corpus = std::make_shared<const Corpus>(std::move(corpus));
+    return input;
+}
+
+Result<CorpusInput> importCorpus(const std::string& source)
+{
+    if (source == "demo") return makeCorpusInput(synth::generateDemoCorpus().corpus);
+    auto corpus = io::readCorpus(source);
+    if (!corpus) return corpus.error();
+    return makeCorpusInput(std::move(corpus).value());
+}
+
+StageKey preprocessKey(StageKey corpus, const PreprocessParameters& p)
+{
+    return KeyBuilder("preprocess")
+        .add(corpus)
+        .add(p.pad)
+        .add(p.unwrap)
+        .add(p.alignStart)
+        .add(p.alignHeading)
+        .add(p.alignPosition)
+        .add(p.referenceTakeIndex)
+        .key();
+}
+
+Result<PreprocessOutput> runPreprocess(const Corpus& corpus, const PreprocessParameters& parameters, const RunControl& control)
+{
+    if (auto status = validate(parameters); !status) return status.error();
+    return preprocess::preprocessCorpus(corpus, parameters.options(), control);
+}
+
+} // namespace bunraku::analysis::pipeline

@@ -1,0 +1,149 @@
+// The normalisation stage (thesis 3): every cell normalised to its reference (3.6, 3.6.1),
+// evaluated (3.8) and averaged (3.7).
+#include "analysis/pipeline/stages.h"
+
+#include "analysis/normalise/average_take.h"
+
+#include <algorithm>
+#include <string>
+
+namespace bunraku::analysis::pipeline {
+namespace {
+
+Result<CellNormalisation> normaliseCell(const std::string& function, const std::string& emotion,
+                                        const std::vector<const Take*>& takes, const NormaliseParameters& parameters,
+                                        const RunControl& control)
+{
+    const std::string cell = cellName(function, emotion);
+    auto prefixed = [&](const Error& error) { return makeError(error.code, "normalise " + cell + ": " + error.message); };
+    CellNormalisation out;
+    out.function = function;
+    out.emotion = emotion;
+    for (const Take* take : takes) out.takeIndices.push_back(take->labels.takeIndex);
+    auto suggestion = suggestReference(takes, RunControl{control.stop, {}});
+    if (!suggestion) return prefixed(suggestion.error());
+    out.suggestion = std::move(suggestion).value();
+    const NormaliseOptions options = parameters.options();
+
+    // Thesis 3.7: the average take, based on the suggested reference ("5ave"; "4ave" without outliers).
+    AverageOptions average;
+    average.normalise = options;
+    auto indexOf = [&](int takeIndex) {
+        const auto found = std::find(out.takeIndices.begin(), out.takeIndices.end(), takeIndex);
+        return found == out.takeIndices.end() ? -1 : int(found - out.takeIndices.begin());
+    };
+    average.baseTake = out.suggestion.takeIndex;
+    if (parameters.averageBase > 0) {
+        average.baseTake = indexOf(parameters.averageBase);
+        if (average.baseTake < 0)
+            return makeError(ErrorCode::NotFound, "normalise " + cell + ": the cell has no take " +
+                                                      std::to_string(parameters.averageBase) + " to base the average on");
+    }
+    if (!parameters.averageExcluded.empty()) {
+        for (int take : parameters.averageExcluded) {
+            const int index = indexOf(take);
+            if (index < 0)
+                return makeError(ErrorCode::NotFound, "normalise " + cell + ": the cell has no take " + std::to_string(take) +
+                                                          " to leave out of the average");
+            if (index == average.baseTake)
+                return makeError(ErrorCode::InvalidArgument, "normalise " + cell + ": take " + std::to_string(take) +
+                                                                 " is the base of the average and cannot be left out");
+            average.excludedTakes.push_back(index);
+        }
+    } else if (parameters.averageExcludesOutliers) {
+        for (std::size_t k = 0; k < takes.size(); ++k)
+            if (out.suggestion.outlier[k] && int(k) != average.baseTake) average.excludedTakes.push_back(int(k));
+    }
+    auto averaged = averageTake(takes, average, RunControl{control.stop, {}});
+    if (!averaged) return prefixed(averaged.error());
+    out.average = std::move(averaged).value();
+    for (std::size_t k = 0; k < takes.size(); ++k)
+        if (std::find(average.excludedTakes.begin(), average.excludedTakes.end(), int(k)) == average.excludedTakes.end())
+            out.averageMembers.push_back(out.takeIndices[k]);
+    out.averageName = std::to_string(out.averageMembers.size()) + "ave";
+
+    out.reference = parameters.referenceFor(function, emotion);
+    switch (out.reference.kind) {
+    case ReferenceKind::Suggested:
+        out.referenceTake = *takes[std::size_t(out.suggestion.takeIndex)];
+        out.referenceName = "take " + std::to_string(out.referenceTake.labels.takeIndex) + " (suggested)";
+        break;
+    case ReferenceKind::Take: {
+        const auto found = std::find(out.takeIndices.begin(), out.takeIndices.end(), out.reference.takeIndex);
+        if (found == out.takeIndices.end())
+            return makeError(ErrorCode::NotFound, "normalise " + cell + ": the cell has no take " +
+                                                      std::to_string(out.reference.takeIndex) + " to use as reference");
+        out.referenceTake = *takes[std::size_t(found - out.takeIndices.begin())];
+        out.referenceName = "take " + std::to_string(out.reference.takeIndex);
+        break;
+    }
+    case ReferenceKind::Average:
+        out.referenceTake = out.average;
+        out.referenceName = out.averageName;
+        break;
+    }
+    auto normalised = normaliseTakes(out.referenceTake, takes, options, RunControl{control.stop, {}});
+    if (!normalised) return prefixed(normalised.error());
+    out.normalisations = std::move(normalised).value();
+    std::vector<const Take*> results;
+    for (auto& one : out.normalisations) {
+        one.normalised.labels.source = "normalised to " + out.referenceName;
+        results.push_back(&one.normalised);
+    }
+    auto variance = varianceTable(out.referenceTake, takes, results);
+    if (!variance) return prefixed(variance.error());
+    out.variance = std::move(variance).value();
+    return out;
+}
+
+} // namespace
+
+const CellNormalisation* NormaliseOutput::cell(const std::string& function, const std::string& emotion) const
+{
+    for (const auto& one : cells)
+        if (one.function == function && one.emotion == emotion) return &one;
+    return nullptr;
+}
+
+StageKey normaliseKey(StageKey preprocessed, const NormaliseParameters& p)
+{
+    KeyBuilder builder("normalise");
+    builder.add(preprocessed).add(p.tau).add(p.searchBand).add(p.maxScale).add(p.coupling).add(int(p.path));
+    builder.add(int(p.weighting)).add(int(p.level)).add(p.approximationWeight).add(std::uint64_t(p.scales.size()));
+    for (double scale : p.scales) builder.add(scale);
+    builder.add(int(p.reference.kind)).add(p.reference.takeIndex).add(p.averageExcludesOutliers).add(p.averageBase);
+    builder.add(std::uint64_t(p.averageExcluded.size()));
+    for (int take : p.averageExcluded) builder.add(take);
+    for (const auto& [cell, choice] : p.cellReferences) builder.add(cell).add(int(choice.kind)).add(choice.takeIndex);
+    return builder.key();
+}
+
+Result<NormaliseOutput> runNormalise(const Corpus& preprocessed, const NormaliseParameters& parameters, const RunControl& control)
+{
+    if (auto status = validate(parameters); !status) return status.error();
+    NormaliseOutput out;
+    std::vector<std::pair<std::string, std::string>> cells;
+    for (const auto& function : preprocessed.functions())
+        for (const auto& emotion : preprocessed.emotions())
+            if (!preprocessed.cell(function, emotion).empty()) cells.emplace_back(function, emotion);
+    out.normalised = preprocessed;
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+        if (control.cancelled()) return makeError(ErrorCode::Cancelled, "normalisation cancelled");
+        const auto& [function, emotion] = cells[c];
+        auto cell = normaliseCell(function, emotion, preprocessed.cell(function, emotion), parameters, control);
+        if (!cell) return cell.error();
+        for (std::size_t k = 0; k < cell->takeIndices.size(); ++k) {
+            for (auto& take : out.normalised.takes)
+                if (take.labels.function == function && take.labels.emotion == emotion &&
+                    take.labels.takeIndex == cell->takeIndices[k]) {
+                    take = cell->normalisations[k].normalised;
+                    take.labels.takeIndex = cell->takeIndices[k];
+                }
+        }
+        out.cells.push_back(std::move(cell).value());
+        control.report(double(c + 1) / double(cells.size()));
+    }
+    return out;
+}
+
+} // namespace bunraku::analysis::pipeline

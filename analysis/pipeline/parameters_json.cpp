@@ -1,0 +1,458 @@
+#include "analysis/pipeline/parameters_json.h"
+
+#include "analysis/decompose/emotion_weight.h"
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <map>
+#include <optional>
+#include <sstream>
+
+namespace bunraku::analysis::pipeline {
+namespace {
+
+using nlohmann::json;
+
+/// What a JSON value holds, for messages ("the number 2e+09", "a string").
+std::string describe(const json& value)
+{
+    if (value.is_number()) {
+        std::ostringstream text;
+        text << "the number " << value.get<double>();
+        return text.str();
+    }
+    if (value.is_string()) return "the string \"" + value.get<std::string>().substr(0, 40) + "\"";
+    if (value.is_boolean()) return value.get<bool>() ? "true" : "false";
+    if (value.is_null()) return "null";
+    if (value.is_array()) return "an array";
+    return "an object";
+}
+
+/// Reads one JSON object field by field; the first problem is kept and reported.
+class Reader {
+public:
+    Reader(const json& object, std::string path, std::string where)
+        : m_object(object), m_path(std::move(path)), m_where(std::move(where))
+    {
+    }
+
+    bool isObject()
+    {
+        if (m_object.is_object()) return true;
+        fail(m_path, "expected an object, got " + describe(m_object));
+        return false;
+    }
+
+    /// Refuses keys not in `known` (a typo would otherwise be ignored silently).
+    void onlyKeys(std::initializer_list<const char*> known)
+    {
+        if (!ok() || !m_object.is_object()) return;
+        for (auto it = m_object.begin(); it != m_object.end(); ++it) {
+            bool found = false;
+            for (const char* key : known) found = found || it.key() == key;
+            if (!found) {
+                std::string list;
+                for (const char* key : known) list += (list.empty() ? "" : ", ") + std::string(key);
+                fail(m_path + "." + it.key(), "unknown parameter (known: " + list + ")");
+                return;
+            }
+        }
+    }
+
+    void integer(const char* key, int& out, int low, int high)
+    {
+        const json* value = find(key);
+        if (!value) return;
+        const double number = value->is_number() ? value->get<double>() : std::numeric_limits<double>::quiet_NaN();
+        if (!value->is_number() || !std::isfinite(number) || number != std::floor(number) || number < low || number > high) {
+            fail(m_path + "." + key, "expected an integer in " + std::to_string(low) + ".." + std::to_string(high) + ", got " +
+                                         describe(*value));
+            return;
+        }
+        out = int(number);
+    }
+
+    void real(const char* key, double& out, double low, double high)
+    {
+        const json* value = find(key);
+        if (!value) return;
+        if (!value->is_number() || !std::isfinite(value->get<double>()) || value->get<double>() < low || value->get<double>() > high) {
+            std::ostringstream range;
+            range << "[" << low << ", " << high << "]";
+            fail(m_path + "." + key, "expected a number in " + range.str() + ", got " + describe(*value));
+            return;
+        }
+        out = value->get<double>();
+    }
+
+    void boolean(const char* key, bool& out)
+    {
+        const json* value = find(key);
+        if (!value) return;
+        if (!value->is_boolean()) {
+            fail(m_path + "." + key, "expected true or false, got " + describe(*value));
+            return;
+        }
+        out = value->get<bool>();
+    }
+
+    template <class Enum> void choice(const char* key, Enum& out, const std::map<std::string, Enum>& names)
+    {
+        const json* value = find(key);
+        if (!value) return;
+        std::string list;
+        for (const auto& [name, unused] : names) list += (list.empty() ? "" : ", ") + name;
+        if (!value->is_string() || !names.count(value->get<std::string>())) {
+            fail(m_path + "." + key, "expected one of " + list + ", got " + describe(*value));
+            return;
+        }
+        out = names.at(value->get<std::string>());
+    }
+
+    void text(const char* key, std::string& out, std::size_t maxLength)
+    {
+        const json* value = find(key);
+        if (!value) return;
+        if (!value->is_string() || value->get<std::string>().empty() || value->get<std::string>().size() > maxLength) {
+            fail(m_path + "." + key, "expected a non-empty string of at most " + std::to_string(maxLength) + " characters, got " +
+                                         describe(*value));
+            return;
+        }
+        out = value->get<std::string>();
+    }
+
+    const json* find(const char* key)
+    {
+        if (!ok() || !m_object.is_object()) return nullptr;
+        const auto found = m_object.find(key);
+        return found == m_object.end() ? nullptr : &*found;
+    }
+
+    void fail(const std::string& path, const std::string& what)
+    {
+        if (ok()) m_error = makeError(ErrorCode::Parse, m_where + ": " + path + ": " + what);
+    }
+    bool ok() const { return !m_error.has_value(); }
+    const Error& error() const { return *m_error; }
+    const std::string& path() const { return m_path; }
+    const std::string& where() const { return m_where; }
+    /// Takes over the first error of a nested reader.
+    void absorb(const Reader& inner)
+    {
+        if (!inner.ok() && ok()) m_error = inner.error();
+    }
+
+    /// A reader of the nested object `key` sharing this one's error (nothing when absent).
+    template <class Read> void nested(const char* key, Read&& read)
+    {
+        const json* value = find(key);
+        if (!value) return;
+        Reader inner(*value, m_path + "." + key, m_where);
+        if (inner.isObject()) read(inner);
+        absorb(inner);
+    }
+
+private:
+    const json& m_object;
+    std::string m_path;
+    std::string m_where;
+    std::optional<Error> m_error;
+};
+
+const std::map<std::string, PathMethod> kPaths{{"greedy", PathMethod::Greedy}, {"optimal", PathMethod::Optimal}};
+const std::map<std::string, DecomposeMethod> kMethods{{"km2o", DecomposeMethod::Km2o},
+                                                      {"least-squares", DecomposeMethod::LeastSquares}};
+const std::map<std::string, DecomposeInput> kInputs{{"normalised", DecomposeInput::Normalised},
+                                                    {"preprocessed", DecomposeInput::Preprocessed}};
+const std::map<std::string, ChannelWeighting> kWeightings{{"none", ChannelWeighting::None},
+                                                          {"standardise", ChannelWeighting::Standardise}};
+const std::map<std::string, LevelAlignment> kLevels{{"first-frame", LevelAlignment::FirstFrame}, {"none", LevelAlignment::None}};
+const std::map<std::string, FrontBackAxis> kFrontBack{{"shoulder", FrontBackAxis::ShoulderForward},
+                                                      {"principal", FrontBackAxis::Principal}};
+
+json referenceJson(const ReferenceChoice& choice)
+{
+    if (choice.kind == ReferenceKind::Take) return choice.takeIndex;
+    return choice.kind == ReferenceKind::Average ? "average" : "suggested";
+}
+
+void readReference(Reader& reader, const json& value, const std::string& path, ReferenceChoice& out)
+{
+    if (value.is_string() && value.get<std::string>() == "suggested") {
+        out = {ReferenceKind::Suggested, 0};
+    } else if (value.is_string() && value.get<std::string>() == "average") {
+        out = {ReferenceKind::Average, 0};
+    } else if (value.is_number() && std::isfinite(value.get<double>()) && value.get<double>() == std::floor(value.get<double>()) &&
+               value.get<double>() >= 1 && value.get<double>() <= kMaxTakeIndex) {
+        out = {ReferenceKind::Take, int(value.get<double>())};
+    } else {
+        reader.fail(path, "expected \"suggested\", \"average\" or a take index 1.." + std::to_string(kMaxTakeIndex) + ", got " +
+                              describe(value));
+    }
+}
+
+void readNormalise(Reader& r, NormaliseParameters& p)
+{
+    r.onlyKeys({"tau", "searchBand", "maxScale", "coupling", "path", "reference", "cellReferences", "averageExcludesOutliers",
+                "averageBase", "averageExcluded", "scales", "weighting", "level", "approximationWeight"});
+    r.choice("weighting", p.weighting, kWeightings);
+    r.choice("level", p.level, kLevels);
+    r.real("approximationWeight", p.approximationWeight, 0.0, kMaxApproximationWeight);
+    if (const json* scales = r.find("scales")) {
+        if (!scales->is_array() || scales->size() > std::size_t(kMaxScale)) {
+            r.fail(r.path() + ".scales", "expected an array of at most 256 scales, got " + describe(*scales));
+            return;
+        }
+        for (std::size_t i = 0; i < scales->size(); ++i) {
+            const json& scale = (*scales)[i];
+            if (!scale.is_number() || !(scale.get<double>() > 0.0) || scale.get<double>() > kMaxScale) {
+                r.fail(r.path() + ".scales[" + std::to_string(i) + "]", "expected a scale in (0, 256], got " + describe(scale));
+                return;
+            }
+            p.scales.push_back(scale.get<double>());
+        }
+    }
+    r.integer("averageBase", p.averageBase, 0, kMaxTakeIndex);
+    if (const json* excluded = r.find("averageExcluded")) {
+        if (!excluded->is_array() || excluded->size() > 10000) {
+            r.fail(r.path() + ".averageExcluded", "expected an array of take indices, got " + describe(*excluded));
+            return;
+        }
+        for (std::size_t i = 0; i < excluded->size(); ++i) {
+            const json& take = (*excluded)[i];
+            if (!take.is_number_integer() || take.get<std::int64_t>() < 1 || take.get<std::int64_t>() > kMaxTakeIndex) {
+                r.fail(r.path() + ".averageExcluded[" + std::to_string(i) + "]", "expected a take index 1.." +
+                                                                                     std::to_string(kMaxTakeIndex) + ", got " + describe(take));
+                return;
+            }
+            p.averageExcluded.push_back(int(take.get<std::int64_t>()));
+        }
+    }
+    r.integer("tau", p.tau, 0, kMaxTau);
+    r.integer("searchBand", p.searchBand, 0, kMaxSearchBand);
+    r.integer("maxScale", p.maxScale, 1, kMaxScale);
+    r.text("coupling", p.coupling, 4096);
+    r.choice("path", p.path, kPaths);
+    if (const json* reference = r.find("reference")) readReference(r, *reference, r.path() + ".reference", p.reference);
+    r.boolean("averageExcludesOutliers", p.averageExcludesOutliers);
+    if (const json* cells = r.find("cellReferences")) {
+        if (!cells->is_object()) {
+            r.fail(r.path() + ".cellReferences", "expected an object {\"function/emotion\": reference}, got " + describe(*cells));
+            return;
+        }
+        if (cells->size() > 10000) {
+            r.fail(r.path() + ".cellReferences", "more than 10000 cells");
+            return;
+        }
+        for (auto it = cells->begin(); it != cells->end() && r.ok(); ++it) {
+            ReferenceChoice choice;
+            readReference(r, it.value(), r.path() + ".cellReferences." + it.key(), choice);
+            if (it.key().find('/') == std::string::npos || it.key().size() > 1000)
+                r.fail(r.path() + ".cellReferences." + it.key(), "expected a cell named \"function/emotion\"");
+            p.cellReferences[it.key()] = choice;
+        }
+    }
+}
+
+void readDesign(Reader& r, DesignEdits& d)
+{
+    r.onlyKeys({"emotionWeight", "warp", "gains", "boundaries"});
+    r.real("emotionWeight", d.emotionWeight, kMinEmotionWeight, kMaxEmotionWeight);
+    if (const json* warp = r.find("warp"); warp && !warp->is_null()) {
+        if (!warp->is_array() || warp->size() < 2 || warp->size() > kMaxWarpPoints) {
+            r.fail(r.path() + ".warp", "expected null or 2.." + std::to_string(kMaxWarpPoints) +
+                                           " control points [output frame, source frame], got " +
+                                           (warp->is_array() ? std::to_string(warp->size()) + " points" : describe(*warp)));
+            return;
+        }
+        WarpCurve curve;
+        curve.points.reserve(warp->size());
+        for (std::size_t i = 0; i < warp->size(); ++i) {
+            const json& point = (*warp)[i];
+            const std::string path = r.path() + ".warp[" + std::to_string(i) + "]";
+            if (!point.is_array() || point.size() != 2 || !point[0].is_number() || !point[1].is_number()) {
+                r.fail(path, "expected [output frame, source frame], got " + describe(point));
+                return;
+            }
+            const double output = point[0].get<double>(), source = point[1].get<double>();
+            if (!std::isfinite(output) || !std::isfinite(source) || output < 0 || source < 0 || output > kMaxWarpFrame ||
+                source > kMaxWarpFrame) {
+                r.fail(path, "expected frames in [0, 1e8]");
+                return;
+            }
+            curve.points.push_back({output, source});
+        }
+        curve.outputFrames = Eigen::Index(std::floor(curve.points.back().output)) + 1;
+        if (auto valid = validateWarpCurve(curve); !valid) {
+            r.fail(r.path() + ".warp", valid.error().message);
+            return;
+        }
+        d.warp = std::move(curve);
+    }
+    if (const json* gains = r.find("gains")) {
+        if (!gains->is_array() || gains->size() > kMaxGainEdits) {
+            r.fail(r.path() + ".gains", "expected an array of at most " + std::to_string(kMaxGainEdits) + " gains, got " + describe(*gains));
+            return;
+        }
+        for (std::size_t i = 0; i < gains->size() && r.ok(); ++i) {
+            Reader gain((*gains)[i], r.path() + ".gains[" + std::to_string(i) + "]", r.where());
+            GainEdit edit;
+            if (gain.isObject()) {
+                gain.onlyKeys({"phrase", "dof", "g0", "g1"});
+                gain.integer("phrase", edit.phrase, 0, int(kMaxPhraseBoundaries));
+                gain.integer("dof", edit.dof, 0, 1000);
+                gain.real("g0", edit.g0, -kMaxGain, kMaxGain);
+                gain.real("g1", edit.g1, -kMaxGain, kMaxGain);
+            }
+            r.absorb(gain);
+            if (!r.ok()) return;
+            if (d.gain(edit.phrase, edit.dof)) {
+                r.fail(r.path() + ".gains[" + std::to_string(i) + "]", "phrase " + std::to_string(edit.phrase) + ", DOF " +
+                                                                        std::to_string(edit.dof) + " is given twice");
+                return;
+            }
+            d.setGain(edit);
+        }
+    }
+    if (const json* boundaries = r.find("boundaries")) {
+        if (boundaries->is_string() && boundaries->get<std::string>() == "suggested") {
+            d.boundaries = {};
+        } else if (boundaries->is_array() && boundaries->size() <= kMaxPhraseBoundaries) {
+            PhraseBoundaries edited{false, {}};
+            edited.inner.reserve(boundaries->size());
+            for (std::size_t i = 0; i < boundaries->size(); ++i) {
+                const json& frame = (*boundaries)[i];
+                const double value = frame.is_number() ? frame.get<double>() : -1.0;
+                if (!frame.is_number() || !std::isfinite(value) || value != std::floor(value) || value < 1 || value > kMaxWarpFrame ||
+                    (i > 0 && value <= double(edited.inner.back()))) {
+                    r.fail(r.path() + ".boundaries[" + std::to_string(i) + "]",
+                           "expected increasing whole frames in 1..1e8 (the inner phrase boundaries), got " + describe(frame));
+                    return;
+                }
+                edited.inner.push_back(Eigen::Index(value));
+            }
+            d.boundaries = std::move(edited);
+        } else {
+            r.fail(r.path() + ".boundaries", "expected \"suggested\" or an array of at most " + std::to_string(kMaxPhraseBoundaries) +
+                                                 " inner boundaries, got " + describe(*boundaries));
+        }
+    }
+}
+
+} // namespace
+
+std::string pathName(PathMethod path) { return path == PathMethod::Optimal ? "optimal" : "greedy"; }
+
+std::string referenceName(const ReferenceChoice& choice)
+{
+    if (choice.kind == ReferenceKind::Take) return std::to_string(choice.takeIndex);
+    return choice.kind == ReferenceKind::Average ? "average" : "suggested";
+}
+
+std::string methodName(DecomposeMethod method) { return method == DecomposeMethod::Km2o ? "km2o" : "least-squares"; }
+
+std::string inputName(DecomposeInput input) { return input == DecomposeInput::Normalised ? "normalised" : "preprocessed"; }
+
+json toJson(const ChainParameters& p)
+{
+    json cells = json::object();
+    for (const auto& [cell, choice] : p.normalise.cellReferences) cells[cell] = referenceJson(choice);
+    json warp = nullptr;
+    if (p.design.warp) {
+        warp = json::array();
+        for (const auto& point : p.design.warp->points) warp.push_back({point.output, point.source});
+    }
+    json gains = json::array();
+    for (const auto& g : p.design.gains) gains.push_back({{"phrase", g.phrase}, {"dof", g.dof}, {"g0", g.g0}, {"g1", g.g1}});
+    json boundaries = "suggested";
+    if (!p.design.boundaries.suggested) {
+        boundaries = json::array();
+        for (const Eigen::Index frame : p.design.boundaries.inner) boundaries.push_back(std::int64_t(frame));
+    }
+    return {{"preprocess",
+             {{"pad", p.preprocess.pad},
+              {"unwrap", p.preprocess.unwrap},
+              {"alignStart", p.preprocess.alignStart},
+              {"alignHeading", p.preprocess.alignHeading},
+              {"alignPosition", p.preprocess.alignPosition},
+              {"referenceTake", p.preprocess.referenceTakeIndex}}},
+            {"normalise",
+             {{"tau", p.normalise.tau},
+              {"searchBand", p.normalise.searchBand},
+              {"maxScale", p.normalise.maxScale},
+              {"coupling", p.normalise.coupling},
+              {"path", pathName(p.normalise.path)},
+              {"reference", referenceJson(p.normalise.reference)},
+              {"cellReferences", cells},
+              {"averageExcludesOutliers", p.normalise.averageExcludesOutliers},
+              {"averageBase", p.normalise.averageBase},
+              {"averageExcluded", p.normalise.averageExcluded},
+              {"scales", p.normalise.scales},
+              {"weighting", p.normalise.weighting == ChannelWeighting::Standardise ? "standardise" : "none"},
+              {"level", p.normalise.level == LevelAlignment::None ? "none" : "first-frame"},
+              {"approximationWeight", p.normalise.approximationWeight}}},
+            {"decompose",
+             {{"input", inputName(p.decompose.input)}, {"method", methodName(p.decompose.method)}, {"M", p.decompose.correlationLength}}},
+            {"fluctuations", {{"armaP", p.fluctuations.armaP}, {"armaQ", p.fluctuations.armaQ}, {"welchSegment", p.fluctuations.welchSegment}}},
+            {"axis",
+             {{"frontBack", p.axis.frontBack == FrontBackAxis::Principal ? "principal" : "shoulder"},
+              {"massSpacing", p.axis.massSpacing},
+              {"tau", p.axis.tau},
+              {"searchBand", p.axis.searchBand},
+              {"maxScale", p.axis.maxScale},
+              {"approximationWeight", p.axis.approximationWeight},
+              {"path", pathName(p.axis.path)},
+              {"controlSpacing", p.axis.controlSpacing},
+              {"refinementPasses", p.axis.refinementPasses}}},
+            {"design", {{"emotionWeight", p.design.emotionWeight}, {"warp", warp}, {"gains", gains}, {"boundaries", boundaries}}}};
+}
+
+Result<ChainParameters> chainParametersFromJson(const json& value, const std::string& where)
+{
+    ChainParameters p;
+    Reader root(value, "parameters", where);
+    if (!root.isObject()) return root.error();
+    root.onlyKeys({"preprocess", "normalise", "decompose", "fluctuations", "axis", "design"});
+    root.nested("preprocess", [&](Reader& r) {
+        r.onlyKeys({"pad", "unwrap", "alignStart", "alignHeading", "alignPosition", "referenceTake"});
+        r.boolean("pad", p.preprocess.pad);
+        r.boolean("unwrap", p.preprocess.unwrap);
+        r.boolean("alignStart", p.preprocess.alignStart);
+        r.boolean("alignHeading", p.preprocess.alignHeading);
+        r.boolean("alignPosition", p.preprocess.alignPosition);
+        r.integer("referenceTake", p.preprocess.referenceTakeIndex, 0, kMaxTakeIndex);
+    });
+    root.nested("normalise", [&](Reader& r) { readNormalise(r, p.normalise); });
+    root.nested("decompose", [&](Reader& r) {
+        r.onlyKeys({"input", "method", "M"});
+        r.choice("input", p.decompose.input, kInputs);
+        r.choice("method", p.decompose.method, kMethods);
+        r.integer("M", p.decompose.correlationLength, 0, kMaxCorrelationLength);
+    });
+    root.nested("fluctuations", [&](Reader& r) {
+        r.onlyKeys({"armaP", "armaQ", "welchSegment"});
+        r.integer("armaP", p.fluctuations.armaP, 0, kMaxArmaOrder);
+        r.integer("armaQ", p.fluctuations.armaQ, 0, kMaxArmaOrder);
+        r.integer("welchSegment", p.fluctuations.welchSegment, 2, kMaxWelchSegment);
+    });
+    root.nested("axis", [&](Reader& r) {
+        r.onlyKeys({"frontBack", "massSpacing", "tau", "searchBand", "maxScale", "approximationWeight", "path", "controlSpacing",
+                    "refinementPasses"});
+        r.choice("frontBack", p.axis.frontBack, kFrontBack);
+        r.real("massSpacing", p.axis.massSpacing, kMinMassSpacing, kMaxMassSpacing);
+        r.integer("tau", p.axis.tau, 0, kMaxTau);
+        r.integer("searchBand", p.axis.searchBand, 0, kMaxSearchBand);
+        r.integer("maxScale", p.axis.maxScale, 1, kMaxScale);
+        r.real("approximationWeight", p.axis.approximationWeight, 0.0, kMaxApproximationWeight);
+        r.choice("path", p.axis.path, kPaths);
+        r.integer("controlSpacing", p.axis.controlSpacing, 1, kMaxControlSpacing);
+        r.integer("refinementPasses", p.axis.refinementPasses, 0, kMaxRefinementPasses);
+    });
+    root.nested("design", [&](Reader& r) { readDesign(r, p.design); });
+    if (!root.ok()) return root.error();
+    if (auto status = validate(p); !status) return makeError(ErrorCode::Parse, where + ": " + status.error().message);
+    return p;
+}
+
+} // namespace bunraku::analysis::pipeline

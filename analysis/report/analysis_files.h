@@ -1,0 +1,40 @@
+#pragma once
+/// The data files of an analysed corpus (what `bunraku analyse -o DIR` writes beside the HTML
+/// report): every stage's results as CSV and JSON with shortest round-trip numbers, so a value
+/// read back is the bit-identical double the pipeline computed. Names (f = function,
+/// e = emotion, k = take index, made file-safe):
+///   parameters.json, summary.json,
+///   preprocessed_f_e_k.csv, normalised_f_e_k.csv, correspondence_f_e_k.csv,
+///   reference_f_e.csv, average_f_e.csv, variance_f_e.csv        (thesis 2.2, 3.6-3.8)
+///   y_f.csv, z_f_e.csv, km2o_by_M.csv, km2o_errors.csv           (4.3.1, 4.4.4, Table 4.5)
+///   spectra.csv, arma_table.csv                                  (4.3.2, Table 4.1)
+///   axis_functional_f.csv, axis_emotional_f_e.csv, warp_f_e.csv, phase_f_e.csv, gains_f_e.csv (5)
+/// Formats: docs/FORMATS.md.
+
+#include "analysis/core/result.h"
+#include "analysis/pipeline/chain.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace bunraku::analysis::report {
+
+struct OutputFile {
+    std::string name;    ///< file name inside the output folder
+    std::string content;
+};
+
+/// Every data file's text, computed before anything is written (needs every stage's result).
+Result<std::vector<OutputFile>> analysisDataFiles(const pipeline::ChainResult& chain, const pipeline::ChainParameters& parameters);
+
+/// Writes the files as one folder output (io/staged_folder.h): built beside `folder` and swapped
+/// in whole, refused when `folder` holds files this program did not write there; Io errors name
+/// the file.
+Status writeOutputFiles(const std::filesystem::path& folder, const std::vector<OutputFile>& files);
+
+/// File-safe "f_e" / "f_e_k" stems used above.
+std::string cellStem(const std::string& function, const std::string& emotion);
+std::string takeStem(const TakeLabels& labels);
+
+} // namespace bunraku::analysis::report

@@ -1,0 +1,259 @@
+#include "app/analysis_controller.h"
+
+#include "analysis/axis/axis_channels.h"
+#include "analysis/axis/inertia_axis.h"
+#include "analysis/body/body_description.h"
+#include "analysis/core/puppet_layout.h"
+#include "analysis/io/atomic_file.h"
+#include "analysis/report/html_report.h"
+
+#include <QCoreApplication>
+
+namespace bunraku::app {
+
+namespace pl = analysis::pipeline;
+
+namespace {
+
+template <class T> StageValue erase(std::shared_ptr<const T> value) { return std::static_pointer_cast<const void>(std::move(value)); }
+
+/// A stage's result as the scheduler's value, or its error.
+template <class T> analysis::Result<StageValue> asValue(analysis::Result<pl::Shared<T>> result)
+{
+    if (!result) return result.error();
+    return erase<T>(std::move(result).value());
+}
+
+} // namespace
+
+QString AnalysisController::slotTitle(int slot)
+{
+    switch (slot) {
+    case kPreprocessSlot: return tr("Preprocessing");
+    case kNormaliseSlot: return tr("Normalisation");
+    case kDecomposeSlot: return tr("Decomposition");
+    case kAxesSlot: return tr("Motion axes");
+    case kTakeAxisSlot: return tr("Motion axis of take A");
+    }
+    return QString();
+}
+
+AnalysisController::AnalysisController(Document& document, QObject* parent, std::shared_ptr<Executor> executor)
+    : QObject(parent),
+      m_document(document),
+      m_scheduler(new StageScheduler(this, std::move(executor))),
+      m_stageCache(std::make_shared<pl::StageCache>(4))
+{
+    connect(m_scheduler, &StageScheduler::finished, this, &AnalysisController::stageFinished);
+    connect(&document, &Document::corpusChanged, this, &AnalysisController::corpusChanged);
+    connect(&document, &Document::parametersChanged, this, [this](int sections) {
+        if (sections & (kPreprocessSection | kNormaliseSection | kDecomposeSection | kAxisSection)) update();
+        if (sections & kWeightSection) synthesiseWeighted();
+    });
+    connect(&document, &Document::selectionChanged, this, [this](TakeSlot slot) {
+        if (slot != TakeSlot::A) return;
+        resolveCell();
+        publishNormalised();
+        synthesiseWeighted();
+        requestTakeAxis();
+    });
+    corpusChanged();
+}
+
+bool AnalysisController::isCurrent(int slot) const
+{
+    return m_scheduler->state(slot) == SlotState::Finished;
+}
+
+void AnalysisController::corpusChanged()
+{
+    m_preprocessed.reset();
+    m_normalised.reset();
+    m_decomposed.reset();
+    m_axes.reset();
+    m_weighted.reset();
+    m_function.clear();
+    m_emotion.clear();
+    m_corpus = {};
+    if (!m_document.corpus().takes.empty()) {
+        m_corpus.corpus = m_document.sharedCorpus();
+        m_corpus.key = pl::corpusKey(*m_corpus.corpus);
+    }
+    resolveCell();
+    update();
+    requestTakeAxis();
+}
+
+void AnalysisController::update()
+{
+    if (!m_corpus.corpus) {
+        for (int slot : {kPreprocessSlot, kNormaliseSlot, kDecomposeSlot, kAxesSlot}) m_scheduler->clear(slot);
+        return;
+    }
+    const pl::ChainParameters parameters = m_document.parameters();
+    m_keys = pl::chainKeys(m_corpus.key, parameters);
+    auto cache = m_stageCache;
+    const pl::CorpusInput corpus = m_corpus;
+    m_scheduler->request(kPreprocessSlot, m_keys.preprocess, [corpus, parameters, cache](const analysis::RunControl& control) {
+        return asValue(pl::preprocessStage(corpus, parameters.preprocess, cache.get(), control));
+    });
+    // A stage starts once its input for the current keys is there; until then a running job of
+    // an older key is cancelled (its inputs changed) and the last result stays shown.
+    const auto pre = m_scheduler->result<pl::PreprocessOutput>(kPreprocessSlot);
+    if (pre) {
+        const pl::StageKey preKey = m_keys.preprocess;
+        m_scheduler->request(kNormaliseSlot, m_keys.normalise, [pre, preKey, parameters, cache](const analysis::RunControl& control) {
+            return asValue(pl::normaliseStage(preKey, *pre, parameters.normalise, cache.get(), control));
+        });
+    } else {
+        m_scheduler->clear(kNormaliseSlot);
+    }
+    const auto normalised = m_scheduler->result<pl::NormaliseOutput>(kNormaliseSlot);
+    const bool fromNormalised = parameters.decompose.input == pl::DecomposeInput::Normalised;
+    if (fromNormalised ? bool(normalised) : bool(pre)) {
+        const pl::StageKey inputKey = fromNormalised ? m_keys.normalise : m_keys.preprocess;
+        std::shared_ptr<const analysis::Corpus> input =
+            fromNormalised ? std::shared_ptr<const analysis::Corpus>(normalised, &normalised->normalised)
+                           : std::shared_ptr<const analysis::Corpus>(pre, &pre->corpus);
+        m_scheduler->request(kDecomposeSlot, m_keys.decompose, [input, inputKey, parameters, cache](const analysis::RunControl& control) {
+            return asValue(pl::decomposeStage(inputKey, *input, parameters.decompose, cache.get(), control));
+        });
+    } else {
+        m_scheduler->clear(kDecomposeSlot);
+    }
+    if (normalised) {
+        const pl::StageKey normalisedKey = m_keys.normalise;
+        const std::string neutral = m_corpus.corpus->neutralEmotion;
+        m_scheduler->request(kAxesSlot, m_keys.axes, [normalised, normalisedKey, neutral, parameters, cache](const analysis::RunControl& control) {
+            return asValue(pl::axisStage(normalisedKey, *normalised, neutral, parameters.axis, cache.get(), control));
+        });
+    } else {
+        m_scheduler->clear(kAxesSlot);
+    }
+}
+
+void AnalysisController::stageFinished(int slot)
+{
+    switch (slot) {
+    case kPreprocessSlot:
+        m_preprocessed = m_scheduler->result<pl::PreprocessOutput>(slot);
+        update();
+        break;
+    case kNormaliseSlot:
+        m_normalised = m_scheduler->result<pl::NormaliseOutput>(slot);
+        publishNormalised();
+        update();
+        break;
+    case kDecomposeSlot:
+        m_decomposed = m_scheduler->result<pl::DecomposeOutput>(slot);
+        resolveCell();
+        synthesiseWeighted();
+        break;
+    case kAxesSlot:
+        m_axes = m_scheduler->result<pl::AxisOutput>(slot);
+        break;
+    case kTakeAxisSlot: {
+        const auto axis = m_scheduler->result<analysis::Take>(slot);
+        if (axis)
+            m_document.setLiveTake(QStringLiteral("axis"), tr("motion axis of %1").arg(QString::fromStdString(axis->labels.source.substr(8))),
+                                   axis);
+        break;
+    }
+    }
+    emit resultChanged(slot);
+}
+
+void AnalysisController::resolveCell()
+{
+    const QString idA = m_document.selectedId(TakeSlot::A);
+    const TakePointer takeA = m_document.take(idA);
+    if (takeA && idA.startsWith(QStringLiteral("corpus/"))) {
+        m_function = takeA->labels.function;
+        m_emotion = takeA->labels.emotion;
+    } else if (m_function.empty() && !m_document.corpus().takes.empty()) {
+        // A shows a derived take (a project may reopen on one): start from the corpus's first take.
+        m_function = m_document.corpus().takes.front().labels.function;
+        m_emotion = m_document.corpus().takes.front().labels.emotion;
+    }
+}
+
+std::pair<std::string, std::string> AnalysisController::weightedCell() const
+{
+    const std::string& neutral = m_document.corpus().neutralEmotion;
+    if (m_emotion != neutral || !m_decomposed) return {m_function, m_emotion};
+    // The neutral emotion has z = 0: weight the function's first other emotion instead.
+    for (const auto& component : m_decomposed->components.emotions)
+        if (component.function == m_function && component.emotion != neutral) return {m_function, component.emotion};
+    return {m_function, m_emotion};
+}
+
+void AnalysisController::publishNormalised()
+{
+    const QString idA = m_document.selectedId(TakeSlot::A);
+    const TakePointer takeA = m_document.take(idA);
+    if (!m_normalised || !takeA || !idA.startsWith(QStringLiteral("corpus/"))) return; // keep it while viewing derived takes
+    const pl::CellNormalisation* cell = m_normalised->cell(takeA->labels.function, takeA->labels.emotion);
+    if (!cell) return;
+    for (std::size_t k = 0; k < cell->takeIndices.size(); ++k) {
+        if (cell->takeIndices[k] != takeA->labels.takeIndex) continue;
+        auto take = std::make_shared<analysis::Take>(cell->normalisations[k].normalised);
+        take->labels.takeIndex = takeA->labels.takeIndex;
+        m_document.setLiveTake(QStringLiteral("normalised"), tr("%1 normalised").arg(m_document.takeLabel(idA)), take, idA);
+        return;
+    }
+}
+
+void AnalysisController::synthesiseWeighted()
+{
+    if (!m_decomposed || m_function.empty()) return;
+    const auto [function, emotion] = weightedCell();
+    const double weight = m_document.parameters().design.emotionWeight;
+    auto take = pl::weightedTake(*m_decomposed, function, emotion, weight);
+    if (!take) {
+        m_weightError = QString::fromStdString(take.error().message);
+        emit weightedChanged();
+        return;
+    }
+    m_weightError.clear();
+    m_weighted = std::make_shared<const analysis::Take>(std::move(take).value());
+    const QString label = tr("%1/%2 a=%3").arg(QString::fromStdString(function), QString::fromStdString(emotion)).arg(weight, 0, 'f', 2);
+    m_document.setLiveTake(QStringLiteral("weighted"), label, m_weighted);
+    emit weightedChanged();
+}
+
+void AnalysisController::requestTakeAxis()
+{
+    const QString idA = m_document.selectedId(TakeSlot::A);
+    const TakePointer take = m_document.take(idA);
+    if (!take || idA == QStringLiteral("live/axis") || !analysis::hasPuppetLayout(*take)) return;
+    const pl::StageKey key = pl::KeyBuilder("take-axis").add(pl::takeKey(*take)).key();
+    m_scheduler->request(kTakeAxisSlot, key, [take](const analysis::RunControl& control) -> analysis::Result<StageValue> {
+        static const analysis::AxisModel model = analysis::makeAxisModel(analysis::defaultBodyDescription());
+        auto axis = analysis::computeMotionAxis(model, *take, {}, control);
+        if (!axis) return axis.error();
+        auto axisTake = std::make_shared<analysis::Take>(analysis::axisTake(*axis));
+        axisTake->labels.source = "axis of " + take->displayName();
+        return erase<analysis::Take>(std::move(axisTake));
+    });
+}
+
+analysis::Result<std::string> AnalysisController::reportHtml() const
+{
+    if (!m_corpus.corpus) return analysis::makeError(analysis::ErrorCode::InvalidArgument, "no corpus is open");
+    auto chain = pl::runChain(m_corpus, m_document.parameters(), m_stageCache.get());
+    if (!chain) return chain.error();
+    analysis::report::ReportOptions options;
+    options.title = "Bunraku motion analysis: " + (m_corpus.corpus->name.empty() ? std::string("corpus") : m_corpus.corpus->name);
+    options.corpusSource = m_document.corpusSource().toStdString();
+    options.generator = "Bunraku Motion Workbench, File > Export Report";
+    return analysis::report::htmlReport(*chain, m_document.parameters(), options);
+}
+
+analysis::Status AnalysisController::exportReport(const std::filesystem::path& file) const
+{
+    auto html = reportHtml();
+    if (!html) return html.error();
+    return analysis::io::writeFileAtomically(file, *html);
+}
+
+} // namespace bunraku::app

@@ -1,0 +1,95 @@
+#pragma once
+/// The workbench's side of the analysis pipeline (analysis/pipeline): the document's corpus and
+/// typed parameters in, the stages' results out. Each stage runs as a job of the one
+/// StageScheduler, keyed by its inputs and parameters, so a parameter change recomputes its
+/// stage and those below it and nothing else (a changed tau: normalisation, decomposition and
+/// motion axes; the emotion weight or a design edit: no stage at all). The cheap last steps -
+/// the emotion weight (4.5) and the design (5.5, DesignController) - run on the GUI thread.
+///
+/// It is the only publisher of the analysis's live takes: "normalised" (take A on its cell's
+/// reference time), "weighted" (y + a z of take A's cell) and "axis" (take A's motion axis).
+/// Views read them from the document and never write them.
+
+#include "app/document.h"
+#include "app/stage_scheduler.h"
+
+#include "analysis/pipeline/chain.h"
+
+#include <QObject>
+
+#include <filesystem>
+#include <memory>
+#include <string>
+
+namespace bunraku::app {
+
+class AnalysisController : public QObject {
+    Q_OBJECT
+public:
+    /// Scheduler slots: the pipeline's stages, and take A's motion axis.
+    enum Slot { kPreprocessSlot = 1, kNormaliseSlot = 2, kDecomposeSlot = 3, kAxesSlot = 5, kTakeAxisSlot = 10 };
+    static QString slotTitle(int slot);
+
+    /// `executor` null: the thread pool (tests pass a manual one).
+    explicit AnalysisController(Document& document, QObject* parent = nullptr, std::shared_ptr<Executor> executor = {});
+
+    StageScheduler& scheduler() { return *m_scheduler; }
+    const StageScheduler& scheduler() const { return *m_scheduler; }
+
+    /// The latest results: the current inputs' once computed, until then the previous ones
+    /// (null before the first). `isCurrent` says whether a slot's result matches the inputs.
+    analysis::pipeline::Shared<analysis::pipeline::PreprocessOutput> preprocessed() const { return m_preprocessed; }
+    analysis::pipeline::Shared<analysis::pipeline::NormaliseOutput> normalised() const { return m_normalised; }
+    analysis::pipeline::Shared<analysis::pipeline::DecomposeOutput> decomposed() const { return m_decomposed; }
+    analysis::pipeline::Shared<analysis::pipeline::AxisOutput> axes() const { return m_axes; }
+    bool isCurrent(int slot) const;
+    /// The keys of every stage for the document's corpus and parameters.
+    analysis::pipeline::ChainKeys keys() const { return m_keys; }
+
+    /// The cell the panels show: take A's when it is a corpus take, else the last one.
+    const std::string& cellFunction() const { return m_function; }
+    const std::string& cellEmotion() const { return m_emotion; }
+    /// The cell weighted by the emotion weight: take A's, or its function's first emotional cell
+    /// when take A is neutral (z = 0 there).
+    std::pair<std::string, std::string> weightedCell() const;
+    /// y + a z of weightedCell(), null before a decomposition.
+    TakePointer weightedTake() const { return m_weighted; }
+    QString weightError() const { return m_weightError; }
+
+    /// Every stage (spectra and ARMA too) for the document's corpus and parameters, through
+    /// the caches the jobs filled, then the HTML report (analysis/report). On the GUI thread.
+    analysis::Result<std::string> reportHtml() const;
+    analysis::Status exportReport(const std::filesystem::path& file) const;
+
+signals:
+    /// A stage's result changed (Slot).
+    void resultChanged(int slot);
+    /// The weighted take was re-synthesised.
+    void weightedChanged();
+
+private:
+    void corpusChanged();
+    void update();
+    void stageFinished(int slot);
+    void resolveCell();
+    void publishNormalised();
+    void synthesiseWeighted();
+    void requestTakeAxis();
+
+    Document& m_document;
+    StageScheduler* m_scheduler = nullptr;
+    std::shared_ptr<analysis::pipeline::StageCache> m_stageCache;
+    analysis::pipeline::CorpusInput m_corpus;
+    analysis::pipeline::ChainKeys m_keys;
+    analysis::pipeline::Shared<analysis::pipeline::PreprocessOutput> m_preprocessed;
+    analysis::pipeline::Shared<analysis::pipeline::NormaliseOutput> m_normalised;
+    analysis::pipeline::Shared<analysis::pipeline::DecomposeOutput> m_decomposed;
+    analysis::pipeline::Shared<analysis::pipeline::AxisOutput> m_axes;
+    std::string m_function;
+    std::string m_emotion;
+    TakePointer m_weighted;
+    QString m_weightError;
+    TakePointer m_axisSource;
+};
+
+} // namespace bunraku::app

@@ -1,0 +1,127 @@
+// Subcommand: analyse - the thesis's whole chain (analysis/pipeline) with data files and the
+// HTML report (analysis/report).
+#include "app/cli/commands.h"
+#include "app/cli/output_guard.h"
+
+#include "analysis/io/atomic_file.h"
+
+#include "analysis/pipeline/chain.h"
+#include "analysis/pipeline/parameters_json.h"
+#include "analysis/report/analysis_files.h"
+#include "analysis/report/html_report.h"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+namespace bunraku::app::cli {
+namespace {
+
+namespace pl = bunraku::analysis::pipeline;
+namespace rp = bunraku::analysis::report;
+
+struct AnalyseArguments {
+    std::string corpus;
+    std::string output;
+    std::string parameters;
+    bool json = false;
+};
+
+/// One line per stage on a terminal, redrawn in place: "[#####.....] Normalisation (3)  40 %".
+class ProgressBar {
+public:
+    void update(pl::Stage stage, double fraction)
+    {
+        const int filled = int(fraction * 30.0 + 0.5);
+        std::fprintf(stderr, "\r%-36s [%s%s] %3d %%", pl::stageTitle(stage), std::string(std::size_t(filled), '#').c_str(),
+                     std::string(std::size_t(30 - filled), '.').c_str(), int(fraction * 100.0 + 0.5));
+        if (fraction >= 1.0) std::fprintf(stderr, "\n");
+        std::fflush(stderr);
+    }
+};
+
+pl::ChainParameters readParameters(const std::string& file)
+{
+    if (file.empty()) return {};
+    const std::string text = unwrap(analysis::io::readTextFile(file, analysis::io::kDocumentLimitBytes));
+    nlohmann::json document;
+    try {
+        document = nlohmann::json::parse(text);
+    } catch (const nlohmann::json::exception& parse) { // a syntax error, or a number out of range (1e400)
+        throw CliError(file + ": expected JSON: " + parse.what());
+    }
+    // A project file holds the parameters under "parameters"; a parameters file may too.
+    const nlohmann::json& parameters = document.is_object() && document.contains("parameters") ? document["parameters"] : document;
+    return unwrap(pl::chainParametersFromJson(parameters, file));
+}
+
+void runAnalyse(const AnalyseArguments& arguments)
+{
+    refuseOutputOverInputs(arguments.output, OutputKind::Folder, {arguments.corpus, arguments.parameters});
+    const pl::ChainParameters parameters = readParameters(arguments.parameters);
+    const pl::CorpusInput corpus = unwrap(pl::importCorpus(arguments.corpus));
+    const bool terminal = ::isatty(STDERR_FILENO) == 1;
+    ProgressBar bar;
+    pl::ChainOptions options;
+    const auto started = std::chrono::steady_clock::now();
+    options.progress = [&](pl::Stage stage, double fraction) {
+        if (arguments.json) {
+            std::cout << nlohmann::json{{"stage", pl::stageName(stage)}, {"title", pl::stageTitle(stage)}, {"fraction", fraction}}.dump()
+                      << std::endl;
+        } else if (terminal) {
+            bar.update(stage, fraction);
+        }
+    };
+    auto chain = pl::runChain(corpus, parameters, nullptr, options);
+    if (!chain) throw CliError(arguments.corpus + ": " + chain.error().message);
+    std::vector<rp::OutputFile> files = unwrap(rp::analysisDataFiles(*chain, parameters));
+    rp::ReportOptions report;
+    report.title = "Bunraku motion analysis: " + (corpus.corpus->name.empty() ? arguments.corpus : corpus.corpus->name);
+    report.corpusSource = arguments.corpus;
+    report.generator = std::string("bunraku analyse ") + BUNRAKU_VERSION;
+    files.push_back({"report.html", unwrap(rp::htmlReport(*chain, parameters, report))});
+    unwrap(rp::writeOutputFiles(arguments.output, files));
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    nlohmann::json summary{{"done", true},
+                           {"output", arguments.output},
+                           {"report", (std::filesystem::path(arguments.output) / "report.html").string()},
+                           {"files", files.size()},
+                           {"cells", chain->normalised->cells.size()},
+                           {"seconds", seconds}};
+    if (chain->decomposed->km2o) {
+        summary["M"] = chain->decomposed->km2o->correlationLength;
+        summary["mean_P_percent"] = chain->decomposed->km2o->meanCellErrorPercent;
+    }
+    if (arguments.json) {
+        std::cout << summary.dump() << std::endl;
+        return;
+    }
+    std::cout << "analysed " << corpus.corpus->takes.size() << " takes in " << chain->normalised->cells.size() << " cells";
+    if (chain->decomposed->km2o)
+        std::cout << " (KM2O M = " << chain->decomposed->km2o->correlationLength << ", mean P = " << chain->decomposed->km2o->meanCellErrorPercent
+                  << " %)";
+    std::cout << ": " << files.size() << " files and the report " << summary["report"].get<std::string>() << "\n";
+}
+
+} // namespace
+
+void addAnalyseCommands(CommandSet& commands)
+{
+    auto arguments = std::make_shared<AnalyseArguments>();
+    CLI::App* command = commands.root.add_subcommand(
+        "analyse", "The thesis's whole chain: preprocess (2.2), normalise every cell (3), decompose (4: KM2O with M chosen by "
+                   "P), spectra and ARMA (4.3.2), motion axes, phase and gains (5); writes the data files and report.html");
+    command->add_option("CORPUS", arguments->corpus, "Corpus folder (corpus.json), or 'demo' for the embedded demo corpus")->required();
+    command->add_option("-o,--output", arguments->output, "Output folder")->required()->type_name("DIR");
+    command->add_option("--parameters", arguments->parameters,
+                        "JSON file of the chain's parameters (docs/FORMATS.md), or a project file; default the thesis's")
+        ->type_name("FILE");
+    command->add_flag("--json", arguments->json, "Progress and the summary as JSON lines on standard output");
+    command->callback([arguments] { runAnalyse(*arguments); });
+}
+
+} // namespace bunraku::app::cli

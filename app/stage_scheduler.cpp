@@ -1,0 +1,196 @@
+#include "app/stage_scheduler.h"
+
+#include <QMetaObject>
+#include <QPointer>
+#include <QRunnable>
+#include <QThreadPool>
+
+#include <exception>
+
+namespace bunraku::app {
+
+using analysis::pipeline::StageKey;
+
+void ThreadPoolExecutor::run(std::function<void()> work) { QThreadPool::globalInstance()->start(std::move(work)); }
+
+StageScheduler::StageScheduler(QObject* parent, std::shared_ptr<Executor> executor,
+                               std::shared_ptr<analysis::pipeline::StageCache> cache)
+    : QObject(parent),
+      m_executor(executor ? std::move(executor) : std::make_shared<ThreadPoolExecutor>()),
+      m_cache(cache ? std::move(cache) : std::make_shared<analysis::pipeline::StageCache>(32)),
+      m_alive(std::make_shared<std::atomic<bool>>(true))
+{
+}
+
+StageScheduler::~StageScheduler()
+{
+    // Running jobs hold copies of their inputs only; they see the stop request at their next
+    // check and their results are dropped. Closing never waits for them.
+    cancelAll();
+    *m_alive = false;
+}
+
+void StageScheduler::request(int slotId, StageKey key, StageWork work)
+{
+    Slot& slot = m_slots[slotId];
+    if (slot.key == key && (slot.job != 0 || slot.state == SlotState::Finished || slot.state == SlotState::Failed)) return;
+    if (slot.stop) slot.stop->request_stop(); // its inputs changed: the running job is of no use
+    slot.key = key;
+    slot.job = 0;
+    slot.stop.reset();
+    slot.value.reset();
+    slot.error.clear();
+    slot.progress = 0.0;
+    // The cache holds results of every slot by key (a stage's key already names its stage).
+    if (StageValue cached = m_cache->find<void>(analysis::pipeline::Stage(0), StageKey{key.value ^ std::uint64_t(slotId)})) {
+        slot.value = std::move(cached);
+        slot.state = SlotState::Finished;
+        slot.progress = 1.0;
+        // Announced from the event loop, as computed results are: the caller may be in the
+        // middle of requesting several slots.
+        QPointer<StageScheduler> self(this);
+        QMetaObject::invokeMethod(
+            this,
+            [self, slotId, key] {
+                if (!self) return;
+                const auto found = self->m_slots.find(slotId);
+                if (found == self->m_slots.end() || !(found->second.key == key) || found->second.state != SlotState::Finished) return;
+                emit self->stateChanged(slotId);
+                emit self->finished(slotId);
+            },
+            Qt::QueuedConnection);
+        return;
+    }
+    const quint64 job = ++m_nextJob;
+    slot.job = job;
+    slot.stop = std::make_shared<std::stop_source>();
+    slot.state = SlotState::Running;
+    ++slot.starts;
+    emit stateChanged(slotId);
+    emit progressChanged(slotId, 0.0);
+    QPointer<StageScheduler> self(this);
+    auto alive = m_alive;
+    auto stop = slot.stop;
+    m_executor->run([self, alive, stop, job, slotId, key, work = std::move(work)] {
+        analysis::RunControl control{stop->get_token(), [self, alive, slotId, job](double fraction) {
+                                         if (!*alive) return;
+                                         QMetaObject::invokeMethod(
+                                             self.data(),
+                                             [self, slotId, job, fraction] {
+                                                 if (!self) return;
+                                                 auto found = self->m_slots.find(slotId);
+                                                 if (found == self->m_slots.end() || found->second.job != job) return;
+                                                 found->second.progress = fraction;
+                                                 emit self->progressChanged(slotId, fraction);
+                                             },
+                                             Qt::QueuedConnection);
+                                     }};
+        analysis::Result<StageValue> result = analysis::makeError(analysis::ErrorCode::Cancelled, "not run");
+        try {
+            result = work(control);
+        } catch (const std::exception& error) {
+            result = analysis::makeError(analysis::ErrorCode::Numerical, error.what());
+        } catch (...) {
+            result = analysis::makeError(analysis::ErrorCode::Numerical, "unknown error");
+        }
+        if (!*alive) return;
+        QMetaObject::invokeMethod(
+            self.data(),
+            [self, slotId, job, key, result = std::move(result)]() mutable {
+                if (self) self->deliver(slotId, job, key, std::move(result));
+            },
+            Qt::QueuedConnection);
+    });
+}
+
+void StageScheduler::deliver(int slotId, quint64 job, StageKey key, analysis::Result<StageValue> result)
+{
+    if (result.ok()) m_cache->store<void>(analysis::pipeline::Stage(0), StageKey{key.value ^ std::uint64_t(slotId)}, *result);
+    auto found = m_slots.find(slotId);
+    // A job whose inputs changed meanwhile (or that was cleared) is never shown.
+    if (found == m_slots.end() || found->second.job != job || !(found->second.key == key)) return;
+    Slot& slot = found->second;
+    slot.job = 0;
+    slot.stop.reset();
+    if (!result.ok()) {
+        slot.state = SlotState::Failed;
+        slot.error = QString::fromStdString(result.error().message);
+        emit stateChanged(slotId);
+        emit failed(slotId, slot.error);
+        return;
+    }
+    slot.value = std::move(result).value();
+    slot.state = SlotState::Finished;
+    slot.progress = 1.0;
+    emit progressChanged(slotId, 1.0);
+    emit stateChanged(slotId);
+    emit finished(slotId);
+}
+
+void StageScheduler::clear(int slotId)
+{
+    auto found = m_slots.find(slotId);
+    if (found == m_slots.end()) return;
+    Slot& slot = found->second;
+    if (slot.stop) slot.stop->request_stop();
+    const bool wasShown = slot.state != SlotState::Idle;
+    const int starts = slot.starts; // kept: counts every job the slot started
+    slot = Slot{};
+    slot.starts = starts;
+    if (wasShown) emit stateChanged(slotId);
+}
+
+void StageScheduler::cancelAll()
+{
+    for (auto& [id, slot] : m_slots) {
+        if (slot.stop) slot.stop->request_stop();
+        slot.job = 0;
+        slot.stop.reset();
+        if (slot.state == SlotState::Running) slot.state = SlotState::Idle;
+    }
+}
+
+StageValue StageScheduler::value(int slot) const
+{
+    const auto found = m_slots.find(slot);
+    return found == m_slots.end() || found->second.state != SlotState::Finished ? nullptr : found->second.value;
+}
+
+StageKey StageScheduler::key(int slot) const
+{
+    const auto found = m_slots.find(slot);
+    return found == m_slots.end() ? StageKey{} : found->second.key;
+}
+
+SlotState StageScheduler::state(int slot) const
+{
+    const auto found = m_slots.find(slot);
+    return found == m_slots.end() ? SlotState::Idle : found->second.state;
+}
+
+QString StageScheduler::error(int slot) const
+{
+    const auto found = m_slots.find(slot);
+    return found == m_slots.end() ? QString() : found->second.error;
+}
+
+double StageScheduler::progress(int slot) const
+{
+    const auto found = m_slots.find(slot);
+    return found == m_slots.end() ? 0.0 : found->second.progress;
+}
+
+bool StageScheduler::busy() const
+{
+    for (const auto& [id, slot] : m_slots)
+        if (slot.state == SlotState::Running) return true;
+    return false;
+}
+
+int StageScheduler::starts(int slot) const
+{
+    const auto found = m_slots.find(slot);
+    return found == m_slots.end() ? 0 : found->second.starts;
+}
+
+} // namespace bunraku::app

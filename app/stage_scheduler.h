@@ -1,0 +1,104 @@
+#pragma once
+/// The one scheduler of the workbench's background analysis (OpenSim Creator's cancellable
+/// workers with version ids, keyed by content instead of a document version). Every job is a
+/// slot - a pipeline stage (analysis/pipeline/stages.h) or another derived result - asked for
+/// with the key of its inputs and parameters (stage_key.h):
+///  - a slot asked for the key it is already computing or showing does nothing, so a stage is
+///    cancelled only when its own inputs change (an emotion-weight drag never restarts a running
+///    normalisation);
+///  - a new key cancels the slot's running job (its std::stop_token) and starts the new one,
+///    or takes the result from the cache (pipeline::StageCache) at once;
+///  - a finished job whose key is no longer the slot's is dropped (cached, never shown);
+///  - results reach the GUI thread only, through queued calls; exceptions never cross.
+/// Jobs run on an Executor: the thread pool by default, a manual one in tests (no wall clock).
+
+#include "analysis/core/result.h"
+#include "analysis/core/run_control.h"
+#include "analysis/pipeline/stage_cache.h"
+#include "analysis/pipeline/stage_key.h"
+
+#include <QObject>
+#include <QString>
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <stop_token>
+
+namespace bunraku::app {
+
+/// Runs work off the GUI thread.
+class Executor {
+public:
+    virtual ~Executor() = default;
+    virtual void run(std::function<void()> work) = 0;
+};
+
+/// QThreadPool::globalInstance().
+class ThreadPoolExecutor : public Executor {
+public:
+    void run(std::function<void()> work) override;
+};
+
+using StageValue = std::shared_ptr<const void>;
+/// A job: computes the slot's value from inputs it captured, off the GUI thread.
+using StageWork = std::function<analysis::Result<StageValue>(const analysis::RunControl& control)>;
+
+enum class SlotState { Idle, Running, Finished, Failed };
+
+class StageScheduler : public QObject {
+    Q_OBJECT
+public:
+    /// `executor` null: the thread pool. `cache` null: a cache of its own.
+    explicit StageScheduler(QObject* parent = nullptr, std::shared_ptr<Executor> executor = {},
+                            std::shared_ptr<analysis::pipeline::StageCache> cache = {});
+    ~StageScheduler() override;
+
+    /// Asks for `slot` computed under `key` by `work`. Nothing happens when the slot already
+    /// computes or shows `key`; a cached result is delivered at once (finished() emitted).
+    void request(int slot, analysis::pipeline::StageKey key, StageWork work);
+    /// Nothing to compute for `slot` (no input): cancels it and forgets its result.
+    void clear(int slot);
+    /// Cancels every job (closing): nothing more is delivered.
+    void cancelAll();
+
+    /// The slot's result for its current key, null while computing or after a failure.
+    template <class T> std::shared_ptr<const T> result(int slot) const { return std::static_pointer_cast<const T>(value(slot)); }
+    StageValue value(int slot) const;
+    analysis::pipeline::StageKey key(int slot) const;
+    SlotState state(int slot) const;
+    QString error(int slot) const;
+    double progress(int slot) const;
+    bool busy() const;
+    /// Jobs started per slot (tests: a slot that was not restarted).
+    int starts(int slot) const;
+    analysis::pipeline::StageCache& cache() { return *m_cache; }
+
+signals:
+    void finished(int slot);
+    void failed(int slot, const QString& message);
+    void stateChanged(int slot);
+    void progressChanged(int slot, double fraction);
+
+private:
+    struct Slot {
+        analysis::pipeline::StageKey key;
+        quint64 job = 0; ///< id of the job computing `key`, 0 when none runs
+        std::shared_ptr<std::stop_source> stop;
+        StageValue value;
+        SlotState state = SlotState::Idle;
+        QString error;
+        double progress = 0.0;
+        int starts = 0;
+    };
+    void deliver(int slot, quint64 job, analysis::pipeline::StageKey key, analysis::Result<StageValue> result);
+
+    std::shared_ptr<Executor> m_executor;
+    std::shared_ptr<analysis::pipeline::StageCache> m_cache;
+    std::map<int, Slot> m_slots;
+    quint64 m_nextJob = 0;
+    /// Shared with running jobs: false once this scheduler is gone (their results are dropped).
+    std::shared_ptr<std::atomic<bool>> m_alive;
+};
+
+} // namespace bunraku::app

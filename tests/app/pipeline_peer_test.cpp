@@ -1,0 +1,125 @@
+// The workbench and the command line compute the same bits: the GUI's stage results against the
+// data files `bunraku analyse` writes for the same corpus and parameters, per stage.
+#include "tests/app/app_test_support.h"
+
+#include "app/analysis_controller.h"
+#include "app/design_controller.h"
+
+#include "analysis/io/take_csv.h"
+#include "analysis/io/text_format.h"
+#include "analysis/report/analysis_files.h"
+
+#include <catch2/catch.hpp>
+
+#include <QProcess>
+
+#include <fstream>
+#include <sstream>
+
+using namespace bunraku;
+
+namespace {
+
+Eigen::MatrixXd csvValues(const std::filesystem::path& file)
+{
+    auto take = analysis::io::readTakeCsv(file);
+    INFO(file.string() << ": " << (take ? "" : take.error().message));
+    REQUIRE(take.ok());
+    return take->values;
+}
+
+std::string text(const std::filesystem::path& file)
+{
+    std::ifstream in(file);
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    return buffer.str();
+}
+
+} // namespace
+
+TEST_CASE("the workbench's stage results equal bunraku analyse's data files bit for bit", "[app][pipeline][cli]")
+{
+    const auto dir = test::scratchDir("peer-analyse");
+    QProcess cli;
+    cli.start(QStringLiteral(BUNRAKU_CLI), {QStringLiteral("analyse"), QStringLiteral("demo"), QStringLiteral("-o"),
+                                            QString::fromStdString((dir / "out").string()), QStringLiteral("--json")});
+    REQUIRE(cli.waitForFinished(120000));
+    INFO(cli.readAllStandardError().toStdString());
+    REQUIRE(cli.exitCode() == 0);
+    const auto out = dir / "out";
+
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    auto& analysis = window->analysis();
+    REQUIRE(QTest::qWaitFor([&] { return !analysis.scheduler().busy() && analysis.axes() && analysis.decomposed(); }, 120000));
+
+    SECTION("preprocess (2.2): the same takes - the GUI no longer normalises raw takes")
+    {
+        for (const auto& take : analysis.preprocessed()->corpus.takes)
+            CHECK(csvValues(out / ("preprocessed_" + analysis::report::takeStem(take.labels) + ".csv")) == take.values);
+    }
+    SECTION("normalise (3): every cell's normalised takes, reference and variance table")
+    {
+        for (const auto& cell : analysis.normalised()->cells) {
+            const std::string stem = analysis::report::cellStem(cell.function, cell.emotion);
+            for (std::size_t k = 0; k < cell.normalisations.size(); ++k)
+                CHECK(csvValues(out / ("normalised_" + stem + "_" + std::to_string(cell.takeIndices[k]) + ".csv")) ==
+                      cell.normalisations[k].normalised.values);
+            CHECK(csvValues(out / ("reference_" + stem + ".csv")) == cell.referenceTake.values);
+            CHECK(csvValues(out / ("average_" + stem + ".csv")) == cell.average.values);
+        }
+        // and what the Normalisation panel shows is take A's row of that cell
+        const auto takeA = window->document().selectedTake(app::TakeSlot::A);
+        const auto* cell = analysis.normalised()->cell(takeA->labels.function, takeA->labels.emotion);
+        REQUIRE(cell);
+        const auto live = window->document().take(QStringLiteral("live/normalised"));
+        REQUIRE(live);
+        CHECK(csvValues(out / ("normalised_" + analysis::report::takeStem(takeA->labels) + ".csv")) == live->values);
+    }
+    SECTION("decompose (4): KM2O with M chosen by P, y and z")
+    {
+        const auto& d = analysis.decomposed()->components;
+        for (const auto& y : d.functions) CHECK(csvValues(out / ("y_" + y.function + ".csv")) == y.values);
+        for (const auto& z : d.emotions) CHECK(csvValues(out / ("z_" + analysis::report::cellStem(z.function, z.emotion) + ".csv")) == z.values);
+        REQUIRE(analysis.decomposed()->km2o);
+        std::ostringstream byM;
+        byM << "M,mean_P_percent\n";
+        const auto& km2o = *analysis.decomposed()->km2o;
+        for (std::size_t i = 0; i < km2o.candidateLengths.size(); ++i)
+            byM << km2o.candidateLengths[i] << ',' << analysis::io::shortestNumber(km2o.meanErrorPercent[i]) << '\n';
+        CHECK(text(out / "km2o_by_M.csv") == byM.str());
+    }
+    SECTION("motion axes, phase and gains (5)")
+    {
+        for (const auto& function : analysis.axes()->functions)
+            CHECK(csvValues(out / ("axis_functional_" + function.function + ".csv")) == function.basis->coordinates);
+        for (const auto& cell : analysis.axes()->cells) {
+            const std::string stem = analysis::report::cellStem(cell.function, cell.emotion);
+            CHECK(csvValues(out / ("axis_emotional_" + stem + ".csv")) == cell.coordinates);
+            std::string warp = "output_frame,source_frame\n";
+            for (const auto& point : cell.extracted.phase.curve.points)
+                warp += analysis::io::shortestNumber(point.output) + "," + analysis::io::shortestNumber(point.source) + "\n";
+            CHECK(text(out / ("warp_" + stem + ".csv")) == warp);
+        }
+        // The design panel's functional take is the neutral cell's average take the CLI wrote.
+        REQUIRE(QTest::qWaitFor([&] { return window->design().ready(); }, 60000));
+        const auto functional = window->document().take(window->design().sourceId());
+        REQUIRE(functional);
+        CHECK(csvValues(out / ("average_" + analysis::report::cellStem(functional->labels.function, "none") + ".csv")) ==
+              functional->values);
+    }
+}
+
+TEST_CASE("File > Export Report writes the open corpus's report", "[app][report]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    REQUIRE(QTest::qWaitFor([&] { return !window->analysis().scheduler().busy() && window->analysis().axes(); }, 120000));
+    const auto dir = test::scratchDir("gui-report");
+    const QString file = QString::fromStdString((dir / "report.html").string());
+    REQUIRE(window->exportReport(file));
+    const std::string html = text(dir / "report.html");
+    for (const std::string id : {"overview", "normalise", "km2o", "gains"}) CHECK(html.find("<section id=\"" + id + "\">") != std::string::npos);
+    CHECK(html.find("<script") == std::string::npos);
+}
