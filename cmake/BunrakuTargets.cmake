@@ -2,7 +2,7 @@
 # the repository root as the include root (`#include "analysis/core/take.h"`).
 
 function(bunraku_configure_target target)
-  target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow=local -Wnon-virtual-dtor)
+  target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic $<$<CXX_COMPILER_ID:GNU>:-Wshadow=local> -Wnon-virtual-dtor)
   if(BUNRAKU_WERROR)
     target_compile_options(${target} PRIVATE -Werror)
   endif()

@@ -19,9 +19,11 @@ fi
 build="$root/build-fuzz"
 generator=()
 if command -v ninja >/dev/null 2>&1 && [ ! -f "$build/CMakeCache.txt" ]; then generator=(-G Ninja); fi
-cmake -S "$root" -B "$build" "${generator[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+# -O1 with line tables: quick to build, fast enough to fuzz, stack traces with lines. Warnings
+# are errors in the gcc builds (scripts/build.sh); here clang's own (GCC pragmas) only show.
+cmake -S "$root" -B "$build" "${generator[@]}" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -gline-tables-only" \
   -DCMAKE_CXX_COMPILER=clang++-14 -DBUNRAKU_FUZZ=ON -DBUNRAKU_WITH_QT=OFF -DBUNRAKU_BUILD_TESTS=OFF \
-  -DBUNRAKU_BUILD_BENCHMARKS=OFF -DBUNRAKU_WERROR=ON >/dev/null
+  -DBUNRAKU_BUILD_BENCHMARKS=OFF -DBUNRAKU_WERROR=OFF >/dev/null
 cmake --build "$build" --parallel "$(nproc)" --target "${targets[@]}"
 
 status=0
