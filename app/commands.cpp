@@ -75,8 +75,9 @@ RemovePhraseBoundary::RemovePhraseBoundary(Document* document, AnalysisParameter
 {
 }
 
-ImportTake::ImportTake(Document* document, TakePointer take, const QString& label, const QString& sourcePath)
-    : m_document(document), m_take{document->nextImportedId(), label, std::move(take), sourcePath, QString()}
+ImportTake::ImportTake(Document* document, TakePointer take, const QString& label, const QString& sourcePath,
+                       std::shared_ptr<const analysis::io::ImportOptions> options)
+    : m_document(document), m_take{document->nextImportedId(), label, std::move(take), sourcePath, QString(), std::move(options)}
 {
     setText(QCoreApplication::translate("commands", "Import %1").arg(label));
 }

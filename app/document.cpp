@@ -112,7 +112,7 @@ void Document::setLiveTake(const QString& name, const QString& label, TakePointe
             if (m_selected[slot] == id) emit selectionChanged(TakeSlot(slot));
         return;
     }
-    m_derived.push_back(DerivedTake{id, label, std::move(take), QString(), ghostId});
+    m_derived.push_back(DerivedTake{id, label, std::move(take), QString(), ghostId, nullptr});
     emit derivedTakesChanged();
 }
 

@@ -21,6 +21,10 @@
 #include <memory>
 #include <vector>
 
+namespace bunraku::analysis::io {
+struct ImportOptions;
+}
+
 namespace bunraku::app {
 
 /// The two shown takes (the corpus browser's slots map onto these).
@@ -51,6 +55,8 @@ struct DerivedTake {
     TakePointer take;
     QString sourcePath; ///< imported takes: the file; empty for live results
     QString ghostId;    ///< live results: the take drawn faintly behind it (its original)
+    /// imported takes: the options they were read with (stored in projects); null for defaults
+    std::shared_ptr<const analysis::io::ImportOptions> importOptions;
 };
 
 class Document : public QObject {

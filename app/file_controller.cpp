@@ -4,6 +4,7 @@
 #include "app/document.h"
 #include "app/joint_map_dialog.h"
 #include "app/new_corpus_dialog.h"
+#include "app/recovery_dialog.h"
 
 #include "analysis/io/bvh.h"
 #include "analysis/io/bvh_joint_map.h"
@@ -27,6 +28,7 @@
 #include <QStandardPaths>
 
 #include <atomic>
+#include <algorithm>
 #include <filesystem>
 #include <stop_token>
 
@@ -40,7 +42,8 @@ std::filesystem::path toPath(const QString& file) { return std::filesystem::path
 
 } // namespace
 
-FileController::FileController(Document& document, QWidget* window) : QObject(window), m_document(document), m_window(window)
+FileController::FileController(Document& document, QWidget* window)
+    : QObject(window), m_document(document), m_window(window), m_autosave(std::make_unique<AutosaveSession>())
 {
     connect(&document, &Document::derivedTakesChanged, this, &FileController::showPendingLiveTakes);
     connect(&document, &Document::selectionChanged, this, [this](TakeSlot slot) {
@@ -153,6 +156,17 @@ bool FileController::openPath(const QString& path)
     return importTakeFile(path);
 }
 
+int FileController::openDroppedPaths(const QStringList& paths)
+{
+    const bool replaces = std::any_of(paths.begin(), paths.end(), [](const QString& path) {
+        return QFileInfo(path).isDir() || path.endsWith(QStringLiteral(".json"));
+    });
+    if (replaces && !maybeSave()) return 0;
+    int opened = 0;
+    for (const QString& path : paths) opened += openPath(path) ? 1 : 0;
+    return opened;
+}
+
 bool FileController::importTakeFile(const QString& file, const QString& jointMap)
 {
     analysis::io::ImportOptions options;
@@ -200,7 +214,8 @@ bool FileController::importTakeFile(const QString& file, const QString& jointMap
     }
     const QString absolute = QFileInfo(file).absoluteFilePath();
     auto pointer = std::make_shared<const analysis::Take>(std::move(take).value());
-    m_document.undoStack()->push(new ImportTake(&m_document, std::move(pointer), QFileInfo(file).fileName(), absolute));
+    m_document.undoStack()->push(new ImportTake(&m_document, std::move(pointer), QFileInfo(file).fileName(), absolute,
+                                                std::make_shared<const analysis::io::ImportOptions>(options)));
     addRecent(absolute);
     emit statusMessage(tr("Imported %1%2").arg(absolute, mapNote));
     return true;
@@ -278,7 +293,9 @@ ProjectState FileController::captureState() const
     ProjectState state;
     state.corpus = m_document.corpusSource();
     for (const auto& derived : m_document.derivedTakes())
-        if (!derived.sourcePath.isEmpty()) state.imported.push_back({derived.sourcePath, derived.label});
+        if (!derived.sourcePath.isEmpty())
+            state.imported.push_back({derived.sourcePath, derived.label,
+                                      derived.importOptions ? *derived.importOptions : analysis::io::ImportOptions{}});
     state.parameters = m_document.parameters();
     state.takeA = m_document.selectedId(TakeSlot::A);
     state.takeB = m_document.selectedId(TakeSlot::B);
@@ -317,16 +334,15 @@ bool FileController::applyStateNow(const ProjectState& state)
     const bool opened = state.corpus == QStringLiteral("demo") ? openDemoCorpus() : openCorpusFolder(state.corpus);
     if (!opened) return false;
     for (const auto& recipe : state.imported) {
-        analysis::io::ImportOptions options;
-        options.bvh.guessUnits = true; // as importTakeFile
-        auto take = analysis::io::readTakeFile(toPath(recipe.path), options);
+        // The options the take was imported with: the same joint map, axes, units and rate.
+        auto take = analysis::io::readTakeFile(toPath(recipe.path), recipe.options);
         if (!take) {
             report(tr("Cannot re-import a take of the project"), take.error());
             continue;
         }
         m_document.insertImportedTake(
-            DerivedTake{m_document.nextImportedId(), recipe.label,
-                        std::make_shared<const analysis::Take>(std::move(take).value()), recipe.path, QString()},
+            DerivedTake{m_document.nextImportedId(), recipe.label, std::make_shared<const analysis::Take>(std::move(take).value()),
+                        recipe.path, QString(), std::make_shared<const analysis::io::ImportOptions>(recipe.options)},
             int(m_document.derivedTakes().size()));
     }
     m_document.restoreParameters(state.parameters);
@@ -353,7 +369,7 @@ bool FileController::saveProject(const QString& file)
     }
     m_projectPath = file;
     m_document.undoStack()->setClean();
-    QFile::remove(autosavePath());
+    m_autosave->removeOwn();
     addRecent(file);
     emit statusMessage(tr("Saved %1").arg(file));
     return true;
@@ -373,11 +389,7 @@ bool FileController::openProject(const QString& file)
     return true;
 }
 
-QString FileController::autosavePath() const
-{
-    const QString folder = QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation);
-    return QDir(folder).filePath(QStringLiteral("autosave") + kProjectSuffix);
-}
+QString FileController::autosavePath() const { return m_autosave->path(); }
 
 bool FileController::autosave()
 {
@@ -386,33 +398,45 @@ bool FileController::autosave()
     return bool(writeProject(captureState(), autosavePath()));
 }
 
+bool FileController::recoverAutosave(const QString& file)
+{
+    if (!m_autosave->adopt(file)) {
+        report(tr("Cannot recover"), analysis::makeError(analysis::ErrorCode::Io,
+                                                         file.toStdString() + ": another workbench is using it, or it is gone"));
+        return false;
+    }
+    if (!openProject(file)) return false;
+    m_projectPath.clear(); // the user chooses where to save it
+    // Recovered work is unsaved work: marked in the title, asked about when quitting, and its
+    // autosave kept until it is saved or discarded.
+    m_document.undoStack()->resetClean();
+    return true;
+}
+
 void FileController::offerRecovery()
 {
-    const QString file = autosavePath();
-    if (!m_dialogs || !QFileInfo::exists(file)) return;
-    const auto answer = QMessageBox::question(
-        m_window, tr("Recover unsaved work?"),
-        tr("The workbench did not close normally last time. Recover the unsaved work from %1?").arg(file),
-        QMessageBox::Yes | QMessageBox::Discard, QMessageBox::Yes);
-    if (answer == QMessageBox::Yes && openProject(file)) {
-        m_projectPath.clear(); // the user chooses where to save it
-        return;
-    }
-    QFile::remove(file);
+    if (!m_dialogs) return;
+    const QVector<OrphanedAutosave> orphans = m_autosave->orphans();
+    if (orphans.isEmpty()) return;
+    RecoveryDialog dialog(orphans, [this](const QString& path) { return m_autosave->discardOrphan(path); }, m_window);
+    if (dialog.exec() == QDialog::Accepted && !dialog.chosen().isEmpty()) recoverAutosave(dialog.chosen());
 }
 
 bool FileController::maybeSave()
 {
-    if (m_document.undoStack()->isClean() || !m_dialogs) return true;
-    const auto answer = QMessageBox::warning(m_window, tr("Unsaved changes"),
-                                             tr("The project has unsaved changes. Save them?"),
-                                             QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    if (m_document.undoStack()->isClean()) return true;
+    if (!m_dialogs && !m_unsavedAnswer) return true;
+    const int answer = !m_dialogs ? m_unsavedAnswer()
+                                  : QMessageBox::warning(m_window, tr("Unsaved changes"),
+                                                         tr("The project has unsaved changes. Save them?"),
+                                                         QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel,
+                                                         QMessageBox::Save);
     if (answer == QMessageBox::Cancel) return false;
     if (answer == QMessageBox::Save) {
         m_save->trigger();
         return m_document.undoStack()->isClean();
     }
-    QFile::remove(autosavePath());
+    m_autosave->removeOwn();
     return true;
 }
 

@@ -7,6 +7,7 @@
 #include "app/file_controller.h"
 #include "app/help_controller.h"
 #include "app/multimodal_export_controller.h"
+#include "app/image_file.h"
 #include "app/normalise_panel.h"
 #include "app/offscreen_view.h"
 #include "app/phrase_marks.h"
@@ -39,6 +40,7 @@
 #include <QProgressDialog>
 #include <QSettings>
 #include <QStatusBar>
+#include <QTimer>
 #include <QUndoView>
 
 #include <algorithm>
@@ -406,8 +408,8 @@ void MainWindow::chooseReport()
 bool MainWindow::saveScreenshot(const QString& file, QWidget* widget)
 {
     const QPixmap image = (widget ? widget : this)->grab();
-    if (!image.save(file)) {
-        m_status->setText(tr("Cannot write the screenshot %1").arg(file));
+    if (const auto saved = saveImageAtomically(image.toImage(), file); !saved) {
+        m_status->setText(tr("Cannot write the screenshot %1").arg(QString::fromStdString(saved.error().message)));
         return false;
     }
     m_status->setText(tr("Saved screenshot %1").arg(file));
@@ -584,7 +586,7 @@ void MainWindow::closeEvent(QCloseEvent* event)
     }
     m_playback->setPlaying(false);
     saveLayout();
-    QFile::remove(m_files->autosavePath());
+    m_files->autosaveSession().removeOwn(); // saved, discarded or clean: nothing left to recover
     event->accept();
 }
 
@@ -595,9 +597,12 @@ void MainWindow::dragEnterEvent(QDragEnterEvent* event)
 
 void MainWindow::dropEvent(QDropEvent* event)
 {
+    QStringList paths;
     for (const QUrl& url : event->mimeData()->urls())
-        if (url.isLocalFile()) m_files->openPath(url.toLocalFile());
+        if (url.isLocalFile()) paths << url.toLocalFile();
     event->acceptProposedAction();
+    // After the drop has ended: opening may ask to save unsaved changes first.
+    QTimer::singleShot(0, m_files, [files = m_files, paths] { files->openDroppedPaths(paths); });
 }
 
 } // namespace bunraku::app

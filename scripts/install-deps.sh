@@ -16,6 +16,7 @@ packages=(
   lintian desktop-file-utils appstream shared-mime-info man-db strace
   # Blender 3.4: the real client the BVH and glTF exports are checked against (tests/cli)
   blender
+  clang-14 libfuzzer-14-dev
   python3 python3-numpy python3-pywt python3-statsmodels
 )
 

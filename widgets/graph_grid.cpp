@@ -62,9 +62,8 @@ GraphGrid::GraphGrid(QWidget* parent) : QWidget(parent), m_plot(new QCustomPlot(
     connect(m_plot, &QCustomPlot::mouseMove, this, &GraphGrid::onMouseMove);
     connect(m_plot, &QCustomPlot::mouseRelease, this, &GraphGrid::onMouseRelease);
     connect(m_plot, &QCustomPlot::mouseDoubleClick, this, [this](QMouseEvent*) { resetTimeRange(); });
-    m_settle.setSingleShot(true);
     m_settle.setInterval(kSettleMs);
-    connect(&m_settle, &QTimer::timeout, this, [this] {
+    connect(&m_settle, &ClockTimer::timeout, this, [this] {
         if (!interactionActive()) settleValueRanges();
     });
 }
@@ -83,6 +82,13 @@ void GraphGrid::setTakes(std::shared_ptr<const analysis::Take> takeA, std::share
 }
 
 void GraphGrid::beginInteraction() { m_interacting = true; }
+
+void GraphGrid::setClock(Clock* clock)
+{
+    m_clock = clock ? clock : &steadyClock();
+    m_settle.setClock(m_clock);
+    m_lastDataMs.reset();
+}
 
 void GraphGrid::endInteraction()
 {
@@ -288,8 +294,9 @@ void GraphGrid::rebuild(bool allData)
         return;
     }
     if (!allData) {
-        const bool burst = m_sinceData.isValid() && m_sinceData.elapsed() < kSettleMs;
-        m_sinceData.restart();
+        const qint64 now = m_clock->milliseconds();
+        const bool burst = m_lastDataMs && now - *m_lastDataMs < kSettleMs;
+        m_lastDataMs = now;
         if (interactionActive() || burst) {
             // Only the curves of A and B changed and the value ranges are held: the axes,
             // ticks, labels and ghost in the layers below stay as they are.

@@ -16,8 +16,9 @@
 #include "analysis/core/take.h"
 
 #include <QColor>
-#include <QElapsedTimer>
 #include <QTimer>
+
+#include "widgets/clock.h"
 #include <QWidget>
 
 #include <memory>
@@ -82,6 +83,9 @@ public:
     /// Data changes closer together than this (ms) form a burst that holds the value ranges;
     /// this long after the last one, the ranges autoscale.
     static constexpr int kSettleMs = 250;
+    /// The clock that tells a burst from isolated changes and times its end (null: the steady
+    /// clock); tests inject a ManualClock.
+    void setClock(Clock* clock);
 
     /// Moves the time cursor (seconds) and replots only the cursor layer.
     void setCursorTime(double seconds);
@@ -146,8 +150,9 @@ private:
     std::shared_ptr<const analysis::Take> m_plotted[2]; ///< the takes whose data the curves hold
     bool m_interacting = false;
     bool m_rangesStale = false; ///< data changed while the ranges were held
-    QElapsedTimer m_sinceData;  ///< since the last change of A's or B's data
-    QTimer m_settle;            ///< autoscales after a burst of data changes
+    Clock* m_clock = &steadyClock();
+    std::optional<qint64> m_lastDataMs; ///< when A's or B's data last changed (m_clock)
+    ClockTimer m_settle;                ///< autoscales after a burst of data changes
     GraphLayoutOptions m_options;
     ValueScale m_scale = ValueScale::PerGraph;
     bool m_thesisTicks = false;

@@ -21,12 +21,8 @@ ViewportWidget::ViewportWidget(QWidget* parent, int samples) : QWidget(parent), 
     setFocusPolicy(Qt::StrongFocus);
     // Every paint covers the whole widget with the rendered image: no background fill needed.
     setAttribute(Qt::WA_OpaquePaintEvent);
-    m_settle.setSingleShot(true);
     m_settle.setInterval(kSettleMs);
-    // Precise: a coarse timer may fire a few milliseconds early, when paintEvent would still
-    // take the view for moving and draw another quick frame instead of the still one.
-    m_settle.setTimerType(Qt::PreciseTimer);
-    connect(&m_settle, &QTimer::timeout, this, [this] {
+    connect(&m_settle, &ClockTimer::timeout, this, [this] {
         if (m_imageSamples == m_samples || !isVisible()) return;
         renderImage(m_samples); // the still, full-quality frame
         update();
@@ -34,6 +30,13 @@ ViewportWidget::ViewportWidget(QWidget* parent, int samples) : QWidget(parent), 
 }
 
 ViewportWidget::~ViewportWidget() = default; // the OffscreenRenderer frees its GL objects
+
+void ViewportWidget::setClock(Clock* clock)
+{
+    m_clock = clock ? clock : &steadyClock();
+    m_settle.setClock(m_clock);
+    m_lastFrameMs.reset();
+}
 
 const render::Renderer* ViewportWidget::renderer() const { return m_offscreen ? &m_offscreen->renderer() : nullptr; }
 
@@ -141,7 +144,7 @@ void ViewportWidget::renderImage(int samples)
     m_imageSamples = samples;
     m_imageStale = false;
     ++m_renderedFrames;
-    m_sinceFrame.restart();
+    m_lastFrameMs = m_clock->milliseconds();
     if (samples != m_samples) m_settle.start();
     else m_settle.stop();
 }
@@ -156,7 +159,7 @@ void ViewportWidget::paintEvent(QPaintEvent*)
 {
     QPainter painter(this);
     if (m_imageStale || m_image.size() != pixelSize()) {
-        const bool moving = m_sinceFrame.isValid() && m_sinceFrame.elapsed() < kSettleMs;
+        const bool moving = m_lastFrameMs && m_clock->milliseconds() - *m_lastFrameMs < kSettleMs;
         renderImage(moving ? 0 : m_samples);
     }
     if (m_image.isNull()) {

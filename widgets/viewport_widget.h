@@ -21,10 +21,11 @@
 #include "render/renderer.h"
 #include "render/scene.h"
 
-#include <QElapsedTimer>
 #include <QImage>
 #include <QPoint>
 #include <QTimer>
+
+#include "widgets/clock.h"
 #include <QWidget>
 
 #include <memory>
@@ -71,6 +72,9 @@ public:
     int shownSamples() const { return m_imageSamples; }
     /// A frame drawn this soon (ms) after the previous one is a moving frame.
     static constexpr int kSettleMs = 150;
+    /// The clock that decides what "soon" is and times the still frame (null: the steady clock);
+    /// tests inject a ManualClock.
+    void setClock(Clock* clock);
 
 public slots:
     /// Shows frame `frame` of every take.
@@ -114,8 +118,9 @@ private:
     QImage m_image; ///< the last rendered frame
     int m_imageSamples = 0;
     bool m_imageStale = true;
-    QElapsedTimer m_sinceFrame; ///< since the last frame was drawn
-    QTimer m_settle;            ///< redraws the still frame with multisampling
+    Clock* m_clock = &steadyClock();
+    std::optional<qint64> m_lastFrameMs; ///< when the last frame was drawn (m_clock)
+    ClockTimer m_settle;                 ///< redraws the still frame with multisampling
     int m_renderedFrames = 0;
     std::optional<render::SceneContent> m_scene; ///< kept until uploaded
     bool m_sceneUploaded = false;

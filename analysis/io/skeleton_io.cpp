@@ -232,12 +232,19 @@ std::string skeletonJson(const Skeleton& skeleton, const std::vector<int>& movin
     return document.dump(1) + "\n";
 }
 
+Result<std::pair<std::string, std::string>> formatSkeletalMotion(const SkeletalMotion& motion, double rateHz)
+{
+    if (auto valid = validateSkeletalMotion(motion); !valid) return valid.error();
+    return std::pair{skeletonJson(*motion.skeleton, motion.movingJoints, motion.staticTranslations),
+                     formatTakeCsv(motionTake(motion, rateHz))};
+}
+
 Status writeSkeletalMotion(const SkeletalMotion& motion, double rateHz, const fs::path& skeletonFile, const fs::path& motionFile)
 {
-    if (auto valid = validateSkeletalMotion(motion); !valid)
-        return makeError(valid.error().code, skeletonFile.string() + ": " + valid.error().message);
-    if (auto written = writeTakeCsv(motionTake(motion, rateHz), motionFile); !written) return written;
-    return writeFileAtomically(skeletonFile, skeletonJson(*motion.skeleton, motion.movingJoints, motion.staticTranslations));
+    auto files = formatSkeletalMotion(motion, rateHz);
+    if (!files) return makeError(files.error().code, skeletonFile.string() + ": " + files.error().message);
+    if (auto written = writeFileAtomically(motionFile, files->second); !written) return written;
+    return writeFileAtomically(skeletonFile, files->first);
 }
 
 Result<std::shared_ptr<const SkeletalMotion>> readSkeletalMotion(const fs::path& skeletonFile, const fs::path& motionFile, double rateHz)

@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <utility>
 
 namespace bunraku::analysis::io {
 
@@ -21,6 +22,9 @@ inline constexpr int kSkeletonFormatVersion = 1;
 /// The skeleton file's JSON text.
 std::string skeletonJson(const Skeleton& skeleton, const std::vector<int>& movingJoints,
                          const std::vector<Eigen::Vector3d>& staticTranslations);
+
+/// Both files' texts: the skeleton's JSON and the motion's CSV (validateSkeletalMotion first).
+Result<std::pair<std::string, std::string>> formatSkeletalMotion(const SkeletalMotion& motion, double rateHz);
 
 /// Writes both files atomically (validateSkeletalMotion first). `rateHz` times the CSV's rows.
 Status writeSkeletalMotion(const SkeletalMotion& motion, double rateHz, const std::filesystem::path& skeletonFile,

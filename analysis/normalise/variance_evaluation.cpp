@@ -61,7 +61,7 @@ Result<VarianceTable> varianceTable(const Take& reference, const std::vector<con
     return table;
 }
 
-Result<ReferenceSuggestion> suggestReference(const std::vector<const Take*>& givenTakes)
+Result<ReferenceSuggestion> suggestReference(const std::vector<const Take*>& givenTakes, const RunControl& control)
 {
     const std::size_t count = givenTakes.size();
     if (count == 0) return makeError(ErrorCode::InvalidArgument, "reference suggestion: no takes given");
@@ -119,6 +119,7 @@ Result<ReferenceSuggestion> suggestReference(const std::vector<const Take*>& giv
     for (const Take* take : takes) standardised.push_back(take->values * deviation.cwiseInverse().asDiagonal());
     std::vector<double> meanDistance(count, 0.0);
     for (std::size_t k = 0; k < count; ++k) {
+        if (control.cancelled()) return makeError(ErrorCode::Cancelled, "reference suggestion: cancelled");
         for (std::size_t l = 0; l < count; ++l) {
             if (k == l) continue;
             AmplitudeMatchOptions options;

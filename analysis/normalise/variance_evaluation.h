@@ -3,6 +3,7 @@
 /// take (thesis 3.6.1).
 
 #include "analysis/core/result.h"
+#include "analysis/core/run_control.h"
 #include "analysis/core/take.h"
 
 #include <Eigen/Core>
@@ -49,7 +50,8 @@ struct ReferenceSuggestion {
 /// aligning timing (amplitude DTW, band 20) above twice the median of those means (3+ takes).
 /// Motion starts at the first frame whose distance from the first frame exceeds 10% of its
 /// maximum; the active part ends at the last frame that far from the final frame.
-/// InvalidArgument for no takes, differing channels or takes under 2 frames.
-Result<ReferenceSuggestion> suggestReference(const std::vector<const Take*>& takes);
+/// InvalidArgument for no takes, differing channels or takes under 2 frames; Cancelled when
+/// `control` is (checked for every take: the outlier test compares every pair, n^2 alignments).
+Result<ReferenceSuggestion> suggestReference(const std::vector<const Take*>& takes, const RunControl& control = {});
 
 } // namespace bunraku::analysis

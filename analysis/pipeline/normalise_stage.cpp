@@ -20,7 +20,7 @@ Result<CellNormalisation> normaliseCell(const std::string& function, const std::
     out.function = function;
     out.emotion = emotion;
     for (const Take* take : takes) out.takeIndices.push_back(take->labels.takeIndex);
-    auto suggestion = suggestReference(takes);
+    auto suggestion = suggestReference(takes, RunControl{control.stop, {}});
     if (!suggestion) return prefixed(suggestion.error());
     out.suggestion = std::move(suggestion).value();
     const NormaliseOptions options = parameters.options();

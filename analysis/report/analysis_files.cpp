@@ -3,6 +3,7 @@
 #include "analysis/axis/axis_channels.h"
 #include "analysis/decompose/emotion_weight.h"
 #include "analysis/io/atomic_file.h"
+#include "analysis/io/staged_folder.h"
 #include "analysis/io/take_csv.h"
 #include "analysis/io/text_format.h"
 #include "analysis/pipeline/parameters_json.h"
@@ -277,18 +278,17 @@ Result<std::vector<OutputFile>> analysisDataFiles(const ChainResult& chain, cons
                                  {"decomposition", decomposition},
                                  {"axes", axes},
                                  {"files", names}};
-    files.push_back({"summary.json", summary.dump(2) + "\n"});
+    files.push_back({"summary.json", summary.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n"});
     return files;
 }
 
 Status writeOutputFiles(const std::filesystem::path& folder, const std::vector<OutputFile>& files)
 {
-    std::error_code error;
-    std::filesystem::create_directories(folder, error);
-    if (error) return makeError(ErrorCode::Io, folder.string() + ": cannot create the folder: " + error.message());
+    auto staged = io::StagedFolder::begin(folder);
+    if (!staged) return staged.error();
     for (const auto& file : files)
-        if (auto status = io::writeFileAtomically(folder / file.name, file.content); !status) return status;
-    return okStatus();
+        if (auto status = staged->writeFile(file.name, file.content); !status) return status;
+    return staged->commit();
 }
 
 } // namespace bunraku::analysis::report

@@ -1,6 +1,7 @@
 // Subcommands: axis, phase, gains, design, experiment design (thesis chapter 5).
 #include "app/cli/commands.h"
 #include "app/cli/take_output.h"
+#include "app/cli/output_guard.h"
 
 #include "analysis/axis/axis_channels.h"
 #include "analysis/axis/inertia_axis.h"
@@ -88,6 +89,7 @@ struct AxisCommandArguments {
 
 void runAxis(const AxisCommandArguments& arguments)
 {
+    refuseOutputOverInputs(arguments.output, OutputKind::File, {arguments.take, arguments.axis.body});
     const an::Take take = unwrap(an::io::readTakeFile(arguments.take));
     const an::AxisModel model = axisModel(arguments.axis, &take);
     const an::MotionAxis axis = motionAxis(model, take, arguments.axis);
@@ -182,12 +184,16 @@ struct PhaseCommandArguments {
 
 void runPhase(const PhaseCommandArguments& arguments)
 {
+    refuseOutputOverInputs(arguments.output, OutputKind::File, {arguments.reference, arguments.sample, arguments.axis.body});
     const an::Take reference = unwrap(an::io::readTakeFile(arguments.reference));
     const an::Take sample = unwrap(an::io::readTakeFile(arguments.sample));
     const an::AxisModel model = axisModel(arguments.axis);
     const Eigen::MatrixXd functional = an::axisCoordinates(motionAxis(model, reference, arguments.axis).world_T_axis);
     const Eigen::MatrixXd emotional = an::axisCoordinates(motionAxis(model, sample, arguments.axis).world_T_axis);
-    const an::PhaseResult phase = unwrap(an::extractPhase(functional, emotional, phaseOptions(arguments.phase)));
+    auto extracted = an::extractPhase(functional, emotional, phaseOptions(arguments.phase));
+    if (!extracted)
+        throw CliError(arguments.sample + " against " + arguments.reference + ": " + extracted.error().message);
+    const an::PhaseResult phase = std::move(extracted).value();
     unwrap(an::writeWarpCsv(phase.curve, arguments.output));
     const Eigen::VectorXd identity = Eigen::VectorXd::LinSpaced(phase.emotionalToFunctional.size(), 0.0,
                                                                  double(phase.emotionalToFunctional.size() - 1));
@@ -224,6 +230,8 @@ struct GainsCommandArguments {
 
 void runGains(const GainsCommandArguments& arguments)
 {
+    refuseOutputOverInputs(arguments.output, OutputKind::File,
+                           {arguments.reference, arguments.sample, arguments.warp, arguments.axis.body});
     const an::Take reference = unwrap(an::io::readTakeFile(arguments.reference));
     const an::Take sample = unwrap(an::io::readTakeFile(arguments.sample));
     const an::WarpCurve warp = unwrap(an::readWarpCsv(arguments.warp));
@@ -268,6 +276,10 @@ struct DesignCommandArguments {
 void runDesign(const DesignCommandArguments& arguments)
 {
     requireTakeOutput(arguments.output);
+    for (const std::string& output : {arguments.output, arguments.axisOutput})
+        refuseOutputOverInputs(output, OutputKind::File, {arguments.take, arguments.warp, arguments.gains, arguments.axis.body},
+                               output == arguments.output ? "-o" : "--axis-output");
+    if (arguments.output == arguments.axisOutput) throw CliError(arguments.output + ": -o and --axis-output name the same file");
     const an::Take take = unwrap(an::io::readTakeFile(arguments.take));
     const an::AxisModel model = axisModel(arguments.axis, &take);
     const an::DesignBasis basis = unwrap(an::prepareDesign(model, take, axisOptions(arguments.axis)));

@@ -1,6 +1,7 @@
 // Subcommands: decompose, emotion, experiment km2o.
 #include "app/cli/commands.h"
 #include "app/cli/take_output.h"
+#include "app/cli/output_guard.h"
 
 #include "analysis/decompose/arma.h"
 #include "analysis/decompose/emotion_weight.h"
@@ -8,8 +9,8 @@
 #include "analysis/decompose/km2o_experiment.h"
 #include "analysis/decompose/least_squares.h"
 #include "analysis/decompose/spectrum.h"
-#include "analysis/io/atomic_file.h"
 #include "analysis/io/corpus_io.h"
+#include "analysis/io/staged_folder.h"
 #include "analysis/io/take_csv.h"
 #include "analysis/io/text_format.h"
 #include "analysis/pipeline/stages.h"
@@ -119,9 +120,6 @@ Take asTake(const Decomposition& d, const Eigen::MatrixXd& values, TakeLabels la
     take.labels = std::move(labels);
     return take;
 }
-
-/// Atomic (temporary file + rename): a failure leaves any previous file untouched.
-void writeText(const fs::path& file, const std::string& text) { unwrap(io::writeFileAtomically(file, text)); }
 
 std::string spectraCsv(const Decomposition& d, bool useWelch)
 {
@@ -255,6 +253,7 @@ struct DecomposeArgs {
 void runDecompose(const DecomposeArgs& args)
 {
     if (args.armaTableOrder.size() != 2) throw CliError("--arma-table takes two orders: p q");
+    refuseOutputOverInputs(args.output, OutputKind::Folder, {args.corpus.path, args.truth});
     const Corpus corpus = loadCorpus(args.corpus);
     DecomposeSettings settings;
     settings.method = args.method == "km2o" ? Method::Km2o : Method::LeastSquares;
@@ -324,12 +323,12 @@ void runDecompose(const DecomposeArgs& args)
     summary["channels"] = d.channels.size();
     summary["files"] = files;
     summary["output"] = out.string();
-    outputs.emplace_back("summary.json", summary.dump(2) + "\n");
+    outputs.emplace_back("summary.json", summary.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
 
-    std::error_code ec;
-    fs::create_directories(out, ec);
-    if (ec) throw CliError("cannot create " + out.string() + ": " + ec.message());
-    for (const auto& [name, content] : outputs) writeText(out / name, content);
+    // Built in a hidden folder and swapped in: the previous output stays whole until then.
+    io::StagedFolder staged = unwrap(io::StagedFolder::begin(out));
+    for (const auto& [name, content] : outputs) unwrap(staged.writeFile(name, content));
+    unwrap(staged.commit());
     if (args.json) {
         printJson(summary);
     } else {
@@ -354,6 +353,7 @@ struct EmotionArgs {
 void runEmotion(const EmotionArgs& args)
 {
     requireTakeOutput(args.output);
+    refuseOutputOverInputs(args.output, OutputKind::File, {args.corpus.path});
     const Corpus corpus = loadCorpus(args.corpus);
     DecomposeSettings settings;
     settings.method = args.method == "km2o" ? Method::Km2o : Method::LeastSquares;

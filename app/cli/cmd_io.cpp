@@ -2,13 +2,14 @@
 #include "app/cli/commands.h"
 #include "app/cli/import_options.h"
 #include "app/cli/take_output.h"
+#include "app/cli/output_guard.h"
 
 #include "analysis/core/puppet_layout.h"
-#include "analysis/io/atomic_file.h"
 #include "analysis/io/bvh.h"
 #include "analysis/io/bvh_joint_map.h"
 #include "analysis/io/corpus_io.h"
 #include "analysis/io/take_reader.h"
+#include "analysis/io/text_format.h"
 #include "analysis/preprocess/preprocess.h"
 #include "analysis/synth/demo_corpus_io.h"
 
@@ -19,6 +20,7 @@
 #include <iostream>
 #include <limits>
 #include <memory>
+#include <optional>
 
 namespace bunraku::app::cli {
 namespace {
@@ -279,6 +281,8 @@ struct ConvertArguments {
 
 void runConvert(const ConvertArguments& arguments)
 {
+    refuseOutputOverInputs(arguments.output, fs::is_directory(arguments.input) ? OutputKind::Folder : OutputKind::File,
+                           {arguments.input});
     const Loaded loaded = load(arguments.input, arguments.import);
     const fs::path output = arguments.output;
     std::string written;
@@ -327,58 +331,10 @@ struct PreprocessArguments {
     bool json = false;
 };
 
-/// A synthetic corpus's ground truth (DIR/truth) describes the preprocessed takes too (their
-/// cells and functions are unchanged), so it goes beside the output. It is staged in a
-/// temporary folder before the corpus is written (the output may replace the input folder) and
-/// renamed into place after; the stage is removed on any failure.
-class GroundTruthCopy {
-public:
-    GroundTruthCopy(const fs::path& input, const fs::path& output)
-    {
-        const fs::path source = synth::groundTruthFolder(input);
-        std::error_code ec;
-        if (!fs::is_regular_file(source / "truth.json", ec)) return;
-        const fs::path parent = fs::absolute(output, ec).lexically_normal().parent_path();
-        m_stage = parent / io::temporarySiblingName("truth", ".tmp-");
-        fs::create_directories(parent, ec);
-        if (!ec) fs::copy(source, m_stage, fs::copy_options::recursive, ec);
-        if (ec) fail(source.string() + ": cannot copy the ground truth: " + ec.message());
-    }
-    ~GroundTruthCopy()
-    {
-        std::error_code ignored;
-        if (!m_stage.empty()) fs::remove_all(m_stage, ignored);
-    }
-    GroundTruthCopy(const GroundTruthCopy&) = delete;
-    GroundTruthCopy& operator=(const GroundTruthCopy&) = delete;
-
-    /// Moves the staged copy into the written corpus; false when there was no ground truth.
-    bool place(const fs::path& output)
-    {
-        if (m_stage.empty()) return false;
-        std::error_code ec;
-        const fs::path target = synth::groundTruthFolder(output);
-        fs::rename(m_stage, target, ec);
-        if (ec) fail(target.string() + ": cannot place the ground truth: " + ec.message());
-        m_stage.clear();
-        return true;
-    }
-
-private:
-    [[noreturn]] void fail(const std::string& message)
-    {
-        std::error_code ignored;
-        fs::remove_all(m_stage, ignored);
-        m_stage.clear();
-        throw CliError(message);
-    }
-
-    fs::path m_stage;
-};
-
 void runPreprocess(const PreprocessArguments& arguments)
 {
     if (!io::isCorpusFolder(arguments.input)) throw CliError(arguments.input + ": not a corpus folder (no corpus.json)");
+    refuseOutputOverInputs(arguments.output, OutputKind::Folder, {arguments.input});
     const Corpus corpus = unwrap(io::readCorpus(arguments.input));
     pre::PreprocessOptions options;
     options.pad = !arguments.noPad;
@@ -393,9 +349,9 @@ void runPreprocess(const PreprocessArguments& arguments)
     options.maxShiftFrames = arguments.maxShift;
     options.onsetFraction = arguments.onsetFraction;
     auto result = unwrap(pre::preprocessCorpus(corpus, options));
-    GroundTruthCopy truth(arguments.input, arguments.output);
-    unwrap(io::writeCorpus(result.corpus, arguments.output));
-    const bool truthCopied = truth.place(arguments.output);
+    // A synthetic corpus's ground truth (DIR/truth) describes the preprocessed takes too (their
+    // cells and functions are unchanged): it is copied into the output in the same staged write.
+    const bool truthCopied = unwrap(synth::writeCorpusKeepingTruth(result.corpus, arguments.output, arguments.input));
 
     const auto& report = result.report;
     Eigen::Index frames = 0;

@@ -1,8 +1,10 @@
 // Subcommands: normalise, experiment noise, experiment truth (thesis chapter 3).
 #include "app/cli/commands.h"
 #include "app/cli/take_output.h"
+#include "app/cli/output_guard.h"
 
 #include "analysis/io/corpus_io.h"
+#include "analysis/io/staged_folder.h"
 #include "analysis/io/take_csv.h"
 #include "analysis/normalise/average_take.h"
 #include "analysis/normalise/noise_experiment.h"
@@ -15,7 +17,6 @@
 #include "analysis/synth/demo_corpus_io.h"
 
 #include <filesystem>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -133,11 +134,11 @@ std::string takeFileName(const an::Take& take)
     return name;
 }
 
-void writeText(const std::filesystem::path& file, const std::string& text)
+/// The take's CSV for a staged output folder (validated like writeTakeCsv).
+std::string takeCsv(const an::Take& take, const std::string& name)
 {
-    std::ofstream out(file);
-    out << text;
-    if (!out) throw CliError("cannot write " + file.string());
+    if (auto valid = an::validateTake(take); !valid) throw CliError(name + ": " + valid.error().message);
+    return an::io::formatTakeCsv(take);
 }
 
 pl::NormaliseParameters normaliseParameters(const MatchArguments& arguments)
@@ -157,6 +158,7 @@ pl::NormaliseParameters normaliseParameters(const MatchArguments& arguments)
 
 void runNormalise(const NormaliseArguments& arguments)
 {
+    refuseOutputOverInputs(arguments.output, OutputKind::Folder, {arguments.corpus});
     an::Corpus corpus = unwrap(an::io::readCorpus(arguments.corpus));
     // Thesis 2.2 first (pad, unwrap, align start times and start positions) - the pipeline's
     // preprocess stage, as the workbench runs it - unless told not to (angles are unwrapped then too).
@@ -214,16 +216,17 @@ void runNormalise(const NormaliseArguments& arguments)
                   << "\n";
         return;
     }
+    // Every output is built in a hidden folder and swapped in at the end: a killed run leaves
+    // the previous output whole, never some files of each.
     const std::filesystem::path folder = arguments.output;
-    std::error_code error;
-    std::filesystem::create_directories(folder, error);
-    if (error) throw CliError("cannot create " + folder.string() + ": " + error.message());
+    an::io::StagedFolder staged = unwrap(an::io::StagedFolder::begin(folder));
+    const auto writeText = [&](const std::string& name, const std::string& text) { unwrap(staged.writeFile(name, text)); };
     std::vector<std::string> files;
-    unwrap(an::io::writeTakeCsv(reference, folder / "reference.csv"));
+    writeText("reference.csv", takeCsv(reference, (folder / "reference.csv").string()));
     files.push_back("reference.csv");
     for (std::size_t k = 0; k < normalised.size(); ++k) {
         const std::string stem = takeFileName(*cell[k]);
-        unwrap(an::io::writeTakeCsv(normalised[k].normalised, folder / (stem + "_normalised.csv")));
+        writeText(stem + "_normalised.csv", takeCsv(normalised[k].normalised, (folder / (stem + "_normalised.csv")).string()));
         std::ostringstream csv;
         csv << "t_ref";
         for (const auto& name : normalised[k].coupling.names) csv << "," << name;
@@ -233,7 +236,7 @@ void runNormalise(const NormaliseArguments& arguments)
             for (const auto& match : normalised[k].matches) csv << "," << match.correspondence[t];
             csv << "\n";
         }
-        writeText(folder / (stem + "_correspondence.csv"), csv.str());
+        writeText(stem + "_correspondence.csv", csv.str());
         files.push_back(stem + "_normalised.csv");
         files.push_back(stem + "_correspondence.csv");
     }
@@ -250,7 +253,7 @@ void runNormalise(const NormaliseArguments& arguments)
             variance << "\n";
         }
     }
-    writeText(folder / "variance.csv", variance.str());
+    writeText("variance.csv", variance.str());
     files.push_back("variance.csv");
 
     nlohmann::json takesJson = nlohmann::json::array();
@@ -276,7 +279,8 @@ void runNormalise(const NormaliseArguments& arguments)
                                  {"variance_normalised_total", table.totalAfter.sum()},
                                  {"output", folder.string()},
                                  {"files", files}};
-    writeText(folder / "summary.json", summary.dump(2) + "\n");
+    writeText("summary.json", summary.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
+    unwrap(staged.commit());
     if (arguments.json) {
         printJson(summary);
         return;

@@ -1,15 +1,19 @@
 // Subcommands: render (thesis 6: images of the puppet, motion axis and orbits, offscreen).
 #include "app/cli/commands.h"
+#include "app/cli/output_guard.h"
 
 #include "app/multimodal_export.h"
 
 #include "analysis/body/body_description.h"
+#include "analysis/io/atomic_file.h"
+#include "analysis/io/staged_folder.h"
 #include "analysis/io/take_reader.h"
 #include "analysis/synth/demo_corpus.h"
 #include "render/mesh_file.h"
 #include "render/offscreen_renderer.h"
 #include "render/take_scene.h"
 
+#include <QBuffer>
 #include <QGuiApplication>
 #include <QImage>
 #include <QSaveFile>
@@ -26,6 +30,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace bunraku::app::cli {
@@ -181,11 +186,38 @@ std::unique_ptr<QGuiApplication> makeGuiApplication()
     return std::make_unique<QGuiApplication>(argc, argv);
 }
 
-void saveImage(const QImage& image, const std::filesystem::path& file)
+/// The image as PNG bytes.
+QByteArray pngBytes(const QImage& image, const std::filesystem::path& file)
 {
-    if (image.isNull()) throw CliError("rendering produced no image");
-    if (!image.save(QString::fromStdString(file.string()), "PNG"))
-        throw CliError("could not write " + file.string());
+    if (image.isNull()) throw CliError(file.string() + ": rendering produced no image");
+    QByteArray bytes;
+    QBuffer buffer(&bytes);
+    if (!buffer.open(QIODevice::WriteOnly) || !image.save(&buffer, "PNG")) throw CliError(file.string() + ": cannot encode the PNG");
+    return bytes;
+}
+
+std::string_view view(const QByteArray& bytes) { return {bytes.constData(), std::size_t(bytes.size())}; }
+
+/// Encodes `folder`'s PNG sequence to `mp4`: ffmpeg writes into a private hidden folder beside
+/// it, and the finished file is moved over `mp4` only when ffmpeg succeeds.
+void encodeMp4(const std::filesystem::path& frames, double rate, const std::string& mp4)
+{
+    const std::filesystem::path target = std::filesystem::absolute(mp4);
+    const std::filesystem::path temporary = unwrap(analysis::io::makeTemporaryFolderBeside(target));
+    const std::filesystem::path encoded = temporary / target.filename();
+    const std::string command = "ffmpeg -n -loglevel error -framerate " + std::to_string(rate) + " -i '" +
+                                (frames / "frame_%05d.png").string() +
+                                "' -c:v libx264 -pix_fmt yuv420p -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -f mp4 '" + encoded.string() +
+                                "'";
+    const int status = std::system(command.c_str());
+    std::error_code ignored;
+    if (status != 0) {
+        std::filesystem::remove_all(temporary, ignored);
+        throw CliError(mp4 + ": ffmpeg failed to write it");
+    }
+    const auto moved = analysis::io::moveIntoPlace(encoded, target);
+    std::filesystem::remove_all(temporary, ignored);
+    unwrap(moved);
 }
 
 nlohmann::json rectJson(const QRect& rect) { return {rect.x(), rect.y(), rect.width(), rect.height()}; }
@@ -280,6 +312,10 @@ void runMultimodal(const RenderArguments& args, const render::SceneContent& scen
 void runRender(const RenderArguments& args)
 {
     if (args.output.empty()) throw CliError("-o is required: the PNG file (or the folder with --frames)");
+    std::vector<std::string> inputs{args.take, args.takeB, args.body};
+    for (const std::string& entry : args.meshes) inputs.push_back(entry.substr(entry.find('=') + 1));
+    refuseOutputOverInputs(args.output, args.frames.empty() ? OutputKind::File : OutputKind::Folder, inputs);
+    refuseOutputOverInputs(args.mp4, OutputKind::File, inputs, "--mp4");
     if (args.frame && args.time) throw CliError("give --frame or --time, not both");
     if (!args.frames.empty() && (args.frame || args.time))
         throw CliError("--frames renders a sequence: drop --frame / --time");
@@ -362,32 +398,28 @@ void runRender(const RenderArguments& args)
         offscreen->makeCurrent();
         if (args.time) offscreen->renderer().setTime(*args.time);
         else offscreen->renderer().setFrame(args.frame.value_or(0));
-        saveImage(offscreen->render(camera, size), args.output);
+        unwrap(analysis::io::writeFileAtomically(args.output, view(pngBytes(offscreen->render(camera, size), args.output))));
         summary["output"] = args.output;
         summary["frame"] = offscreen->renderer().frame(0);
     } else {
+        // The frames are built in a hidden folder beside the output and swapped in when all are
+        // written (and encoded): a killed run leaves the previous sequence whole.
         const std::filesystem::path folder = args.output;
-        std::error_code error;
-        std::filesystem::create_directories(folder, error);
-        if (error) throw CliError("could not create " + folder.string() + ": " + error.message());
+        analysis::io::StagedFolder staged = unwrap(analysis::io::StagedFolder::begin(folder));
         for (long f = range->first; f <= range->second; ++f) {
             offscreen->makeCurrent();
             offscreen->renderer().setFrame(f);
             char name[32];
             std::snprintf(name, sizeof name, "frame_%05ld.png", f - range->first);
-            saveImage(offscreen->render(camera, size), folder / name);
+            unwrap(staged.writeFile(name, view(pngBytes(offscreen->render(camera, size), folder / name))));
         }
         summary["output"] = folder.string();
         summary["frames"] = {range->first, range->second};
         if (!args.mp4.empty()) {
-            const double rate = scene.takes.front().take.rateHz;
-            const std::string command = "ffmpeg -y -loglevel error -framerate " + std::to_string(rate) + " -i '" +
-                                        (folder / "frame_%05d.png").string() +
-                                        "' -c:v libx264 -pix_fmt yuv420p -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' '" +
-                                        args.mp4 + "'";
-            if (std::system(command.c_str()) != 0) throw CliError("ffmpeg failed to write " + args.mp4);
+            encodeMp4(staged.path(), scene.takes.front().take.rateHz, args.mp4);
             summary["mp4"] = args.mp4;
         }
+        unwrap(staged.commit());
     }
     if (args.json) printJson(summary);
 }

@@ -45,7 +45,8 @@ io::ImportOptions importOptions(const ImportArguments& arguments)
     options.bvh.unitScale = arguments.units == "m" ? 100.0 : arguments.units == "mm" ? 0.1 : arguments.units == "in" ? 2.54 : 1.0;
     options.bvhLayout = arguments.allJoints ? io::BvhTakeLayout::AllJoints : io::BvhTakeLayout::PuppetParts;
     if (arguments.rateHz != 0.0) {
-        if (!(arguments.rateHz > 0.0)) throw CliError("--rate must be a positive number of Hz");
+        if (!analysis::plausibleRate(arguments.rateHz))
+            throw CliError("--rate " + io::shortestNumber(arguments.rateHz) + ": " + analysis::rateExpectation());
         options.csv.rateHz = arguments.rateHz;
         options.fastrak.rateHz = arguments.rateHz;
     }

@@ -29,7 +29,7 @@ namespace {
 bool showBandaiTakes(app::MainWindow& window)
 {
     const auto normal = test::bandaiDir() / "bye_normal_001.bvh", angry = test::bandaiDir() / "bye_angry_001.bvh";
-    if (!test::peerPresent(std::filesystem::exists(normal) && std::filesystem::exists(angry), "Bandai files not found in " + test::bandaiDir().string()))
+    if (!test::requirePeer(std::filesystem::exists(normal) && std::filesystem::exists(angry), "Bandai files not found in " + test::bandaiDir().string(), "the shared data beside the repository (../shared/data/bandai)"))
         return false;
     REQUIRE(window.files().importTakeFile(QString::fromStdString(normal.string())));
     REQUIRE(window.files().importTakeFile(QString::fromStdString(angry.string())));

@@ -296,3 +296,22 @@ TEST_CASE("the 3D view draws each shown take's motion axis from the scheduler, o
     CHECK(scheduler.starts(AnalysisController::kTakeAxisSlot) + scheduler.starts(AnalysisController::kTakeAxisBSlot) ==
           startsA + 4 + startsB + 1);
 }
+
+TEST_CASE("destroying the scheduler does not wait for a job that ignores cancellation", "[app][scheduler]")
+{
+    auto executor = std::make_shared<ManualExecutor>();
+    bool ran = false;
+    bool stopRequested = false;
+    auto scheduler = std::make_unique<StageScheduler>(nullptr, executor);
+    scheduler->request(1, StageKey{7}, [&](const analysis::RunControl& control) -> analysis::Result<StageValue> {
+        stopRequested = control.cancelled(); // a long step that never checks would run on regardless
+        ran = true;
+        return StageValue(std::make_shared<const int>(1));
+    });
+    REQUIRE(executor->pending() == 1);
+    scheduler.reset(); // the window closing while its job is under way
+    CHECK_FALSE(ran);  // the destructor returned without running or waiting for the job
+    executor->runNext(); // the job ends after its scheduler is gone: told to stop, its result dropped
+    CHECK(ran);
+    CHECK(stopRequested);
+}

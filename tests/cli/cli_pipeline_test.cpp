@@ -1,5 +1,6 @@
 // The command line end to end: BVH conversion round trips, demo -> preprocess -> decompose ->
 // emotion, and the atomic replacement of output files.
+#include "tests/support/shared_data.h"
 #include "tests/cli/cli_files.h"
 #include "tests/cli/cli_runner.h"
 #include "tests/support/test_paths.h"
@@ -50,10 +51,7 @@ json runJson(const std::vector<std::string>& arguments)
 TEST_CASE("bunraku convert takes a bandai BVH to CSV and back to BVH without changing the take", "[cli]")
 {
     const auto source = bunraku::test::bandaiDir() / "bye_normal_001.bvh";
-    if (!std::filesystem::exists(source)) {
-        WARN("skipped: " << source << " is absent (shared Bandai data not installed)");
-        return;
-    }
+    if (!bunraku::test::requireBandaiData(std::filesystem::exists(source))) return;
     const auto dir = bunraku::test::scratchDir("cli-convert");
     const auto info = runJson({"info", source.string(), "--json"});
     CHECK(info.at("format") == "bvh");
@@ -200,29 +198,33 @@ TEST_CASE("decompose replaces its output files instead of rewriting them in plac
     const auto dir = bunraku::test::scratchDir("cli-atomic");
     const auto demo = dir / "demo", out = dir / "ls";
     runJson({"demo", "-o", demo.string(), "--json"});
-    // An older summary.json shared with another name (a hard link): an atomic write (temporary
-    // file + rename) leaves the other name's content alone; writing in place would change it.
-    std::filesystem::create_directories(out);
-    const auto keep = bunraku::test::writeText(dir / "kept.json", "{\"old\": true}\n");
-    std::filesystem::create_hard_link(keep, out / "summary.json");
-    std::filesystem::create_hard_link(keep, out / "arma_table.csv");
     runJson({"decompose", demo.string(), "--pad", "--method", "ls", "-o", out.string(), "--json"});
-    CHECK(bunraku::test::readTextFile(keep) == "{\"old\": true}\n");
-    CHECK(json::parse(bunraku::test::readTextFile(out / "summary.json")).at("method") == "ls");
-    for (const auto& entry : std::filesystem::directory_iterator(out))
-        CHECK(entry.path().filename().string().rfind(".", 0) != 0); // no temporary files left
+    // The earlier summary.json shared with another name (a hard link): replacing the output
+    // (built beside it and swapped in) leaves the other name's content alone; writing in place
+    // would change it.
+    const std::string old = bunraku::test::readTextFile(out / "summary.json");
+    std::filesystem::create_hard_link(out / "summary.json", dir / "kept.json");
+    runJson({"decompose", demo.string(), "--pad", "--method", "km2o", "-o", out.string(), "--json"});
+    CHECK(bunraku::test::readTextFile(dir / "kept.json") == old);
+    CHECK(json::parse(bunraku::test::readTextFile(dir / "kept.json")).at("method") == "ls");
+    CHECK(json::parse(bunraku::test::readTextFile(out / "summary.json")).at("method") == "km2o");
+    for (const auto& entry : std::filesystem::directory_iterator(dir))
+        CHECK(entry.path().filename().string().rfind(".", 0) != 0); // no temporary folders left
+    for (const auto& entry : std::filesystem::directory_iterator(out)) // only the manifest is hidden
+        CHECK((entry.path().filename().string().rfind(".", 0) != 0 || entry.path().filename() == ".bunraku-files.json"));
 }
 
-TEST_CASE("preprocessing a demo corpus in place keeps its ground truth and leaves no temporary folders", "[cli]")
+TEST_CASE("preprocessing a demo corpus keeps its ground truth and leaves no temporary folders", "[cli]")
 {
-    const auto dir = bunraku::test::scratchDir("cli-preprocess-in-place");
-    const auto demo = dir / "demo";
+    const auto dir = bunraku::test::scratchDir("cli-preprocess-truth");
+    const auto demo = dir / "demo", preprocessed = dir / "preprocessed";
     runJson({"demo", "-o", demo.string(), "--json"});
-    const auto report = runJson({"preprocess", demo.string(), "-o", demo.string(), "--json"});
+    const auto report = runJson({"preprocess", demo.string(), "-o", preprocessed.string(), "--json"});
     CHECK(report.at("truth_copied") == true);
-    CHECK(std::filesystem::is_regular_file(demo / "truth" / "truth.json"));
+    CHECK(std::filesystem::is_regular_file(preprocessed / "truth" / "truth.json"));
+    CHECK(bunraku::test::readTextFile(preprocessed / "truth" / "truth.json") == bunraku::test::readTextFile(demo / "truth" / "truth.json"));
     for (const auto& entry : std::filesystem::directory_iterator(dir))
         CHECK(entry.path().filename().string().rfind(".", 0) != 0);
-    const auto summary = runJson({"decompose", demo.string(), "--method", "ls", "-o", (dir / "ls").string(), "--json"});
+    const auto summary = runJson({"decompose", preprocessed.string(), "--method", "ls", "-o", (dir / "ls").string(), "--json"});
     CHECK(summary.contains("truth"));
 }

@@ -163,7 +163,9 @@ TEST_CASE("a window holding the viewport stays raster and its screenshot shows t
 
 TEST_CASE("quick successive frames skip multisampling and the still frame is redrawn with it", "[widgets][viewport]")
 {
+    widgets::ManualClock clock; // time moves only when the test says so
     widgets::ViewportWidget viewport(nullptr, 4);
+    viewport.setClock(&clock);
     viewport.resize(320, 240);
     viewport.setScene(oneTake());
     viewport.setCamera(frontCamera());
@@ -183,9 +185,18 @@ TEST_CASE("quick successive frames skip multisampling and the still frame is red
     viewport.repaint();
     CHECK(viewport.renderedFrameCount() == drawn + 1);
     // Once the view is still, the same frame is redrawn with multisampling.
-    REQUIRE(QTest::qWaitFor([&] { return viewport.shownSamples() == 4; }, 5000));
-    CHECK(viewport.renderedFrameCount() >= drawn + 2);
+    clock.advance(widgets::ViewportWidget::kSettleMs - 1);
+    CHECK(viewport.shownSamples() == 0);
+    clock.advance(1);
+    CHECK(viewport.shownSamples() == 4);
+    CHECK(viewport.renderedFrameCount() == drawn + 2);
     CHECK(viewport.renderer()->frame(0) == 2);
+    // A change after a still moment is drawn at full quality at once.
+    clock.advance(widgets::ViewportWidget::kSettleMs);
+    viewport.setTime(0.0);
+    viewport.repaint();
+    CHECK(viewport.shownSamples() == 4);
+    CHECK(viewport.renderer()->frame(0) == 0);
     // Screenshots and frame export always use the view's multisampling.
     viewport.setTime(0.2);
     (void)viewport.grabFramebuffer();
