@@ -210,13 +210,13 @@ Result<CorpusManifest> parseCorpusManifest(const std::string& text, const std::s
         }
         if (entry.contains("skeleton") || entry.contains("motion")) { // skeleton_io.h: both or neither
             for (const char* key : {"skeleton", "motion"}) {
-                auto name = stringField(reader, entry, key, where);
-                if (!name) return name.error();
-                const fs::path named(*name);
-                const bool out = std::any_of(named.begin(), named.end(), [](const fs::path& part) { return part == ".."; });
-                if (named.empty() || named.is_absolute() || name->front() == '.' || out)
-                    return reader.error(where, std::string("\"") + key + "\" must be a file name inside the corpus folder, found \"" + *name + "\"");
-                (std::string(key) == "skeleton" ? item.skeleton : item.motion) = *name;
+                auto named = stringField(reader, entry, key, where);
+                if (!named) return named.error();
+                const fs::path path(*named);
+                const bool out = std::any_of(path.begin(), path.end(), [](const fs::path& part) { return part == ".."; });
+                if (path.empty() || path.is_absolute() || named->front() == '.' || out)
+                    return reader.error(where, std::string("\"") + key + "\" must be a file name inside the corpus folder, found \"" + *named + "\"");
+                (std::string(key) == "skeleton" ? item.skeleton : item.motion) = *named;
             }
         }
         result.takes.push_back(std::move(item));
@@ -305,10 +305,10 @@ Status writeCorpusFiles(const Corpus& corpus, StagedFolder& folder)
         if (auto written = folder.writeFile(name, formatTakeCsv(take)); !written) return written;
         if (take.skeleton) { // skeleton_io.h: beside the take's CSV, named as manifestOf names them
             const std::string stem = name.substr(0, name.size() - 4);
-            auto files = formatSkeletalMotion(*take.skeleton, take.rateHz);
-            if (!files) return makeError(files.error().code, (shown / name).string() + ": " + files.error().message);
-            if (auto written = folder.writeFile(stem + ".skeleton.json", files->first); !written) return written;
-            if (auto written = folder.writeFile(stem + ".motion.csv", files->second); !written) return written;
+            auto texts = formatSkeletalMotion(*take.skeleton, take.rateHz);
+            if (!texts) return makeError(texts.error().code, (shown / name).string() + ": " + texts.error().message);
+            if (auto written = folder.writeFile(stem + ".skeleton.json", texts->first); !written) return written;
+            if (auto written = folder.writeFile(stem + ".motion.csv", texts->second); !written) return written;
         }
     }
     return folder.writeFile("corpus.json", manifestOf(corpus, files).dump(2, ' ', false, json::error_handler_t::replace) + "\n");

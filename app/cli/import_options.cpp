@@ -1,5 +1,7 @@
 #include "app/cli/import_options.h"
 
+#include "analysis/io/text_format.h"
+
 #include <algorithm>
 
 namespace bunraku::app::cli {

@@ -6,7 +6,6 @@
 #include "app/file_controller.h"
 #include "app/export_controller.h"
 #include "app/main_window.h"
-#include "app/recomputer.h"
 #include "app/stage_scheduler.h"
 #include "app/viewport_panel.h"
 
@@ -56,7 +55,7 @@ inline std::unique_ptr<app::MainWindow> demoWindow()
 /// event loop, so a test comparing an export with the view's size waits for this first.
 inline bool waitUntilIdle(app::MainWindow& window, int timeoutMs = 60000)
 {
-    const auto idle = [&window] { return !window.analysis().scheduler().busy() && !window.viewportPanel()->recomputer()->busy(); };
+    const auto idle = [&window] { return !window.analysis().scheduler().busy(); };
     if (!QTest::qWaitFor(idle, timeoutMs)) return false;
     QCoreApplication::sendPostedEvents(); // the layout requests the finished work posted
     QCoreApplication::processEvents();

@@ -9,6 +9,8 @@
 #include "analysis/io/bvh.h"
 #include "analysis/io/take_csv.h"
 #include "tests/support/peer.h"
+
+#include <catch2/catch.hpp>
 #include "widgets/graph_panel.h"
 #include "widgets/viewport_widget.h"
 
