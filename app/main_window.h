@@ -10,6 +10,8 @@
 #include <QMainWindow>
 #include <QSet>
 
+#include <map>
+
 #include <vector>
 
 class QDockWidget;
@@ -87,6 +89,7 @@ public:
     VideoExportResult exportViewVideo(const VideoExportOptions& options, const ExportProgress& progress = {});
 
 protected:
+    bool event(QEvent* event) override;
     void closeEvent(QCloseEvent* event) override;
     void dragEnterEvent(QDragEnterEvent* event) override;
     void dropEvent(QDropEvent* event) override;
@@ -108,6 +111,8 @@ private:
     void showStageStatus();
     /// File > Export 3D View Video...: the dialog, the export, then a message on error.
     void chooseViewVideo();
+    /// Help > Keyboard Shortcuts.
+    void showShortcuts();
     QVariantMap viewState() const;
     void restoreViewState(const QVariantMap& state);
 
@@ -131,6 +136,7 @@ private:
     QLabel* m_status = nullptr;
     QLabel* m_stages = nullptr;
     QSet<Recomputer*> m_busy;
+    std::map<int, QString> m_failures; ///< per analysis slot: its failure shown in the status bar
 };
 
 } // namespace bunraku::app

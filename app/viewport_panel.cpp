@@ -11,6 +11,7 @@
 
 #include <QCheckBox>
 #include <QHBoxLayout>
+#include <QToolBar>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -59,23 +60,40 @@ ViewportPanel::ViewportPanel(Document& document, QWidget* parent) : QWidget(pare
     m_axis = new QCheckBox(tr("Axis"), this);
     m_orbits = new QCheckBox(tr("Orbits"), this);
     m_grid = new QCheckBox(tr("Grid"), this);
+    m_partner = new QCheckBox(tr("Partner"), this);
     const auto visibility = m_viewport->visibility();
     m_puppet->setChecked(visibility.puppet);
     m_axis->setChecked(visibility.axis);
-    m_orbits->setChecked(visibility.orbits);
+    m_orbits->setChecked(false);
     m_grid->setChecked(visibility.grid);
-    m_orbits->setToolTip(tr("Orbits of the sensors (shown when the puppet is hidden, as in the thesis)"));
-    auto* toggles = new QHBoxLayout;
-    toggles->setContentsMargins(4, 2, 4, 0);
-    for (auto* box : {m_puppet, m_axis, m_orbits, m_grid}) {
+    m_partner->setChecked(visibility.partner);
+    m_puppet->setObjectName("showPuppet");
+    m_axis->setObjectName("showAxis");
+    m_orbits->setObjectName("showOrbits");
+    m_grid->setObjectName("showGrid");
+    m_partner->setObjectName("showPartner");
+    m_puppet->setToolTip(tr("The puppet posed by take A (and B beside it)"));
+    m_axis->setToolTip(tr("The motion axis (thesis 5.2.1): red front, green side, blue up, at the centre of mass"));
+    m_orbits->setToolTip(tr("The paths of the head, shoulder, arm and hand sensors over the whole take, drawn over the "
+                            "puppet, with a ball where each sensor is now"));
+    m_grid->setToolTip(tr("The floor: a 20 cm grid under the lowest point of the figures"));
+    m_partner->setToolTip(tr("Where the partner stands (the person greeted or served): a grey cone on a disc on the floor, "
+                             "110 cm in front of the puppet"));
+    // A tool bar, not a row of widgets: in a narrow dock what does not fit moves behind its
+    // extension button instead of widening the dock.
+    auto* toggles = new QToolBar(this);
+    toggles->setObjectName("viewToolBar");
+    toggles->setIconSize(QSize(16, 16));
+    for (auto* box : {m_puppet, m_axis, m_orbits, m_grid, m_partner}) {
         toggles->addWidget(box);
         connect(box, &QCheckBox::toggled, this, &ViewportPanel::applyVisibility);
     }
-    toggles->addStretch(1);
+    toggles->addSeparator();
+    createCameraActions(toggles);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(2);
-    layout->addLayout(toggles);
+    layout->addWidget(toggles);
     layout->addWidget(m_viewport, 1);
 
     // The axes of the shown takes, computed off the GUI thread, then added to the scene.
@@ -123,6 +141,10 @@ ViewportPanel::ViewportPanel(Document& document, QWidget* parent) : QWidget(pare
             }
         emit partPicked(bodyPart);
     });
+    // Frame Selected fits the body part clicked (the right hand, not both hands).
+    connect(m_viewport, &widgets::ViewportWidget::partPicked, this, [this](int, const QString& bodyPart) { m_selectedPart = bodyPart; });
+    connect(m_viewport, &widgets::ViewportWidget::backgroundPicked, this, [this] { m_selectedPart.clear(); });
+    applyVisibility();
     rebuildScene();
 }
 
@@ -148,6 +170,8 @@ void ViewportPanel::applyVisibility()
     visibility.axis = m_axis->isChecked();
     visibility.orbits = m_orbits->isChecked();
     visibility.grid = m_grid->isChecked();
+    visibility.partner = m_partner->isChecked();
+    visibility.orbitVisibility = render::OrbitVisibility::Always; // the box shows them, puppet or not
     m_viewport->setVisibility(visibility);
 }
 

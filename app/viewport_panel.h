@@ -1,6 +1,7 @@
 #pragma once
 /// The 3D view dock: the renderer's ViewportWidget showing take A (and B side by side), with
-/// toggles for the puppet, the motion axis, the orbits and the floor grid. The motion axes are
+/// toggles for the puppet, the motion axis, the orbits, the floor grid and the partner marker, and
+/// the camera actions (viewport_panel_camera.cpp). The motion axes are
 /// computed in the background and added when ready (for drawing only: the graphable "axis" take
 /// is the AnalysisController's); a click on a part selects its graphs.
 /// A changed take (a designed take on every step of a warp drag) is shown at the next paint:
@@ -15,7 +16,9 @@
 #include <utility>
 #include <vector>
 
+class QAction;
 class QCheckBox;
+class QToolBar;
 
 namespace bunraku::widgets {
 class ViewportWidget;
@@ -32,6 +35,19 @@ public:
 
     widgets::ViewportWidget* viewport() const { return m_viewport; }
     Recomputer* recomputer() const { return m_axes; }
+    /// Camera actions (View > 3D View Camera and the view's tool bar): Frame All (F), Frame
+    /// Selected (Shift+F: the part last clicked, else the figures at the current frame) and
+    /// Reset Camera (Home with the 3D view focused).
+    QAction* frameAllAction() const { return m_frameAll; }
+    QAction* frameSelectedAction() const { return m_frameSelected; }
+    QAction* resetCameraAction() const { return m_resetCamera; }
+    /// The body part Frame Selected fits ("right_hand"; "" when none was clicked, or the
+    /// background was).
+    QString selectedPart() const { return m_selectedPart; }
+    /// The camera as project view state ({"angle", "elevation", "distance", "target": [x, y, z],
+    /// "fov"}), and back (ignored when malformed; project_file.cpp validates it).
+    QVariantMap cameraState() const;
+    void setCameraState(const QVariantMap& state);
 
 signals:
     /// A part of the puppet was clicked (its name in the take's channels when it has one).
@@ -40,6 +56,8 @@ signals:
 private:
     void rebuildScene();
     void applyVisibility();
+    /// The camera actions, added to `bar` (viewport_panel_camera.cpp).
+    void createCameraActions(QWidget* bar);
 
     Document& m_document;
     widgets::ViewportWidget* m_viewport = nullptr;
@@ -48,6 +66,11 @@ private:
     QCheckBox* m_axis = nullptr;
     QCheckBox* m_orbits = nullptr;
     QCheckBox* m_grid = nullptr;
+    QCheckBox* m_partner = nullptr;
+    QAction* m_frameAll = nullptr;
+    QAction* m_frameSelected = nullptr;
+    QAction* m_resetCamera = nullptr;
+    QString m_selectedPart;
     quint64 m_sceneSerial = 0;
     /// The motion axis (world_T_axis per frame) of each take it was last computed for: a rebuilt
     /// scene keeps the axes of takes that did not change.

@@ -10,6 +10,7 @@
 #include "analysis/body/body_pose.h"
 #include "analysis/core/result.h"
 #include "render/camera.h"
+#include "render/framing.h"
 #include "render/gpu_mesh.h"
 #include "render/scene.h"
 
@@ -91,6 +92,11 @@ public:
     /// A camera that frames the scene: angle 340 deg (the puppet's left front), elevation 15 deg,
     /// looking at the puppets' middle height, far enough back for one or two puppets.
     Camera framingCamera() const;
+    /// The box (world, cm, under `camera`'s side-by-side placement) around what is drawn now:
+    /// the puppets' parts, the orbits (or the sensors when the puppet is hidden), the partner
+    /// marker and the motion axis, over the frames and takes `query` asks for; only the parts
+    /// of `query.part` when given. Empty without a scene (or when the part is not drawn).
+    Bounds displayedBounds(const Camera& camera, const BoundsQuery& query = {}) const;
 
 private:
     struct Slot;
@@ -112,6 +118,7 @@ private:
     analysis::BodyDescription m_body;
     std::vector<std::string> m_partNames;
     std::vector<GpuMesh> m_partMeshes; ///< one per body part, in the part frame
+    std::vector<Bounds> m_partBounds;  ///< one per body part: its mesh's box in the part frame
     std::vector<Slot> m_slots;
     GpuMesh m_grid;
     GpuMesh m_box;    ///< unit cube for the axis bars

@@ -84,6 +84,13 @@ void ViewportWidget::setCamera(const render::Camera& camera)
 {
     m_camera = camera;
     m_cameraChosen = true;
+    // The camera fits the scene shown now, or (none uploaded yet: a project's camera) the next.
+    m_framedFor.reset();
+    if (!m_scene && m_offscreen && m_offscreen->renderer().hasScene()) {
+        render::BoundsQuery figures;
+        figures.figuresOnly = true;
+        m_framedFor = sceneBounds(figures);
+    }
     emit cameraChanged();
     invalidate();
 }
@@ -112,20 +119,19 @@ QSize ViewportWidget::pixelSize() const
 void ViewportWidget::prepareFrame()
 {
     render::Renderer& renderer = m_offscreen->renderer();
+    bool uploaded = false;
     if (m_scene && !m_sceneUploaded) {
         const auto status = m_offscreen->setScene(*m_scene, m_layout);
         m_sceneUploaded = true;
         m_scene.reset(); // the renderer keeps what it needs; the context never changes
         if (!status.ok()) emit renderError(QString::fromStdString(status.error().message));
-        else if (!m_cameraChosen) {
-            m_camera = renderer.framingCamera();
-            emit cameraChanged();
-        }
+        else uploaded = true;
     }
     if (renderer.hasScene()) {
         renderer.setVisibility(m_visibility);
         if (m_time) renderer.setTime(*m_time);
         else renderer.setFrame(m_frame);
+        if (uploaded) adaptCameraToScene();
     }
 }
 
