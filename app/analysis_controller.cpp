@@ -9,6 +9,7 @@
 #include "analysis/report/html_report.h"
 
 #include <QCoreApplication>
+#include <QScopedValueRollback>
 
 namespace bunraku::app {
 
@@ -231,7 +232,14 @@ QString AnalysisController::decompositionText(const pl::DecomposeOutput& decompo
 
 void AnalysisController::publishNormalised()
 {
-    const QString idA = m_document.selectedId(TakeSlot::A);
+    // Publishing the take shown as A announces a new selection, which would publish it again.
+    if (m_publishing) return;
+    const QScopedValueRollback<bool> publishing(m_publishing, true);
+    QString idA = m_document.selectedId(TakeSlot::A);
+    // The normalised take itself shown as A: recomputed for the take it was computed from.
+    if (idA == QStringLiteral("live/normalised"))
+        for (const auto& derived : m_document.derivedTakes())
+            if (derived.id == idA) idA = derived.ghostId;
     const TakePointer takeA = m_document.take(idA);
     if (!m_normalised || !takeA || !idA.startsWith(QStringLiteral("corpus/"))) return; // keep it while viewing derived takes
     const pl::CellNormalisation* cell = m_normalised->cell(takeA->labels.function, takeA->labels.emotion);

@@ -104,6 +104,7 @@ private:
     std::string m_function;
     std::string m_emotion;
     std::string m_weightEmotion;
+    bool m_publishing = false; ///< inside publishNormalised
     analysis::pipeline::NormaliseParameters m_normalisedParameters;
     TakePointer m_weighted;
     QString m_weightError;

@@ -13,6 +13,7 @@
 #include "app/playback_controller.h"
 #include "app/recomputer.h"
 #include "app/shortcuts_dialog.h"
+#include "app/side_columns.h"
 #include "app/video_export_dialog.h"
 #include "app/viewport_panel.h"
 
@@ -123,6 +124,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_document(new Do
     connect(m_normalisePanel, &NormalisePanel::statusMessage, m_status, &QLabel::setText);
     connect(m_emotionPanel, &EmotionPanel::statusMessage, m_status, &QLabel::setText);
     new FocusReturn(this);
+    m_columns = new SideColumns(this);
 
     // The default size, within the screen (a 1366 x 768 laptop gets the whole screen).
     const QSize preferred(1500, 920);
@@ -385,13 +387,15 @@ void MainWindow::resetLayout()
         dock->setFloating(false);
         dock->show();
     }
+    m_columns->reset();
 }
 
 void MainWindow::restoreSavedLayout()
 {
     const QSettings settings;
     if (settings.contains(kGeometryKey)) restoreGeometry(settings.value(kGeometryKey).toByteArray());
-    if (settings.contains(kStateKey)) restoreState(settings.value(kStateKey).toByteArray(), kLayoutVersion);
+    if (settings.contains(kStateKey) && restoreState(settings.value(kStateKey).toByteArray(), kLayoutVersion))
+        m_columns->adoptRestoredLayout();
 }
 
 void MainWindow::saveLayout() const

@@ -35,6 +35,7 @@ class NormalisePanel;
 class FileController;
 class PlaybackController;
 class Recomputer;
+class SideColumns;
 class ViewportPanel;
 
 class MainWindow : public QMainWindow {
@@ -136,6 +137,7 @@ private:
     QLabel* m_status = nullptr;
     QLabel* m_stages = nullptr;
     QSet<Recomputer*> m_busy;
+    SideColumns* m_columns = nullptr;
     std::map<int, QString> m_failures; ///< per analysis slot: its failure shown in the status bar
 };
 

@@ -35,6 +35,12 @@ std::pair<std::string, std::string> cellOfTakeA(const Document& document)
     return {take->labels.function, take->labels.emotion};
 }
 
+/// "1 frame", "30 frames".
+QString framesText(int frames)
+{
+    return frames == 1 ? NormalisePanel::tr("1 frame") : NormalisePanel::tr("%1 frames").arg(frames);
+}
+
 QVariant referenceData(const pl::ReferenceChoice& choice)
 {
     return QString::fromStdString(pl::referenceName(choice));
@@ -118,7 +124,7 @@ NormalisePanel::NormalisePanel(Document& document, AnalysisController& analysis,
             m_document, [&](AnalysisParameters& p) { change(p.normalise); }, text, QStringLiteral("normalise.") + control);
     };
     connect(m_reference, &QComboBox::currentIndexChanged, this, [this, edit] {
-        const auto [function, emotion] = cellOfTakeA(m_document);
+        const auto [function, emotion] = shownCell();
         if (function.empty()) return;
         const QString data = m_reference->currentData().toString();
         pl::ReferenceChoice choice;
@@ -132,10 +138,10 @@ NormalisePanel::NormalisePanel(Document& document, AnalysisController& analysis,
              });
     });
     connect(m_tau, &QSpinBox::valueChanged, this, [edit](int value) {
-        edit(QStringLiteral("tau"), tr("Set tau to %n frame(s)", nullptr, value), [value](auto& p) { p.tau = value; });
+        edit(QStringLiteral("tau"), tr("Set tau to %1").arg(framesText(value)), [value](auto& p) { p.tau = value; });
     });
     connect(m_band, &QSpinBox::valueChanged, this, [edit](int value) {
-        edit(QStringLiteral("searchBand"), tr("Set T_cmp to %n frame(s)", nullptr, value), [value](auto& p) { p.searchBand = value; });
+        edit(QStringLiteral("searchBand"), tr("Set T_cmp to %1").arg(framesText(value)), [value](auto& p) { p.searchBand = value; });
     });
     connect(m_scales, &QSpinBox::valueChanged, this, [edit](int value) {
         edit(QStringLiteral("maxScale"), tr("Set the largest scale to %1").arg(value), [value](auto& p) { p.maxScale = value; });
@@ -196,10 +202,18 @@ TakePointer NormalisePanel::normalisedTake() const
 
 QString NormalisePanel::summaryText() const { return m_summary->text(); }
 
+std::pair<std::string, std::string> NormalisePanel::shownCell() const
+{
+    // Take A's cell; while A shows a derived take (the normalised take itself), the cell last shown.
+    auto cell = cellOfTakeA(m_document);
+    if (cell.first.empty()) cell = {m_analysis.cellFunction(), m_analysis.cellEmotion()};
+    return cell;
+}
+
 void NormalisePanel::refreshControls()
 {
     m_updating = true;
-    const auto [function, emotion] = cellOfTakeA(m_document);
+    const auto [function, emotion] = shownCell();
     const pl::NormaliseParameters& parameters = m_document.parameters().normalise;
     if (!function.empty()) {
         m_reference->clear();
@@ -226,7 +240,7 @@ void NormalisePanel::showResult()
         return;
     }
     const auto output = m_analysis.normalised();
-    const auto [function, emotion] = cellOfTakeA(m_document);
+    const auto [function, emotion] = shownCell();
     const pl::CellNormalisation* cell = output && !function.empty() ? output->cell(function, emotion) : nullptr;
     if (!cell) {
         m_summary->setText(scheduler.state(slot) == SlotState::Running ? tr("Normalising every cell...") : QString());
@@ -242,7 +256,15 @@ void NormalisePanel::showResult()
                                 QString::fromStdString(cell->referenceName).toHtmlEscaped(),
                                 AnalysisController::normaliseParametersText(m_analysis.normalisedParameters()).toHtmlEscaped(),
                                 scheduler.state(slot) == SlotState::Running ? tr(" (recomputing with the new parameters)") : QString()));
-    fillVarianceTree(m_table, variance, cell->referenceTake.channels);
+    std::vector<QString> labels;
+    const std::size_t reference = std::size_t(cell->suggestion.takeIndex);
+    for (std::size_t k = 0; k < cell->takeIndices.size(); ++k) {
+        const bool isReference = cell->reference.kind == pl::ReferenceKind::Take ? cell->takeIndices[k] == cell->reference.takeIndex
+                                 : cell->reference.kind == pl::ReferenceKind::Suggested ? k == reference
+                                                                                        : false;
+        labels.push_back(isReference ? tr("take %1 (ref.)").arg(cell->takeIndices[k]) : tr("take %1").arg(cell->takeIndices[k]));
+    }
+    fillVarianceTree(m_table, variance, cell->referenceTake.channels, labels);
     m_curves->clearGraphs();
     const std::size_t count = cell->normalisations.size();
     for (std::size_t k = 0; k < count; ++k) {

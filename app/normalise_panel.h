@@ -51,6 +51,8 @@ signals:
 private:
     void refreshControls();
     void showResult();
+    /// The cell shown: take A's, or the last one while A is a derived take.
+    std::pair<std::string, std::string> shownCell() const;
 
     Document& m_document;
     AnalysisController& m_analysis;

@@ -26,20 +26,25 @@ std::string familyOf(const std::string& unit)
     return unit.empty() ? "unitless" : unit;
 }
 
-QString familyText(const VarianceRow& row)
+QString familyName(const VarianceRow& row)
 {
-    const QString name = row.family == "position" ? tr("position") : row.family == "rotation" ? tr("rotation")
-                                                                                               : QString::fromStdString(row.family);
-    return row.unit.empty() ? name : QStringLiteral("%1 (%2)").arg(name, QString::fromStdString(row.unit));
+    return row.family == "position" ? tr("position") : row.family == "rotation" ? tr("rotation") : QString::fromStdString(row.family);
 }
 
-/// "-66.2 %" / "+12.0 % worse" / "-" when there was nothing to improve.
+/// "pos. cm²": short enough for a narrow dock (the tool tip says it in full).
+QString familyText(const VarianceRow& row)
+{
+    const QString name = row.family == "position" ? tr("pos.") : row.family == "rotation" ? tr("rot.") : QString::fromStdString(row.family);
+    return row.unit.empty() ? name : QStringLiteral("%1 %2").arg(name, QString::fromStdString(row.unit));
+}
+
+/// "-66 %" / "▲ +12 %" (worse) / "–" when there was nothing to change.
 QString changeText(const VarianceRow& row)
 {
-    if (!(row.before > 0.0)) return row.after > 0.0 ? tr("worse") : QStringLiteral("\u2013");
+    if (!(row.before > 0.0)) return row.after > 0.0 ? QStringLiteral("\u25b2") : QStringLiteral("\u2013");
     const double percent = 100.0 * (row.after - row.before) / row.before;
-    const QString number = QLocale().toString(percent, 'f', 1);
-    return row.worse() ? tr("+%1 % worse").arg(number) : tr("%1 %").arg(number);
+    const QString number = QLocale().toString(percent, 'f', 0);
+    return row.worse() ? QStringLiteral("\u25b2 +%1 %").arg(number) : QStringLiteral("%1 %").arg(number);
 }
 
 void mark(QTreeWidgetItem* item)
@@ -99,7 +104,8 @@ std::vector<VarianceRow> varianceRows(const analysis::VarianceTable& table, cons
     return rows;
 }
 
-void fillVarianceTree(QTreeWidget* tree, const analysis::VarianceTable& table, const std::vector<analysis::Channel>& channels)
+void fillVarianceTree(QTreeWidget* tree, const analysis::VarianceTable& table, const std::vector<analysis::Channel>& channels,
+                      const std::vector<QString>& takeLabels)
 {
     tree->clear();
     tree->setColumnCount(4);
@@ -110,8 +116,9 @@ void fillVarianceTree(QTreeWidget* tree, const analysis::VarianceTable& table, c
     for (const VarianceRow& row : varianceRows(table, channels)) {
         QTreeWidgetItem*& take = takes[row.take];
         if (!take) {
-            take = new QTreeWidgetItem(tree, {QString::fromStdString(row.take)});
-            take->setFirstColumnSpanned(false);
+            const auto index = std::size_t(std::find(table.takeNames.begin(), table.takeNames.end(), row.take) - table.takeNames.begin());
+            take = new QTreeWidgetItem(tree, {index < takeLabels.size() ? takeLabels[index] : QString::fromStdString(row.take)});
+            take->setToolTip(0, QString::fromStdString(row.take));
         }
         QTreeWidgetItem* item = row.part.empty() ? new QTreeWidgetItem(take) : new QTreeWidgetItem(family);
         if (row.part.empty()) family = item;
@@ -121,8 +128,8 @@ void fillVarianceTree(QTreeWidget* tree, const analysis::VarianceTable& table, c
         item->setText(3, changeText(row));
         for (int column = 1; column < 4; ++column) item->setTextAlignment(column, Qt::AlignRight | Qt::AlignVCenter);
         const QString unit = QString::fromStdString(row.unit);
-        item->setToolTip(0, tr("%1: squared difference to the reference, summed over frames and the %2 channels%3")
-                                .arg(QString::fromStdString(row.take), familyText(row),
+        item->setToolTip(0, tr("%1: squared difference to the reference (%2), summed over frames and the %3 channels%4")
+                                .arg(QString::fromStdString(row.take), QString::fromStdString(row.unit), familyName(row),
                                      row.part.empty() ? tr(" of every part") : tr(" of ") + QString::fromStdString(row.part)));
         for (int column = 1; column < 3; ++column) item->setToolTip(column, unit);
         if (row.worse()) {
@@ -136,6 +143,8 @@ void fillVarianceTree(QTreeWidget* tree, const analysis::VarianceTable& table, c
         if (isMarkedWorse(take)) take->setToolTip(0, tr("%1: worse than before in at least one DOF family or part")
                                                          .arg(QString::fromStdString(name)));
     }
+    tree->setIndentation(12);
+    tree->header()->setStretchLastSection(false);
     tree->header()->setSectionResizeMode(0, QHeaderView::Stretch);
     for (int column = 1; column < 4; ++column) tree->header()->setSectionResizeMode(column, QHeaderView::ResizeToContents);
 }

@@ -39,8 +39,10 @@ std::vector<VarianceRow> varianceRows(const analysis::VarianceTable& table, cons
 QString varianceText(double value);
 
 /// Fills `tree` (columns: Take / family / part, Before, After, Change) with `table`; takes and
-/// families expanded, parts collapsed.
-void fillVarianceTree(QTreeWidget* tree, const analysis::VarianceTable& table, const std::vector<analysis::Channel>& channels);
+/// families expanded, parts collapsed. `takeLabels` (one per take, e.g. "take 2"; empty: the
+/// table's take names) is what the take rows show. Families read "pos. cm²" and "rot. deg²".
+void fillVarianceTree(QTreeWidget* tree, const analysis::VarianceTable& table, const std::vector<analysis::Channel>& channels,
+                      const std::vector<QString>& takeLabels = {});
 
 /// Whether `item` is marked worse than before.
 bool isMarkedWorse(const QTreeWidgetItem* item);
