@@ -7,6 +7,7 @@
 #include "app/file_controller.h"
 #include "app/file_dialogs.h"
 #include "app/focus_return.h"
+#include "app/help_controller.h"
 #include "app/normalise_panel.h"
 #include "app/offscreen_view.h"
 #include "app/phrase_marks.h"
@@ -265,15 +266,13 @@ void MainWindow::createMenus()
     m_viewMenu->addSeparator();
     m_viewMenu->addAction(tr("&Reset Layout"), this, &MainWindow::resetLayout);
 
+    auto* helpController = new HelpController(this);
     auto* help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(helpController->userGuideAction());
     auto* shortcuts = help->addAction(tr("&Keyboard Shortcuts"), this, &MainWindow::showShortcuts);
     shortcuts->setObjectName("keyboardShortcutsAction");
     shortcuts->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Slash));
-    help->addAction(tr("&About"), this, [this] {
-        QMessageBox::about(this, tr("About Bunraku Motion Workbench"),
-                           tr("<b>Bunraku Motion Workbench</b><p>Normalisation, emotion decomposition and design of "
-                              "puppet motion, after Hattori (2000). See docs/USER-GUIDE.md.</p>"));
-    });
+    help->addAction(helpController->aboutAction());
 }
 
 void MainWindow::connectDocument()

@@ -12,6 +12,8 @@ packages=(
   libfftw3-dev libassimp-dev libbenchmark-dev
   xvfb xauth libgl1-mesa-dri libglx-mesa0 libegl-mesa0 mesa-utils
   fonts-dejavu-core ffmpeg chromium
+  librsvg2-bin help2man file dpkg-dev
+  lintian desktop-file-utils appstream shared-mime-info man-db strace
   python3 python3-numpy python3-pywt python3-statsmodels
 )
 

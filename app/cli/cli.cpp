@@ -1,5 +1,7 @@
 #include "app/cli/cli.h"
 
+#include "app/build_info.h"
+
 #include <iostream>
 
 namespace bunraku::app::cli {
@@ -11,7 +13,8 @@ int runCli(int argc, char** argv)
     CLI::App app{"Bunraku Motion Workbench command line: make, inspect, convert, normalise, decompose, "
                  "design and render motion takes.",
                  "bunraku"};
-    app.set_version_flag("--version", std::string(BUNRAKU_VERSION));
+    app.set_version_flag("--version", versionText("bunraku"));
+    app.set_help_all_flag("--help-all", "Print the help of every subcommand and exit");
     app.require_subcommand(1);
     CLI::App* experiment = app.add_subcommand("experiment", "Reproduce the thesis's experiments");
     experiment->require_subcommand(1);

@@ -11,6 +11,7 @@ void addAllCommands(CommandSet& commands)
     addMotionAxisCommands(commands);
     addAnalyseCommands(commands);
     addRenderCommands(commands);
+    addHelpCommands(commands);
 }
 
 } // namespace bunraku::app::cli

@@ -18,4 +18,6 @@ void addMotionAxisCommands(CommandSet& commands);
 void addAnalyseCommands(CommandSet& commands);
 /// render (cmd_render.cpp)
 void addRenderCommands(CommandSet& commands);
+/// help (cmd_help.cpp)
+void addHelpCommands(CommandSet& commands);
 } // namespace bunraku::app::cli

@@ -1,0 +1,81 @@
+// `bunraku help SUBCOMMAND` and `bunraku --version`, run as a user would.
+#include "tests/cli/cli_runner.h"
+
+#include "app/build_info.h"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <regex>
+#include <set>
+
+using bunraku::test::runBunraku;
+
+namespace {
+
+/// The subcommands a help text lists under "Subcommands:".
+std::vector<std::string> listedSubcommands(const std::string& help)
+{
+    std::vector<std::string> names;
+    const auto start = help.find("Subcommands:");
+    if (start == std::string::npos) return names;
+    const std::string tail = help.substr(start);
+    static const std::regex listed(R"(\n  ([a-z][a-z0-9-]*)( |\n|$))");
+    for (std::sregex_iterator it(tail.begin(), tail.end(), listed), end; it != end; ++it) names.push_back((*it)[1].str());
+    return names;
+}
+
+} // namespace
+
+TEST_CASE("bunraku help SUBCOMMAND prints what SUBCOMMAND --help prints, for every subcommand", "[cli][help]")
+{
+    const auto root = runBunraku({"--help"});
+    REQUIRE(root.exitCode == 0);
+    CHECK(runBunraku({"help"}).out == root.out);
+    const auto names = listedSubcommands(root.out);
+    REQUIRE(std::find(names.begin(), names.end(), "help") != names.end());
+    REQUIRE(names.size() >= 10);
+    int compared = 0;
+    for (const std::string& name : names) {
+        if (name == "help") continue;
+        const auto direct = runBunraku({name, "--help"});
+        const auto help = runBunraku({"help", name});
+        INFO(name << "\n" << help.err);
+        CHECK(help.exitCode == 0);
+        CHECK(help.out == direct.out);
+        ++compared;
+        for (const std::string& child : listedSubcommands(direct.out)) {
+            const auto nested = runBunraku({"help", name, child});
+            INFO(name << " " << child);
+            CHECK(nested.exitCode == 0);
+            CHECK(nested.out == runBunraku({name, child, "--help"}).out);
+            ++compared;
+        }
+    }
+    CHECK(compared >= 16);
+}
+
+TEST_CASE("bunraku help with an unknown subcommand names the ones there are", "[cli][help]")
+{
+    const auto run = runBunraku({"help", "normalize"});
+    CHECK(run.exitCode == 1);
+    CHECK(run.out.empty());
+    CHECK(std::count(run.err.begin(), run.err.end(), '\n') == 1);
+    CHECK(run.err.rfind("bunraku: error: 'bunraku' has no subcommand 'normalize' (expected one of: ", 0) == 0);
+    CHECK(run.err.find("normalise") != std::string::npos);
+
+    const auto nested = runBunraku({"help", "experiment", "nope"});
+    CHECK(nested.exitCode == 1);
+    CHECK(nested.err.find("'bunraku experiment' has no subcommand 'nope' (expected one of: noise, truth, km2o, design)")
+          != std::string::npos);
+    CHECK(runBunraku({"help", "demo", "extra"}).exitCode == 1);
+}
+
+TEST_CASE("bunraku --version names the version, the commit and the licence", "[cli][help]")
+{
+    const auto run = runBunraku({"--version"});
+    REQUIRE(run.exitCode == 0);
+    CHECK(run.out.rfind("bunraku " BUNRAKU_TEST_PROJECT_VERSION "\ncommit " + std::string(bunraku::app::buildCommit()), 0) == 0);
+    CHECK(std::regex_search(run.out, std::regex("\ncommit [0-9a-f]{12}(-dirty)? \\(\\d{4}-\\d{2}-\\d{2}\\)\n")));
+    CHECK(run.out.find("License GPL-3.0-or-later") != std::string::npos);
+}
