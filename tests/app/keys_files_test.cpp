@@ -22,6 +22,8 @@
 #include <QApplication>
 #include <QCheckBox>
 #include <QDoubleSpinBox>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QLineEdit>
 #include <QMenu>
 #include <QMenuBar>
@@ -31,6 +33,7 @@
 #include <QTableWidget>
 #include <QTimer>
 #include <QTreeWidget>
+#include <QWheelEvent>
 
 #include <set>
 
@@ -146,11 +149,17 @@ TEST_CASE("Home resets the camera in the focused 3D view and goes to the start e
         QCoreApplication::sendEvent(viewport, &move);
     }
     QTest::mouseRelease(viewport, Qt::LeftButton, Qt::NoModifier, centre + QPoint(100, 0));
+    QWheelEvent wheel(QPointF(centre), viewport->mapToGlobal(QPointF(centre)), QPoint(), QPoint(0, 480), Qt::NoButton, Qt::NoModifier,
+                      Qt::NoScrollPhase, false);
+    QCoreApplication::sendEvent(viewport, &wheel); // zoomed in
     REQUIRE(viewport->camera().angleDeg != Approx(first.angleDeg));
+    REQUIRE(viewport->camera().distance < 0.8f * first.distance);
     viewport->setFocus();
     press(*window, Qt::Key_Home);
     CHECK(viewport->camera().angleDeg == Approx(first.angleDeg));
-    CHECK(viewport->camera().distance == Approx(first.distance));
+    CHECK(viewport->camera().elevationDeg == Approx(first.elevationDeg));
+    // (The view may have been resized or the motion axis added since the first framing.)
+    CHECK(viewport->camera().distance == Approx(first.distance).epsilon(0.05));
     CHECK(document.currentTime() == Approx(2.0));
 
     // F anywhere: Frame All (the partner marker included: farther than the figures' framing).
@@ -313,4 +322,24 @@ TEST_CASE("a project brings back the graphs' part and DOF, the camera and the em
     CHECK(viewport->camera().target.x == Approx(saved.target.x));
     CHECK(viewport->camera().target.z == Approx(saved.target.z));
     CHECK(window->analysis().weightEmotion() == QStringLiteral("hostile"));
+
+    // A camera out of range in the file is refused, naming it, and changes nothing.
+    QFile project(file);
+    REQUIRE(project.open(QIODevice::ReadOnly));
+    QJsonObject root = QJsonDocument::fromJson(project.readAll()).object();
+    project.close();
+    QJsonObject view = root["view"].toObject();
+    QJsonObject camera = view["camera"].toObject();
+    camera["distance"] = 1e9;
+    view["camera"] = camera;
+    root["view"] = view;
+    const QString broken = QString::fromStdString((folder / "broken.bunraku.json").string());
+    QFile out(broken);
+    REQUIRE(out.open(QIODevice::WriteOnly));
+    out.write(QJsonDocument(root).toJson());
+    out.close();
+    window->graphPanel()->selectDof(QStringLiteral("x"));
+    CHECK_FALSE(window->files().openProject(broken));
+    CHECK(window->files().lastError().contains(QStringLiteral("\"view\".\"camera\"")));
+    CHECK(window->graphPanel()->selectedDof() == QStringLiteral("x"));
 }
