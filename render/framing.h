@@ -44,6 +44,9 @@ struct BoundsQuery {
     std::string part;
     /// The figures only (puppets, skeletons, orbits): not the partner marker beside them.
     bool figuresOnly = false;
+    /// WholeTake: at most this many frames of each take are posed (evenly spaced, the last one
+    /// included).
+    int sampledFrames = 120;
 };
 
 /// The camera looking the way `view` looks (angle, elevation, field of view kept) at the centre

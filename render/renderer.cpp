@@ -247,7 +247,7 @@ Camera Renderer::framingCamera() const
 
 Bounds Renderer::displayedBounds(const Camera& camera, const BoundsQuery& query) const
 {
-    constexpr Eigen::Index kSampledFrames = 120; // whole takes: poses at most this many frames
+    const Eigen::Index sampled = std::max(1, query.sampledFrames);
     Bounds bounds;
     for (std::size_t s = 0; s < m_slots.size(); ++s) {
         if (query.takeSlot >= 0 && query.takeSlot != int(s)) continue;
@@ -257,7 +257,7 @@ Bounds Renderer::displayedBounds(const Camera& camera, const BoundsQuery& query)
         if (query.span == FramingSpan::WholeTake) {
             frames.clear();
             const Eigen::Index count = slot.take.frameCount();
-            const Eigen::Index step = std::max<Eigen::Index>(1, count / kSampledFrames);
+            const Eigen::Index step = std::max<Eigen::Index>(1, count / sampled);
             for (Eigen::Index f = 0; f < count; f += step) frames.push_back(f);
             frames.push_back(count - 1);
         }

@@ -27,14 +27,23 @@ render::BoundsQuery figures()
     return query;
 }
 
+/// The box a new scene is compared with: coarser (a scene is replaced on every step of a drag,
+/// and a size change of 30 % does not need every frame).
+render::BoundsQuery quickFigures()
+{
+    render::BoundsQuery query = figures();
+    query.sampledFrames = 24;
+    return query;
+}
+
 } // namespace
 
 void ViewportWidget::adaptCameraToScene()
 {
-    const render::Bounds bounds = m_offscreen->renderer().displayedBounds(m_camera, figures());
+    const render::Bounds bounds = m_offscreen->renderer().displayedBounds(m_camera, quickFigures());
     if (bounds.empty()) return;
     if (!m_cameraChosen) {
-        m_camera = render::resetCamera(bounds, pixelSize());
+        m_camera = render::resetCamera(m_offscreen->renderer().displayedBounds(m_camera, figures()), pixelSize());
     } else if (!m_framedFor) {
         m_framedFor = bounds; // a camera set before its scene (a project's) fits that scene
         return;
