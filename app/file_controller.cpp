@@ -9,6 +9,8 @@
 #include "analysis/io/corpus_io.h"
 #include "analysis/io/take_reader.h"
 #include "analysis/synth/demo_corpus.h"
+#include "analysis/body/body_description.h"
+#include "render/take_export.h"
 
 #include <QAction>
 #include <QDir>
@@ -43,8 +45,6 @@ FileController::FileController(Document& document, QWidget* window) : QObject(wi
     m_import = new QAction(tr("&Import Take..."), this);
     m_import->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_I));
     m_import->setToolTip(tr("Import a take from CSV, BVH or FASTRAK"));
-    m_exportCsv = new QAction(tr("Export Take A as &CSV..."), this);
-    m_exportBvh = new QAction(tr("Export Take A as &BVH..."), this);
     m_openProject = new QAction(tr("Open &Project..."), this);
     m_openProject->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_O));
     m_save = new QAction(tr("&Save Project"), this);
@@ -62,8 +62,6 @@ FileController::FileController(Document& document, QWidget* window) : QObject(wi
         if (!folder.isEmpty()) openCorpusFolder(folder);
     });
     connect(m_import, &QAction::triggered, this, &FileController::chooseAndImport);
-    connect(m_exportCsv, &QAction::triggered, this, [this] { chooseAndExport(QStringLiteral(".csv")); });
-    connect(m_exportBvh, &QAction::triggered, this, [this] { chooseAndExport(QStringLiteral(".bvh")); });
     connect(m_openProject, &QAction::triggered, this, [this] {
         if (!maybeSave()) return;
         const QString file = chooseOpenFile(m_window, FilePurpose::Project, tr("Open project"), tr("Bunraku projects (*.json)"), m_projectPath);
@@ -190,7 +188,7 @@ bool FileController::exportTake(const QString& file)
         report(tr("Nothing to export"), analysis::makeError(analysis::ErrorCode::InvalidArgument, "no take is shown as A"));
         return false;
     }
-    if (const auto status = analysis::io::writeTakeFile(*take, toPath(file)); !status) {
+    if (const auto status = render::exportTake(*take, analysis::defaultBodyDescription(), toPath(file)); !status) {
         report(tr("Cannot export"), status.error());
         return false;
     }
@@ -370,15 +368,6 @@ void FileController::chooseAndImport()
         m_window, FilePurpose::ImportTake, tr("Import take"),
         tr("Takes (*.csv *.bvh *.txt *.fastrak *.fst);;CSV (*.csv);;BVH (*.bvh);;FASTRAK (*.txt *.fastrak *.fst)"), m_projectPath);
     if (!file.isEmpty()) importTakeFile(file);
-}
-
-void FileController::chooseAndExport(const QString& suffix)
-{
-    const QString filter = suffix == QStringLiteral(".csv") ? tr("CSV (*.csv)") : tr("BVH (*.bvh)");
-    QString file = QFileDialog::getSaveFileName(m_window, tr("Export take A"), {}, filter);
-    if (file.isEmpty()) return;
-    if (!file.endsWith(suffix, Qt::CaseInsensitive)) file += suffix;
-    exportTake(file);
 }
 
 } // namespace bunraku::app

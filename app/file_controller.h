@@ -45,7 +45,7 @@ public:
     bool openPath(const QString& path);
     /// Imports a take; `jointMap` ("head=Head,...", may be empty) applies to BVH files.
     bool importTakeFile(const QString& file, const QString& jointMap = {});
-    /// Writes take A (.csv or .bvh by extension).
+    /// Writes take A (.bvh, .glb or .csv by extension; ExportController writes A or B).
     bool exportTake(const QString& file);
     bool saveProject(const QString& file);
     bool openProject(const QString& file);
@@ -63,8 +63,6 @@ public:
     QAction* openCorpusAction() const { return m_openCorpus; }
     QAction* openDemoAction() const { return m_openDemo; }
     QAction* importAction() const { return m_import; }
-    QAction* exportCsvAction() const { return m_exportCsv; }
-    QAction* exportBvhAction() const { return m_exportBvh; }
     QAction* openProjectAction() const { return m_openProject; }
     QAction* saveProjectAction() const { return m_save; }
     QAction* saveProjectAsAction() const { return m_saveAs; }
@@ -86,7 +84,6 @@ private:
     /// Shows awaited live takes that have been published.
     void showPendingLiveTakes();
     void chooseAndImport();
-    void chooseAndExport(const QString& suffix);
 
     Document& m_document;
     QWidget* m_window;
@@ -102,8 +99,6 @@ private:
     QAction* m_openCorpus = nullptr;
     QAction* m_openDemo = nullptr;
     QAction* m_import = nullptr;
-    QAction* m_exportCsv = nullptr;
-    QAction* m_exportBvh = nullptr;
     QAction* m_openProject = nullptr;
     QAction* m_save = nullptr;
     QAction* m_saveAs = nullptr;

@@ -16,6 +16,7 @@
 #include "app/shortcuts_dialog.h"
 #include "app/side_columns.h"
 #include "app/video_export_dialog.h"
+#include "app/export_controller.h"
 #include "app/viewport_panel.h"
 
 #include "widgets/corpus_browser.h"
@@ -105,6 +106,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_document(new Do
     setDockNestingEnabled(true);
     setDockOptions(AnimatedDocks | AllowNestedDocks | AllowTabbedDocks);
     m_files = new FileController(*m_document, this);
+    m_exports = new ExportController(*m_document, this);
     m_files->setViewStateHooks([this] { return viewState(); }, [this](const QVariantMap& state) { restoreViewState(state); });
     m_playback = new PlaybackController(*m_document, this);
     m_status = new QLabel(this);
@@ -122,6 +124,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_document(new Do
     connectDocument();
 
     connect(m_files, &FileController::statusMessage, this, [this](const QString& message) { m_status->setText(message); });
+    connect(m_exports, &ExportController::statusMessage, this, [this](const QString& message) { m_status->setText(message); });
     connect(m_normalisePanel, &NormalisePanel::statusMessage, m_status, &QLabel::setText);
     connect(m_emotionPanel, &EmotionPanel::statusMessage, m_status, &QLabel::setText);
     new FocusReturn(this);
@@ -229,8 +232,8 @@ void MainWindow::createMenus()
     file->addAction(m_files->saveProjectAsAction());
     file->addSeparator();
     file->addAction(m_files->importAction());
-    file->addAction(m_files->exportCsvAction());
-    file->addAction(m_files->exportBvhAction());
+    file->addAction(m_exports->exportAction(TakeSlot::A));
+    file->addAction(m_exports->exportAction(TakeSlot::B));
     file->addAction(tr("Save &Screenshot..."), this, &MainWindow::chooseScreenshot);
     auto* report = file->addAction(tr("Export &Report..."), this, &MainWindow::chooseReport);
     report->setObjectName("exportReportAction");
@@ -325,6 +328,10 @@ void MainWindow::connectDocument()
     connect(m_design, &DesignController::prepared, this, &MainWindow::refreshBoundaries);
     connect(m_design, &DesignController::designed, this, &MainWindow::refreshBoundaries);
     connect(m_viewportPanel, &ViewportPanel::partPicked, m_graphs, &widgets::GraphPanel::selectPart);
+    connect(m_viewportPanel, &ViewportPanel::bonePicked, this, [this](int slot, const QString& joint, const QString& part) {
+        m_status->setText(part.isEmpty() ? tr("Bone %1 of take %2").arg(joint, slot == 0 ? QStringLiteral("A") : QStringLiteral("B"))
+                                         : tr("Bone %1 of take %2 (drives the %3)").arg(joint, slot == 0 ? QStringLiteral("A") : QStringLiteral("B"), part));
+    });
 }
 
 void MainWindow::refreshEntries()

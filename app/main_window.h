@@ -32,6 +32,7 @@ class DesignController;
 class DesignPanel;
 class EmotionPanel;
 class NormalisePanel;
+class ExportController;
 class FileController;
 class PlaybackController;
 class Recomputer;
@@ -46,6 +47,7 @@ public:
 
     Document& document() { return *m_document; }
     FileController& files() { return *m_files; }
+    ExportController& exports() { return *m_exports; }
     PlaybackController& playback() { return *m_playback; }
     widgets::GraphPanel* graphPanel() const { return m_graphs; }
     widgets::TimelineWidget* timeline() const { return m_timeline; }
@@ -119,6 +121,7 @@ private:
 
     Document* m_document = nullptr;
     FileController* m_files = nullptr;
+    ExportController* m_exports = nullptr;
     PlaybackController* m_playback = nullptr;
     widgets::GraphPanel* m_graphs = nullptr;
     widgets::TimelineWidget* m_timeline = nullptr;

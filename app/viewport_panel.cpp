@@ -10,8 +10,10 @@
 #include "analysis/body/body_description.h"
 
 #include <QCheckBox>
+#include <QComboBox>
 #include <QHBoxLayout>
 #include <QToolBar>
+#include <QLabel>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -40,12 +42,20 @@ render::SceneContent sceneOf(const std::vector<TakePointer>& takes, const AxisPo
     return scene;
 }
 
-/// The shown takes that can pose the puppet (an axis take, for one, cannot).
+/// The slots (A, B) whose takes are shown: those that can pose the puppet (an axis take, for
+/// one, cannot). The scene's take slots are these, in this order.
+std::vector<TakeSlot> shownSlots(const Document& document)
+{
+    std::vector<TakeSlot> shown;
+    for (TakeSlot slot : {TakeSlot::A, TakeSlot::B})
+        if (TakePointer take = document.selectedTake(slot); take && analysis::hasPuppetLayout(*take)) shown.push_back(slot);
+    return shown;
+}
+
 std::vector<TakePointer> shownTakes(const Document& document)
 {
     std::vector<TakePointer> takes;
-    for (TakeSlot slot : {TakeSlot::A, TakeSlot::B})
-        if (TakePointer take = document.selectedTake(slot); take && analysis::hasPuppetLayout(*take)) takes.push_back(take);
+    for (TakeSlot slot : shownSlots(document)) takes.push_back(document.selectedTake(slot));
     return takes;
 }
 
@@ -87,6 +97,19 @@ ViewportPanel::ViewportPanel(Document& document, QWidget* parent) : QWidget(pare
     for (auto* box : {m_puppet, m_axis, m_orbits, m_grid, m_partner}) {
         toggles->addWidget(box);
         connect(box, &QCheckBox::toggled, this, &ViewportPanel::applyVisibility);
+    }
+    for (int slot = 0; slot < 2; ++slot) {
+        auto* box = new QComboBox(this);
+        box->setObjectName(slot == 0 ? "figureA" : "figureB");
+        box->addItem(tr("Puppet"), int(render::FigureStyle::Puppet));
+        box->addItem(tr("Skeleton"), int(render::FigureStyle::Skeleton));
+        box->addItem(tr("Both"), int(render::FigureStyle::PuppetAndSkeleton));
+        box->setToolTip(slot == 0 ? tr("Figure of take A: the puppet, the performer's skeleton (takes read from BVH), or both")
+                                  : tr("Figure of take B: the puppet, the performer's skeleton (takes read from BVH), or both"));
+        connect(box, &QComboBox::currentIndexChanged, this, &ViewportPanel::applyVisibility);
+        toggles->addWidget(new QLabel(slot == 0 ? tr("A:") : tr("B:"), this));
+        toggles->addWidget(box);
+        m_figures[slot] = box;
     }
     toggles->addSeparator();
     createCameraActions(toggles);
@@ -144,6 +167,10 @@ ViewportPanel::ViewportPanel(Document& document, QWidget* parent) : QWidget(pare
     // Frame Selected fits the body part clicked (the right hand, not both hands).
     connect(m_viewport, &widgets::ViewportWidget::partPicked, this, [this](int, const QString& bodyPart) { m_selectedPart = bodyPart; });
     connect(m_viewport, &widgets::ViewportWidget::backgroundPicked, this, [this] { m_selectedPart.clear(); });
+    connect(m_viewport, &widgets::ViewportWidget::bonePicked, this, [this](int sceneSlot, const QString& joint, const QString& part) {
+        const auto shown = shownSlots(m_document); // the scene's takes are the shown slots, in order
+        emit bonePicked(sceneSlot < int(shown.size()) ? int(shown[std::size_t(sceneSlot)]) : sceneSlot, joint, part);
+    });
     applyVisibility();
     rebuildScene();
 }
@@ -160,6 +187,7 @@ void ViewportPanel::rebuildScene()
     }
     m_viewport->setScene(sceneOf(takes, axes));
     m_viewport->setTime(m_document.currentTime());
+    applyVisibility(); // take B may now be the scene's first take
     m_axes->schedule();
 }
 
@@ -172,6 +200,9 @@ void ViewportPanel::applyVisibility()
     visibility.grid = m_grid->isChecked();
     visibility.partner = m_partner->isChecked();
     visibility.orbitVisibility = render::OrbitVisibility::Always; // the box shows them, puppet or not
+    const auto shown = shownSlots(m_document);
+    for (std::size_t s = 0; s < shown.size() && s < visibility.figures.size(); ++s)
+        visibility.figures[s] = render::FigureStyle(m_figures[int(shown[s])]->currentData().toInt());
     m_viewport->setVisibility(visibility);
 }
 

@@ -1,9 +1,10 @@
 #pragma once
 /// The 3D view dock: the renderer's ViewportWidget showing take A (and B side by side), with
-/// toggles for the puppet, the motion axis, the orbits, the floor grid and the partner marker, and
-/// the camera actions (viewport_panel_camera.cpp). The motion axes are
-/// computed in the background and added when ready (for drawing only: the graphable "axis" take
-/// is the AnalysisController's); a click on a part selects its graphs.
+/// toggles for the puppet, the motion axis, the orbits, the floor grid and the partner marker, per
+/// take the figure drawn (puppet, the performer's skeleton, or both), and the camera actions
+/// (viewport_panel_camera.cpp). The motion axes are computed in the background and added when
+/// ready (for drawing only: the graphable "axis" take is the AnalysisController's); a click on a
+/// part selects its graphs.
 /// A changed take (a designed take on every step of a warp drag) is shown at the next paint:
 /// replacing the scene costs about one frame, so changes are not delayed.
 
@@ -18,6 +19,7 @@
 
 class QAction;
 class QCheckBox;
+class QComboBox;
 class QToolBar;
 
 namespace bunraku::widgets {
@@ -50,8 +52,15 @@ public:
     void setCameraState(const QVariantMap& state);
 
 signals:
-    /// A part of the puppet was clicked (its name in the take's channels when it has one).
+    /// A part of the puppet was clicked (its name in the take's channels when it has one), or a
+    /// bone of a skeleton that carries a part.
     void partPicked(const QString& part);
+    /// A bone of a skeleton was clicked (take slot: 0 = A, 1 = B; joint; the part it carries or "").
+    void bonePicked(int takeSlot, const QString& joint, const QString& part);
+
+public:
+    /// The figure shown for take A (0) or B (1): the combo box in the panel's tool row.
+    QComboBox* figureBox(int slot) const { return m_figures[slot]; }
 
 private:
     void rebuildScene();
@@ -71,6 +80,7 @@ private:
     QAction* m_frameSelected = nullptr;
     QAction* m_resetCamera = nullptr;
     QString m_selectedPart;
+    QComboBox* m_figures[2] = {nullptr, nullptr}; ///< puppet / skeleton / both, for take A and B
     quint64 m_sceneSerial = 0;
     /// The motion axis (world_T_axis per frame) of each take it was last computed for: a rebuilt
     /// scene keeps the axes of takes that did not change.

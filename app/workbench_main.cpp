@@ -2,12 +2,16 @@
 
 #include "app/build_info.h"
 #include "app/file_controller.h"
+#include "app/export_controller.h"
 #include "app/installed_files.h"
 #include "app/launch_paths.h"
 #include "app/main_window.h"
 #include "app/screenshot_run.h"
+#include "app/viewport_panel.h"
+#include "render/scene.h"
 
 #include <QApplication>
+#include <QComboBox>
 #include <QCommandLineParser>
 #include <QMessageBox>
 
@@ -32,6 +36,9 @@ void describeOptions(QCommandLineParser& parser)
         QStringLiteral("[paths...]"));
     parser.addOption({QStringLiteral("screenshot"), QStringLiteral("Save a PNG of the window once shown, then quit."), QStringLiteral("file")});
     parser.addOption({QStringLiteral("default-layout"), QStringLiteral("Ignore the saved window layout.")});
+    parser.addOption({QStringLiteral("figure"),
+                      QStringLiteral("The 3D view's figure for takes A and B: puppet, skeleton (the performer's, for takes read from BVH) or both."),
+                      QStringLiteral("figure")});
     addScreenshotOptions(parser);
 }
 
@@ -99,7 +106,23 @@ int runWorkbench(int argc, char** argv)
                      qPrintable(expectedUserGuidePath()));
 
     MainWindow window;
+    if (parser.isSet(QStringLiteral("figure"))) {
+        const QString value = parser.value(QStringLiteral("figure"));
+        const int style = value == QStringLiteral("puppet")     ? int(render::FigureStyle::Puppet)
+                          : value == QStringLiteral("skeleton") ? int(render::FigureStyle::Skeleton)
+                          : value == QStringLiteral("both")     ? int(render::FigureStyle::PuppetAndSkeleton)
+                                                                : -1;
+        if (style < 0) {
+            std::fprintf(stderr, "bunraku-workbench: --figure '%s': expected puppet, skeleton or both\n", qPrintable(value));
+            return 1;
+        }
+        for (int slot = 0; slot < 2; ++slot) {
+            QComboBox* box = window.viewportPanel()->figureBox(slot);
+            box->setCurrentIndex(box->findData(style));
+        }
+    }
     window.files().setDialogsEnabled(!batch);
+    window.exports().setDialogsEnabled(!batch);
     if (!batch && !parser.isSet(QStringLiteral("default-layout"))) window.restoreSavedLayout();
 
     const QString error = openLaunchPaths(window.files(), window.document(), parser.positionalArguments());

@@ -3,6 +3,7 @@
 #include "analysis/core/puppet_layout.h"
 #include "render/orbit_geometry.h"
 #include "render/puppet_geometry.h"
+#include "render/skeleton_geometry.h"
 
 #include <QOpenGLContext>
 #include <QOpenGLFramebufferObject>
@@ -19,6 +20,9 @@ namespace bunraku::render {
 namespace {
 
 constexpr int kIdsPerSlot = 32; // part IDs: 1 + partIndex + 32 * slot, in the red channel
+constexpr int kSkeletonId = kIdsPerSlot - 1; // partIndex 31 (no body part has it): a bone
+/// Height (cm) a puppet is framed for (framingCamera's distances were chosen for it).
+constexpr float kPuppetFramedHeight = 90.0f;
 const glm::vec3 kBackground(0.94f, 0.95f, 0.97f);
 const glm::vec3 kPartnerColour(0.42f, 0.48f, 0.58f);
 
@@ -49,6 +53,25 @@ struct Renderer::Slot {
     float orbitRadius = 0.4f;                     ///< cm, the tubes' (orbitTubeRadius)
     Eigen::Index frame = 0;
     std::vector<glm::mat4> take_T_part; ///< at `frame`, one per body part
+    std::shared_ptr<SkeletonFigure> skeleton; ///< the performer's skeleton, when the take has one
+    std::vector<glm::mat4> take_T_joint;  ///< at `frame`, one per joint
+    float puppetLowest = 0.0f, puppetHighest = 0.0f;     ///< cm, at frame 0
+    float skeletonLowest = 0.0f, skeletonHighest = 0.0f; ///< cm, at frame 0
+};
+
+struct Renderer::SkeletonFigure {
+    std::shared_ptr<const analysis::Skeleton> skeleton;
+    std::vector<Eigen::Vector3d> bones; ///< the static translations the meshes were built for
+    std::vector<int> movingJoints;
+    std::vector<GpuMesh> meshes;        ///< one per Skeleton::joints, in the joint frame
+    std::vector<std::string> jointNames;
+    std::vector<std::string> jointParts; ///< the puppet part each joint carries, or ""
+    float jointRadius = 0.0f;
+
+    void release(QOpenGLExtraFunctions& gl)
+    {
+        for (GpuMesh& mesh : meshes) mesh.release(gl);
+    }
 };
 
 Renderer::Renderer() = default;
@@ -94,8 +117,10 @@ void Renderer::releaseSceneBuffers()
 {
     for (GpuMesh& mesh : m_partMeshes) mesh.release(*m_gl);
     m_partMeshes.clear();
-    for (Slot& slot : m_slots)
+    for (Slot& slot : m_slots) {
         for (GpuMesh& orbit : slot.orbits) orbit.release(*m_gl);
+        if (slot.skeleton) slot.skeleton->release(*m_gl);
+    }
     m_slots.clear();
     m_grid.release(*m_gl);
 }
@@ -118,6 +143,9 @@ analysis::Status Renderer::setScene(const SceneContent& scene, const LayoutOptio
     if (m_gl == nullptr)
         return analysis::makeError(analysis::ErrorCode::InvalidArgument, "the renderer is not initialised");
     if (auto status = validateScene(scene); !status.ok()) return status;
+    std::vector<std::shared_ptr<SkeletonFigure>> reusable;
+    for (Slot& slot : m_slots)
+        if (slot.skeleton) reusable.push_back(std::move(slot.skeleton));
     releaseSceneBuffers();
     m_layout = layout;
     m_body = scene.body;
@@ -131,7 +159,6 @@ analysis::Status Renderer::setScene(const SceneContent& scene, const LayoutOptio
     for (std::size_t i = 0; i < meshes.size(); ++i)
         for (const Vertex& vertex : meshes[i].vertices) m_partBounds[i].add(vertex.position);
 
-    float lowest = std::numeric_limits<float>::max();
     for (std::size_t s = 0; s < scene.takes.size(); ++s) {
         const TakeSlot& source = scene.takes[s];
         Slot slot;
@@ -162,28 +189,77 @@ analysis::Status Renderer::setScene(const SceneContent& scene, const LayoutOptio
             orbit.upload(*m_gl, orbitTubeMesh(paths[k], slot.orbitRadius, orbitColour(int(s), int(k))));
             slot.orbits.push_back(std::move(orbit));
         }
-        // The floor: under the lowest vertex of the puppet at the first frame.
-        const auto poses = analysis::worldPartPoses(m_body, slot.binding, slot.take, 0);
-        for (std::size_t p = 0; p < meshes.size(); ++p) {
-            const glm::mat4 world_T_part = toMatrix(poses[p]);
-            for (const Vertex& vertex : meshes[p].vertices)
-                lowest = std::min(lowest, (world_T_part * glm::vec4(vertex.position, 1.0f)).z);
+        // The floor: under the lowest vertex of the figures at the first frame.
+        const auto extent = [](const std::vector<Mesh>& figure, const std::vector<glm::mat4>& world_T_mesh, float& low, float& high) {
+            low = std::numeric_limits<float>::max();
+            high = std::numeric_limits<float>::lowest();
+            for (std::size_t p = 0; p < figure.size() && p < world_T_mesh.size(); ++p)
+                for (const Vertex& vertex : figure[p].vertices) {
+                    const float z = (world_T_mesh[p] * glm::vec4(vertex.position, 1.0f)).z;
+                    low = std::min(low, z);
+                    high = std::max(high, z);
+                }
+            if (low > high) low = high = 0.0f;
+        };
+        std::vector<glm::mat4> partPoses;
+        for (const auto& pose : analysis::worldPartPoses(m_body, slot.binding, slot.take, 0)) partPoses.push_back(toMatrix(pose));
+        extent(meshes, partPoses, slot.puppetLowest, slot.puppetHighest);
+        if (slot.take.skeleton) {
+            slot.skeleton = skeletonFigure(*slot.take.skeleton, reusable);
+            // Joint spheres are the figure's extremes (bones are thinner).
+            slot.skeletonLowest = std::numeric_limits<float>::max();
+            slot.skeletonHighest = std::numeric_limits<float>::lowest();
+            for (const auto& pose : slot.take.skeleton->worldPoses(0)) {
+                slot.skeletonLowest = std::min(slot.skeletonLowest, float(pose.translation.z()) - slot.skeleton->jointRadius);
+                slot.skeletonHighest = std::max(slot.skeletonHighest, float(pose.translation.z()) + slot.skeleton->jointRadius);
+            }
         }
         m_slots.push_back(std::move(slot));
     }
-    m_floorHeight = lowest == std::numeric_limits<float>::max() ? 0.0f : lowest - 1.0f;
+    for (auto& unused : reusable)
+        if (unused && unused.use_count() == 1) unused->release(*m_gl);
     m_grid.upload(*m_gl, gridMesh(m_layout.gridHalfExtent, m_layout.gridSpacing));
     setFrame(0);
     return analysis::okStatus();
+}
+
+std::shared_ptr<Renderer::SkeletonFigure> Renderer::skeletonFigure(const analysis::SkeletalMotion& motion,
+                                                                   std::vector<std::shared_ptr<SkeletonFigure>>& reusable)
+{
+    for (const auto& figure : reusable)
+        if (figure->skeleton == motion.skeleton && figure->movingJoints == motion.movingJoints && figure->bones == motion.staticTranslations)
+            return figure;
+    auto figure = std::make_shared<SkeletonFigure>();
+    figure->skeleton = motion.skeleton;
+    figure->bones = motion.staticTranslations;
+    figure->movingJoints = motion.movingJoints;
+    figure->jointRadius = skeletonJointRadius(motion);
+    const std::vector<Mesh> meshes = buildSkeletonMeshes(motion);
+    figure->meshes.resize(meshes.size());
+    for (std::size_t j = 0; j < meshes.size(); ++j) figure->meshes[j].upload(*m_gl, meshes[j]);
+    for (std::size_t j = 0; j < motion.skeleton->joints.size(); ++j) {
+        figure->jointNames.push_back(motion.skeleton->joints[j].name);
+        figure->jointParts.push_back(jointPart(*motion.skeleton, int(j)));
+    }
+    reusable.push_back(figure);
+    return figure;
+}
+
+void Renderer::updatePoses(Slot& slot) const
+{
+    const auto poses = analysis::worldPartPoses(m_body, slot.binding, slot.take, slot.frame);
+    slot.take_T_part.resize(poses.size());
+    for (std::size_t p = 0; p < poses.size(); ++p) slot.take_T_part[p] = toMatrix(poses[p]);
+    slot.take_T_joint.clear();
+    if (slot.take.skeleton)
+        for (const auto& pose : slot.take.skeleton->worldPoses(slot.frame)) slot.take_T_joint.push_back(toMatrix(pose));
 }
 
 void Renderer::setFrame(Eigen::Index frame)
 {
     for (Slot& slot : m_slots) {
         slot.frame = std::clamp<Eigen::Index>(frame, 0, slot.take.frameCount() - 1);
-        const auto poses = analysis::worldPartPoses(m_body, slot.binding, slot.take, slot.frame);
-        slot.take_T_part.resize(poses.size());
-        for (std::size_t p = 0; p < poses.size(); ++p) slot.take_T_part[p] = toMatrix(poses[p]);
+        updatePoses(slot);
     }
 }
 
@@ -191,9 +267,7 @@ void Renderer::setTime(double seconds)
 {
     for (Slot& slot : m_slots) {
         slot.frame = frameAtTime(slot.take, seconds);
-        const auto poses = analysis::worldPartPoses(m_body, slot.binding, slot.take, slot.frame);
-        slot.take_T_part.resize(poses.size());
-        for (std::size_t p = 0; p < poses.size(); ++p) slot.take_T_part[p] = toMatrix(poses[p]);
+        updatePoses(slot);
     }
 }
 
@@ -206,7 +280,9 @@ Eigen::Index Renderer::frame(int takeSlot) const { return m_slots.at(std::size_t
 glm::mat4 Renderer::takeRoot(int takeSlot, const Camera& camera) const
 {
     const Slot& slot = m_slots.at(std::size_t(takeSlot));
-    return slotRoot(slot.centre, takeSlot, int(m_slots.size()), camera, m_layout);
+    LayoutOptions layout = m_layout;
+    layout.separation *= framedHeight() / kPuppetFramedHeight;
+    return slotRoot(slot.centre, takeSlot, int(m_slots.size()), camera, layout);
 }
 
 std::vector<glm::mat4> Renderer::displayedPartTransforms(int takeSlot, const Camera& camera) const
@@ -235,13 +311,55 @@ std::vector<glm::vec3> Renderer::displayedSensorPositions(int takeSlot, Eigen::I
     return result;
 }
 
+std::vector<glm::mat4> Renderer::displayedJointTransforms(int takeSlot, const Camera& camera) const
+{
+    const glm::mat4 root = takeRoot(takeSlot, camera);
+    std::vector<glm::mat4> result;
+    for (const glm::mat4& take_T_joint : m_slots.at(std::size_t(takeSlot)).take_T_joint) result.push_back(root * take_T_joint);
+    return result;
+}
+
+bool Renderer::skeletonDrawn(int takeSlot) const
+{
+    const Slot& slot = m_slots.at(std::size_t(takeSlot));
+    return m_visibility.puppet && slot.take.skeleton && m_visibility.figures[std::size_t(takeSlot)] != FigureStyle::Puppet;
+}
+
+bool Renderer::puppetDrawn(int takeSlot) const
+{
+    return m_visibility.puppet && (!skeletonDrawn(takeSlot) || m_visibility.figures[std::size_t(takeSlot)] == FigureStyle::PuppetAndSkeleton);
+}
+
+float Renderer::floorHeight() const
+{
+    float lowest = std::numeric_limits<float>::max();
+    for (std::size_t s = 0; s < m_slots.size(); ++s) {
+        const bool skeleton = skeletonDrawn(int(s));
+        if (!skeleton || puppetDrawn(int(s))) lowest = std::min(lowest, m_slots[s].puppetLowest);
+        if (skeleton) lowest = std::min(lowest, m_slots[s].skeletonLowest);
+    }
+    return lowest == std::numeric_limits<float>::max() ? 0.0f : lowest - 1.0f;
+}
+
+float Renderer::framedHeight() const
+{
+    // A drawn skeleton is framed by its height (a puppet by the height the distances were chosen for).
+    const float floor = floorHeight();
+    float height = kPuppetFramedHeight;
+    for (std::size_t s = 0; s < m_slots.size(); ++s)
+        if (skeletonDrawn(int(s))) height = std::max(height, m_slots[s].skeletonHighest - floor);
+    return height;
+}
+
 Camera Renderer::framingCamera() const
 {
     Camera camera;
     camera.angleDeg = 340.0f;
     camera.elevationDeg = 15.0f;
-    camera.target = {0.0f, 0.0f, m_floorHeight + 45.0f};
-    camera.distance = m_slots.size() > 1 ? 300.0f : 230.0f;
+    const float floor = floorHeight();
+    const float height = framedHeight();
+    camera.target = {0.0f, 0.0f, floor + 0.5f * height};
+    camera.distance = (m_slots.size() > 1 ? 300.0f : 230.0f) * height / kPuppetFramedHeight;
     return camera;
 }
 
@@ -264,7 +382,7 @@ Bounds Renderer::displayedBounds(const Camera& camera, const BoundsQuery& query)
         const auto wanted = [&](const std::string& name, const std::string& drivenBy) {
             return query.part.empty() || name == query.part || drivenBy == query.part;
         };
-        if (m_visibility.puppet) {
+        if (puppetDrawn(int(s))) {
             for (const Eigen::Index f : frames) {
                 const auto poses = analysis::worldPartPoses(m_body, slot.binding, slot.take, f);
                 for (std::size_t p = 0; p < poses.size() && p < m_partBounds.size(); ++p) {
@@ -275,6 +393,22 @@ Bounds Renderer::displayedBounds(const Camera& camera, const BoundsQuery& query)
                         bounds.add(glm::vec3(world_T_part * glm::vec4((corner & 1) ? box.upper.x : box.lower.x,
                                                                       (corner & 2) ? box.upper.y : box.lower.y,
                                                                       (corner & 4) ? box.upper.z : box.lower.z, 1.0f)));
+                }
+            }
+        }
+        // The skeleton: every joint (a sphere of the joint radius; the bones run between them).
+        if (skeletonDrawn(int(s)) && slot.skeleton) {
+            const float radius = slot.skeleton->jointRadius;
+            for (const Eigen::Index f : frames) {
+                const auto poses = slot.take.skeleton->worldPoses(f);
+                for (std::size_t j = 0; j < poses.size(); ++j) {
+                    const std::string& part = j < slot.skeleton->jointParts.size() ? slot.skeleton->jointParts[j] : std::string();
+                    const std::string& name = j < slot.skeleton->jointNames.size() ? slot.skeleton->jointNames[j] : std::string();
+                    if (!wanted(name, part)) continue;
+                    const glm::vec3 joint(root * glm::vec4(float(poses[j].translation.x()), float(poses[j].translation.y()),
+                                                           float(poses[j].translation.z()), 1.0f));
+                    bounds.add(joint - glm::vec3(radius));
+                    bounds.add(joint + glm::vec3(radius));
                 }
             }
         }
@@ -290,7 +424,7 @@ Bounds Renderer::displayedBounds(const Camera& camera, const BoundsQuery& query)
             // partnerMesh: a disc of radius 14 cm on the floor under a cone 46 cm high.
             const glm::vec3 partner = slot.centre + glm::vec3(m_layout.partnerDistance, 0.0f, 0.0f);
             for (const glm::vec3 corner : {glm::vec3(-14.0f, -14.0f, 0.0f), glm::vec3(14.0f, 14.0f, 46.0f)})
-                bounds.add(glm::vec3(root * glm::vec4(partner.x + corner.x, partner.y + corner.y, m_floorHeight + corner.z, 1.0f)));
+                bounds.add(glm::vec3(root * glm::vec4(partner.x + corner.x, partner.y + corner.y, floorHeight() + corner.z, 1.0f)));
         }
         if (m_visibility.axis && !slot.world_T_axis.empty()) {
             for (const Eigen::Index f : frames) {
@@ -341,7 +475,7 @@ void Renderer::drawScene(const Camera& camera, QSize size, bool partIds)
     gl.glUniform3f(m_uniforms.lightPosition, eye.x, eye.y, eye.z);
 
     if (m_visibility.grid && !partIds && !m_slots.empty()) {
-        setModel(glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, m_floorHeight)));
+        setModel(glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, floorHeight())));
         setColour(glm::vec3(1.0f), true, false);
         m_grid.draw(gl);
     }
@@ -349,7 +483,7 @@ void Renderer::drawScene(const Camera& camera, QSize size, bool partIds)
     for (std::size_t s = 0; s < m_slots.size(); ++s) {
         const Slot& slot = m_slots[s];
         const glm::mat4 root = takeRoot(int(s), camera);
-        if (m_visibility.puppet) {
+        if (puppetDrawn(int(s))) {
             for (std::size_t p = 0; p < m_partMeshes.size() && p < slot.take_T_part.size(); ++p) {
                 setModel(root * slot.take_T_part[p]);
                 if (partIds)
@@ -359,10 +493,23 @@ void Renderer::drawScene(const Camera& camera, QSize size, bool partIds)
                 m_partMeshes[p].draw(gl);
             }
         }
+        if (skeletonDrawn(int(s))) {
+            for (std::size_t j = 0; j < slot.skeleton->meshes.size() && j < slot.take_T_joint.size(); ++j) {
+                if (slot.skeleton->meshes[j].empty()) continue; // End Sites
+                setModel(root * slot.take_T_joint[j]);
+                if (partIds) {
+                    const int id = int(j) + 1;
+                    setColour(glm::vec3(float(kSkeletonId + 1 + kIdsPerSlot * int(s)), float(id % 256), float(id / 256)) / 255.0f, false, false);
+                } else {
+                    setColour(glm::vec3(1.0f), true, true);
+                }
+                slot.skeleton->meshes[j].draw(gl);
+            }
+        }
         if (partIds) continue;
         if (m_visibility.partner) {
             const glm::vec3 partner = slot.centre + glm::vec3(m_layout.partnerDistance, 0.0f, 0.0f);
-            setModel(root * glm::translate(glm::mat4(1.0f), glm::vec3(partner.x, partner.y, m_floorHeight)));
+            setModel(root * glm::translate(glm::mat4(1.0f), glm::vec3(partner.x, partner.y, floorHeight())));
             setColour(glm::vec3(1.0f), true, true);
             m_partner.draw(gl);
         }
@@ -460,7 +607,18 @@ std::optional<PickResult> Renderer::decodePartId(QRgb pixel) const
     PickResult result;
     result.takeSlot = (id - 1) / kIdsPerSlot;
     result.partIndex = (id - 1) % kIdsPerSlot;
-    if (result.takeSlot >= int(m_slots.size()) || result.partIndex >= int(m_partNames.size())) return std::nullopt;
+    if (result.takeSlot >= int(m_slots.size())) return std::nullopt;
+    if (result.partIndex == kSkeletonId) {
+        const Slot& slot = m_slots[std::size_t(result.takeSlot)];
+        const int joint = qGreen(pixel) + 256 * qBlue(pixel) - 1;
+        if (!slot.skeleton || joint < 0 || joint >= int(slot.skeleton->jointNames.size())) return std::nullopt;
+        result.partIndex = -1;
+        result.joint = joint;
+        result.jointName = slot.skeleton->jointNames[std::size_t(joint)];
+        result.partName = slot.skeleton->jointParts[std::size_t(joint)];
+        return result;
+    }
+    if (result.partIndex >= int(m_partNames.size())) return std::nullopt;
     result.partName = m_partNames[std::size_t(result.partIndex)];
     return result;
 }

@@ -33,8 +33,11 @@ namespace bunraku::render {
 /// What lies under a screen point.
 struct PickResult {
     int takeSlot = 0;  ///< 0 = the first take, 1 = the second
-    int partIndex = 0; ///< index into BodyDescription::parts
+    int partIndex = 0; ///< index into BodyDescription::parts; -1 for a bone of the skeleton
+    /// The body part's name; for a bone, the puppet part its joint carries ("hand"), or "".
     std::string partName;
+    int joint = -1;    ///< a bone's joint (index into Skeleton::joints), -1 for the puppet
+    std::string jointName;
 };
 
 class Renderer {
@@ -73,13 +76,15 @@ public:
     /// The body part under `pixel` (from the top-left), by an ID pass into a private
     /// framebuffer; nullopt over the background or when the puppet is hidden.
     std::optional<PickResult> pick(const Camera& camera, QSize size, QPoint pixel);
-    /// The ID pass as an image: red = 1 + partIndex + 32 * takeSlot, 0 for the background.
+    /// The ID pass as an image: red = 1 + partIndex + 32 * takeSlot, 0 for the background; a
+    /// bone of the skeleton has red = 32 + 32 * takeSlot and green + 256 * blue = 1 + its joint.
     QImage partIdImage(const Camera& camera, QSize size);
     /// Decodes one pixel of partIdImage.
     std::optional<PickResult> decodePartId(QRgb pixel) const;
 
     // CPU-side placement (what render() uses), for picking by the caller, tests and overlays.
-    /// world_T_take of a slot under this camera (slotRoot).
+    /// world_T_take of a slot under this camera (slotRoot; the separation of two takes grows
+    /// with the figures' height when a skeleton taller than the puppet is drawn).
     glm::mat4 takeRoot(int takeSlot, const Camera& camera) const;
     /// Displayed world_T_part of every body part at the current frame (take root included).
     std::vector<glm::mat4> displayedPartTransforms(int takeSlot, const Camera& camera) const;
@@ -87,10 +92,18 @@ public:
     std::optional<glm::mat4> displayedAxisTransform(int takeSlot, const Camera& camera) const;
     /// Displayed sensor positions (cm) at `frame`, one per 6-DOF part of the take.
     std::vector<glm::vec3> displayedSensorPositions(int takeSlot, Eigen::Index frame, const Camera& camera) const;
-    /// Height (cm) of the floor grid: just under the lowest point of the puppets at frame 0.
-    float floorHeight() const { return m_floorHeight; }
+    /// Displayed world_T_joint of every skeleton joint at the current frame (take root included);
+    /// empty when the take has no skeleton.
+    std::vector<glm::mat4> displayedJointTransforms(int takeSlot, const Camera& camera) const;
+    /// Whether take `takeSlot`'s puppet / skeleton is drawn under the current visibility.
+    bool puppetDrawn(int takeSlot) const;
+    bool skeletonDrawn(int takeSlot) const;
+    /// Height (cm) of the floor grid: just under the lowest point of the figures drawn (the
+    /// puppets, the skeletons) at frame 0.
+    float floorHeight() const;
     /// A camera that frames the scene: angle 340 deg (the puppet's left front), elevation 15 deg,
-    /// looking at the puppets' middle height, far enough back for one or two puppets.
+    /// looking at the figures' middle height, far enough back for one or two puppets, or for
+    /// skeletons of any height (sized from the take).
     Camera framingCamera() const;
     /// The box (world, cm, under `camera`'s side-by-side placement) around what is drawn now:
     /// the puppets' parts, the orbits (or the sensors when the puppet is hidden), the partner
@@ -100,6 +113,14 @@ public:
 
 private:
     struct Slot;
+    struct SkeletonFigure;
+    /// The uploaded skeleton of a take: reused when the next scene shows the same skeleton with
+    /// the same bones (a scene is replaced on every step of a drag).
+    std::shared_ptr<SkeletonFigure> skeletonFigure(const analysis::SkeletalMotion& motion,
+                                                   std::vector<std::shared_ptr<SkeletonFigure>>& reusable);
+    void updatePoses(Slot& slot) const;
+    /// Height (cm) the view is framed for: a puppet's, or the tallest skeleton drawn.
+    float framedHeight() const;
     void drawScene(const Camera& camera, QSize size, bool partIds);
     void setModel(const glm::mat4& model);
     void setColour(const glm::vec3& colour, bool vertexColour, bool lit);
@@ -124,7 +145,6 @@ private:
     GpuMesh m_box;    ///< unit cube for the axis bars
     GpuMesh m_sphere; ///< unit sphere for the orbits' moving points
     GpuMesh m_partner;
-    float m_floorHeight = 0.0f;
     SceneVisibility m_visibility;
     LayoutOptions m_layout;
 };

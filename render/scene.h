@@ -12,6 +12,7 @@
 
 #include <glm/glm.hpp>
 
+#include <array>
 #include <map>
 #include <string>
 #include <string_view>
@@ -40,6 +41,10 @@ struct SceneContent {
     std::vector<TakeSlot> takes;
 };
 
+/// How a take's figure is drawn: the puppet, the performer's skeleton (a take that carries one,
+/// analysis/core/skeleton.h; a take without one shows its puppet), or both overlaid.
+enum class FigureStyle { Puppet, Skeleton, PuppetAndSkeleton };
+
 enum class OrbitVisibility {
     WhenPuppetHidden, ///< as in the thesis: orbits replace the puppet
     Always,
@@ -53,6 +58,8 @@ struct SceneVisibility {
     bool grid = true;
     bool partner = true;
     OrbitVisibility orbitVisibility = OrbitVisibility::WhenPuppetHidden;
+    /// Per take slot, what `puppet` (the figure) shows.
+    std::array<FigureStyle, kMaxTakeSlots> figures{FigureStyle::Puppet, FigureStyle::Puppet};
 
     /// True when orbits are drawn given the puppet's visibility.
     bool orbitsDrawn() const { return orbits && (orbitVisibility == OrbitVisibility::Always || !puppet); }

@@ -77,6 +77,7 @@ void ViewportWidget::setScene(render::SceneContent scene, const render::LayoutOp
 void ViewportWidget::setVisibility(const render::SceneVisibility& visibility)
 {
     m_visibility = visibility;
+    m_reframe = true; // a figure shown or hidden may change what the framing camera fits
     invalidate();
 }
 
@@ -119,19 +120,19 @@ QSize ViewportWidget::pixelSize() const
 void ViewportWidget::prepareFrame()
 {
     render::Renderer& renderer = m_offscreen->renderer();
-    bool uploaded = false;
     if (m_scene && !m_sceneUploaded) {
         const auto status = m_offscreen->setScene(*m_scene, m_layout);
         m_sceneUploaded = true;
         m_scene.reset(); // the renderer keeps what it needs; the context never changes
         if (!status.ok()) emit renderError(QString::fromStdString(status.error().message));
-        else uploaded = true;
+        else m_reframe = true;
     }
     if (renderer.hasScene()) {
         renderer.setVisibility(m_visibility);
         if (m_time) renderer.setTime(*m_time);
         else renderer.setFrame(m_frame);
-        if (uploaded) adaptCameraToScene();
+        if (m_reframe) adaptCameraToScene();
+        m_reframe = false;
     }
 }
 
@@ -208,8 +209,14 @@ void ViewportWidget::mouseReleaseEvent(QMouseEvent* event)
     const qreal ratio = devicePixelRatioF();
     const QPoint pixel(int(event->position().x() * ratio), int(event->position().y() * ratio));
     const auto picked = m_offscreen->pick(m_camera, pixelSize(), pixel);
-    if (picked) emit partPicked(picked->takeSlot, QString::fromStdString(picked->partName));
-    else emit backgroundPicked();
+    if (!picked) {
+        emit backgroundPicked();
+        return;
+    }
+    if (picked->joint >= 0)
+        emit bonePicked(picked->takeSlot, QString::fromStdString(picked->jointName), QString::fromStdString(picked->partName));
+    // A bone selects the graphs of the puppet part it carries, when it carries one.
+    if (!picked->partName.empty()) emit partPicked(picked->takeSlot, QString::fromStdString(picked->partName));
 }
 
 void ViewportWidget::wheelEvent(QWheelEvent* event)

@@ -99,6 +99,9 @@ public slots:
 signals:
     /// A click (no drag) on a body part of take `takeSlot` (0 = left/first, 1 = right/second).
     void partPicked(int takeSlot, const QString& partName);
+    /// A click on a bone of take `takeSlot`'s skeleton: its joint, and the puppet part the joint
+    /// carries ("" when none; partPicked follows when there is one).
+    void bonePicked(int takeSlot, const QString& jointName, const QString& partName);
     /// A click on the background.
     void backgroundPicked();
     void cameraChanged();
@@ -147,6 +150,7 @@ private:
     render::Camera m_camera;
     bool m_cameraChosen = false; ///< set by setCamera or the mouse: scenes no longer reset it
     std::optional<render::Bounds> m_framedFor; ///< the box the camera fits; none: adopt the next scene's
+    bool m_reframe = false; ///< a new scene, or figures shown or hidden: adapt the camera at the next paint
     int m_frame = 0;
     std::optional<double> m_time; ///< when set, wins over m_frame
     QPoint m_pressPosition;

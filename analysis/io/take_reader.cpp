@@ -1,6 +1,7 @@
 #include "analysis/io/take_reader.h"
 
 #include "analysis/io/bvh_export.h"
+#include "analysis/io/bvh_skeleton_export.h"
 
 #include <algorithm>
 #include <cctype>
@@ -37,7 +38,7 @@ Status writeTakeFile(const Take& take, const std::filesystem::path& file)
 {
     switch (takeFileFormat(file)) {
     case TakeFileFormat::Csv: return writeTakeCsv(take, file);
-    case TakeFileFormat::Bvh: return writeTakeBvh(take, file);
+    case TakeFileFormat::Bvh: return take.skeleton ? writeSkeletonBvh(take, file) : writeTakeBvh(take, file);
     default: break;
     }
     return makeError(ErrorCode::Unsupported, file.string() + ": cannot write '" + file.extension().string() + "' (expected .csv or .bvh)");

@@ -26,7 +26,8 @@ struct ImportOptions {
 
 /// Reads a take of any supported format; Unsupported error for unknown extensions.
 Result<Take> readTakeFile(const std::filesystem::path& file, const ImportOptions& options = {});
-/// Writes a take as .csv or .bvh by extension (atomic).
+/// Writes a take as .csv or .bvh by extension (atomic). A take with a skeleton goes to BVH on
+/// that skeleton (bvh_skeleton_export.h), one without in the part layout (bvh_export.h).
 Status writeTakeFile(const Take& take, const std::filesystem::path& file);
 
 } // namespace bunraku::analysis::io

@@ -1,5 +1,6 @@
 // Subcommands: axis, phase, gains, design, experiment design (thesis chapter 5).
 #include "app/cli/commands.h"
+#include "app/cli/take_output.h"
 
 #include "analysis/axis/axis_channels.h"
 #include "analysis/axis/inertia_axis.h"
@@ -249,6 +250,7 @@ struct DesignCommandArguments {
 
 void runDesign(const DesignCommandArguments& arguments)
 {
+    requireTakeOutput(arguments.output);
     const an::Take take = unwrap(an::io::readTakeFile(arguments.take));
     const an::AxisModel model = axisModel(arguments.axis);
     const an::DesignBasis basis = unwrap(an::prepareDesign(model, take, axisOptions(arguments.axis)));
@@ -265,7 +267,7 @@ void runDesign(const DesignCommandArguments& arguments)
                            arguments.take + " ends at " + std::to_string(take.frameCount() - 1));
     }
     const an::DesignedMotion designed = an::designMotion(basis, warp, gains);
-    unwrap(an::io::writeTakeFile(designed.take, arguments.output));
+    writeTakeOutput(designed.take, arguments.output);
     if (!arguments.axisOutput.empty()) {
         an::MotionAxis axis;
         axis.world_T_axis = designed.world_T_axis;
@@ -403,7 +405,7 @@ void addMotionAxisCommands(CommandSet& commands)
         command->add_option("TAKE", arguments->take, "Functional take")->required()->check(CLI::ExistingFile);
         command->add_option("--warp", arguments->warp, "Warp curve CSV (default: identity)")->check(CLI::ExistingFile);
         command->add_option("--gains", arguments->gains, "Gains JSON (default: no scaling)")->check(CLI::ExistingFile);
-        command->add_option("-o,--output", arguments->output, "Designed take (.csv or .bvh)")->required()->type_name("FILE");
+        command->add_option("-o,--output", arguments->output, "Designed take (.bvh, .glb or .csv)")->required()->type_name("FILE");
         command->add_option("--axis-output", arguments->axisOutput, "Also write the designed axis take (CSV)");
         command->add_flag("--json", arguments->json, "Print a machine-readable summary");
         addAxisOptions(command, arguments->axis);

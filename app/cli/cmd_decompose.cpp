@@ -1,5 +1,6 @@
 // Subcommands: decompose, emotion, experiment km2o.
 #include "app/cli/commands.h"
+#include "app/cli/take_output.h"
 
 #include "analysis/decompose/arma.h"
 #include "analysis/decompose/emotion_weight.h"
@@ -320,6 +321,7 @@ struct EmotionArgs {
 
 void runEmotion(const EmotionArgs& args)
 {
+    requireTakeOutput(args.output);
     const Corpus corpus = loadCorpus(args.corpus);
     DecomposeSettings settings;
     settings.method = args.method == "km2o" ? Method::Km2o : Method::LeastSquares;
@@ -328,7 +330,7 @@ void runEmotion(const EmotionArgs& args)
     const Decomposition& d = outcome.components;
     const Take take =
         aboutCorpus(args.corpus.path, [&] { return unwrap(weightEmotion(d, args.function, args.emotion, args.weight)); });
-    unwrap(io::writeTakeCsv(take, args.output));
+    writeTakeOutput(take, args.output);
     std::cout << "wrote " << args.output << ": " << args.function << "/" << args.emotion << " with emotion weight a = " << args.weight
               << " (" << take.frameCount() << " frames)\n";
 }
@@ -435,7 +437,7 @@ void addDecompositionCommands(CommandSet& commands)
     emo->add_option("--weight", emotionArgs->weight, "Emotion weight a in [0, 3] (1 = as performed)")->required();
     emo->add_option("--method", emotionArgs->method, "km2o (default, M chosen by P unless --M) or ls")->check(CLI::IsMember({"ls", "km2o"}));
     emo->add_option("--M", emotionArgs->correlationLength, "KM2O correlation length");
-    emo->add_option("-o,--output", emotionArgs->output, "Output take CSV")->required();
+    emo->add_option("-o,--output", emotionArgs->output, "Output take (.bvh, .glb or .csv)")->required();
     emo->add_flag("--pad", emotionArgs->corpus.pad, "Pad takes to the longest by repeating the last frame");
     emo->callback([emotionArgs] { runEmotion(*emotionArgs); });
 

@@ -1,5 +1,6 @@
 // Subcommands: info, convert, preprocess.
 #include "app/cli/commands.h"
+#include "app/cli/take_output.h"
 
 #include "analysis/core/puppet_layout.h"
 #include "analysis/io/atomic_file.h"
@@ -10,6 +11,7 @@
 #include "analysis/synth/demo_corpus_io.h"
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -244,11 +246,10 @@ void runConvert(const ConvertArguments& arguments)
         unwrap(io::writeCorpus(loaded.corpus, output));
         written = "corpus";
     } else {
-        const auto format = io::takeFileFormat(output);
-        if (format != io::TakeFileFormat::Csv && format != io::TakeFileFormat::Bvh)
-            throw CliError(output.string() + ": unknown output type, expected a .csv or .bvh file name");
-        unwrap(io::writeTakeFile(loaded.corpus.takes.front(), output));
-        written = format == io::TakeFileFormat::Csv ? "csv" : "bvh";
+        requireTakeOutput(output.string());
+        writeTakeOutput(loaded.corpus.takes.front(), output.string());
+        written = output.extension().string().substr(1);
+        std::transform(written.begin(), written.end(), written.begin(), [](unsigned char c) { return char(std::tolower(c)); });
     }
     const Take& first = loaded.corpus.takes.front();
     if (arguments.json) {
@@ -414,10 +415,10 @@ void addIoCommands(CommandSet& commands)
     {
         auto arguments = std::make_shared<ConvertArguments>();
         CLI::App* convert = commands.root.add_subcommand(
-            "convert", "Convert a take file (.csv, .bvh, .txt/.fastrak) to .csv or .bvh by the output's extension, or a corpus "
+            "convert", "Convert a take file (.csv, .bvh, .txt/.fastrak) to .csv, .bvh (on the take's own skeleton when it has one) or .glb (glTF binary) by the output's extension, or a corpus "
                        "folder to a corpus folder");
         convert->add_option("IN", arguments->input, "Input take file or corpus folder")->required();
-        convert->add_option("-o,--output", arguments->output, "Output file (.csv or .bvh) or corpus folder")->required();
+        convert->add_option("-o,--output", arguments->output, "Output file (.bvh, .glb or .csv) or corpus folder")->required();
         convert->add_flag("--json", arguments->json, "Print a machine-readable summary");
         addImportOptions(convert, arguments->import);
         convert->callback([arguments] { runConvert(*arguments); });

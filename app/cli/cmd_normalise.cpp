@@ -1,5 +1,6 @@
 // Subcommands: normalise, experiment noise, experiment truth (thesis chapter 3).
 #include "app/cli/commands.h"
+#include "app/cli/take_output.h"
 
 #include "analysis/io/corpus_io.h"
 #include "analysis/io/take_csv.h"
@@ -197,6 +198,18 @@ void runNormalise(const NormaliseArguments& arguments)
     const std::vector<an::TakeNormalisation>& normalised = result.normalisations;
     const an::VarianceTable& table = result.variance;
 
+    if (isTakeOutput(arguments.output)) {
+        // One take file: the reference the cell was normalised to (the average take with
+        // --reference average, thesis 3.7), in any format a take is exported in.
+        writeTakeOutput(reference, arguments.output);
+        if (arguments.json) {
+            printJson({{"reference", referenceName}, {"frames", reference.frameCount()}, {"output", arguments.output}});
+            return;
+        }
+        std::cout << "wrote the reference (" << referenceName << ", " << reference.frameCount() << " frames) to " << arguments.output
+                  << "\n";
+        return;
+    }
     const std::filesystem::path folder = arguments.output;
     std::error_code error;
     std::filesystem::create_directories(folder, error);
@@ -381,7 +394,11 @@ void addNormalisationCommands(CommandSet& commands)
                             "Reference: a take index, or 'average' (thesis 3.7); default the suggested take (3.6.1)");
         command->add_option("--exclude", arguments->exclude, "Take index left out of the average (e.g. the outlier: 4ave)");
         command->add_option("--base", arguments->base, "Base take of the average (default the suggested reference)");
-        command->add_option("-o,--output", arguments->output, "Output folder")->required()->type_name("DIR");
+        command->add_option("-o,--output", arguments->output,
+                            "Output folder; or a take file (.bvh, .glb, .csv): the reference alone (the average take with "
+                            "--reference average)")
+            ->required()
+            ->type_name("DIR|FILE");
         command->add_flag("--no-preprocess", arguments->noPreprocess,
                           "Use the takes as stored (default: thesis 2.2 preprocessing first, as `bunraku preprocess`)");
         command->add_flag("--json", arguments->json, "Print a machine-readable summary");

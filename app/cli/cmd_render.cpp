@@ -38,6 +38,8 @@ struct RenderArguments {
     float distanceCm = 0.0f; // 0: chosen from the scene
     std::string preset;
     std::string show = "puppet,axis,grid,partner";
+    std::string figure = "puppet";
+    std::string figureB; // empty: as --figure
     std::string size = "1280x720";
     std::string output;
     std::string mp4;
@@ -116,6 +118,14 @@ render::SceneVisibility parseShow(const std::string& text)
     return visibility;
 }
 
+render::FigureStyle parseFigure(const std::string& text, const std::string& option)
+{
+    if (text == "puppet") return render::FigureStyle::Puppet;
+    if (text == "skeleton") return render::FigureStyle::Skeleton;
+    if (text == "both") return render::FigureStyle::PuppetAndSkeleton;
+    throw CliError(option + " '" + text + "': expected puppet, skeleton or both");
+}
+
 bool hasDisplay() { return std::getenv("DISPLAY") != nullptr || std::getenv("WAYLAND_DISPLAY") != nullptr; }
 
 /// Without a display Mesa offers OpenGL to Qt only through an X server: run this same command
@@ -172,7 +182,8 @@ void runRender(const RenderArguments& args)
                        "(apt-get install ffmpeg) or drop --mp4 and encode the PNG frames yourself");
     if (args.samples < 0 || args.samples > 16) throw CliError("--samples: expected 0..16");
     const QSize size = parseSize(args.size);
-    const render::SceneVisibility visibility = parseShow(args.show);
+    render::SceneVisibility visibility = parseShow(args.show);
+    visibility.figures = {parseFigure(args.figure, "--figure"), parseFigure(args.figureB.empty() ? args.figure : args.figureB, "--figure-b")};
     std::optional<std::pair<long, long>> range;
     if (!args.frames.empty()) range = parseFrameRange(args.frames);
 
@@ -222,6 +233,8 @@ void runRender(const RenderArguments& args)
     summary["camera"] = {{"angle_deg", camera.angleDeg}, {"elevation_deg", camera.elevationDeg},
                          {"distance_cm", camera.distance}};
     for (const auto& slot : scene.takes) summary["takes"].push_back(slot.take.displayName());
+    for (int s = 0; s < int(scene.takes.size()); ++s)
+        summary["figures"].push_back({{"puppet", offscreen->renderer().puppetDrawn(s)}, {"skeleton", offscreen->renderer().skeletonDrawn(s)}});
 
     if (!range) {
         offscreen->makeCurrent();
@@ -277,6 +290,10 @@ void addRenderCommands(CommandSet& commands)
     render->add_option("--preset", args->preset, "Camera preset: top or bottom");
     render->add_option("--show", args->show, "Objects to draw: puppet,axis,orbits,grid,partner or all")
         ->capture_default_str();
+    render->add_option("--figure", args->figure,
+                       "Figure of the take(s): puppet, skeleton (the performer's, for takes read from BVH) or both")
+        ->capture_default_str();
+    render->add_option("--figure-b", args->figureB, "Figure of the second take (default: as --figure)");
     render->add_option("--size", args->size, "Image size WIDTHxHEIGHT")->capture_default_str();
     render->add_option("-o,--output", args->output, "PNG file, or the folder of a --frames sequence");
     render->add_option("--mp4", args->mp4, "Also encode the --frames sequence to this MP4 file (needs ffmpeg)");

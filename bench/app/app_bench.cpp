@@ -4,7 +4,9 @@
 // - one playback frame of the whole window with two puppets and 48 graphs;
 // - a warp control-point drag step to the designed take shown in the graphs and the 3D view
 //   (target < 16 ms; counters: every step changed the take, 3D frames drawn per step);
-// - the 3D view alone: a moving frame, a still (multisampled) frame, a replaced scene.
+// - the 3D view alone: a moving frame, a still (multisampled) frame, a replaced scene;
+// - the drag step and the playback frame with a Bandai take's 22-joint skeleton shown as take B
+//   beside the puppet (issue 12 point 5), against the same take B shown as a puppet.
 #include "app/design_controller.h"
 #include "app/file_controller.h"
 #include "app/main_window.h"
@@ -21,11 +23,13 @@
 #include <qcustomplot.h>
 
 #include <QApplication>
+#include <QComboBox>
 #include <QDockWidget>
 #include <QElapsedTimer>
 #include <QTest>
 
 #include <algorithm>
+#include <filesystem>
 #include <map>
 #include <memory>
 
@@ -277,6 +281,94 @@ void warpDragStepToResult(benchmark::State& state)
     QCoreApplication::processEvents();
 }
 BENCHMARK(warpDragStepToResult)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond);
+
+/// Take B: a Bandai take (its 22-joint skeleton and 24 part channels, imported once), drawn as
+/// its skeleton (`skeleton` true) or as the puppet. False when the file is missing.
+bool showBandaiAsB(app::MainWindow& main, bool skeleton)
+{
+    static QString id;
+    if (id.isEmpty()) {
+        const auto file = std::filesystem::path(BUNRAKU_SHARED_DIR) / "data" / "bandai" / "bye_angry_001.bvh";
+        if (!main.files().importTakeFile(QString::fromStdString(file.string()))) return false;
+        for (const auto& derived : main.document().derivedTakes())
+            if (derived.id.startsWith(QStringLiteral("imported/"))) id = derived.id;
+    }
+    main.document().selectTake(app::TakeSlot::B, id);
+    QComboBox* figure = main.viewportPanel()->figureBox(1);
+    figure->setCurrentIndex(figure->findData(int(skeleton ? render::FigureStyle::Skeleton : render::FigureStyle::Puppet)));
+    showView(main, true);
+    return true;
+}
+
+/// A warp drag step to the designed take A (puppet) with take B beside it: argument 1 its
+/// 22-joint skeleton, 0 its puppet. 48 graphs (B's 24 beside A's).
+void warpDragStepBesideSkeleton(benchmark::State& state)
+{
+    auto& main = window();
+    auto& design = main.design();
+    main.document().selectTake(app::TakeSlot::A, QStringLiteral("live/designed"));
+    if (!showBandaiAsB(main, state.range(0) != 0)) {
+        state.SkipWithError("Bandai take not found");
+        return;
+    }
+    waitIdle(main);
+    static const analysis::WarpCurve base = design.warpCurve();
+    design.editWarp(base);
+    QCoreApplication::processEvents();
+    waitIdle(main);
+    const std::size_t index = base.points.size() / 2;
+    const auto* view = main.viewportPanel()->viewport();
+    const int framesBefore = view->renderedFrameCount();
+    int changed = 0, step = 0;
+    main.document().beginInteraction();
+    for (auto _ : state) {
+        step = (step + 1) % 6;
+        analysis::WarpPoint proposed = base.points[index];
+        proposed.source += step * 0.5;
+        const auto before = main.document().selectedTake(app::TakeSlot::A);
+        design.editWarp(analysis::moveControlPoint(base, index, proposed));
+        changed += main.document().selectedTake(app::TakeSlot::A) != before ? 1 : 0;
+        QCoreApplication::processEvents();
+        main.graphPanel()->grid()->plot()->repaint();
+    }
+    main.document().endInteraction();
+    state.counters["changed"] = double(changed) / double(state.iterations());
+    state.counters["view_frames"] = double(view->renderedFrameCount() - framesBefore) / double(state.iterations());
+    state.counters["graphs"] = main.graphPanel()->grid()->graphCount();
+    state.counters["skeleton_drawn"] = view->renderer() && view->renderer()->takeCount() > 1 && view->renderer()->skeletonDrawn(1) ? 1 : 0;
+    design.editWarp(base);
+    QCoreApplication::processEvents();
+    main.document().selectTake(app::TakeSlot::B, QString());
+    waitIdle(main);
+}
+BENCHMARK(warpDragStepBesideSkeleton)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond);
+
+/// A playback frame of the whole window: take A a demo take's puppet, take B the Bandai take
+/// beside it (argument 1: its skeleton, 0: its puppet), 48 graphs.
+void playbackFrameBesideSkeleton(benchmark::State& state)
+{
+    auto& main = window();
+    main.document().selectTake(app::TakeSlot::A, app::Document::corpusTakeId(0));
+    if (!showBandaiAsB(main, state.range(0) != 0)) {
+        state.SkipWithError("Bandai take not found");
+        return;
+    }
+    waitIdle(main);
+    const auto* view = main.viewportPanel()->viewport();
+    const int framesBefore = view->renderedFrameCount();
+    double t = 0.0;
+    for (auto _ : state) {
+        t = t > 3.5 ? 0.0 : t + 1.0 / 60.0;
+        main.document().setCurrentTime(t);
+        QCoreApplication::processEvents();
+    }
+    state.counters["graphs"] = main.graphPanel()->grid()->graphCount();
+    state.counters["view_frames"] = double(view->renderedFrameCount() - framesBefore) / double(state.iterations());
+    state.counters["skeleton_drawn"] = view->renderer() && view->renderer()->takeCount() > 1 && view->renderer()->skeletonDrawn(1) ? 1 : 0;
+    main.document().selectTake(app::TakeSlot::B, app::Document::corpusTakeId(7));
+    waitIdle(main);
+}
+BENCHMARK(playbackFrameBesideSkeleton)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond);
 
 } // namespace
 

@@ -3,6 +3,7 @@
 /// user's; windows open without dialogs and with the default layout.
 
 #include "app/file_controller.h"
+#include "app/export_controller.h"
 #include "app/main_window.h"
 
 #include "tests/support/test_paths.h"
@@ -38,6 +39,7 @@ inline std::unique_ptr<app::MainWindow> demoWindow()
     isolateSettings();
     auto window = std::make_unique<app::MainWindow>();
     window->files().setDialogsEnabled(false);
+    window->exports().setDialogsEnabled(false);
     window->files().openDemoCorpus();
     window->resize(1400, 900);
     window->show();

@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <map>
 #include <set>
 #include <sys/wait.h>
 #include <fstream>
@@ -146,4 +147,54 @@ TEST_CASE("a take scene carries the motion axis of every take, one pose per fram
     }
     const auto tooMany = render::makeTakeScene(analysis::defaultBodyDescription(), {take, take, take});
     CHECK_FALSE(tooMany.ok());
+}
+
+TEST_CASE("bunraku render --figure draws a Bandai take's 22-joint skeleton, the puppet, or both", "[render][cli][skeleton]")
+{
+    const auto source = test::bandaiDir() / "bye_angry_001.bvh";
+    if (!std::filesystem::exists(source)) {
+        const std::string what = "Bandai file " + source.string() + " not found";
+        const char* ci = std::getenv("CI");
+        if (ci != nullptr && std::string(ci) == "true") FAIL("missing under CI=true: " << what);
+        std::printf("SKIPPED: %s\n", what.c_str());
+        return;
+    }
+    const auto dir = test::scratchDir("render_cli_figure");
+    std::map<std::string, QImage> images;
+    for (const std::string figure : {"puppet", "skeleton", "both"}) {
+        const auto png = dir / (figure + ".png");
+        const auto [code, errors] = runCli("render " + quoted(source) + " --figure " + figure + " --show puppet,grid --size 320x240 --samples 0 --json -o " +
+                                               quoted(png),
+                                           dir);
+        INFO(errors);
+        REQUIRE(code == 0);
+        std::ifstream out(dir / "stdout.txt");
+        std::stringstream summary;
+        summary << out.rdbuf();
+        INFO(summary.str());
+        CHECK(summary.str().find(std::string("\"skeleton\": ") + (figure == "puppet" ? "false" : "true")) != std::string::npos);
+        CHECK(summary.str().find(std::string("\"puppet\": ") + (figure == "skeleton" ? "false" : "true")) != std::string::npos);
+        images[figure] = QImage(QString::fromStdString(png.string()));
+        REQUIRE(!images[figure].isNull());
+    }
+    // The whole performer is in the picture: rows from the head to the feet differ from the
+    // background grey... (the floor grid aside); the skeleton's picture differs from the puppet's.
+    const auto figureRows = [](const QImage& image) {
+        int first = image.height(), last = -1;
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x) {
+                const QRgb p = image.pixel(x, y);
+                if (std::abs(qRed(p) - qBlue(p)) > 25 || qGray(p) < 150) { // coloured or dark: the figure, not the grid or background
+                    first = std::min(first, y);
+                    last = std::max(last, y);
+                }
+            }
+        return last - first;
+    };
+    CHECK(figureRows(images["skeleton"]) > images["skeleton"].height() / 3);
+    CHECK(images["skeleton"] != images["puppet"]);
+    CHECK(images["both"] != images["skeleton"]);
+    const auto [code, errors] = runCli("render " + quoted(source) + " --figure bones -o " + quoted(dir / "x.png"), dir);
+    CHECK(code != 0);
+    CHECK(errors.find("--figure 'bones': expected puppet, skeleton or both") != std::string::npos);
 }

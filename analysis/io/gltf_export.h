@@ -1,0 +1,52 @@
+#pragma once
+/// glTF 2.0 binary (.glb) export of a skeletal motion: the joints as a node hierarchy with a
+/// skin, rigidly skinned triangle meshes (each vertex bound to one joint), and one animation
+/// with the take's times. glTF is y up, metres, the asset facing +Z: the workbench's axes map
+/// as x (forward) -> +Z, y (left) -> +X, z (up) -> +Y, and cm / 100. Written with Debian's
+/// tinygltf. docs/FORMATS.md.
+
+#include "analysis/core/skeleton.h"
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace bunraku::analysis::io {
+
+/// A triangle mesh carried rigidly by one joint: vertices in that joint's frame (workbench
+/// axes, cm), normals unit length, colours RGB in [0, 1].
+struct JointMesh {
+    int joint = -1; ///< index into Skeleton::joints (not an End Site)
+    std::vector<Eigen::Vector3f> positions;
+    std::vector<Eigen::Vector3f> normals;
+    std::vector<Eigen::Vector3f> colours;
+    std::vector<std::uint32_t> indices; ///< 3 per triangle
+};
+
+struct GltfExportOptions {
+    std::string name = "take";  ///< the animation's and the scene's name
+    std::string generator = "Bunraku Motion Workbench";
+};
+
+/// glTF's axes from the workbench's (a rotation; positions are also scaled by 0.01).
+Eigen::Quaterniond gltfAxisChange();
+
+/// The .glb bytes: one node per joint (End Sites are left out: they carry no motion), named as
+/// in the skeleton, its rest transform the pose of the first frame; a skin over those joints
+/// with inverse bind matrices of the first frame; one mesh with every JointMesh (attributes
+/// POSITION, NORMAL, COLOR_0, JOINTS_0, WEIGHTS_0), bound through the skin; one animation
+/// sampled at frame / rateHz seconds: every joint's rotation, and the translation of joints
+/// whose translation moves. Errors for an invalid motion, a rate out of range, no mesh, or a
+/// mesh on an End Site or a missing joint.
+Result<std::string> skeletalMotionToGlb(const SkeletalMotion& motion, double rateHz, const std::vector<JointMesh>& meshes,
+                                        const GltfExportOptions& options = {});
+
+/// Writes skeletalMotionToGlb atomically.
+Status writeSkeletalGlb(const SkeletalMotion& motion, double rateHz, const std::vector<JointMesh>& meshes,
+                        const std::filesystem::path& file, const GltfExportOptions& options = {});
+
+} // namespace bunraku::analysis::io

@@ -1,0 +1,71 @@
+#include "app/export_controller.h"
+
+#include "analysis/body/body_description.h"
+#include "render/take_export.h"
+
+#include <QAction>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMessageBox>
+
+#include <filesystem>
+
+namespace bunraku::app {
+
+namespace {
+
+QString slotName(TakeSlot slot) { return slot == TakeSlot::A ? QStringLiteral("A") : QStringLiteral("B"); }
+
+} // namespace
+
+ExportController::ExportController(Document& document, QWidget* window) : QObject(window), m_document(document), m_window(window)
+{
+    m_exportA = new QAction(tr("&Export Take A..."), this);
+    m_exportA->setObjectName("exportTakeAAction");
+    m_exportA->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_E));
+    m_exportB = new QAction(tr("Export Take &B..."), this);
+    m_exportB->setObjectName("exportTakeBAction");
+    for (QAction* action : {m_exportA, m_exportB})
+        action->setToolTip(tr("Write the take as BVH (on its own skeleton when it has one), glTF binary or CSV"));
+    connect(m_exportA, &QAction::triggered, this, [this] { chooseAndExport(TakeSlot::A); });
+    connect(m_exportB, &QAction::triggered, this, [this] { chooseAndExport(TakeSlot::B); });
+}
+
+bool ExportController::exportTake(TakeSlot slot, const QString& file)
+{
+    const TakePointer take = m_document.selectedTake(slot);
+    if (!take) {
+        report(tr("Nothing to export: no take is shown as %1.").arg(slotName(slot)));
+        return false;
+    }
+    const auto status = render::exportTake(*take, analysis::defaultBodyDescription(), std::filesystem::path(file.toStdString()));
+    if (!status) {
+        report(tr("Cannot export take %1: %2").arg(slotName(slot), QString::fromStdString(status.error().message)));
+        return false;
+    }
+    m_lastError.clear();
+    emit statusMessage(tr("Exported take %1 (%2) to %3").arg(slotName(slot), m_document.takeLabel(m_document.selectedId(slot)), file));
+    return true;
+}
+
+void ExportController::chooseAndExport(TakeSlot slot)
+{
+    const QString bvh = tr("BVH on the take's skeleton (*.bvh)");
+    const QString glb = tr("glTF binary (*.glb)");
+    const QString csv = tr("CSV take (*.csv)");
+    QString filter = bvh;
+    QString file = QFileDialog::getSaveFileName(m_window, tr("Export take %1").arg(slotName(slot)), {}, bvh + ";;" + glb + ";;" + csv, &filter);
+    if (file.isEmpty()) return;
+    if (render::takeExportFormat(std::filesystem::path(file.toStdString())) == render::TakeExportFormat::Unknown)
+        file += filter == glb ? QStringLiteral(".glb") : filter == csv ? QStringLiteral(".csv") : QStringLiteral(".bvh");
+    exportTake(slot, file);
+}
+
+void ExportController::report(const QString& message)
+{
+    m_lastError = message;
+    emit statusMessage(message);
+    if (m_dialogs) QMessageBox::warning(m_window, tr("Export take"), message);
+}
+
+} // namespace bunraku::app

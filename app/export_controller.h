@@ -1,0 +1,48 @@
+#pragma once
+/// File > Export Take A / Export Take B: writes the take shown as A or B as BVH (on the take's
+/// own skeleton when it has one: the performer's hierarchy, names, offsets and channel order),
+/// glTF binary (the skeleton, or the puppet for a take without one, as a skinned mesh with one
+/// animation) or CSV, chosen by the file's extension. The same writer as `bunraku ... -o`
+/// (render/take_export.h). Writes are atomic; errors name the file and what went wrong.
+
+#include "app/document.h"
+
+#include <QObject>
+#include <QString>
+
+class QAction;
+class QWidget;
+
+namespace bunraku::app {
+
+class ExportController : public QObject {
+    Q_OBJECT
+public:
+    ExportController(Document& document, QWidget* window);
+
+    /// With dialogs off (tests, --screenshot) errors go to lastError() and the status signal.
+    void setDialogsEnabled(bool enabled) { m_dialogs = enabled; }
+    QString lastError() const { return m_lastError; }
+
+    /// Writes the take shown in `slot` to `file` (.bvh, .glb or .csv); false on failure.
+    bool exportTake(TakeSlot slot, const QString& file);
+
+    /// "Export Take A..." / "Export Take B...": a save dialog offering BVH, glTF and CSV.
+    QAction* exportAction(TakeSlot slot) const { return slot == TakeSlot::A ? m_exportA : m_exportB; }
+
+signals:
+    void statusMessage(const QString& message);
+
+private:
+    void chooseAndExport(TakeSlot slot);
+    void report(const QString& message);
+
+    Document& m_document;
+    QWidget* m_window;
+    bool m_dialogs = true;
+    QString m_lastError;
+    QAction* m_exportA = nullptr;
+    QAction* m_exportB = nullptr;
+};
+
+} // namespace bunraku::app

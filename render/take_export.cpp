@@ -1,0 +1,107 @@
+#include "render/take_export.h"
+
+#include "analysis/body/body_pose.h"
+#include "analysis/io/take_reader.h"
+#include "render/puppet_geometry.h"
+#include "render/skeleton_geometry.h"
+
+#include <algorithm>
+#include <cctype>
+
+namespace bunraku::render {
+
+namespace {
+
+analysis::io::JointMesh toJointMesh(const Mesh& mesh, int joint)
+{
+    analysis::io::JointMesh out;
+    out.joint = joint;
+    for (const Vertex& v : mesh.vertices) {
+        out.positions.emplace_back(v.position.x, v.position.y, v.position.z);
+        out.normals.emplace_back(v.normal.x, v.normal.y, v.normal.z);
+        out.colours.emplace_back(v.colour.x, v.colour.y, v.colour.z);
+    }
+    out.indices = mesh.indices;
+    return out;
+}
+
+} // namespace
+
+TakeExportFormat takeExportFormat(const std::filesystem::path& file)
+{
+    std::string extension = file.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    if (extension == ".csv") return TakeExportFormat::Csv;
+    if (extension == ".bvh") return TakeExportFormat::Bvh;
+    if (extension == ".glb") return TakeExportFormat::Glb;
+    return TakeExportFormat::Unknown;
+}
+
+const char* takeExportExpectation() { return "expected a .bvh, .glb or .csv file name"; }
+
+ExportRig skeletonRig(const std::shared_ptr<const analysis::SkeletalMotion>& motion)
+{
+    ExportRig rig;
+    rig.motion = motion;
+    const std::vector<Mesh> meshes = buildSkeletonMeshes(*motion);
+    for (std::size_t j = 0; j < meshes.size(); ++j)
+        if (!meshes[j].empty()) rig.meshes.push_back(toJointMesh(meshes[j], int(j)));
+    return rig;
+}
+
+analysis::Result<ExportRig> puppetRig(const analysis::BodyDescription& body, const analysis::Take& take)
+{
+    auto binding = analysis::bindBody(body, take);
+    if (!binding) return binding.error();
+    auto skeleton = std::make_shared<analysis::Skeleton>();
+    skeleton->name = body.name.empty() ? std::string("puppet") : body.name;
+    skeleton->joints.push_back(analysis::SkeletonJoint{"puppet", -1, Eigen::Vector3d::Zero(), {}, false});
+    for (const auto& part : body.parts) skeleton->joints.push_back(analysis::SkeletonJoint{part.name, 0, Eigen::Vector3d::Zero(), {}, false});
+    if (auto valid = analysis::validateSkeleton(*skeleton); !valid) return valid.error();
+    const Eigen::Index frames = take.frameCount();
+    auto motion = std::make_shared<analysis::SkeletalMotion>(analysis::makeRestMotion(skeleton, frames));
+    const int parts = int(body.parts.size());
+    for (int p = 0; p < parts; ++p) motion->movingJoints.push_back(1 + p);
+    motion->movingTranslations.resize(frames, 3 * parts);
+    for (Eigen::Index f = 0; f < frames; ++f) {
+        const auto poses = analysis::worldPartPoses(body, *binding, take, f);
+        for (int p = 0; p < parts; ++p) {
+            motion->rotation(f, 1 + p) = poses[std::size_t(p)].rotation;
+            motion->movingTranslations.block<1, 3>(f, 3 * p) = poses[std::size_t(p)].translation.transpose();
+        }
+    }
+    ExportRig rig;
+    rig.motion = motion;
+    const std::vector<Mesh> meshes = buildPuppetMeshes(body);
+    for (std::size_t p = 0; p < meshes.size(); ++p)
+        if (!meshes[p].empty()) rig.meshes.push_back(toJointMesh(meshes[p], int(p) + 1));
+    return rig;
+}
+
+analysis::Status exportTake(const analysis::Take& take, const analysis::BodyDescription& body, const std::filesystem::path& file)
+{
+    switch (takeExportFormat(file)) {
+    case TakeExportFormat::Csv:
+    case TakeExportFormat::Bvh: return analysis::io::writeTakeFile(take, file);
+    case TakeExportFormat::Glb: {
+        if (auto valid = analysis::validateTake(take); !valid)
+            return analysis::makeError(valid.error().code, file.string() + ": " + valid.error().message);
+        ExportRig rig;
+        if (take.skeleton) {
+            rig = skeletonRig(take.skeleton);
+        } else {
+            auto puppet = puppetRig(body, take);
+            if (!puppet) return analysis::makeError(puppet.error().code, file.string() + ": " + puppet.error().message);
+            rig = std::move(puppet).value();
+        }
+        analysis::io::GltfExportOptions options;
+        options.name = take.displayName();
+        return analysis::io::writeSkeletalGlb(*rig.motion, take.rateHz, rig.meshes, file, options);
+    }
+    case TakeExportFormat::Unknown: break;
+    }
+    return analysis::makeError(analysis::ErrorCode::Unsupported,
+                               file.string() + ": cannot write '" + file.extension().string() + "' (" + takeExportExpectation() + ")");
+}
+
+} // namespace bunraku::render

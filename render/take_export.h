@@ -1,0 +1,46 @@
+#pragma once
+/// Writing a take wherever a take can be written (File > Export Take A/B, `bunraku ... -o`), by
+/// the file's extension: .csv (the take's channels), .bvh (on the take's own skeleton when it
+/// has one, else the part layout) and .glb (glTF 2.0 binary: the skeleton with its bone
+/// capsules as a rigidly skinned mesh, or, for a take without a skeleton, the puppet's parts as
+/// joints under a root with the puppet's mesh bound to them). The geometry is the 3D view's
+/// (skeleton_geometry.h, puppet_geometry.h), hence this lives beside the renderer.
+
+#include "analysis/body/body_description.h"
+#include "analysis/core/result.h"
+#include "analysis/core/skeleton.h"
+#include "analysis/core/take.h"
+#include "analysis/io/gltf_export.h"
+
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+namespace bunraku::render {
+
+enum class TakeExportFormat { Csv, Bvh, Glb, Unknown };
+
+/// By extension, case-insensitive: .csv, .bvh, .glb.
+TakeExportFormat takeExportFormat(const std::filesystem::path& file);
+
+/// "expected a .bvh, .glb or .csv file name", for error messages.
+const char* takeExportExpectation();
+
+/// A skeletal motion with the meshes its joints carry: what a .glb holds.
+struct ExportRig {
+    std::shared_ptr<const analysis::SkeletalMotion> motion;
+    std::vector<analysis::io::JointMesh> meshes;
+};
+
+/// The take's own skeleton with its bone capsules and joint spheres (skeleton_geometry.h).
+ExportRig skeletonRig(const std::shared_ptr<const analysis::SkeletalMotion>& motion);
+
+/// The puppet as a skeleton: a root joint "puppet" at the origin and one joint per body part
+/// (named as the body part), each posed by worldPartPoses in every frame, carrying that part's
+/// mesh. Errors when the take cannot drive the body (bindBody).
+analysis::Result<ExportRig> puppetRig(const analysis::BodyDescription& body, const analysis::Take& take);
+
+/// Writes the take by extension (atomic); the error names the file.
+analysis::Status exportTake(const analysis::Take& take, const analysis::BodyDescription& body, const std::filesystem::path& file);
+
+} // namespace bunraku::render

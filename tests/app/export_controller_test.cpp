@@ -1,0 +1,135 @@
+// File > Export Take A / B: a Bandai take written as BVH on its own 22-joint skeleton, as glTF
+// and as CSV; a take without a skeleton as the puppet; bad names refused. And the 3D view's
+// figure per take: the skeleton drawn, a click on a bone selecting its part's graphs.
+#include "app_test_support.h"
+
+#include "app/export_controller.h"
+#include "app/viewport_panel.h"
+#include "analysis/core/skeleton.h"
+#include "analysis/io/bvh.h"
+#include "analysis/io/take_csv.h"
+#include "tests/support/peer.h"
+#include "widgets/graph_panel.h"
+#include "widgets/viewport_widget.h"
+
+#include <QComboBox>
+#include <QMenuBar>
+#include <QSignalSpy>
+#include <QTest>
+
+#include <fstream>
+#include <iterator>
+
+using namespace bunraku;
+using app::TakeSlot;
+
+namespace {
+
+/// Imports two Bandai files and shows them as A and B; false (the test returns) when absent.
+bool showBandaiTakes(app::MainWindow& window)
+{
+    const auto normal = test::bandaiDir() / "bye_normal_001.bvh", angry = test::bandaiDir() / "bye_angry_001.bvh";
+    if (!test::peerPresent(std::filesystem::exists(normal) && std::filesystem::exists(angry), "Bandai files not found in " + test::bandaiDir().string()))
+        return false;
+    REQUIRE(window.files().importTakeFile(QString::fromStdString(normal.string())));
+    REQUIRE(window.files().importTakeFile(QString::fromStdString(angry.string())));
+    QStringList imported;
+    for (const auto& derived : window.document().derivedTakes())
+        if (derived.id.startsWith(QStringLiteral("imported/"))) imported << derived.id;
+    REQUIRE(imported.size() == 2);
+    window.document().selectTake(TakeSlot::A, imported[0]);
+    window.document().selectTake(TakeSlot::B, imported[1]);
+    return true;
+}
+
+std::string readBytes(const std::filesystem::path& file)
+{
+    std::ifstream in(file, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+} // namespace
+
+TEST_CASE("File > Export Take A and B write BVH on the take's skeleton, glTF and CSV", "[app][export]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    // Both actions are in the File menu.
+    QStringList fileActions;
+    for (QAction* menu : window->menuBar()->actions())
+        if (menu->menu() && menu->text().contains(QStringLiteral("File")))
+            for (QAction* action : menu->menu()->actions()) fileActions << action->objectName();
+    CHECK(fileActions.contains(QStringLiteral("exportTakeAAction")));
+    CHECK(fileActions.contains(QStringLiteral("exportTakeBAction")));
+
+    const auto dir = test::scratchDir("export_controller");
+    // A corpus take has no skeleton: BVH in the part layout, glTF as the puppet.
+    REQUIRE(window->exports().exportTake(TakeSlot::A, QString::fromStdString((dir / "demo.glb").string())));
+    CHECK(readBytes(dir / "demo.glb").substr(0, 4) == "glTF");
+    // A file that cannot be written is refused with its name, and nothing appears.
+    CHECK_FALSE(window->exports().exportTake(TakeSlot::A, QString::fromStdString((dir / "take.fbx").string())));
+    CHECK(window->exports().lastError().contains(QStringLiteral("take.fbx")));
+    CHECK_FALSE(std::filesystem::exists(dir / "take.fbx"));
+
+    if (!showBandaiTakes(*window)) return;
+    const auto takeA = window->document().selectedTake(TakeSlot::A);
+    const auto takeB = window->document().selectedTake(TakeSlot::B);
+    REQUIRE(takeA->skeleton);
+    REQUIRE(window->exports().exportTake(TakeSlot::A, QString::fromStdString((dir / "a.bvh").string())));
+    REQUIRE(window->exports().exportTake(TakeSlot::B, QString::fromStdString((dir / "b.bvh").string())));
+    REQUIRE(window->exports().exportTake(TakeSlot::B, QString::fromStdString((dir / "b.glb").string())));
+    REQUIRE(window->exports().exportTake(TakeSlot::A, QString::fromStdString((dir / "a.csv").string())));
+    auto a = analysis::io::readBvh(dir / "a.bvh");
+    auto b = analysis::io::readBvh(dir / "b.bvh");
+    REQUIRE(a.ok());
+    REQUIRE(b.ok());
+    CHECK(a->skeleton.jointCount() == 22);
+    CHECK(a->motion.values.rows() == takeA->frameCount());
+    CHECK(b->motion.values.rows() == takeB->frameCount());
+    CHECK(a->skeleton.joints[std::size_t(a->skeleton.find("Hand_R"))].name == "Hand_R");
+    CHECK(readBytes(dir / "b.glb").find("\"LowerArm_R\"") != std::string::npos); // the joints' names in the glTF's JSON
+    auto csv = analysis::io::readTakeCsv(dir / "a.csv");
+    REQUIRE(csv.ok());
+    CHECK((csv->values - takeA->values).cwiseAbs().maxCoeff() < 1e-6);
+}
+
+TEST_CASE("the 3D view draws take A's skeleton and a click on its hand bone shows the hand's graphs", "[app][export][viewport]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    if (!showBandaiTakes(*window)) return;
+    app::ViewportPanel* panel = window->viewportPanel();
+    widgets::ViewportWidget* viewport = panel->viewport();
+    panel->figureBox(0)->setCurrentIndex(panel->figureBox(0)->findData(int(render::FigureStyle::Skeleton)));
+    panel->figureBox(1)->setCurrentIndex(panel->figureBox(1)->findData(int(render::FigureStyle::PuppetAndSkeleton)));
+    CHECK(viewport->visibility().figures[0] == render::FigureStyle::Skeleton);
+    CHECK(viewport->visibility().figures[1] == render::FigureStyle::PuppetAndSkeleton);
+    REQUIRE_FALSE(viewport->grabFramebuffer().isNull());
+    REQUIRE(viewport->renderer() != nullptr);
+    CHECK(viewport->renderer()->skeletonDrawn(0));
+    CHECK_FALSE(viewport->renderer()->puppetDrawn(0));
+    CHECK(viewport->renderer()->puppetDrawn(1));
+
+    // From the performer's right (the waving right hand nearest the camera), Hand_R's joint (its
+    // sphere, drawn with its bone to the End Site), where the camera projects it.
+    render::Camera fromRight = viewport->camera();
+    fromRight.angleDeg = 180.0f;
+    fromRight.elevationDeg = 0.0f;
+    viewport->setCamera(fromRight);
+    REQUIRE_FALSE(viewport->grabFramebuffer().isNull());
+    const auto skeleton = window->document().selectedTake(TakeSlot::A)->skeleton->skeleton;
+    const int hand = skeleton->find("Hand_R");
+    REQUIRE(hand >= 0);
+    const auto joints = viewport->renderer()->displayedJointTransforms(0, viewport->camera());
+    const glm::vec3 middle = glm::vec3(joints[std::size_t(hand)][3]);
+    const qreal ratio = viewport->devicePixelRatioF();
+    const QSize pixels(int(viewport->width() * ratio), int(viewport->height() * ratio));
+    const QPointF pixel = viewport->camera().project(middle, pixels).pixel / ratio;
+    window->graphPanel()->selectPart(QStringLiteral("head"));
+    QSignalSpy bones(panel, &app::ViewportPanel::bonePicked);
+    QTest::mouseClick(viewport, Qt::LeftButton, Qt::NoModifier, pixel.toPoint());
+    REQUIRE(bones.count() == 1);
+    CHECK(bones.at(0).at(1).toString() == QStringLiteral("Hand_R"));
+    CHECK(bones.at(0).at(2).toString() == QStringLiteral("hand"));
+    CHECK(window->graphPanel()->selectedPart() == QStringLiteral("hand"));
+}

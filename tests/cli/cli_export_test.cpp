@@ -1,0 +1,77 @@
+// Every command that writes one take writes it by the output's extension: .bvh, .glb or .csv,
+// the same writer as File > Export Take (render/take_export.h).
+#include "tests/cli/cli_files.h"
+#include "tests/cli/cli_runner.h"
+#include "tests/support/test_paths.h"
+
+#include "analysis/io/bvh.h"
+#include "analysis/io/take_csv.h"
+
+#include <catch2/catch.hpp>
+
+#include <fstream>
+#include <iterator>
+
+using bunraku::test::runBunraku;
+
+namespace {
+
+std::string readBytes(const std::filesystem::path& file)
+{
+    std::ifstream in(file, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+} // namespace
+
+TEST_CASE("emotion, normalise and design write their take as BVH, glTF or CSV by the output's extension", "[cli][export]")
+{
+    const auto dir = bunraku::test::scratchDir("cli-export");
+    const auto demo = dir / "demo";
+    REQUIRE(runBunraku({"demo", "-o", demo.string(), "--seed", "5"}).exitCode == 0);
+    for (const std::string extension : {"csv", "bvh", "glb"}) {
+        INFO(extension);
+        const auto weighted = dir / ("weighted." + extension);
+        auto run = runBunraku({"emotion", demo.string(), "--pad", "--function", "greeting", "--emotion", "hostile", "--weight", "1.5", "-o",
+                               weighted.string()});
+        INFO(run.err);
+        REQUIRE(run.exitCode == 0);
+        const auto reference = dir / ("average." + extension);
+        run = runBunraku({"normalise", demo.string(), "--function", "greeting", "--emotion", "hostile", "--reference", "average", "-o",
+                          reference.string()});
+        REQUIRE(run.exitCode == 0);
+        CHECK(std::filesystem::is_regular_file(reference)); // one file, not a folder
+    }
+    // The three formats hold the same take: CSV's frames are BVH's frames are glTF's keyframes.
+    auto csv = bunraku::analysis::io::readTakeCsv(dir / "weighted.csv");
+    REQUIRE(csv.ok());
+    auto bvh = bunraku::analysis::io::readBvh(dir / "weighted.bvh");
+    REQUIRE(bvh.ok());
+    CHECK(bvh->motion.values.rows() == csv->frameCount());
+    CHECK(bvh->skeleton.jointCount() == 5); // a corpus take carries no skeleton: the part layout
+    const std::string glb = readBytes(dir / "weighted.glb");
+    REQUIRE(glb.substr(0, 4) == "glTF");
+    CHECK(glb.find("\"right_hand\"") != std::string::npos); // the puppet's parts are its joints
+    CHECK(glb.find("\"count\":" + std::to_string(csv->frameCount())) != std::string::npos);
+    auto average = bunraku::analysis::io::readBvh(dir / "average.bvh");
+    REQUIRE(average.ok());
+    CHECK(average->motion.values.rows() > 0);
+
+    // design writes the designed take the same way, and refuses other names before any work.
+    const auto take = dir / "weighted.csv";
+    REQUIRE(runBunraku({"design", take.string(), "-o", (dir / "designed.glb").string()}).exitCode == 0);
+    CHECK(readBytes(dir / "designed.glb").substr(0, 4) == "glTF");
+    for (const std::vector<std::string>& command :
+         {std::vector<std::string>{"design", take.string(), "-o", (dir / "designed.fbx").string()},
+          std::vector<std::string>{"emotion", demo.string(), "--pad", "--function", "greeting", "--emotion", "hostile", "--weight", "1",
+                                   "-o", (dir / "weighted.txt").string()},
+          std::vector<std::string>{"convert", take.string(), "-o", (dir / "converted.obj").string()}}) {
+        const auto run = runBunraku(command);
+        INFO(command.front() << ": " << run.err);
+        CHECK(run.exitCode != 0);
+        CHECK(run.err.find("expected a .bvh, .glb or .csv file name") != std::string::npos);
+    }
+    CHECK_FALSE(std::filesystem::exists(dir / "designed.fbx"));
+    CHECK_FALSE(std::filesystem::exists(dir / "weighted.txt"));
+    CHECK_FALSE(std::filesystem::exists(dir / "converted.obj"));
+}
