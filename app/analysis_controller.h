@@ -19,6 +19,7 @@
 #include "analysis/pipeline/chain.h"
 
 #include <QObject>
+#include <QStringList>
 
 #include <filesystem>
 #include <memory>
@@ -54,12 +55,27 @@ public:
     /// The keys of every stage for the document's corpus and parameters.
     analysis::pipeline::ChainKeys keys() const { return m_keys; }
 
+    /// The normalise parameters the current normalise result was computed with.
+    const analysis::pipeline::NormaliseParameters& normalisedParameters() const { return m_normalisedParameters; }
+    /// "tau 4, T_cmp 20, scales 1-16" (and the coupling and path when not the thesis's): what a
+    /// normalised take's label and the panel name.
+    static QString normaliseParametersText(const analysis::pipeline::NormaliseParameters& parameters);
+    /// "least squares" / "KM2O, M = 2 (chosen by P)": the method of a decomposition.
+    static QString decompositionText(const analysis::pipeline::DecomposeOutput& decomposed);
+
     /// The cell the panels show: take A's when it is a corpus take, else the last one.
     const std::string& cellFunction() const { return m_function; }
     const std::string& cellEmotion() const { return m_emotion; }
-    /// The cell weighted by the emotion weight: take A's, or its function's first emotional cell
-    /// when take A is neutral (z = 0 there).
+    /// The cell weighted by the emotion weight: take A's, or when take A is neutral (z = 0
+    /// there) its function's cell of the chosen emotion (setWeightEmotion), else of its first
+    /// emotion.
     std::pair<std::string, std::string> weightedCell() const;
+    /// The emotion a neutral take A is weighted against (empty: its function's first); view
+    /// state, kept in projects. Re-synthesises the weighted take.
+    void setWeightEmotion(const QString& emotion);
+    QString weightEmotion() const { return QString::fromStdString(m_weightEmotion); }
+    /// The emotions of take A's function that have an emotion component, in corpus order.
+    QStringList weightableEmotions() const;
     /// y + a z of weightedCell(), null before a decomposition.
     TakePointer weightedTake() const { return m_weighted; }
     QString weightError() const { return m_weightError; }
@@ -95,6 +111,9 @@ private:
     analysis::pipeline::Shared<analysis::pipeline::AxisOutput> m_axes;
     std::string m_function;
     std::string m_emotion;
+    std::string m_weightEmotion;
+    bool m_publishing = false; ///< inside publishNormalised
+    analysis::pipeline::NormaliseParameters m_normalisedParameters;
     TakePointer m_weighted;
     QString m_weightError;
     TakePointer m_axisTakes[2]; ///< the takes the axis slots were last asked for

@@ -9,7 +9,7 @@
 #include "widgets/scale_error_plot.h"
 #include "widgets/warp_curve_editor.h"
 
-#include <QHBoxLayout>
+#include <QGridLayout>
 #include <QLabel>
 #include <QPushButton>
 #include <QSplitter>
@@ -49,20 +49,19 @@ DesignPanel::DesignPanel(Document& document, DesignController& controller, QWidg
     splitter->setStretchFactor(0, 3);
     splitter->setStretchFactor(1, 2);
     splitter->setStretchFactor(2, 2);
-    auto* buttons = new QHBoxLayout;
-    buttons->addWidget(showDesigned);
-    buttons->addWidget(extractedGains);
-    buttons->addWidget(resetGains);
-    auto* phraseButtons = new QHBoxLayout;
-    phraseButtons->addWidget(addBoundary);
-    phraseButtons->addWidget(removeBoundary);
-    phraseButtons->addWidget(resetBoundaries);
+    // Two columns of buttons: the dock stays narrow enough for a 1280-pixel screen.
+    auto* buttons = new QGridLayout;
+    const QList<QPushButton*> order{showDesigned, extractedGains, resetGains, addBoundary, removeBoundary, resetBoundaries};
+    for (int i = 0; i < order.size(); ++i) {
+        order[i]->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+        order[i]->setMinimumWidth(order[i]->fontMetrics().horizontalAdvance(order[i]->text()) + 24);
+        buttons->addWidget(order[i], i / 2, i % 2);
+    }
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
     layout->addWidget(m_inputs);
     layout->addWidget(splitter, 1);
     layout->addLayout(buttons);
-    layout->addLayout(phraseButtons);
     layout->addWidget(m_timing);
 
     connect(m_editor, &widgets::WarpCurveEditor::dragStarted, &document, &Document::beginInteraction);

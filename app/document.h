@@ -146,6 +146,9 @@ signals:
     void derivedTakesChanged();
     /// The content of take `id` changed (a live result was recomputed).
     void takeChanged(const QString& id);
+    /// The label of derived take `id` changed (a live result computed from other parameters or
+    /// another take).
+    void takeLabelChanged(const QString& id);
     void selectionChanged(bunraku::app::TakeSlot slot);
     void currentTimeChanged(double seconds);
     /// Parameters changed in `sections` (ParameterSection flags).

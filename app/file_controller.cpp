@@ -2,6 +2,7 @@
 
 #include "app/commands.h"
 #include "app/document.h"
+#include "app/file_dialogs.h"
 #include "app/joint_map_dialog.h"
 #include "app/new_corpus_dialog.h"
 #include "app/recovery_dialog.h"
@@ -70,7 +71,7 @@ FileController::FileController(Document& document, QWidget* window)
     });
     connect(m_openCorpus, &QAction::triggered, this, [this] {
         if (!maybeSave()) return;
-        const QString folder = QFileDialog::getExistingDirectory(m_window, tr("Open corpus folder"));
+        const QString folder = chooseFolder(m_window, FilePurpose::Corpus, tr("Open corpus folder"), m_projectPath);
         if (!folder.isEmpty()) openCorpusFolder(folder);
     });
     connect(m_newCorpus, &QAction::triggered, this, [this] {
@@ -79,7 +80,7 @@ FileController::FileController(Document& document, QWidget* window)
     connect(m_import, &QAction::triggered, this, &FileController::chooseAndImport);
     connect(m_openProject, &QAction::triggered, this, [this] {
         if (!maybeSave()) return;
-        const QString file = QFileDialog::getOpenFileName(m_window, tr("Open project"), {}, tr("Bunraku projects (*.json)"));
+        const QString file = chooseOpenFile(m_window, FilePurpose::Project, tr("Open project"), tr("Bunraku projects (*.json)"), m_projectPath);
         if (!file.isEmpty()) openProject(file);
     });
     connect(m_save, &QAction::triggered, this, [this] {
@@ -89,7 +90,11 @@ FileController::FileController(Document& document, QWidget* window)
             saveProject(m_projectPath);
     });
     connect(m_saveAs, &QAction::triggered, this, [this] {
-        QString file = QFileDialog::getSaveFileName(m_window, tr("Save project"), m_projectPath, tr("Bunraku projects (*.json)"));
+        // The project's own name when it has one, else the corpus's.
+        const QString name = m_projectPath.isEmpty() ? suggestedFileName(m_document, kProjectSuffix, NameParts::Corpus)
+                                                     : QFileInfo(m_projectPath).fileName();
+        QString file = chooseSaveFile(m_window, FilePurpose::Project, tr("Save project"), name, tr("Bunraku projects (*.json)"),
+                                      m_projectPath);
         if (file.isEmpty()) return;
         if (!file.endsWith(QStringLiteral(".json"))) file += kProjectSuffix;
         saveProject(file);
@@ -466,9 +471,9 @@ void FileController::rebuildRecentMenu()
 
 void FileController::chooseAndImport()
 {
-    const QString file = QFileDialog::getOpenFileName(
-        m_window, tr("Import take"), {},
-        tr("Takes (*.csv *.bvh *.txt *.fastrak *.fst);;CSV (*.csv);;BVH (*.bvh);;FASTRAK (*.txt *.fastrak *.fst)"));
+    const QString file = chooseOpenFile(
+        m_window, FilePurpose::ImportTake, tr("Import take"),
+        tr("Takes (*.csv *.bvh *.txt *.fastrak *.fst);;CSV (*.csv);;BVH (*.bvh);;FASTRAK (*.txt *.fastrak *.fst)"), m_projectPath);
     if (!file.isEmpty()) importTakeFile(file);
 }
 

@@ -9,6 +9,8 @@
 
 #include <QMainWindow>
 
+#include <map>
+
 #include <vector>
 
 class QDockWidget;
@@ -33,6 +35,7 @@ class ExportController;
 class FileController;
 class MultimodalExportController;
 class PlaybackController;
+class SideColumns;
 class ViewportPanel;
 
 class MainWindow : public QMainWindow {
@@ -88,6 +91,7 @@ public:
     VideoExportResult exportViewVideo(const VideoExportOptions& options, const ExportProgress& progress = {});
 
 protected:
+    bool event(QEvent* event) override;
     void closeEvent(QCloseEvent* event) override;
     void dragEnterEvent(QDragEnterEvent* event) override;
     void dropEvent(QDropEvent* event) override;
@@ -109,6 +113,8 @@ private:
     void showStageStatus();
     /// File > Export 3D View Video...: the dialog, the export, then a message on error.
     void chooseViewVideo();
+    /// Help > Keyboard Shortcuts.
+    void showShortcuts();
     QVariantMap viewState() const;
     void restoreViewState(const QVariantMap& state);
 
@@ -133,6 +139,8 @@ private:
     QProgressBar* m_progress = nullptr;
     QLabel* m_status = nullptr;
     QLabel* m_stages = nullptr;
+    SideColumns* m_columns = nullptr;
+    std::map<int, QString> m_failures; ///< per analysis slot: its failure shown in the status bar
 };
 
 } // namespace bunraku::app

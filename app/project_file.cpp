@@ -196,8 +196,25 @@ analysis::Result<ProjectState> parseProject(const QByteArray& text, const QStrin
             return parseError(name, 0, std::string("expected \"view\".\"") + range.key + "\" in " + QString::number(range.low).toStdString() +
                                            ".." + QString::number(range.high).toStdString());
     }
-    if (viewObject.contains("part") && (!viewObject["part"].isString() || viewObject["part"].toString().size() > 256))
-        return parseError(name, 0, "expected \"view\".\"part\": a part name");
+    for (const char* key : {"part", "dof", "weightEmotion"})
+        if (viewObject.contains(key) && (!viewObject[key].isString() || viewObject[key].toString().size() > 256))
+            return parseError(name, 0, std::string("expected \"view\".\"") + key + "\": a name of at most 256 characters");
+    if (viewObject.contains("camera")) {
+        // {"angle", "elevation", "distance", "target": [x, y, z], "fov"}: finite, in the ranges a
+        // camera can take (render/camera.h).
+        const QJsonObject camera = viewObject["camera"].toObject();
+        const QJsonArray target = camera["target"].toArray();
+        const auto inRange = [](const QJsonValue& value, double low, double high) {
+            return value.isDouble() && value.toDouble() >= low && value.toDouble() <= high;
+        };
+        bool valid = viewObject["camera"].isObject() && inRange(camera["angle"], -3600.0, 3600.0) &&
+                     inRange(camera["elevation"], -90.0, 90.0) && inRange(camera["distance"], 10.0, 5000.0) &&
+                     (camera["fov"].isUndefined() || inRange(camera["fov"], 1.0, 170.0)) && target.size() == 3;
+        for (const QJsonValue& coordinate : target) valid = valid && inRange(coordinate, -1e6, 1e6);
+        if (!valid)
+            return parseError(name, 0, "expected \"view\".\"camera\": {\"angle\": deg, \"elevation\": deg in -90..90, "
+                                       "\"distance\": cm in 10..5000, \"target\": [x, y, z] cm, \"fov\": deg in 1..170}");
+    }
     state.view = viewObject.toVariantMap();
     return state;
 }

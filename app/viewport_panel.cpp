@@ -11,6 +11,7 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QHBoxLayout>
+#include <QToolBar>
 #include <QLabel>
 #include <QVBoxLayout>
 
@@ -41,15 +42,31 @@ ViewportPanel::ViewportPanel(Document& document, AnalysisController& analysis, Q
     m_axis = new QCheckBox(tr("Axis"), this);
     m_orbits = new QCheckBox(tr("Orbits"), this);
     m_grid = new QCheckBox(tr("Grid"), this);
+    m_partner = new QCheckBox(tr("Partner"), this);
     const auto visibility = m_viewport->visibility();
     m_puppet->setChecked(visibility.puppet);
     m_axis->setChecked(visibility.axis);
-    m_orbits->setChecked(visibility.orbits);
+    m_orbits->setChecked(false);
     m_grid->setChecked(visibility.grid);
-    m_orbits->setToolTip(tr("Orbits of the sensors (shown when the puppet is hidden, as in the thesis)"));
-    auto* toggles = new QHBoxLayout;
-    toggles->setContentsMargins(4, 2, 4, 0);
-    for (auto* box : {m_puppet, m_axis, m_orbits, m_grid}) {
+    m_partner->setChecked(visibility.partner);
+    m_puppet->setObjectName("showPuppet");
+    m_axis->setObjectName("showAxis");
+    m_orbits->setObjectName("showOrbits");
+    m_grid->setObjectName("showGrid");
+    m_partner->setObjectName("showPartner");
+    m_puppet->setToolTip(tr("The puppet posed by take A (and B beside it)"));
+    m_axis->setToolTip(tr("The motion axis (thesis 5.2.1): red front, green side, blue up, at the centre of mass"));
+    m_orbits->setToolTip(tr("The paths of the head, shoulder, arm and hand sensors over the whole take, drawn over the "
+                            "puppet, with a ball where each sensor is now"));
+    m_grid->setToolTip(tr("The floor: a 20 cm grid under the lowest point of the figures"));
+    m_partner->setToolTip(tr("Where the partner stands (the person greeted or served): a grey cone on a disc on the floor, "
+                             "110 cm in front of the puppet"));
+    // A tool bar, not a row of widgets: in a narrow dock what does not fit moves behind its
+    // extension button instead of widening the dock.
+    auto* toggles = new QToolBar(this);
+    toggles->setObjectName("viewToolBar");
+    toggles->setIconSize(QSize(16, 16));
+    for (auto* box : {m_puppet, m_axis, m_orbits, m_grid, m_partner}) {
         toggles->addWidget(box);
         connect(box, &QCheckBox::toggled, this, &ViewportPanel::applyVisibility);
     }
@@ -66,11 +83,12 @@ ViewportPanel::ViewportPanel(Document& document, AnalysisController& analysis, Q
         toggles->addWidget(box);
         m_figures[slot] = box;
     }
-    toggles->addStretch(1);
+    toggles->addSeparator();
+    createCameraActions(toggles);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(2);
-    layout->addLayout(toggles);
+    layout->addWidget(toggles);
     layout->addWidget(m_viewport, 1);
 
     // Uploading a scene costs about one frame (it happens once, at the next paint, however many
@@ -91,10 +109,14 @@ ViewportPanel::ViewportPanel(Document& document, AnalysisController& analysis, Q
             }
         emit partPicked(bodyPart);
     });
+    // Frame Selected fits the body part clicked (the right hand, not both hands).
+    connect(m_viewport, &widgets::ViewportWidget::partPicked, this, [this](int, const QString& bodyPart) { m_selectedPart = bodyPart; });
+    connect(m_viewport, &widgets::ViewportWidget::backgroundPicked, this, [this] { m_selectedPart.clear(); });
     connect(m_viewport, &widgets::ViewportWidget::bonePicked, this, [this](int sceneSlot, const QString& joint, const QString& part) {
         const auto shown = shownTakes(m_document); // the scene's takes are the shown slots, in order
         emit bonePicked(sceneSlot < int(shown.size()) ? int(shown[std::size_t(sceneSlot)].first) : sceneSlot, joint, part);
     });
+    applyVisibility();
     rebuildScene();
 }
 
@@ -137,6 +159,8 @@ void ViewportPanel::applyVisibility()
     visibility.axis = m_axis->isChecked();
     visibility.orbits = m_orbits->isChecked();
     visibility.grid = m_grid->isChecked();
+    visibility.partner = m_partner->isChecked();
+    visibility.orbitVisibility = render::OrbitVisibility::Always; // the box shows them, puppet or not
     const auto shown = shownTakes(m_document);
     for (std::size_t s = 0; s < shown.size() && s < visibility.figures.size(); ++s)
         visibility.figures[s] = render::FigureStyle(m_figures[int(shown[s].first)]->currentData().toInt());

@@ -4,6 +4,7 @@
 
 #include <qcustomplot.h>
 
+#include <QScrollArea>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -42,11 +43,19 @@ std::pair<double, double> padded(const ValueRange& range)
 
 } // namespace
 
-GraphGrid::GraphGrid(QWidget* parent) : QWidget(parent), m_plot(new QCustomPlot(this))
+GraphGrid::GraphGrid(QWidget* parent) : QWidget(parent), m_plot(new QCustomPlot)
 {
+    // The plot fills the widget; when every graph at its readable height does not fit (24
+    // graphs in a short dock), it scrolls instead of squeezing them into one another.
+    m_scroll = new QScrollArea(this);
+    m_scroll->setObjectName("graphScroll");
+    m_scroll->setFrameShape(QFrame::NoFrame);
+    m_scroll->setWidgetResizable(true);
+    m_scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    m_scroll->setWidget(m_plot);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
-    layout->addWidget(m_plot);
+    layout->addWidget(m_scroll);
     m_plot->setObjectName("graphPlot");
     // Paint buffers: [background grid main axes] [live] [cursor] [legend overlay].
     m_plot->addLayer(kLiveLayer, m_plot->layer("axes"), QCustomPlot::limAbove);
@@ -72,13 +81,37 @@ GraphGrid::~GraphGrid() = default;
 
 const analysis::Take* GraphGrid::slotTake(int slot) const { return m_takes[slot].get(); }
 
-void GraphGrid::setTakes(std::shared_ptr<const analysis::Take> takeA, std::shared_ptr<const analysis::Take> takeB)
+void GraphGrid::setTakes(std::shared_ptr<const analysis::Take> takeA, std::shared_ptr<const analysis::Take> takeB,
+                         const QString& identity)
 {
+    // Without an identity the takes are the same ones changed (only the first ones are "other").
     const bool firstTakes = !m_takes[0];
+    const QString shown = identity.isEmpty() ? m_shownIdentity : identity;
+    const bool otherTakes = firstTakes || shown != m_shownIdentity;
+    // The whole take was in view: a new length of the same takes is followed.
+    const double before = shownDuration();
+    const bool wholeShown = m_rangeLower <= 1e-9 && std::abs(m_rangeUpper - before) <= 1e-6 * std::max(1.0, before);
+    m_shownIdentity = shown;
     m_takes[0] = std::move(takeA);
     m_takes[1] = std::move(takeB);
     rebuild(false);
-    if (firstTakes) resetTimeRange();
+    const bool lengthChanged = std::abs(shownDuration() - before) > 1e-9;
+    if (otherTakes) {
+        m_followLength = false;
+        resetTimeRange();
+    } else if (lengthChanged && (wholeShown || m_followLength)) {
+        if (interactionActive()) m_followLength = true; // refitted once the drag ends
+        else resetTimeRange();
+    }
+}
+
+double GraphGrid::shownDuration() const
+{
+    double duration = 0.0;
+    for (const auto& take : m_takes)
+        if (take) duration = std::max(duration, take->duration());
+    if (m_ghost) duration = std::max(duration, m_ghost->duration());
+    return duration;
 }
 
 void GraphGrid::beginInteraction() { m_interacting = true; }
@@ -95,6 +128,10 @@ void GraphGrid::endInteraction()
     if (!m_interacting) return;
     m_interacting = false;
     settleValueRanges();
+    if (m_followLength) {
+        m_followLength = false;
+        resetTimeRange();
+    }
 }
 
 void GraphGrid::settleValueRanges()
@@ -184,6 +221,7 @@ void GraphGrid::rebuild(bool allData)
         m_graphs.clear();
         int lastRow = 0;
         for (const auto& cell : cells) lastRow = std::max(lastRow, cell.row);
+        m_plot->setMinimumHeight(cells.empty() ? 0 : (lastRow + 1) * kMinimumGraphHeight + 20);
         auto* margins = new QCPMarginGroup(m_plot);
         QFont tickFont = font();
         tickFont.setPointSizeF(std::max(6.0, tickFont.pointSizeF() - 2.0));
@@ -195,13 +233,19 @@ void GraphGrid::rebuild(bool allData)
             graph.rect->setMarginGroup(QCP::msLeft | QCP::msRight, margins);
             graph.rect->setRangeZoom(Qt::Horizontal);
             graph.rect->setRangeDrag(Qt::Horizontal);
-            graph.rect->setMinimumSize(60, 28);
+            graph.rect->setMinimumSize(60, 20);
+            // Thin top and bottom margins (QCustomPlot's default is 15 px each): in a row of
+            // kMinimumGraphHeight pixels the curve keeps most of the height. The bottom row's
+            // time labels still get the margin they need.
+            graph.rect->setMinimumMargins(QMargins(15, 6, 15, 4));
             auto* timeAxis = graph.rect->axis(QCPAxis::atBottom);
             auto* valueAxis = graph.rect->axis(QCPAxis::atLeft);
             graph.rect->axis(QCPAxis::atTop)->setVisible(false);
             graph.rect->axis(QCPAxis::atRight)->setVisible(false);
             timeAxis->setTickLabelFont(tickFont);
             valueAxis->setTickLabelFont(tickFont);
+            valueAxis->setLabelFont(tickFont);
+            valueAxis->setLabelPadding(1);
             // tick labels only under the bottom row; the tickers: applyTickers
             timeAxis->setTickLabels(cell.row == lastRow);
             timeAxis->setRange(m_rangeLower, m_rangeUpper);
@@ -279,6 +323,14 @@ void GraphGrid::rebuild(bool allData)
                 graph.curves[slot]->setData(times[slot], channelValues(*take, *graph.channels[slot]), true);
             else
                 graph.curves[slot]->setData(noData, noData);
+        }
+        if (changed[0] || changed[1]) {
+            // The unit of the graph's channel (take A's, else B's): "cm", "deg".
+            QString unit;
+            for (int slot = 0; slot < 2 && unit.isEmpty(); ++slot)
+                if (graph.channels[slot]) unit = QString::fromStdString(slotTake(slot)->channels[std::size_t(*graph.channels[slot])].unit);
+            auto* valueAxis = graph.rect->axis(QCPAxis::atLeft);
+            if (valueAxis->label() != unit) valueAxis->setLabel(unit);
         }
         if (graph.ghost && allData) {
             graph.ghostChannel = findChannel(*m_ghost, graph.cell.part, graph.cell.dof);
@@ -385,10 +437,7 @@ std::pair<double, double> GraphGrid::timeRange() const { return {m_rangeLower, m
 
 void GraphGrid::resetTimeRange()
 {
-    double duration = 0.0;
-    for (const auto& take : m_takes)
-        if (take) duration = std::max(duration, take->duration());
-    if (m_ghost) duration = std::max(duration, m_ghost->duration());
+    const double duration = shownDuration();
     setTimeRange(0.0, duration > 0.0 ? duration : 1.0);
 }
 
@@ -424,8 +473,11 @@ std::pair<double, double> GraphGrid::graphValueRange(int graph) const
 
 QRect GraphGrid::graphRect(int graph) const
 {
-    return m_graphs.at(std::size_t(graph)).rect->rect().translated(m_plot->pos());
+    const QRect rect = m_graphs.at(std::size_t(graph)).rect->rect();
+    return QRect(m_plot->mapTo(this, rect.topLeft()), rect.size());
 }
+
+QString GraphGrid::graphValueLabel(int graph) const { return m_graphs.at(std::size_t(graph)).rect->axis(QCPAxis::atLeft)->label(); }
 
 void GraphGrid::onMousePress(QMouseEvent* event)
 {

@@ -9,7 +9,9 @@
 /// interaction (beginInteraction/endInteraction) and for a burst of data changes less than
 /// kSettleMs apart; they autoscale once when it ends (a full replot).
 /// Zoom (wheel) and pan (middle or Shift+left drag) on time are shared by every graph; a left
-/// press or drag in any graph scrubs (timeScrubbed); a double click resets the time range.
+/// press or drag in any graph scrubs (timeScrubbed); a double click resets the time range, and so
+/// does showing other takes. Value axes carry the channels' units. Each graph keeps a readable
+/// height (kMinimumGraphHeight): when the widget is shorter, the graphs scroll.
 
 #include "widgets/graph_layout.h"
 
@@ -32,6 +34,7 @@ class QCPItemStraightLine;
 class QCPItemTracer;
 class QCPItemText;
 class QMouseEvent;
+class QScrollArea;
 
 namespace bunraku::widgets {
 
@@ -55,7 +58,12 @@ public:
     ~GraphGrid() override;
 
     /// Take A (required for any graph) and take B (may be null). Rebuilds the graphs.
-    void setTakes(std::shared_ptr<const analysis::Take> takeA, std::shared_ptr<const analysis::Take> takeB);
+    /// `identity` names what is shown (the app passes the takes' ids; empty: the same takes as
+    /// before, changed): when it changes, the time axis is refitted to the shown takes; while it
+    /// stays (a live take recomputed, a designed take on every drag step) the zoom is kept, and
+    /// a view showing the whole take follows a new length once no drag is under way.
+    void setTakes(std::shared_ptr<const analysis::Take> takeA, std::shared_ptr<const analysis::Take> takeB,
+                  const QString& identity = {});
     /// A take drawn faintly behind A (the original under a designed take); null hides it.
     void setGhost(std::shared_ptr<const analysis::Take> ghost);
     void setGraphLayout(GraphLayout layout);
@@ -95,6 +103,10 @@ public:
     std::pair<double, double> timeRange() const;
     /// Shows the whole of the longer take.
     void resetTimeRange();
+    /// The longest of the shown takes and the ghost, seconds.
+    double shownDuration() const;
+    /// The label of graph `graph`'s value axis (the channel's unit: "cm", "deg").
+    QString graphValueLabel(int graph) const;
 
     int graphCount() const { return int(m_graphs.size()); }
     const GraphCell& graphCell(int graph) const;
@@ -109,6 +121,8 @@ public:
     QRect graphRect(int graph) const;
 
     QCustomPlot* plot() const { return m_plot; }
+    /// The smallest height (pixels) of one row of graphs; below it the grid scrolls.
+    static constexpr int kMinimumGraphHeight = 34;
 
 signals:
     /// The user pressed or dragged at `seconds` in a graph.
@@ -145,6 +159,7 @@ private:
     const analysis::Take* slotTake(int slot) const;
 
     QCustomPlot* m_plot = nullptr;
+    QScrollArea* m_scroll = nullptr;
     std::shared_ptr<const analysis::Take> m_takes[2];
     std::shared_ptr<const analysis::Take> m_ghost;
     std::shared_ptr<const analysis::Take> m_plotted[2]; ///< the takes whose data the curves hold
@@ -162,6 +177,8 @@ private:
     double m_rangeLower = 0.0;
     double m_rangeUpper = 1.0;
     bool m_propagating = false;
+    QString m_shownIdentity; ///< what setTakes last showed (its identity)
+    bool m_followLength = false; ///< the whole take was shown when a drag changed its length
     enum class Drag { None, Scrub, Pan } m_drag = Drag::None;
     QCPAxisRect* m_dragRect = nullptr;
     double m_panAnchor = 0.0;

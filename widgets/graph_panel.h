@@ -20,7 +20,9 @@ public:
     GraphGrid* grid() const { return m_grid; }
 
     /// Sets both takes (B may be null) and refreshes the part and DOF choices.
-    void setTakes(std::shared_ptr<const analysis::Take> takeA, std::shared_ptr<const analysis::Take> takeB);
+    /// `identity` names the shown takes (GraphGrid::setTakes: other takes refit the time axis).
+    void setTakes(std::shared_ptr<const analysis::Take> takeA, std::shared_ptr<const analysis::Take> takeB,
+                  const QString& identity = {});
     void setGraphLayout(GraphLayout layout);
     void setTwoTakeMode(TwoTakeMode mode);
     void setValueScale(ValueScale scale);
@@ -28,6 +30,8 @@ public:
     void setThesisTicks(bool on);
     /// Shows `part` in the one-part layout (e.g. a part clicked in the 3D view).
     void selectPart(const QString& part);
+    /// Shows `dof` in the one-DOF and single layouts (a project's choice).
+    void selectDof(const QString& dof);
     QString selectedPart() const;
     QString selectedDof() const;
 

@@ -88,6 +88,13 @@ void ViewportWidget::setCamera(const render::Camera& camera)
 {
     m_camera = camera;
     m_cameraChosen = true;
+    // The camera fits the scene shown now, or (none uploaded yet: a project's camera) the next.
+    m_framedFor.reset();
+    if (!m_scene && m_offscreen && m_offscreen->renderer().hasScene()) {
+        render::BoundsQuery figures;
+        figures.figuresOnly = true;
+        m_framedFor = sceneBounds(figures);
+    }
     emit cameraChanged();
     invalidate();
 }
@@ -125,13 +132,10 @@ void ViewportWidget::prepareFrame()
     }
     if (renderer.hasScene()) {
         renderer.setVisibility(m_visibility);
-        if (m_reframe && !m_cameraChosen) {
-            m_camera = renderer.framingCamera();
-            emit cameraChanged();
-        }
-        m_reframe = false;
         if (m_time) renderer.setTime(*m_time);
         else renderer.setFrame(m_frame);
+        if (m_reframe) adaptCameraToScene();
+        m_reframe = false;
     }
 }
 

@@ -12,7 +12,7 @@
 #include <QComboBox>
 #include <QSlider>
 #include <QSpinBox>
-#include <QTableWidget>
+#include <QTreeWidget>
 
 using namespace bunraku;
 using app::TakeSlot;
@@ -35,7 +35,7 @@ TEST_CASE("changing tau recomputes the normalised take in the background, undo r
     REQUIRE(idle(*window));
     const auto first = panel->normalisedTake();
     REQUIRE(first);
-    REQUIRE(panel->varianceTable()->rowCount() == 5); // the cell's 5 takes
+    REQUIRE(panel->varianceTree()->topLevelItemCount() == 5); // the cell's 5 takes
     const Eigen::MatrixXd before = first->values;
     const int starts = window->analysis().scheduler().starts(app::AnalysisController::kNormaliseSlot);
 

@@ -97,9 +97,13 @@ TEST_CASE("a viewport without a chosen camera frames each new scene", "[widgets]
     REQUIRE(QTest::qWaitForWindowExposed(&viewport));
     (void)viewport.grabFramebuffer(); // paints: uploads the scene
     REQUIRE(viewport.renderer() != nullptr);
-    const render::Camera framing = viewport.renderer()->framingCamera();
+    // Reset Camera's view of the figures over the whole take (render/framing.h).
+    render::BoundsQuery figures;
+    figures.figuresOnly = true;
+    const render::Camera framing = render::resetCamera(viewport.renderer()->displayedBounds(viewport.camera(), figures), QSize(320, 240));
     CHECK(viewport.camera().target.z == Approx(framing.target.z));
-    CHECK(viewport.camera().target.z == Approx(viewport.renderer()->floorHeight() + 45.0f));
+    CHECK(viewport.camera().distance == Approx(framing.distance));
+    CHECK(viewport.camera().angleDeg == Approx(340.0f));
     // The framed puppet is on screen: its shoulder projects inside the image.
     const auto world_T_shoulder = viewport.renderer()->displayedPartTransforms(0, viewport.camera())[1];
     const auto shoulder = viewport.camera().project(glm::vec3(world_T_shoulder[3]), QSize(320, 240));
