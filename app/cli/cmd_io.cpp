@@ -62,7 +62,7 @@ Loaded load(const std::string& pathText, const ImportArguments& arguments, bool 
     }
     if (!fs::exists(path, ec)) throw CliError(path.string() + ": no such file or folder");
     const auto format = io::takeFileFormat(path);
-    const io::ImportOptions options = importOptions(arguments);
+    const io::ImportOptions options = importOptions(arguments, pathText);
     loaded.corpus.name = path.stem().string();
     if (format == io::TakeFileFormat::Bvh) {
         loaded.format = "bvh";

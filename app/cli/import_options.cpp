@@ -33,7 +33,7 @@ void addImportOptions(CLI::App* command, ImportArguments& arguments, bool withLa
         ->capture_default_str();
 }
 
-io::ImportOptions importOptions(const ImportArguments& arguments)
+io::ImportOptions importOptions(const ImportArguments& arguments, const std::string& path)
 {
     io::ImportOptions options;
     io::JointMap map;
@@ -46,11 +46,12 @@ io::ImportOptions importOptions(const ImportArguments& arguments)
     options.bvh.guessUnits = arguments.units == "auto";
     options.bvh.unitScale = arguments.units == "m" ? 100.0 : arguments.units == "mm" ? 0.1 : arguments.units == "in" ? 2.54 : 1.0;
     options.bvhLayout = arguments.allJoints ? io::BvhTakeLayout::AllJoints : io::BvhTakeLayout::PuppetParts;
-    if (arguments.rateHz != 0.0) {
-        if (!analysis::plausibleRate(arguments.rateHz))
-            throw CliError("--rate " + io::shortestNumber(arguments.rateHz) + ": " + analysis::rateExpectation());
-        options.csv.rateHz = arguments.rateHz;
-        options.fastrak.rateHz = arguments.rateHz;
+    if (arguments.rateHz) {
+        if (!analysis::plausibleRate(*arguments.rateHz))
+            throw CliError((path.empty() ? std::string() : path + ": ") + "--rate " + io::shortestNumber(*arguments.rateHz) + ": " +
+                           analysis::rateExpectation());
+        options.csv.rateHz = *arguments.rateHz;
+        options.fastrak.rateHz = *arguments.rateHz;
     }
     options.fastrak.units = arguments.fastrakUnits == "in" ? io::FastrakUnits::Inches : io::FastrakUnits::Centimetres;
     return options;

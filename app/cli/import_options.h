@@ -6,6 +6,7 @@
 
 #include "analysis/io/take_reader.h"
 
+#include <optional>
 #include <string>
 
 namespace bunraku::app::cli {
@@ -17,13 +18,14 @@ struct ImportArguments {
     std::string upAxis = "auto";
     std::string units = "auto";
     bool allJoints = false;
-    double rateHz = 0.0;
+    std::optional<double> rateHz; ///< --rate, when given
     std::string fastrakUnits = "cm";
 };
 
 /// Registers the options on `command`; `withLayout` adds --all-joints.
 void addImportOptions(CLI::App* command, ImportArguments& arguments, bool withLayout = true);
-/// The library options the arguments stand for (CliError on a bad joint map or rate).
-analysis::io::ImportOptions importOptions(const ImportArguments& arguments);
+/// The library options the arguments stand for (CliError on a bad joint map or rate; `path`,
+/// the file they are for, names it in the error).
+analysis::io::ImportOptions importOptions(const ImportArguments& arguments, const std::string& path = {});
 
 } // namespace bunraku::app::cli

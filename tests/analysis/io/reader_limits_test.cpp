@@ -108,6 +108,9 @@ TEST_CASE("import options survive a JSON round trip, and every field is stored",
     options.bvh.upAxis = BvhUpAxis::Z;
     options.bvh.unitScale = 100.0;
     options.bvh.kinematics.positionMode = BvhPositionMode::AddToOffset;
+    options.bvh.guessUnits = true;
+    options.bvh.side = BodySide::Left;
+    options.bvh.calibrationFrame = 12;
     options.bvhLayout = BvhTakeLayout::AllJoints;
     options.fastrak.rateHz = 7.5;
     options.fastrak.units = FastrakUnits::Inches;
@@ -118,6 +121,9 @@ TEST_CASE("import options survive a JSON round trip, and every field is stored",
     CHECK(importOptionsToJson(*back) == json);
     CHECK(back->bvh.jointMap->joints == options.bvh.jointMap->joints);
     CHECK(back->bvh.upAxis == BvhUpAxis::Z);
+    CHECK(back->bvh.guessUnits);
+    CHECK(back->bvh.side == BodySide::Left);
+    CHECK(back->bvh.calibrationFrame == 12);
     CHECK(back->fastrak.stations == options.fastrak.stations);
 
     // older projects: missing fields keep their defaults; wrong ones are refused by name
@@ -127,11 +133,13 @@ TEST_CASE("import options survive a JSON round trip, and every field is stored",
     CHECK_THAT(importOptionsFromJson({{"bvh", {{"upAxis", "sideways"}}}}, "p.json").error().message, Contains("upAxis"));
     CHECK_THAT(importOptionsFromJson({{"fastrak", {{"rateHz", 0}}}}, "p.json").error().message, Contains("fastrak.rateHz"));
     CHECK_THAT(importOptionsFromJson({{"bvh", {{"unitScale", -1}}}}, "p.json").error().message, Contains("unitScale"));
+    CHECK_THAT(importOptionsFromJson({{"bvh", {{"side", "middle"}}}}, "p.json").error().message, Contains("side"));
+    CHECK_THAT(importOptionsFromJson({{"bvh", {{"calibrationFrame", -3}}}}, "p.json").error().message, Contains("calibrationFrame"));
 
     // Every field of the options structs must be named in import_options_json.cpp: when one of
     // these sizes changes, a field was added or removed; list it there and update the figure.
     CHECK(sizeof(TakeCsvOptions) == 136);
-    CHECK(sizeof(BvhImportOptions) == 264);
+    CHECK(sizeof(BvhImportOptions) == 280);
     CHECK(sizeof(FastrakOptions) == 136);
-    CHECK(sizeof(ImportOptions) == 544);
+    CHECK(sizeof(ImportOptions) == 560);
 }
