@@ -1,13 +1,12 @@
 #include "app/analysis_controller.h"
 
-#include "analysis/axis/axis_channels.h"
-#include "analysis/axis/inertia_axis.h"
-#include "analysis/body/body_description.h"
 #include "analysis/core/puppet_layout.h"
 #include "analysis/io/atomic_file.h"
+#include "analysis/pipeline/parameters_json.h"
 #include "analysis/report/html_report.h"
 
 #include <QCoreApplication>
+#include <QScopedValueRollback>
 
 namespace bunraku::app {
 
@@ -34,6 +33,7 @@ QString AnalysisController::slotTitle(int slot)
     case kDecomposeSlot: return tr("Decomposition");
     case kAxesSlot: return tr("Motion axes");
     case kTakeAxisSlot: return tr("Motion axis of take A");
+    case kTakeAxisBSlot: return tr("Motion axis of take B");
     }
     return QString();
 }
@@ -49,13 +49,17 @@ AnalysisController::AnalysisController(Document& document, QObject* parent, std:
     connect(&document, &Document::parametersChanged, this, [this](int sections) {
         if (sections & (kPreprocessSection | kNormaliseSection | kDecomposeSection | kAxisSection)) update();
         if (sections & kWeightSection) synthesiseWeighted();
+        if (sections & kAxisSection) {
+            requestTakeAxis(TakeSlot::A);
+            requestTakeAxis(TakeSlot::B);
+        }
     });
     connect(&document, &Document::selectionChanged, this, [this](TakeSlot slot) {
+        requestTakeAxis(slot);
         if (slot != TakeSlot::A) return;
         resolveCell();
         publishNormalised();
         synthesiseWeighted();
-        requestTakeAxis();
     });
     corpusChanged();
 }
@@ -72,6 +76,7 @@ void AnalysisController::corpusChanged()
     m_decomposed.reset();
     m_axes.reset();
     m_weighted.reset();
+    m_weightError.clear();
     m_function.clear();
     m_emotion.clear();
     m_corpus = {};
@@ -81,7 +86,8 @@ void AnalysisController::corpusChanged()
     }
     resolveCell();
     update();
-    requestTakeAxis();
+    requestTakeAxis(TakeSlot::A);
+    requestTakeAxis(TakeSlot::B);
 }
 
 void AnalysisController::update()
@@ -140,7 +146,9 @@ void AnalysisController::stageFinished(int slot)
         update();
         break;
     case kNormaliseSlot:
+        // Only a result for the current key is delivered: it was computed with these parameters.
         m_normalised = m_scheduler->result<pl::NormaliseOutput>(slot);
+        m_normalisedParameters = m_document.parameters().normalise;
         publishNormalised();
         update();
         break;
@@ -153,10 +161,12 @@ void AnalysisController::stageFinished(int slot)
         m_axes = m_scheduler->result<pl::AxisOutput>(slot);
         break;
     case kTakeAxisSlot: {
-        const auto axis = m_scheduler->result<analysis::Take>(slot);
-        if (axis)
-            m_document.setLiveTake(QStringLiteral("axis"), tr("motion axis of %1").arg(QString::fromStdString(axis->labels.source.substr(8))),
-                                   axis);
+        const auto axis = m_scheduler->result<pl::TakeAxis>(slot);
+        if (axis) {
+            const pl::Shared<analysis::Take> coordinates(axis, &axis->coordinates);
+            m_document.setLiveTake(QStringLiteral("axis"),
+                                   tr("motion axis of %1").arg(QString::fromStdString(coordinates->labels.source.substr(8))), coordinates);
+        }
         break;
     }
     }
@@ -181,15 +191,60 @@ std::pair<std::string, std::string> AnalysisController::weightedCell() const
 {
     const std::string& neutral = m_document.corpus().neutralEmotion;
     if (m_emotion != neutral || !m_decomposed) return {m_function, m_emotion};
-    // The neutral emotion has z = 0: weight the function's first other emotion instead.
-    for (const auto& component : m_decomposed->components.emotions)
+    // The neutral emotion has z = 0: weight the chosen emotion of the function, else its first.
+    const auto& emotions = m_decomposed->components.emotions;
+    for (const auto& component : emotions)
+        if (component.function == m_function && component.emotion == m_weightEmotion && component.emotion != neutral)
+            return {m_function, component.emotion};
+    for (const auto& component : emotions)
         if (component.function == m_function && component.emotion != neutral) return {m_function, component.emotion};
     return {m_function, m_emotion};
 }
 
+void AnalysisController::setWeightEmotion(const QString& emotion)
+{
+    if (emotion.toStdString() == m_weightEmotion) return;
+    m_weightEmotion = emotion.toStdString();
+    synthesiseWeighted();
+}
+
+QStringList AnalysisController::weightableEmotions() const
+{
+    QStringList emotions;
+    if (!m_decomposed) return emotions;
+    for (const auto& component : m_decomposed->components.emotions)
+        if (component.function == m_function && component.emotion != m_document.corpus().neutralEmotion)
+            emotions << QString::fromStdString(component.emotion);
+    return emotions;
+}
+
+QString AnalysisController::normaliseParametersText(const pl::NormaliseParameters& parameters)
+{
+    QString text = tr("tau %1, T_cmp %2, scales 1-%3").arg(parameters.tau).arg(parameters.searchBand).arg(parameters.maxScale);
+    const pl::NormaliseParameters thesis;
+    if (parameters.coupling != thesis.coupling) text += tr(", coupling %1").arg(QString::fromStdString(parameters.coupling));
+    if (parameters.path != thesis.path) text += tr(", %1 path").arg(QString::fromStdString(pl::pathName(parameters.path)));
+    return text;
+}
+
+QString AnalysisController::decompositionText(const pl::DecomposeOutput& decomposed)
+{
+    if (!decomposed.km2o) return tr("least squares");
+    return tr("KM2O, M = %1%2")
+        .arg(decomposed.km2o->correlationLength)
+        .arg(decomposed.parameters.correlationLength == 0 ? tr(" (chosen by P)") : QString());
+}
+
 void AnalysisController::publishNormalised()
 {
-    const QString idA = m_document.selectedId(TakeSlot::A);
+    // Publishing the take shown as A announces a new selection, which would publish it again.
+    if (m_publishing) return;
+    const QScopedValueRollback<bool> publishing(m_publishing, true);
+    QString idA = m_document.selectedId(TakeSlot::A);
+    // The normalised take itself shown as A: recomputed for the take it was computed from.
+    if (idA == QStringLiteral("live/normalised"))
+        for (const auto& derived : m_document.derivedTakes())
+            if (derived.id == idA) idA = derived.ghostId;
     const TakePointer takeA = m_document.take(idA);
     if (!m_normalised || !takeA || !idA.startsWith(QStringLiteral("corpus/"))) return; // keep it while viewing derived takes
     const pl::CellNormalisation* cell = m_normalised->cell(takeA->labels.function, takeA->labels.emotion);
@@ -198,7 +253,12 @@ void AnalysisController::publishNormalised()
         if (cell->takeIndices[k] != takeA->labels.takeIndex) continue;
         auto take = std::make_shared<analysis::Take>(cell->normalisations[k].normalised);
         take->labels.takeIndex = takeA->labels.takeIndex;
-        m_document.setLiveTake(QStringLiteral("normalised"), tr("%1 normalised").arg(m_document.takeLabel(idA)), take, idA);
+        // The label names the take, its reference and the parameters it was computed with.
+        m_document.setLiveTake(QStringLiteral("normalised"),
+                               tr("%1 normalised to %2 (%3)")
+                                   .arg(m_document.takeLabel(idA), QString::fromStdString(cell->referenceName),
+                                        normaliseParametersText(m_normalisedParameters)),
+                               take, idA);
         return;
     }
 }
@@ -216,25 +276,38 @@ void AnalysisController::synthesiseWeighted()
     }
     m_weightError.clear();
     m_weighted = std::make_shared<const analysis::Take>(std::move(take).value());
-    const QString label = tr("%1/%2 a=%3").arg(QString::fromStdString(function), QString::fromStdString(emotion)).arg(weight, 0, 'f', 2);
+    const QString label = tr("%1/%2 a=%3 (%4)")
+                              .arg(QString::fromStdString(function), QString::fromStdString(emotion))
+                              .arg(weight, 0, 'f', 2)
+                              .arg(decompositionText(*m_decomposed));
     m_document.setLiveTake(QStringLiteral("weighted"), label, m_weighted);
     emit weightedChanged();
 }
 
-void AnalysisController::requestTakeAxis()
+void AnalysisController::requestTakeAxis(TakeSlot slot)
 {
-    const QString idA = m_document.selectedId(TakeSlot::A);
-    const TakePointer take = m_document.take(idA);
-    if (!take || idA == QStringLiteral("live/axis") || !analysis::hasPuppetLayout(*take)) return;
-    const pl::StageKey key = pl::KeyBuilder("take-axis").add(pl::takeKey(*take)).key();
-    m_scheduler->request(kTakeAxisSlot, key, [take](const analysis::RunControl& control) -> analysis::Result<StageValue> {
-        static const analysis::AxisModel model = analysis::makeAxisModel(analysis::defaultBodyDescription());
-        auto axis = analysis::computeMotionAxis(model, *take, {}, control);
-        if (!axis) return axis.error();
-        auto axisTake = std::make_shared<analysis::Take>(analysis::axisTake(*axis));
-        axisTake->labels.source = "axis of " + take->displayName();
-        return erase<analysis::Take>(std::move(axisTake));
-    });
+    const int id = takeAxisSlot(slot);
+    const TakePointer take = m_document.selectedTake(slot);
+    TakePointer& asked = m_axisTakes[slot == TakeSlot::A ? 0 : 1];
+    if (!take || !analysis::hasPuppetLayout(*take)) { // nothing to pose (an axis take, for one)
+        asked.reset();
+        m_scheduler->clear(id);
+        return;
+    }
+    const pl::AxisParameters parameters = m_document.parameters().axis;
+    asked = take;
+    m_scheduler->request(id, pl::takeAxisKey(pl::takeKey(*take), parameters),
+                         [take, parameters](const analysis::RunControl& control) -> analysis::Result<StageValue> {
+                             auto axis = pl::runTakeAxis(*take, parameters, control);
+                             if (!axis) return axis.error();
+                             return erase<pl::TakeAxis>(std::make_shared<const pl::TakeAxis>(std::move(axis).value()));
+                         });
+}
+
+pl::Shared<pl::TakeAxis> AnalysisController::takeAxis(TakeSlot slot, const TakePointer& take) const
+{
+    if (!take || m_axisTakes[slot == TakeSlot::A ? 0 : 1] != take) return nullptr;
+    return m_scheduler->result<pl::TakeAxis>(takeAxisSlot(slot));
 }
 
 analysis::Result<std::string> AnalysisController::reportHtml() const

@@ -8,7 +8,10 @@
 ///
 /// It is the only publisher of the analysis's live takes: "normalised" (take A on its cell's
 /// reference time), "weighted" (y + a z of take A's cell) and "axis" (take A's motion axis).
-/// Views read them from the document and never write them.
+/// Views read them from the document and never write them. The motion axes of the shown takes
+/// A and B (pipeline::runTakeAxis, keyed by each take's content and the axis parameters) are
+/// scheduler jobs too: the 3D view draws them (takeAxis) and take A's is the "axis" take, one
+/// computation per key for both.
 
 #include "app/document.h"
 #include "app/stage_scheduler.h"
@@ -16,6 +19,7 @@
 #include "analysis/pipeline/chain.h"
 
 #include <QObject>
+#include <QStringList>
 
 #include <filesystem>
 #include <memory>
@@ -26,8 +30,9 @@ namespace bunraku::app {
 class AnalysisController : public QObject {
     Q_OBJECT
 public:
-    /// Scheduler slots: the pipeline's stages, and take A's motion axis.
-    enum Slot { kPreprocessSlot = 1, kNormaliseSlot = 2, kDecomposeSlot = 3, kAxesSlot = 5, kTakeAxisSlot = 10 };
+    /// Scheduler slots: the pipeline's stages, and the motion axes of takes A and B.
+    enum Slot { kPreprocessSlot = 1, kNormaliseSlot = 2, kDecomposeSlot = 3, kAxesSlot = 5, kTakeAxisSlot = 10, kTakeAxisBSlot = 11 };
+    static int takeAxisSlot(TakeSlot slot) { return slot == TakeSlot::A ? kTakeAxisSlot : kTakeAxisBSlot; }
     static QString slotTitle(int slot);
 
     /// `executor` null: the thread pool (tests pass a manual one).
@@ -43,15 +48,34 @@ public:
     analysis::pipeline::Shared<analysis::pipeline::DecomposeOutput> decomposed() const { return m_decomposed; }
     analysis::pipeline::Shared<analysis::pipeline::AxisOutput> axes() const { return m_axes; }
     bool isCurrent(int slot) const;
+    /// The motion axis of `take` shown in `slot`: null unless it is the take the slot's axis was
+    /// asked for and that axis is computed for the current axis parameters (never another
+    /// take's or older parameters').
+    analysis::pipeline::Shared<analysis::pipeline::TakeAxis> takeAxis(TakeSlot slot, const TakePointer& take) const;
     /// The keys of every stage for the document's corpus and parameters.
     analysis::pipeline::ChainKeys keys() const { return m_keys; }
+
+    /// The normalise parameters the current normalise result was computed with.
+    const analysis::pipeline::NormaliseParameters& normalisedParameters() const { return m_normalisedParameters; }
+    /// "tau 4, T_cmp 20, scales 1-16" (and the coupling and path when not the thesis's): what a
+    /// normalised take's label and the panel name.
+    static QString normaliseParametersText(const analysis::pipeline::NormaliseParameters& parameters);
+    /// "least squares" / "KM2O, M = 2 (chosen by P)": the method of a decomposition.
+    static QString decompositionText(const analysis::pipeline::DecomposeOutput& decomposed);
 
     /// The cell the panels show: take A's when it is a corpus take, else the last one.
     const std::string& cellFunction() const { return m_function; }
     const std::string& cellEmotion() const { return m_emotion; }
-    /// The cell weighted by the emotion weight: take A's, or its function's first emotional cell
-    /// when take A is neutral (z = 0 there).
+    /// The cell weighted by the emotion weight: take A's, or when take A is neutral (z = 0
+    /// there) its function's cell of the chosen emotion (setWeightEmotion), else of its first
+    /// emotion.
     std::pair<std::string, std::string> weightedCell() const;
+    /// The emotion a neutral take A is weighted against (empty: its function's first); view
+    /// state, kept in projects. Re-synthesises the weighted take.
+    void setWeightEmotion(const QString& emotion);
+    QString weightEmotion() const { return QString::fromStdString(m_weightEmotion); }
+    /// The emotions of take A's function that have an emotion component, in corpus order.
+    QStringList weightableEmotions() const;
     /// y + a z of weightedCell(), null before a decomposition.
     TakePointer weightedTake() const { return m_weighted; }
     QString weightError() const { return m_weightError; }
@@ -74,7 +98,7 @@ private:
     void resolveCell();
     void publishNormalised();
     void synthesiseWeighted();
-    void requestTakeAxis();
+    void requestTakeAxis(TakeSlot slot);
 
     Document& m_document;
     StageScheduler* m_scheduler = nullptr;
@@ -87,9 +111,12 @@ private:
     analysis::pipeline::Shared<analysis::pipeline::AxisOutput> m_axes;
     std::string m_function;
     std::string m_emotion;
+    std::string m_weightEmotion;
+    bool m_publishing = false; ///< inside publishNormalised
+    analysis::pipeline::NormaliseParameters m_normalisedParameters;
     TakePointer m_weighted;
     QString m_weightError;
-    TakePointer m_axisSource;
+    TakePointer m_axisTakes[2]; ///< the takes the axis slots were last asked for
 };
 
 } // namespace bunraku::app

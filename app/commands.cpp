@@ -37,13 +37,15 @@ bool ParameterCommand::mergeWith(const QUndoCommand* other)
     if (!sameDrag && !sameSteps) return false;
     m_after = next->m_after;
     m_stepMilliseconds = next->m_stepMilliseconds;
+    setText(next->text()); // "Set T_cmp to 30 frames": the value the merged steps ended at
     setObsolete(m_after == m_before);
     return true;
 }
 
 SetEmotionWeight::SetEmotionWeight(Document* document, AnalysisParameters after)
-    : ParameterCommand(document, std::move(after), QCoreApplication::translate("commands", "Set emotion weight"), kSetEmotionWeightId,
-                       InDrag | InSteps)
+    : ParameterCommand(document, after,
+                       QCoreApplication::translate("commands", "Set emotion weight a to %1").arg(after.design.emotionWeight, 0, 'f', 2),
+                       kSetEmotionWeightId, InDrag | InSteps)
 {
 }
 
@@ -75,8 +77,9 @@ RemovePhraseBoundary::RemovePhraseBoundary(Document* document, AnalysisParameter
 {
 }
 
-ImportTake::ImportTake(Document* document, TakePointer take, const QString& label, const QString& sourcePath)
-    : m_document(document), m_take{document->nextImportedId(), label, std::move(take), sourcePath, QString()}
+ImportTake::ImportTake(Document* document, TakePointer take, const QString& label, const QString& sourcePath,
+                       std::shared_ptr<const analysis::io::ImportOptions> options)
+    : m_document(document), m_take{document->nextImportedId(), label, std::move(take), sourcePath, QString(), std::move(options)}
 {
     setText(QCoreApplication::translate("commands", "Import %1").arg(label));
 }

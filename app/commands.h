@@ -118,7 +118,9 @@ public:
 /// Adds a take read from a file under "Derived takes" and shows it as take A.
 class ImportTake : public QUndoCommand {
 public:
-    ImportTake(Document* document, TakePointer take, const QString& label, const QString& sourcePath);
+    /// `options`: what the take was read with, kept for the project file (null: the defaults).
+    ImportTake(Document* document, TakePointer take, const QString& label, const QString& sourcePath,
+               std::shared_ptr<const analysis::io::ImportOptions> options = nullptr);
 
     void undo() override;
     void redo() override;

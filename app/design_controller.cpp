@@ -271,6 +271,11 @@ analysis::WarpCurve DesignController::extractedCurve() const
     return m_prepared && m_prepared->cell ? m_prepared->cell->extracted.phase.curve : analysis::WarpCurve{};
 }
 
+analysis::ApproximationError DesignController::approximationError() const
+{
+    return m_prepared && m_prepared->cell ? m_prepared->cell->approximation : analysis::ApproximationError{};
+}
+
 void DesignController::editWarp(const analysis::WarpCurve& curve)
 {
     if (!analysis::validateWarpCurve(curve).ok()) return;

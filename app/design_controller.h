@@ -79,6 +79,10 @@ public:
     Eigen::VectorXd extractedWarp() const;
     /// The extracted control points, empty when unknown.
     analysis::WarpCurve extractedCurve() const;
+    /// Thesis 5.4.1 (eq. 5.18, Fig. 5.16) for the emotional cell of targetCell(): the
+    /// approximation error per largest scale and axis DOF (computed by the axis stage); empty
+    /// without an emotional cell.
+    analysis::ApproximationError approximationError() const;
     /// "live/functional": the functional take (the neutral cell's average take).
     QString sourceId() const;
     /// The emotional cell the phase and gains were extracted from ("function/emotion"), empty when none.

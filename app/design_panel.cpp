@@ -3,10 +3,13 @@
 #include "app/design_controller.h"
 #include "app/document.h"
 
+#include "analysis/axis/axis_channels.h"
+
 #include "widgets/gain_table.h"
+#include "widgets/scale_error_plot.h"
 #include "widgets/warp_curve_editor.h"
 
-#include <QHBoxLayout>
+#include <QGridLayout>
 #include <QLabel>
 #include <QPushButton>
 #include <QSplitter>
@@ -19,6 +22,7 @@ DesignPanel::DesignPanel(Document& document, DesignController& controller, QWidg
 {
     m_editor = new widgets::WarpCurveEditor(this);
     m_gains = new widgets::GainTable(this);
+    m_scaleError = new widgets::ScaleErrorPlot(this);
     m_inputs = new QLabel(tr("Preparing the design..."), this);
     m_inputs->setWordWrap(true);
     m_timing = new QLabel(this);
@@ -41,22 +45,23 @@ DesignPanel::DesignPanel(Document& document, DesignController& controller, QWidg
     auto* splitter = new QSplitter(Qt::Vertical, this);
     splitter->addWidget(m_editor);
     splitter->addWidget(m_gains);
+    splitter->addWidget(m_scaleError);
     splitter->setStretchFactor(0, 3);
     splitter->setStretchFactor(1, 2);
-    auto* buttons = new QHBoxLayout;
-    buttons->addWidget(showDesigned);
-    buttons->addWidget(extractedGains);
-    buttons->addWidget(resetGains);
-    auto* phraseButtons = new QHBoxLayout;
-    phraseButtons->addWidget(addBoundary);
-    phraseButtons->addWidget(removeBoundary);
-    phraseButtons->addWidget(resetBoundaries);
+    splitter->setStretchFactor(2, 2);
+    // Two columns of buttons: the dock stays narrow enough for a 1280-pixel screen.
+    auto* buttons = new QGridLayout;
+    const QList<QPushButton*> order{showDesigned, extractedGains, resetGains, addBoundary, removeBoundary, resetBoundaries};
+    for (int i = 0; i < order.size(); ++i) {
+        order[i]->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+        order[i]->setMinimumWidth(order[i]->fontMetrics().horizontalAdvance(order[i]->text()) + 24);
+        buttons->addWidget(order[i], i / 2, i % 2);
+    }
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
     layout->addWidget(m_inputs);
     layout->addWidget(splitter, 1);
     layout->addLayout(buttons);
-    layout->addLayout(phraseButtons);
     layout->addWidget(m_timing);
 
     connect(m_editor, &widgets::WarpCurveEditor::dragStarted, &document, &Document::beginInteraction);
@@ -112,6 +117,9 @@ void DesignPanel::refresh()
     m_editor->setCurve(m_controller.warpCurve());
     m_gains->setGains(m_controller.gains());
     m_gains->setExtracted(m_controller.extractedGains());
+    std::vector<std::string> dofs;
+    for (const auto& channel : analysis::axisCoordinateChannels()) dofs.push_back(channel.name());
+    m_scaleError->setError(m_controller.approximationError(), dofs, m_controller.targetCell());
     showStatus();
 }
 

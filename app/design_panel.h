@@ -3,7 +3,8 @@
 /// gain table (with the gains extracted for the phrase boundaries in use), and buttons to show
 /// the designed take (with its original as a ghost), to use the extracted gains, and to add a
 /// phrase boundary at the time cursor or remove the one nearest to it (so the phrase structure
-/// is editable without the mouse; the timeline's ticks do the same by mouse).
+/// is editable without the mouse; the timeline's ticks do the same by mouse), and under them the
+/// per-scale approximation error of the extracted cell (thesis 5.4.1, Fig. 5.16).
 
 #include <QWidget>
 
@@ -11,6 +12,7 @@ class QLabel;
 
 namespace bunraku::widgets {
 class GainTable;
+class ScaleErrorPlot;
 class WarpCurveEditor;
 } // namespace bunraku::widgets
 
@@ -26,6 +28,8 @@ public:
 
     widgets::WarpCurveEditor* editor() const { return m_editor; }
     widgets::GainTable* gainTable() const { return m_gains; }
+    /// Fig. 5.16 of the emotional cell the phase was extracted from.
+    widgets::ScaleErrorPlot* scaleErrorPlot() const { return m_scaleError; }
 
     /// The status line under the editors (synthesis time, why extracted gains are missing).
     QString statusText() const;
@@ -40,6 +44,7 @@ private:
     DesignController& m_controller;
     widgets::WarpCurveEditor* m_editor = nullptr;
     widgets::GainTable* m_gains = nullptr;
+    widgets::ScaleErrorPlot* m_scaleError = nullptr;
     QLabel* m_inputs = nullptr;
     QLabel* m_timing = nullptr;
 };

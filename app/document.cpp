@@ -104,15 +104,17 @@ void Document::setLiveTake(const QString& name, const QString& label, TakePointe
         return;
     }
     if (index >= 0) {
+        const bool relabelled = m_derived[std::size_t(index)].label != label;
         m_derived[std::size_t(index)].take = std::move(take);
         m_derived[std::size_t(index)].label = label;
         m_derived[std::size_t(index)].ghostId = ghostId;
+        if (relabelled) emit takeLabelChanged(id);
         emit takeChanged(id);
         for (int slot = 0; slot < 2; ++slot)
             if (m_selected[slot] == id) emit selectionChanged(TakeSlot(slot));
         return;
     }
-    m_derived.push_back(DerivedTake{id, label, std::move(take), QString(), ghostId});
+    m_derived.push_back(DerivedTake{id, label, std::move(take), QString(), ghostId, nullptr});
     emit derivedTakesChanged();
 }
 

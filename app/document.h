@@ -21,6 +21,10 @@
 #include <memory>
 #include <vector>
 
+namespace bunraku::analysis::io {
+struct ImportOptions;
+}
+
 namespace bunraku::app {
 
 /// The two shown takes (the corpus browser's slots map onto these).
@@ -51,6 +55,8 @@ struct DerivedTake {
     TakePointer take;
     QString sourcePath; ///< imported takes: the file; empty for live results
     QString ghostId;    ///< live results: the take drawn faintly behind it (its original)
+    /// imported takes: the options they were read with (stored in projects); null for defaults
+    std::shared_ptr<const analysis::io::ImportOptions> importOptions;
 };
 
 class Document : public QObject {
@@ -140,6 +146,9 @@ signals:
     void derivedTakesChanged();
     /// The content of take `id` changed (a live result was recomputed).
     void takeChanged(const QString& id);
+    /// The label of derived take `id` changed (a live result computed from other parameters or
+    /// another take).
+    void takeLabelChanged(const QString& id);
     void selectionChanged(bunraku::app::TakeSlot slot);
     void currentTimeChanged(double seconds);
     /// Parameters changed in `sections` (ParameterSection flags).

@@ -3,6 +3,8 @@
 #include "app/analysis_controller.h"
 #include "app/commands.h"
 
+#include "widgets/bounded_spin_box.h"
+
 #include "analysis/decompose/emotion_weight.h"
 #include "analysis/pipeline/parameters_json.h"
 
@@ -36,25 +38,35 @@ EmotionPanel::EmotionPanel(Document& document, AnalysisController& analysis, QWi
     m_method->addItem(tr("least squares (thesis 4.3.1)"), QStringLiteral("least-squares"));
     m_method->setObjectName("emotionMethod");
     m_method->setToolTip(tr("Decomposition of the corpus into function and emotion components"));
-    m_order = new QSpinBox(this);
+    m_order = new widgets::BoundedSpinBox(this);
     m_order->setObjectName("emotionOrder");
     m_order->setRange(0, 64);
     m_order->setSpecialValueText(tr("chosen by P (4.4.4)"));
-    m_order->setToolTip(tr("KM2O correlation length M; 0 chooses it by the relative error P over 1..M_max as thesis 4.4.4 "
-                           "(which found M = 2); must not exceed M_max = floor(3 sqrt(T + 1)) - 1 for T frames"));
+    m_order->setDescription(tr("KM2O correlation length M; 0 chooses it by the relative error P over 1..M_max as thesis "
+                               "4.4.4 (which found M = 2); must not exceed M_max = floor(3 sqrt(T + 1)) - 1 for T frames."));
+    m_emotion = new QComboBox(this);
+    m_emotion->setObjectName("emotionChoice");
+    m_emotion->setToolTip(tr("The emotion z a neutral take is weighted against (x = y + a z); an emotional take A is "
+                             "weighted with its own emotion"));
     m_weight = new QSlider(Qt::Horizontal, this);
     m_weight->setObjectName("emotionWeight");
     m_weight->setRange(int(analysis::kMinEmotionWeight * kSliderScale), int(analysis::kMaxEmotionWeight * kSliderScale));
     m_weight->setValue(int(kSliderScale));
-    m_weight->setToolTip(tr("a = 0: the function alone; 1: the measured emotion; > 1: emphasised (thesis eq. 4.45)"));
+    m_weight->setToolTip(tr("a = 0: the function alone; 1: the measured emotion; > 1: emphasised (thesis eq. 4.45). "
+                            "From %1 to %2.")
+                             .arg(analysis::kMinEmotionWeight, 0, 'f', 2)
+                             .arg(analysis::kMaxEmotionWeight, 0, 'f', 2));
     m_label = new QLabel(tr("Decomposing the corpus..."), this);
+    m_label->setObjectName("emotionSummary");
     m_label->setWordWrap(true);
     auto* show = new QPushButton(tr("Show weighted as A"), this);
     auto* form = new QFormLayout;
     form->addRow(tr("Input"), m_input);
     form->addRow(tr("Method"), m_method);
     form->addRow(tr("Correlation length M"), m_order);
+    form->addRow(tr("Emotion z of"), m_emotion);
     form->addRow(tr("Emotion weight a"), m_weight);
+    form->setRowWrapPolicy(QFormLayout::WrapLongRows);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
     layout->addLayout(form);
@@ -73,28 +85,43 @@ EmotionPanel::EmotionPanel(Document& document, AnalysisController& analysis, QWi
             [normalised](AnalysisParameters& p) {
                 p.decompose.input = normalised ? pl::DecomposeInput::Normalised : pl::DecomposeInput::Preprocessed;
             },
-            tr("Set decomposition input"));
+            tr("Set the decomposition input to %1").arg(m_input->itemText(index)));
     });
     connect(m_method, &QComboBox::currentIndexChanged, this, [this](int index) {
         const bool km2o = m_method->itemData(index).toString() == QStringLiteral("km2o");
         changeStageParameters(
             m_document,
             [km2o](AnalysisParameters& p) { p.decompose.method = km2o ? pl::DecomposeMethod::Km2o : pl::DecomposeMethod::LeastSquares; },
-            tr("Set decomposition method"));
+            tr("Set the decomposition method to %1").arg(m_method->itemText(index)));
     });
     // Consecutive steps of M (arrows, keys, wheel) are one undo step until the box loses the focus.
     connect(m_order, &QSpinBox::valueChanged, this, [this](int order) {
         changeStageParameters(
-            m_document, [order](AnalysisParameters& p) { p.decompose.correlationLength = order; }, tr("Set correlation length M"),
+            m_document, [order](AnalysisParameters& p) { p.decompose.correlationLength = order; },
+            order == 0 ? tr("Set the correlation length M to chosen by P") : tr("Set the correlation length M to %1").arg(order),
             QStringLiteral("decompose.M"));
     });
     connect(m_order, &QSpinBox::editingFinished, &document, &Document::endStepSeries);
+    connect(m_order, &widgets::BoundedSpinBox::clamped, this, [this](int requested, int applied) {
+        emit statusMessage(tr("M %1 is %2 the limit: set to %3 (%4)")
+                               .arg(requested)
+                               .arg(requested > applied ? tr("above") : tr("below"))
+                               .arg(applied)
+                               .arg(m_order->limitsText()));
+    });
+    connect(m_emotion, &QComboBox::activated, this, [this](int index) {
+        m_analysis.setWeightEmotion(m_emotion->itemData(index).toString());
+    });
     connect(show, &QPushButton::clicked, this, [this] { m_document.selectTake(TakeSlot::A, QStringLiteral("live/weighted")); });
 
     connect(&document, &Document::parametersChanged, this, [this](int sections) {
         if (sections & (kDecomposeSection | kWeightSection)) showParameters();
     });
-    connect(&document, &Document::corpusChanged, this, &EmotionPanel::showParameters);
+    // Another corpus: its parameters (the defaults) and no result until it is decomposed.
+    connect(&document, &Document::corpusChanged, this, [this] {
+        showParameters();
+        showResult();
+    });
     connect(&analysis, &AnalysisController::weightedChanged, this, &EmotionPanel::showResult);
     connect(&analysis.scheduler(), &StageScheduler::stateChanged, this, [this](int slot) {
         if (slot == AnalysisController::kDecomposeSlot) showResult();
@@ -148,24 +175,32 @@ void EmotionPanel::showResult()
     }
     const auto decomposed = m_analysis.decomposed();
     const TakePointer weighted = m_analysis.weightedTake();
+    showEmotions();
     if (!decomposed || !weighted) {
         m_label->setText(tr("Decomposing the corpus..."));
         return;
     }
     const auto [function, emotion] = m_analysis.weightedCell();
     const double weight = m_document.parameters().design.emotionWeight;
-    QString method = tr("least squares");
-    if (decomposed->km2o)
-        method = tr("KM2O, M = %1%2, mean P = %3 %")
-                     .arg(decomposed->km2o->correlationLength)
-                     .arg(decomposed->parameters.correlationLength == 0 ? tr(" (chosen by P)") : QString())
-                     .arg(decomposed->km2o->meanCellErrorPercent, 0, 'f', 2);
+    QString method = AnalysisController::decompositionText(*decomposed);
+    if (decomposed->km2o) method += tr(", mean P = %1 %").arg(decomposed->km2o->meanCellErrorPercent, 0, 'f', 2);
     m_label->setText(tr("Weighted take <b>%1/%2</b>: x = y + a z, a = %3, components by %4 of the %5 takes%6 (the live take "
                         "\"weighted\").")
                          .arg(QString::fromStdString(function), QString::fromStdString(emotion))
                          .arg(weight, 0, 'f', 2)
                          .arg(method, QString::fromStdString(pl::inputName(decomposed->parameters.input)),
                               scheduler.state(slot) == SlotState::Running ? tr("; recomputing") : QString()));
+}
+
+void EmotionPanel::showEmotions()
+{
+    const QSignalBlocker block(m_emotion);
+    m_emotion->clear();
+    for (const QString& emotion : m_analysis.weightableEmotions()) m_emotion->addItem(emotion, emotion);
+    const QString weighted = QString::fromStdString(m_analysis.weightedCell().second);
+    m_emotion->setCurrentIndex(std::max(0, m_emotion->findData(weighted)));
+    // Only a neutral take A has an emotion to choose: an emotional one is weighted with its own.
+    m_emotion->setEnabled(m_analysis.cellEmotion() == m_document.corpus().neutralEmotion && m_emotion->count() > 0);
 }
 
 } // namespace bunraku::app

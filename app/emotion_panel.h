@@ -6,9 +6,13 @@
 /// in the background. The emotion weight a (thesis eq. 4.45, x = y + a z) is a slider; the
 /// AnalysisController re-synthesises the weighted take of take A's cell on every step (a few
 /// microseconds) as the live take "weighted", so it plays as you drag. A drag is one undo step,
-/// and so are consecutive steps of M or of the slider by arrows, keys or wheel.
+/// and so are consecutive steps of M or of the slider by arrows, keys or wheel. The text names
+/// the weighted cell, a, the method and M the shown result was computed with; a picker chooses
+/// the emotion a neutral take is weighted against.
 
 #include "app/document.h"
+
+#include "widgets/bounded_spin_box.h"
 
 #include <QWidget>
 
@@ -29,7 +33,9 @@ public:
     QSlider* weightSlider() const { return m_weight; }
     QComboBox* methodBox() const { return m_method; }
     QComboBox* inputBox() const { return m_input; }
-    QSpinBox* orderBox() const { return m_order; }
+    widgets::BoundedSpinBox* orderBox() const { return m_order; }
+    /// Which emotion a neutral take A is weighted against (take A's own emotion otherwise).
+    QComboBox* emotionBox() const { return m_emotion; }
     /// The method of the decomposition in use ("least-squares" | "km2o"), empty before the first.
     QString decomposedMethod() const;
     /// The M of the KM2O decomposition in use, 0 for least squares.
@@ -42,12 +48,21 @@ public:
 private:
     void showParameters();
     void showResult();
+    /// The emotion picker: take A's function's emotions, the weighted one current.
+    void showEmotions();
+
+signals:
+    /// A message for the status bar (a typed M clamped to its limits).
+    void statusMessage(const QString& message);
+
+private:
 
     Document& m_document;
     AnalysisController& m_analysis;
     QComboBox* m_input = nullptr;
     QComboBox* m_method = nullptr;
-    QSpinBox* m_order = nullptr;
+    widgets::BoundedSpinBox* m_order = nullptr;
+    QComboBox* m_emotion = nullptr;
     QSlider* m_weight = nullptr;
     QLabel* m_label = nullptr;
 };

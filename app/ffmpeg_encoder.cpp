@@ -1,10 +1,11 @@
 #include "app/ffmpeg_encoder.h"
 
+#include "analysis/io/atomic_file.h"
+
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
 #include <QStandardPaths>
-#include <QTemporaryFile>
 
 #include <filesystem>
 #include <system_error>
@@ -46,23 +47,19 @@ analysis::Status FfmpegEncoder::open(QSize size, double fps)
     if (!(fps > 0.0)) return errorOf(ErrorCode::InvalidArgument, QObject::tr("the frame rate must be positive"));
     if (!QDir().mkpath(QFileInfo(m_output).absolutePath()))
         return errorOf(ErrorCode::Io, QObject::tr("cannot create the folder of %1").arg(m_output));
-    // A fresh random name of our own (no file of the user's is touched), removed again by abort().
-    if (!m_temporary.isEmpty()) QFile::remove(m_temporary);
-    m_temporary.clear();
-    const QFileInfo info(m_output);
-    QTemporaryFile reserved(info.dir().filePath(QStringLiteral(".%1.partial-XXXXXX").arg(info.fileName())));
-    reserved.setAutoRemove(false);
-    if (!reserved.open())
-        return errorOf(ErrorCode::Io, QObject::tr("cannot create a temporary file next to %1: %2").arg(m_output, reserved.errorString()));
-    m_temporary = reserved.fileName();
-    reserved.close();
-    // ffmpeg creates it again itself, with the usual permissions (QTemporaryFile's are 0600).
-    reserved.remove();
+    // A fresh private folder beside the output: ffmpeg creates the file in it itself (no name is
+    // reserved, deleted and handed over), and nothing of the user's is touched until the move.
+    removeTemporaryFolder();
+    const std::filesystem::path target(QFileInfo(m_output).absoluteFilePath().toStdString());
+    auto folder = analysis::io::makeTemporaryFolderBeside(target);
+    if (!folder) return folder.error();
+    m_temporaryFolder = QString::fromStdString(folder->string());
+    m_temporary = QDir(m_temporaryFolder).filePath(QFileInfo(m_output).fileName());
     m_size = size;
     m_errors.clear();
     m_row.resize(qsizetype(size.width()) * size.height() * 3);
     const QStringList arguments{
-        QStringLiteral("-hide_banner"), QStringLiteral("-loglevel"), QStringLiteral("error"), QStringLiteral("-y"),
+        QStringLiteral("-hide_banner"), QStringLiteral("-loglevel"), QStringLiteral("error"), QStringLiteral("-n"),
         // input: raw packed RGB frames on stdin
         QStringLiteral("-f"), QStringLiteral("rawvideo"), QStringLiteral("-pix_fmt"), QStringLiteral("rgb24"),
         QStringLiteral("-s"), QStringLiteral("%1x%2").arg(size.width()).arg(size.height()),
@@ -91,11 +88,12 @@ analysis::Status FfmpegEncoder::write(const QImage& image)
         std::copy_n(reinterpret_cast<const char*>(rgb.constScanLine(y)), rowBytes, m_row.data() + y * rowBytes);
     if (m_process.write(m_row) != m_row.size()) return failure(QObject::tr("could not send a frame to ffmpeg"));
     // At most two frames wait in our buffer: memory stays small and a dead ffmpeg shows at once.
-    while (m_process.bytesToWrite() > 2 * m_row.size()) {
-        if (!m_process.waitForBytesWritten(kWriteTimeoutMs))
-            return failure(m_process.state() == QProcess::Running ? QObject::tr("ffmpeg stopped accepting frames")
-                                                                  : QObject::tr("ffmpeg stopped before the last frame"));
-    }
+    if (!waitWhile([this] { return m_process.bytesToWrite() <= 2 * m_row.size() || m_process.state() != QProcess::Running; },
+                   kWriteTimeoutMs) ||
+        m_process.bytesToWrite() > 2 * m_row.size())
+        return failure(m_cancel && *m_cancel ? QObject::tr("cancelled")
+                       : m_process.state() == QProcess::Running ? QObject::tr("ffmpeg stopped accepting frames")
+                                                                : QObject::tr("ffmpeg stopped before the last frame"));
     m_errors += m_process.readAllStandardError();
     if (m_errors.size() > kErrorBytesKept) m_errors = m_errors.right(kErrorBytesKept);
     return analysis::okStatus();
@@ -105,16 +103,18 @@ analysis::Status FfmpegEncoder::finish()
 {
     if (m_process.state() == QProcess::NotRunning) return failure(QObject::tr("ffmpeg is not running"));
     m_process.closeWriteChannel();
-    if (!m_process.waitForFinished(kFinishTimeoutMs)) return failure(QObject::tr("ffmpeg did not finish"));
+    if (!waitWhile([this] { return m_process.state() == QProcess::NotRunning; }, kFinishTimeoutMs))
+        return failure(m_cancel && *m_cancel ? QObject::tr("cancelled") : QObject::tr("ffmpeg did not finish"));
     if (m_process.exitStatus() != QProcess::NormalExit || m_process.exitCode() != 0)
         return failure(QObject::tr("ffmpeg failed (exit code %1)").arg(m_process.exitCode()));
     if (!QFileInfo::exists(m_temporary)) return failure(QObject::tr("ffmpeg wrote no file"));
-    // rename(2) replaces an existing output atomically: a player never sees half a file.
-    std::error_code error;
-    std::filesystem::rename(std::filesystem::path(m_temporary.toStdString()), std::filesystem::path(m_output.toStdString()),
-                            error);
-    if (error) return failure(QObject::tr("cannot write %1: %2").arg(m_output, QString::fromStdString(error.message())));
+    // rename(2) replaces an existing output atomically: a player never sees half a file; the
+    // file and its folder are flushed to the disk first and after.
+    const auto moved = analysis::io::moveIntoPlace(std::filesystem::path(m_temporary.toStdString()),
+                                                   std::filesystem::path(QFileInfo(m_output).absoluteFilePath().toStdString()));
+    if (!moved) return failure(QString::fromStdString(moved.error().message));
     m_temporary.clear(); // it is the output now
+    removeTemporaryFolder();
     return analysis::okStatus();
 }
 
@@ -124,7 +124,25 @@ void FfmpegEncoder::abort()
         m_process.kill();
         m_process.waitForFinished(kStartTimeoutMs);
     }
-    if (!m_temporary.isEmpty()) QFile::remove(m_temporary);
+    removeTemporaryFolder();
+}
+
+bool FfmpegEncoder::waitWhile(const std::function<bool()>& done, int timeoutMs)
+{
+    constexpr int kSliceMs = 50;
+    for (int waited = 0; !done(); waited += kSliceMs) {
+        if ((m_cancel && *m_cancel) || waited >= timeoutMs) return false;
+        if (m_process.state() == QProcess::NotRunning) return done();
+        if (m_process.bytesToWrite() > 0) m_process.waitForBytesWritten(kSliceMs);
+        else m_process.waitForFinished(kSliceMs);
+    }
+    return true;
+}
+
+void FfmpegEncoder::removeTemporaryFolder()
+{
+    if (!m_temporaryFolder.isEmpty()) QDir(m_temporaryFolder).removeRecursively();
+    m_temporaryFolder.clear();
     m_temporary.clear();
 }
 

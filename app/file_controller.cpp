@@ -2,9 +2,13 @@
 
 #include "app/commands.h"
 #include "app/document.h"
+#include "app/file_dialogs.h"
 #include "app/joint_map_dialog.h"
+#include "app/new_corpus_dialog.h"
+#include "app/recovery_dialog.h"
 
 #include "analysis/io/bvh.h"
+#include "analysis/io/bvh_joint_map.h"
 #include "analysis/io/corpus_io.h"
 #include "analysis/io/take_reader.h"
 #include "analysis/synth/demo_corpus.h"
@@ -12,6 +16,10 @@
 #include "render/take_export.h"
 
 #include <QAction>
+#include <QEventLoop>
+#include <QFutureWatcher>
+#include <QProgressDialog>
+#include <QtConcurrent/QtConcurrentRun>
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -20,7 +28,10 @@
 #include <QSettings>
 #include <QStandardPaths>
 
+#include <atomic>
+#include <algorithm>
 #include <filesystem>
+#include <stop_token>
 
 namespace bunraku::app {
 namespace {
@@ -32,7 +43,8 @@ std::filesystem::path toPath(const QString& file) { return std::filesystem::path
 
 } // namespace
 
-FileController::FileController(Document& document, QWidget* window) : QObject(window), m_document(document), m_window(window)
+FileController::FileController(Document& document, QWidget* window)
+    : QObject(window), m_document(document), m_window(window), m_autosave(std::make_unique<AutosaveSession>())
 {
     connect(&document, &Document::derivedTakesChanged, this, &FileController::showPendingLiveTakes);
     connect(&document, &Document::selectionChanged, this, [this](TakeSlot slot) {
@@ -41,6 +53,8 @@ FileController::FileController(Document& document, QWidget* window) : QObject(wi
     m_openCorpus = new QAction(tr("&Open Corpus Folder..."), this);
     m_openCorpus->setShortcut(QKeySequence::Open);
     m_openDemo = new QAction(tr("Open &Demo Corpus"), this);
+    m_newCorpus = new QAction(tr("&New Corpus from Files..."), this);
+    m_newCorpus->setToolTip(tr("Make a corpus of take files (BVH, CSV, FASTRAK): labels from their names, one part map, one rate"));
     m_import = new QAction(tr("&Import Take..."), this);
     m_import->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_I));
     m_import->setToolTip(tr("Import a take from CSV, BVH or FASTRAK"));
@@ -57,13 +71,16 @@ FileController::FileController(Document& document, QWidget* window) : QObject(wi
     });
     connect(m_openCorpus, &QAction::triggered, this, [this] {
         if (!maybeSave()) return;
-        const QString folder = QFileDialog::getExistingDirectory(m_window, tr("Open corpus folder"));
+        const QString folder = chooseFolder(m_window, FilePurpose::Corpus, tr("Open corpus folder"), m_projectPath);
         if (!folder.isEmpty()) openCorpusFolder(folder);
+    });
+    connect(m_newCorpus, &QAction::triggered, this, [this] {
+        if (maybeSave()) chooseFilesForCorpus();
     });
     connect(m_import, &QAction::triggered, this, &FileController::chooseAndImport);
     connect(m_openProject, &QAction::triggered, this, [this] {
         if (!maybeSave()) return;
-        const QString file = QFileDialog::getOpenFileName(m_window, tr("Open project"), {}, tr("Bunraku projects (*.json)"));
+        const QString file = chooseOpenFile(m_window, FilePurpose::Project, tr("Open project"), tr("Bunraku projects (*.json)"), m_projectPath);
         if (!file.isEmpty()) openProject(file);
     });
     connect(m_save, &QAction::triggered, this, [this] {
@@ -73,7 +90,11 @@ FileController::FileController(Document& document, QWidget* window) : QObject(wi
             saveProject(m_projectPath);
     });
     connect(m_saveAs, &QAction::triggered, this, [this] {
-        QString file = QFileDialog::getSaveFileName(m_window, tr("Save project"), m_projectPath, tr("Bunraku projects (*.json)"));
+        // The project's own name when it has one, else the corpus's.
+        const QString name = m_projectPath.isEmpty() ? suggestedFileName(m_document, kProjectSuffix, NameParts::Corpus)
+                                                     : QFileInfo(m_projectPath).fileName();
+        QString file = chooseSaveFile(m_window, FilePurpose::Project, tr("Save project"), name, tr("Bunraku projects (*.json)"),
+                                      m_projectPath);
         if (file.isEmpty()) return;
         if (!file.endsWith(QStringLiteral(".json"))) file += kProjectSuffix;
         saveProject(file);
@@ -140,40 +161,121 @@ bool FileController::openPath(const QString& path)
     return importTakeFile(path);
 }
 
+int FileController::openDroppedPaths(const QStringList& paths)
+{
+    const bool replaces = std::any_of(paths.begin(), paths.end(), [](const QString& path) {
+        return QFileInfo(path).isDir() || path.endsWith(QStringLiteral(".json"));
+    });
+    if (replaces && !maybeSave()) return 0;
+    int opened = 0;
+    for (const QString& path : paths) opened += openPath(path) ? 1 : 0;
+    return opened;
+}
+
 bool FileController::importTakeFile(const QString& file, const QString& jointMap)
 {
     analysis::io::ImportOptions options;
+    options.bvh.guessUnits = true;
+    const QString title = tr("Cannot import %1").arg(QFileInfo(file).fileName());
     const auto format = analysis::io::takeFileFormat(toPath(file));
+    analysis::Result<analysis::Take> take = analysis::makeError(analysis::ErrorCode::InvalidArgument, "");
+    QString mapNote;
     if (format == analysis::io::TakeFileFormat::Bvh) {
+        // Parsed once; the part map comes from the automatic map, the given text or the dialog.
+        auto bvh = analysis::io::readBvh(toPath(file));
+        if (!bvh) {
+            report(title, bvh.error());
+            return false;
+        }
         if (!jointMap.isEmpty()) {
             auto map = analysis::io::parseJointMap(jointMap.toStdString());
             if (!map) {
-                report(tr("Cannot import %1").arg(QFileInfo(file).fileName()), map.error());
+                report(title, map.error());
                 return false;
             }
             options.bvh.jointMap = map.value();
         } else if (m_dialogs) {
-            auto bvh = analysis::io::readBvh(toPath(file));
-            if (!bvh) {
-                report(tr("Cannot import %1").arg(QFileInfo(file).fileName()), bvh.error());
-                return false;
-            }
-            JointMapDialog dialog(bvh->skeleton, QFileInfo(file).fileName(), m_window);
+            analysis::io::BvhFile start{bvh->skeleton, {bvh->motion.values.topRows(std::min<Eigen::Index>(1, bvh->motion.values.rows())),
+                                                        bvh->motion.frameTime},
+                                        bvh->source};
+            JointMapDialog dialog(start, QFileInfo(file).fileName(), m_window);
             if (dialog.exec() != QDialog::Accepted) return false;
             options.bvh.jointMap = dialog.jointMap();
+            options.bvh.side = dialog.side();
         }
+        auto imported = analysis::io::importBvhPuppet(*bvh, options.bvh);
+        if (!imported) {
+            report(title, imported.error());
+            return false;
+        }
+        mapNote = tr(" (part map: %1)").arg(QString::fromStdString(imported->map->describe()));
+        take = std::move(imported->take);
+    } else {
+        take = analysis::io::readTakeFile(toPath(file), options);
     }
-    auto take = analysis::io::readTakeFile(toPath(file), options);
     if (!take) {
-        report(tr("Cannot import %1").arg(QFileInfo(file).fileName()), take.error());
+        report(title, take.error());
         return false;
     }
     const QString absolute = QFileInfo(file).absoluteFilePath();
     auto pointer = std::make_shared<const analysis::Take>(std::move(take).value());
-    m_document.undoStack()->push(new ImportTake(&m_document, std::move(pointer), QFileInfo(file).fileName(), absolute));
+    m_document.undoStack()->push(new ImportTake(&m_document, std::move(pointer), QFileInfo(file).fileName(), absolute,
+                                                std::make_shared<const analysis::io::ImportOptions>(options)));
     addRecent(absolute);
-    emit statusMessage(tr("Imported %1").arg(absolute));
+    emit statusMessage(tr("Imported %1%2").arg(absolute, mapNote));
     return true;
+}
+
+bool FileController::createCorpusFromFiles(const std::vector<analysis::io::CorpusSource>& sources,
+                                           const analysis::io::CorpusBuildOptions& options, const QString& folder)
+{
+    const auto work = [sources, options, folder](const analysis::RunControl& control) -> analysis::Result<analysis::io::CorpusBuild> {
+        auto build = analysis::io::buildCorpus(sources, options, control);
+        if (!build) return build;
+        if (auto written = analysis::io::writeCorpus(build->corpus, toPath(folder)); !written) return written.error();
+        return build;
+    };
+    analysis::Result<analysis::io::CorpusBuild> result = analysis::makeError(analysis::ErrorCode::Cancelled, "not run");
+    if (!m_dialogs) {
+        result = work({});
+    } else {
+        QProgressDialog progress(tr("Reading %n take file(s)...", nullptr, int(sources.size())), tr("Cancel"), 0, 1000, m_window);
+        progress.setWindowModality(Qt::WindowModal);
+        progress.setMinimumDuration(300);
+        std::stop_source stop;
+        std::atomic<double> done{0.0};
+        QFutureWatcher<analysis::Result<analysis::io::CorpusBuild>> watcher;
+        QEventLoop loop;
+        connect(&watcher, &QFutureWatcherBase::finished, &loop, &QEventLoop::quit);
+        connect(&progress, &QProgressDialog::canceled, this, [&stop] { stop.request_stop(); });
+        QTimer poll;
+        connect(&poll, &QTimer::timeout, &progress, [&] { progress.setValue(int(1000.0 * done.load())); });
+        poll.start(100);
+        watcher.setFuture(QtConcurrent::run([&]() {
+            analysis::RunControl control{stop.get_token(), [&done](double fraction) { done.store(fraction); }};
+            return work(control);
+        }));
+        loop.exec();
+        result = watcher.result();
+    }
+    if (!result) {
+        report(tr("Cannot make the corpus"), result.error());
+        return false;
+    }
+    if (!openCorpusFolder(folder)) return false;
+    QStringList notes;
+    for (const auto& note : result->notes) notes << QString::fromStdString(note);
+    emit statusMessage(tr("Made the corpus %1 from %n file(s)", nullptr, int(sources.size())).arg(folder) +
+                       (notes.isEmpty() ? QString() : QStringLiteral("; ") + notes.join(QStringLiteral("; "))));
+    return true;
+}
+
+void FileController::chooseFilesForCorpus(const QStringList& inputs)
+{
+    NewCorpusDialog dialog(m_window);
+    dialog.addInputs(inputs);
+    if (dialog.exec() != QDialog::Accepted) return;
+    createCorpusFromFiles(dialog.sources(), dialog.buildOptions(), dialog.outputFolder());
 }
 
 bool FileController::exportTake(const QString& file)
@@ -196,7 +298,9 @@ ProjectState FileController::captureState() const
     ProjectState state;
     state.corpus = m_document.corpusSource();
     for (const auto& derived : m_document.derivedTakes())
-        if (!derived.sourcePath.isEmpty()) state.imported.push_back({derived.sourcePath, derived.label});
+        if (!derived.sourcePath.isEmpty())
+            state.imported.push_back({derived.sourcePath, derived.label,
+                                      derived.importOptions ? *derived.importOptions : analysis::io::ImportOptions{}});
     state.parameters = m_document.parameters();
     state.takeA = m_document.selectedId(TakeSlot::A);
     state.takeB = m_document.selectedId(TakeSlot::B);
@@ -235,15 +339,15 @@ bool FileController::applyStateNow(const ProjectState& state)
     const bool opened = state.corpus == QStringLiteral("demo") ? openDemoCorpus() : openCorpusFolder(state.corpus);
     if (!opened) return false;
     for (const auto& recipe : state.imported) {
-        analysis::io::ImportOptions options;
-        auto take = analysis::io::readTakeFile(toPath(recipe.path), options);
+        // The options the take was imported with: the same joint map, axes, units and rate.
+        auto take = analysis::io::readTakeFile(toPath(recipe.path), recipe.options);
         if (!take) {
             report(tr("Cannot re-import a take of the project"), take.error());
             continue;
         }
         m_document.insertImportedTake(
-            DerivedTake{m_document.nextImportedId(), recipe.label,
-                        std::make_shared<const analysis::Take>(std::move(take).value()), recipe.path, QString()},
+            DerivedTake{m_document.nextImportedId(), recipe.label, std::make_shared<const analysis::Take>(std::move(take).value()),
+                        recipe.path, QString(), std::make_shared<const analysis::io::ImportOptions>(recipe.options)},
             int(m_document.derivedTakes().size()));
     }
     m_document.restoreParameters(state.parameters);
@@ -270,7 +374,7 @@ bool FileController::saveProject(const QString& file)
     }
     m_projectPath = file;
     m_document.undoStack()->setClean();
-    QFile::remove(autosavePath());
+    m_autosave->removeOwn();
     addRecent(file);
     emit statusMessage(tr("Saved %1").arg(file));
     return true;
@@ -290,11 +394,7 @@ bool FileController::openProject(const QString& file)
     return true;
 }
 
-QString FileController::autosavePath() const
-{
-    const QString folder = QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation);
-    return QDir(folder).filePath(QStringLiteral("autosave") + kProjectSuffix);
-}
+QString FileController::autosavePath() const { return m_autosave->path(); }
 
 bool FileController::autosave()
 {
@@ -303,33 +403,45 @@ bool FileController::autosave()
     return bool(writeProject(captureState(), autosavePath()));
 }
 
+bool FileController::recoverAutosave(const QString& file)
+{
+    if (!m_autosave->adopt(file)) {
+        report(tr("Cannot recover"), analysis::makeError(analysis::ErrorCode::Io,
+                                                         file.toStdString() + ": another workbench is using it, or it is gone"));
+        return false;
+    }
+    if (!openProject(file)) return false;
+    m_projectPath.clear(); // the user chooses where to save it
+    // Recovered work is unsaved work: marked in the title, asked about when quitting, and its
+    // autosave kept until it is saved or discarded.
+    m_document.undoStack()->resetClean();
+    return true;
+}
+
 void FileController::offerRecovery()
 {
-    const QString file = autosavePath();
-    if (!m_dialogs || !QFileInfo::exists(file)) return;
-    const auto answer = QMessageBox::question(
-        m_window, tr("Recover unsaved work?"),
-        tr("The workbench did not close normally last time. Recover the unsaved work from %1?").arg(file),
-        QMessageBox::Yes | QMessageBox::Discard, QMessageBox::Yes);
-    if (answer == QMessageBox::Yes && openProject(file)) {
-        m_projectPath.clear(); // the user chooses where to save it
-        return;
-    }
-    QFile::remove(file);
+    if (!m_dialogs) return;
+    const QVector<OrphanedAutosave> orphans = m_autosave->orphans();
+    if (orphans.isEmpty()) return;
+    RecoveryDialog dialog(orphans, [this](const QString& path) { return m_autosave->discardOrphan(path); }, m_window);
+    if (dialog.exec() == QDialog::Accepted && !dialog.chosen().isEmpty()) recoverAutosave(dialog.chosen());
 }
 
 bool FileController::maybeSave()
 {
-    if (m_document.undoStack()->isClean() || !m_dialogs) return true;
-    const auto answer = QMessageBox::warning(m_window, tr("Unsaved changes"),
-                                             tr("The project has unsaved changes. Save them?"),
-                                             QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    if (m_document.undoStack()->isClean()) return true;
+    if (!m_dialogs && !m_unsavedAnswer) return true;
+    const int answer = !m_dialogs ? m_unsavedAnswer()
+                                  : QMessageBox::warning(m_window, tr("Unsaved changes"),
+                                                         tr("The project has unsaved changes. Save them?"),
+                                                         QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel,
+                                                         QMessageBox::Save);
     if (answer == QMessageBox::Cancel) return false;
     if (answer == QMessageBox::Save) {
         m_save->trigger();
         return m_document.undoStack()->isClean();
     }
-    QFile::remove(autosavePath());
+    m_autosave->removeOwn();
     return true;
 }
 
@@ -359,9 +471,9 @@ void FileController::rebuildRecentMenu()
 
 void FileController::chooseAndImport()
 {
-    const QString file = QFileDialog::getOpenFileName(
-        m_window, tr("Import take"), {},
-        tr("Takes (*.csv *.bvh *.txt *.fastrak *.fst);;CSV (*.csv);;BVH (*.bvh);;FASTRAK (*.txt *.fastrak *.fst)"));
+    const QString file = chooseOpenFile(
+        m_window, FilePurpose::ImportTake, tr("Import take"),
+        tr("Takes (*.csv *.bvh *.txt *.fastrak *.fst);;CSV (*.csv);;BVH (*.bvh);;FASTRAK (*.txt *.fastrak *.fst)"), m_projectPath);
     if (!file.isEmpty()) importTakeFile(file);
 }
 

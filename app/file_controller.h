@@ -5,10 +5,12 @@
 /// and the unsaved-changes prompt. Errors are shown as messages naming file, line and what was
 /// expected; nothing here throws.
 
+#include "app/autosave_session.h"
 #include "app/document.h"
 #include "app/project_file.h"
 
 #include "analysis/core/result.h"
+#include "analysis/io/corpus_builder.h"
 
 #include <QObject>
 #include <QString>
@@ -16,6 +18,7 @@
 #include <QTimer>
 
 #include <functional>
+#include <memory>
 
 class QAction;
 class QMenu;
@@ -43,15 +46,35 @@ public:
     bool openCorpusFolder(const QString& folder);
     /// Opens a corpus folder, a project file or imports a take file, by what `path` is.
     bool openPath(const QString& path);
+    /// Paths dropped on the window: when one of them would replace the document (a corpus
+    /// folder or a project), asks to save unsaved changes first (nothing opens on Cancel).
+    /// Returns how many were opened.
+    int openDroppedPaths(const QStringList& paths);
     /// Imports a take; `jointMap` ("head=Head,...", may be empty) applies to BVH files.
     bool importTakeFile(const QString& file, const QString& jointMap = {});
+    /// Builds a corpus from take files (analysis/io/corpus_builder.h, as `bunraku corpus`),
+    /// writes it to `folder` and opens it. With dialogs the work runs off the GUI thread behind a
+    /// progress dialog that can cancel it; the notes (rates, neutral emotion) go to the status bar.
+    bool createCorpusFromFiles(const std::vector<analysis::io::CorpusSource>& sources,
+                               const analysis::io::CorpusBuildOptions& options, const QString& folder);
+    /// File > New Corpus from Files: the dialog, then createCorpusFromFiles. `inputs` preset it.
+    void chooseFilesForCorpus(const QStringList& inputs = {});
     /// Writes take A (.bvh, .glb or .csv by extension; ExportController writes A or B).
     bool exportTake(const QString& file);
     bool saveProject(const QString& file);
     bool openProject(const QString& file);
-    /// Writes the autosave file now (when there are unsaved changes).
+    /// Writes this instance's autosave file now (when there are unsaved changes).
     bool autosave();
+    /// This instance's autosave file (one per running workbench, see autosave_session.h).
     QString autosavePath() const;
+    AutosaveSession& autosaveSession() { return *m_autosave; }
+    /// Opens an orphaned autosave as unsaved work: it becomes this instance's autosave, the
+    /// title is marked modified, quitting asks to save, and the file is kept until the work is
+    /// saved or discarded.
+    bool recoverAutosave(const QString& file);
+    /// What the unsaved-changes question answers when dialogs are off; empty: no question is
+    /// asked (the default). Tests set Save, Discard or Cancel to drive the real prompts.
+    void setUnsavedAnswerForTesting(std::function<int()> answer) { m_unsavedAnswer = std::move(answer); }
     QString projectPath() const { return m_projectPath; }
     /// The live take ("live/...") an opened project showed in `slot` and that is still being
     /// recomputed: it is shown as soon as it is published. Empty when none is awaited.
@@ -62,13 +85,15 @@ public:
 
     QAction* openCorpusAction() const { return m_openCorpus; }
     QAction* openDemoAction() const { return m_openDemo; }
+    QAction* newCorpusAction() const { return m_newCorpus; }
     QAction* importAction() const { return m_import; }
     QAction* openProjectAction() const { return m_openProject; }
     QAction* saveProjectAction() const { return m_save; }
     QAction* saveProjectAsAction() const { return m_saveAs; }
     QMenu* recentMenu() const { return m_recentMenu; }
 
-    /// Offers to recover an autosave left by a crash (asks only when dialogs are enabled).
+    /// Offers every autosave left by a workbench that is no longer running (RecoveryDialog, with
+    /// the time and content of each); asks only when dialogs are enabled.
     void offerRecovery();
 
 signals:
@@ -94,10 +119,13 @@ private:
     double m_pendingTime = 0.0; ///< the project's time, applied when an awaited take appears
     bool m_applying = false;    ///< inside applyState: selections are the project's own
     QTimer m_autosaveTimer;
+    std::unique_ptr<AutosaveSession> m_autosave;
+    std::function<int()> m_unsavedAnswer;
     std::function<QVariantMap()> m_saveView;
     std::function<void(const QVariantMap&)> m_restoreView;
     QAction* m_openCorpus = nullptr;
     QAction* m_openDemo = nullptr;
+    QAction* m_newCorpus = nullptr;
     QAction* m_import = nullptr;
     QAction* m_openProject = nullptr;
     QAction* m_save = nullptr;

@@ -5,12 +5,17 @@
 #include "app/design_panel.h"
 #include "app/emotion_panel.h"
 #include "app/file_controller.h"
+#include "app/file_dialogs.h"
+#include "app/focus_return.h"
 #include "app/help_controller.h"
+#include "app/multimodal_export_controller.h"
+#include "app/image_file.h"
 #include "app/normalise_panel.h"
 #include "app/offscreen_view.h"
 #include "app/phrase_marks.h"
 #include "app/playback_controller.h"
-#include "app/recomputer.h"
+#include "app/shortcuts_dialog.h"
+#include "app/side_columns.h"
 #include "app/video_export_dialog.h"
 #include "app/export_controller.h"
 #include "app/viewport_panel.h"
@@ -37,8 +42,12 @@
 #include <QMimeData>
 #include <QProgressBar>
 #include <QProgressDialog>
+#include <QScreen>
+#include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
+#include <QTimer>
+#include <QTabBar>
 #include <QUndoView>
 
 #include <algorithm>
@@ -78,6 +87,18 @@ std::vector<widgets::BrowserEntry> browserEntries(const Document& document)
     return entries;
 }
 
+/// `panel` in a scroll area: a dock holding it can be shorter or narrower than the panel's own
+/// minimum (a 1280 x 720 screen) and scrolls instead of pushing other docks off the window.
+QWidget* scrolled(QWidget* panel)
+{
+    auto* area = new QScrollArea;
+    area->setObjectName(panel->objectName().isEmpty() ? QStringLiteral("panelScroll") : panel->objectName() + QStringLiteral("Scroll"));
+    area->setFrameShape(QFrame::NoFrame);
+    area->setWidgetResizable(true);
+    area->setWidget(panel);
+    return area;
+}
+
 } // namespace
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_document(new Document(this))
@@ -106,8 +127,14 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_document(new Do
 
     connect(m_files, &FileController::statusMessage, this, [this](const QString& message) { m_status->setText(message); });
     connect(m_exports, &ExportController::statusMessage, this, [this](const QString& message) { m_status->setText(message); });
+    connect(m_normalisePanel, &NormalisePanel::statusMessage, m_status, &QLabel::setText);
+    connect(m_emotionPanel, &EmotionPanel::statusMessage, m_status, &QLabel::setText);
+    new FocusReturn(this);
+    m_columns = new SideColumns(this);
 
-    resize(1500, 920);
+    // The default size, within the screen (a 1366 x 768 laptop gets the whole screen).
+    const QSize preferred(1500, 920);
+    resize(screen() ? preferred.boundedTo(screen()->availableSize()) : preferred);
     m_defaultState = saveState(kLayoutVersion);
     updateTitle();
 }
@@ -144,8 +171,8 @@ void MainWindow::createViews()
     m_inspector = new widgets::InspectorWidget(this);
     m_graphs = new widgets::GraphPanel(this);
     m_timeline = new widgets::TimelineWidget(this);
-    m_viewportPanel = new ViewportPanel(*m_document, this);
     m_analysis = new AnalysisController(*m_document, this);
+    m_viewportPanel = new ViewportPanel(*m_document, *m_analysis, this);
     m_design = new DesignController(*m_document, *m_analysis, this);
     m_designPanel = new DesignPanel(*m_document, *m_design, this);
     m_normalisePanel = new NormalisePanel(*m_document, *m_analysis, this);
@@ -158,26 +185,39 @@ void MainWindow::createViews()
     auto* historyDock = addDock(history, tr("Undo History"), "historyDock", Qt::LeftDockWidgetArea);
     auto* graphsDock = addDock(m_graphs, tr("Graphs"), "graphsDock", Qt::RightDockWidgetArea);
     auto* viewDock = addDock(m_viewportPanel, tr("3D View"), "viewDock", Qt::RightDockWidgetArea);
-    auto* normaliseDock = addDock(m_normalisePanel, tr("Normalisation"), "normaliseDock", Qt::LeftDockWidgetArea);
-    auto* emotionDock = addDock(m_emotionPanel, tr("Emotion"), "emotionDock", Qt::LeftDockWidgetArea);
-    auto* designDock = addDock(m_designPanel, tr("Design"), "designDock", Qt::LeftDockWidgetArea);
+    m_normalisePanel->setObjectName("normalisePanel");
+    m_emotionPanel->setObjectName("emotionPanel");
+    m_designPanel->setObjectName("designPanel");
+    auto* normaliseDock = addDock(scrolled(m_normalisePanel), tr("Normalisation"), "normaliseDock", Qt::LeftDockWidgetArea);
+    auto* emotionDock = addDock(scrolled(m_emotionPanel), tr("Emotion"), "emotionDock", Qt::LeftDockWidgetArea);
+    auto* designDock = addDock(scrolled(m_designPanel), tr("Design"), "designDock", Qt::LeftDockWidgetArea);
     auto* timelineDock = addDock(m_timeline, tr("Timeline"), "timelineDock", Qt::BottomDockWidgetArea);
     splitDockWidget(viewDock, graphsDock, Qt::Horizontal);
     splitDockWidget(corpusDock, inspectorDock, Qt::Vertical);
     tabifyDockWidget(inspectorDock, normaliseDock);
     tabifyDockWidget(normaliseDock, emotionDock);
     tabifyDockWidget(emotionDock, designDock);
-    tabifyDockWidget(designDock, historyDock);
+    // The undo history beside the corpus: four tabs below fit a narrow left column unelided.
+    tabifyDockWidget(corpusDock, historyDock);
+    corpusDock->raise();
     inspectorDock->raise();
     timelineDock->setFeatures(timelineDock->features() & ~QDockWidget::DockWidgetVerticalTitleBar);
-    resizeDocks({corpusDock, viewDock, graphsDock}, {380, 400, 800}, Qt::Horizontal);
-    trackRecomputer(m_viewportPanel->recomputer());
+    resizeDocks({corpusDock, viewDock, graphsDock}, {420, 460, 620}, Qt::Horizontal);
+    resizeDocks({corpusDock, inspectorDock}, {260, 440}, Qt::Vertical);
     // One status entry per analysis stage: its progress while it runs, its error when it fails
     // (the panel showing the stage's result shows the error too).
     connect(&m_analysis->scheduler(), &StageScheduler::stateChanged, this, &MainWindow::showStageStatus);
     connect(&m_analysis->scheduler(), &StageScheduler::progressChanged, this, &MainWindow::showStageStatus);
     connect(&m_analysis->scheduler(), &StageScheduler::failed, this, [this](int slot, const QString& message) {
         m_status->setText(tr("%1 failed: %2").arg(AnalysisController::slotTitle(slot), message));
+        m_failures[slot] = m_status->text();
+    });
+    // A stage that runs or succeeds again takes its failure out of the status bar.
+    connect(&m_analysis->scheduler(), &StageScheduler::stateChanged, this, [this](int slot) {
+        const auto failure = m_failures.find(slot);
+        if (failure == m_failures.end() || m_analysis->scheduler().state(slot) == SlotState::Failed) return;
+        if (m_status->text() == failure->second) m_status->clear();
+        m_failures.erase(failure);
     });
 }
 
@@ -186,6 +226,7 @@ void MainWindow::createMenus()
     auto* file = menuBar()->addMenu(tr("&File"));
     file->addAction(m_files->openDemoAction());
     file->addAction(m_files->openCorpusAction());
+    file->addAction(m_files->newCorpusAction());
     file->addMenu(m_files->recentMenu());
     file->addSeparator();
     file->addAction(m_files->openProjectAction());
@@ -201,6 +242,9 @@ void MainWindow::createMenus()
     report->setToolTip(tr("The analysis report of the open corpus as one HTML file (figures and tables, the thesis's values beside)"));
     auto* video = file->addAction(tr("Export 3D View &Video..."), this, &MainWindow::chooseViewVideo);
     video->setObjectName("exportViewVideoAction");
+    m_multimodal = new MultimodalExportController(*m_document, *m_graphs, *m_viewportPanel, this);
+    connect(m_multimodal, &MultimodalExportController::message, m_status, &QLabel::setText);
+    file->addAction(m_multimodal->action());
     file->addSeparator();
     auto* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);
@@ -224,11 +268,18 @@ void MainWindow::createMenus()
     m_viewMenu = menuBar()->addMenu(tr("&View"));
     for (auto* dock : m_docks) m_viewMenu->addAction(dock->toggleViewAction());
     m_viewMenu->addSeparator();
+    auto* camera = m_viewMenu->addMenu(tr("3D View &Camera"));
+    for (auto* action : {m_viewportPanel->frameAllAction(), m_viewportPanel->frameSelectedAction(), m_viewportPanel->resetCameraAction()})
+        camera->addAction(action);
+    m_viewMenu->addSeparator();
     m_viewMenu->addAction(tr("&Reset Layout"), this, &MainWindow::resetLayout);
 
     auto* helpController = new HelpController(this);
     auto* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(helpController->userGuideAction());
+    auto* shortcuts = help->addAction(tr("&Keyboard Shortcuts"), this, &MainWindow::showShortcuts);
+    shortcuts->setObjectName("keyboardShortcutsAction");
+    shortcuts->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Slash));
     help->addAction(helpController->aboutAction());
 }
 
@@ -239,6 +290,11 @@ void MainWindow::connectDocument()
         updateTitle();
     });
     connect(m_document, &Document::derivedTakesChanged, this, &MainWindow::refreshEntries);
+    // A live take recomputed from other parameters or another take is renamed where it is listed.
+    connect(m_document, &Document::takeLabelChanged, this, [this](const QString& id) {
+        m_browser->setEntryLabel(id, m_document->takeLabel(id));
+        updateTitle();
+    });
     connect(m_document, &Document::selectionChanged, this, [this] { refreshTakes(); });
     connect(m_document, &Document::currentTimeChanged, this, &MainWindow::refreshTime);
     connect(m_document->undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
@@ -295,7 +351,7 @@ void MainWindow::refreshTakes()
     const TakePointer takeB = m_document->selectedTake(TakeSlot::B);
     m_browser->setChosen(m_document->selectedId(TakeSlot::A), m_document->selectedId(TakeSlot::B));
     m_graphs->grid()->setGhost(m_document->ghostOf(m_document->selectedId(TakeSlot::A)));
-    m_graphs->setTakes(takeA, takeB);
+    m_graphs->setTakes(takeA, takeB, m_document->selectedId(TakeSlot::A) + QLatin1Char('|') + m_document->selectedId(TakeSlot::B));
     m_inspector->setTakes(takeA, takeB);
     m_timeline->setDuration(m_document->duration(), m_document->rateHz());
     refreshBoundaries();
@@ -342,13 +398,15 @@ void MainWindow::resetLayout()
         dock->setFloating(false);
         dock->show();
     }
+    m_columns->reset();
 }
 
 void MainWindow::restoreSavedLayout()
 {
     const QSettings settings;
     if (settings.contains(kGeometryKey)) restoreGeometry(settings.value(kGeometryKey).toByteArray());
-    if (settings.contains(kStateKey)) restoreState(settings.value(kStateKey).toByteArray(), kLayoutVersion);
+    if (settings.contains(kStateKey) && restoreState(settings.value(kStateKey).toByteArray(), kLayoutVersion))
+        m_columns->adoptRestoredLayout();
 }
 
 void MainWindow::saveLayout() const
@@ -356,23 +414,6 @@ void MainWindow::saveLayout() const
     QSettings settings;
     settings.setValue(kGeometryKey, saveGeometry());
     settings.setValue(kStateKey, saveState(kLayoutVersion));
-}
-
-void MainWindow::trackRecomputer(Recomputer* recomputer)
-{
-    connect(recomputer, &Recomputer::stateChanged, this, [this, recomputer](Recomputer::State state) {
-        if (state == Recomputer::State::Running)
-            m_busy.insert(recomputer);
-        else
-            m_busy.remove(recomputer);
-        m_progress->setVisible(!m_busy.isEmpty());
-        if (state == Recomputer::State::Failed) {
-            m_status->setText(tr("%1 failed: %2").arg(recomputer->objectName(), recomputer->lastError()));
-            qWarning("%s failed: %s", qPrintable(recomputer->objectName()), qPrintable(recomputer->lastError()));
-        }
-    });
-    connect(recomputer, &Recomputer::progressChanged, this,
-            [this](double fraction) { m_progress->setValue(int(fraction * 1000)); });
 }
 
 QString MainWindow::stageStatusText() const { return m_stages->text(); }
@@ -383,7 +424,7 @@ void MainWindow::showStageStatus()
     QStringList parts;
     double least = 1.0;
     for (int slot : {AnalysisController::kPreprocessSlot, AnalysisController::kNormaliseSlot, AnalysisController::kDecomposeSlot,
-                     AnalysisController::kAxesSlot, AnalysisController::kTakeAxisSlot}) {
+                     AnalysisController::kAxesSlot, AnalysisController::kTakeAxisSlot, AnalysisController::kTakeAxisBSlot}) {
         if (scheduler.state(slot) == SlotState::Running) {
             parts << tr("%1 %2 %").arg(AnalysisController::slotTitle(slot)).arg(int(scheduler.progress(slot) * 100.0 + 0.5));
             least = std::min(least, scheduler.progress(slot));
@@ -394,7 +435,7 @@ void MainWindow::showStageStatus()
     m_stages->setText(parts.join(QStringLiteral(" \u00b7 ")));
     m_stages->setToolTip(tr("Analysis stages running in the background (each recomputes only when its own inputs change)"));
     const bool running = scheduler.busy();
-    m_progress->setVisible(running || !m_busy.isEmpty());
+    m_progress->setVisible(running);
     if (running) m_progress->setValue(int(least * 1000));
 }
 
@@ -411,7 +452,9 @@ bool MainWindow::exportReport(const QString& file)
 
 void MainWindow::chooseReport()
 {
-    QString file = QFileDialog::getSaveFileName(this, tr("Export report"), QStringLiteral("report.html"), tr("HTML (*.html)"));
+    QString file = chooseSaveFile(this, FilePurpose::Report, tr("Export report"),
+                                  suggestedFileName(*m_document, QStringLiteral("-report.html"), NameParts::Corpus), tr("HTML (*.html)"),
+                                  m_files->projectPath());
     if (file.isEmpty()) return;
     if (!file.endsWith(QStringLiteral(".html"), Qt::CaseInsensitive)) file += QStringLiteral(".html");
     if (!exportReport(file)) QMessageBox::warning(this, tr("Export Report"), m_status->text());
@@ -420,8 +463,8 @@ void MainWindow::chooseReport()
 bool MainWindow::saveScreenshot(const QString& file, QWidget* widget)
 {
     const QPixmap image = (widget ? widget : this)->grab();
-    if (!image.save(file)) {
-        m_status->setText(tr("Cannot write the screenshot %1").arg(file));
+    if (const auto saved = saveImageAtomically(image.toImage(), file); !saved) {
+        m_status->setText(tr("Cannot write the screenshot %1").arg(QString::fromStdString(saved.error().message)));
         return false;
     }
     m_status->setText(tr("Saved screenshot %1").arg(file));
@@ -549,9 +592,16 @@ void MainWindow::chooseViewVideo()
     limits.viewSize = QSize(int(std::lround(view->width() * view->devicePixelRatioF())),
                             int(std::lround(view->height() * view->devicePixelRatioF())));
     VideoExportDialog dialog(limits, this);
+    dialog.suggestOutput(suggestedFileName(*m_document, {}), m_files->projectPath());
     if (dialog.exec() != QDialog::Accepted) return;
     const VideoExportResult result = exportViewVideo(dialog.options());
     if (!result.ok() && !result.cancelled) QMessageBox::warning(this, tr("Export 3D View Video"), result.error);
+}
+
+void MainWindow::showShortcuts()
+{
+    ShortcutsDialog dialog(*this, this);
+    dialog.exec();
 }
 
 void MainWindow::chooseScreenshot()
@@ -559,7 +609,8 @@ void MainWindow::chooseScreenshot()
     QStringList views{tr("Whole window")};
     for (auto* dock : m_docks)
         if (dock->isVisible()) views << dock->windowTitle();
-    QString file = QFileDialog::getSaveFileName(this, tr("Save screenshot"), QStringLiteral("screenshot.png"), tr("PNG images (*.png)"));
+    QString file = chooseSaveFile(this, FilePurpose::Screenshot, tr("Save screenshot"), suggestedFileName(*m_document, QStringLiteral(".png")),
+                                  tr("PNG images (*.png)"), m_files->projectPath());
     if (file.isEmpty()) return;
     if (!file.endsWith(QStringLiteral(".png"), Qt::CaseInsensitive)) file += QStringLiteral(".png");
     // The view to grab: the dock that has focus, else the whole window.
@@ -574,7 +625,11 @@ QVariantMap MainWindow::viewState() const
     return {{"graphLayout", int(m_graphs->grid()->graphLayout())},
             {"twoTakeMode", int(m_graphs->grid()->twoTakeMode())},
             {"valueScale", int(m_graphs->grid()->valueScale())},
+            {"thesisTicks", m_graphs->grid()->thesisTicks()},
             {"part", m_graphs->selectedPart()},
+            {"dof", m_graphs->selectedDof()},
+            {"camera", m_viewportPanel->cameraState()},
+            {"weightEmotion", m_analysis->weightEmotion()},
             {"speed", m_timeline->speed()}};
 }
 
@@ -583,7 +638,11 @@ void MainWindow::restoreViewState(const QVariantMap& state)
     if (state.contains("graphLayout")) m_graphs->setGraphLayout(widgets::GraphLayout(state["graphLayout"].toInt()));
     if (state.contains("twoTakeMode")) m_graphs->setTwoTakeMode(widgets::TwoTakeMode(state["twoTakeMode"].toInt()));
     if (state.contains("valueScale")) m_graphs->setValueScale(widgets::ValueScale(state["valueScale"].toInt()));
+    if (state.contains("thesisTicks")) m_graphs->setThesisTicks(state["thesisTicks"].toBool());
     if (state.contains("part")) m_graphs->selectPart(state["part"].toString());
+    if (state.contains("dof")) m_graphs->selectDof(state["dof"].toString());
+    if (state.contains("camera")) m_viewportPanel->setCameraState(state["camera"].toMap());
+    if (state.contains("weightEmotion")) m_analysis->setWeightEmotion(state["weightEmotion"].toString());
     if (state.contains("graphLayout")) m_graphs->setGraphLayout(widgets::GraphLayout(state["graphLayout"].toInt()));
     if (state.contains("speed")) m_timeline->setSpeed(state["speed"].toDouble());
 }
@@ -596,8 +655,20 @@ void MainWindow::closeEvent(QCloseEvent* event)
     }
     m_playback->setPlaying(false);
     saveLayout();
-    QFile::remove(m_files->autosavePath());
+    m_files->autosaveSession().removeOwn(); // saved, discarded or clean: nothing left to recover
     event->accept();
+}
+
+bool MainWindow::event(QEvent* event)
+{
+    // The tab bars of tabbed docks (made by the layout, also when docks are dragged together)
+    // scroll instead of eliding their titles to "Nor..." in a narrow column.
+    if (event->type() == QEvent::ChildPolished)
+        if (auto* bar = qobject_cast<QTabBar*>(static_cast<QChildEvent*>(event)->child())) {
+            bar->setElideMode(Qt::ElideNone);
+            bar->setUsesScrollButtons(true);
+        }
+    return QMainWindow::event(event);
 }
 
 void MainWindow::dragEnterEvent(QDragEnterEvent* event)
@@ -607,9 +678,12 @@ void MainWindow::dragEnterEvent(QDragEnterEvent* event)
 
 void MainWindow::dropEvent(QDropEvent* event)
 {
+    QStringList paths;
     for (const QUrl& url : event->mimeData()->urls())
-        if (url.isLocalFile()) m_files->openPath(url.toLocalFile());
+        if (url.isLocalFile()) paths << url.toLocalFile();
     event->acceptProposedAction();
+    // After the drop has ended: opening may ask to save unsaved changes first.
+    QTimer::singleShot(0, m_files, [files = m_files, paths] { files->openDroppedPaths(paths); });
 }
 
 } // namespace bunraku::app

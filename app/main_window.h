@@ -8,7 +8,8 @@
 #include "app/video_export.h"
 
 #include <QMainWindow>
-#include <QSet>
+
+#include <map>
 
 #include <vector>
 
@@ -32,8 +33,9 @@ class EmotionPanel;
 class NormalisePanel;
 class ExportController;
 class FileController;
+class MultimodalExportController;
 class PlaybackController;
-class Recomputer;
+class SideColumns;
 class ViewportPanel;
 
 class MainWindow : public QMainWindow {
@@ -57,6 +59,8 @@ public:
     DesignPanel* designPanel() const { return m_designPanel; }
     NormalisePanel* normalisePanel() const { return m_normalisePanel; }
     EmotionPanel* emotionPanel() const { return m_emotionPanel; }
+    /// File > Export Multimodal Video...
+    MultimodalExportController& multimodalExport() { return *m_multimodal; }
     const std::vector<QDockWidget*>& docks() const { return m_docks; }
     QDockWidget* dock(const QString& objectName) const;
 
@@ -65,8 +69,6 @@ public:
     /// Restores the saved geometry and dock layout (QSettings), if any.
     void restoreSavedLayout();
     void saveLayout() const;
-    /// Registers a background computation so its progress shows in the status bar.
-    void trackRecomputer(Recomputer* recomputer);
     /// The status bar's text of the analysis stages (running stages with their progress).
     QString stageStatusText() const;
     /// File > Export Report: the analysis report of the open corpus (HTML) written to `file`;
@@ -89,6 +91,7 @@ public:
     VideoExportResult exportViewVideo(const VideoExportOptions& options, const ExportProgress& progress = {});
 
 protected:
+    bool event(QEvent* event) override;
     void closeEvent(QCloseEvent* event) override;
     void dragEnterEvent(QDragEnterEvent* event) override;
     void dropEvent(QDropEvent* event) override;
@@ -110,6 +113,8 @@ private:
     void showStageStatus();
     /// File > Export 3D View Video...: the dialog, the export, then a message on error.
     void chooseViewVideo();
+    /// Help > Keyboard Shortcuts.
+    void showShortcuts();
     QVariantMap viewState() const;
     void restoreViewState(const QVariantMap& state);
 
@@ -127,13 +132,15 @@ private:
     DesignPanel* m_designPanel = nullptr;
     NormalisePanel* m_normalisePanel = nullptr;
     EmotionPanel* m_emotionPanel = nullptr;
+    MultimodalExportController* m_multimodal = nullptr;
     std::vector<QDockWidget*> m_docks;
     QByteArray m_defaultState;
     QMenu* m_viewMenu = nullptr;
     QProgressBar* m_progress = nullptr;
     QLabel* m_status = nullptr;
     QLabel* m_stages = nullptr;
-    QSet<Recomputer*> m_busy;
+    SideColumns* m_columns = nullptr;
+    std::map<int, QString> m_failures; ///< per analysis slot: its failure shown in the status bar
 };
 
 } // namespace bunraku::app

@@ -2,6 +2,9 @@
 
 #include "app/commands.h"
 #include "app/analysis_controller.h"
+#include "app/variance_tree.h"
+
+#include "widgets/bounded_spin_box.h"
 
 #include "analysis/normalise/coupling.h"
 #include "analysis/pipeline/parameters_json.h"
@@ -14,7 +17,7 @@
 #include <QLabel>
 #include <QSignalBlocker>
 #include <QSpinBox>
-#include <QTableWidget>
+#include <QTreeWidget>
 #include <QVBoxLayout>
 
 namespace bunraku::app {
@@ -32,6 +35,12 @@ std::pair<std::string, std::string> cellOfTakeA(const Document& document)
     return {take->labels.function, take->labels.emotion};
 }
 
+/// "1 frame", "30 frames".
+QString framesText(int frames)
+{
+    return frames == 1 ? NormalisePanel::tr("1 frame") : NormalisePanel::tr("%1 frames").arg(frames);
+}
+
 QVariant referenceData(const pl::ReferenceChoice& choice)
 {
     return QString::fromStdString(pl::referenceName(choice));
@@ -44,39 +53,55 @@ NormalisePanel::NormalisePanel(Document& document, AnalysisController& analysis,
 {
     m_reference = new QComboBox(this);
     m_reference->setObjectName("normaliseReference");
-    m_tau = new QSpinBox(this);
+    m_tau = new widgets::BoundedSpinBox(this);
     m_tau->setObjectName("normaliseTau");
     m_tau->setRange(0, 20);
     m_tau->setSuffix(tr(" frames"));
-    m_band = new QSpinBox(this);
+    m_band = new widgets::BoundedSpinBox(this);
+    m_band->setObjectName("normaliseSearchBand");
     m_band->setRange(1, 60);
     m_band->setSuffix(tr(" frames"));
-    m_scales = new QSpinBox(this);
+    m_scales = new widgets::BoundedSpinBox(this);
+    m_scales->setObjectName("normaliseMaxScale");
     m_scales->setRange(1, 32);
     m_coupling = new QComboBox(this);
+    m_coupling->setObjectName("normaliseCoupling");
     m_coupling->setEditable(true);
     for (const auto& name : analysis::couplingPresetNames()) m_coupling->addItem(QString::fromStdString(name));
     m_path = new QComboBox(this);
+    m_path->setObjectName("normalisePath");
     m_path->addItem(tr("greedy (thesis)"), QStringLiteral("greedy"));
     m_path->addItem(tr("optimal (DP)"), QStringLiteral("optimal"));
     m_reference->setToolTip(tr("The take every take of the cell is normalised to"));
-    m_tau->setToolTip(tr("tau: half window of the wavelet shape comparison (thesis 3.5.2: 4)"));
-    m_band->setToolTip(tr("T_cmp: search band around the reference frame (thesis: 20)"));
-    m_scales->setToolTip(tr("Largest wavelet scale (scales 1..max; thesis: 16)"));
+    m_tau->setDescription(tr("tau: half window of the wavelet shape comparison (thesis 3.5.2: 4)."));
+    m_band->setDescription(tr("T_cmp: search band around the reference frame (thesis: 20)."));
+    m_scales->setDescription(tr("Largest wavelet scale: scales 1..max (thesis: 16)."));
+    m_coupling->setToolTip(tr("Which channels share one time correspondence (thesis eq. 3.29): a preset or a spec"));
+    m_path->setToolTip(tr("The correspondence path: the thesis's greedy scan (3.5.3) or the optimal monotone path"));
     m_summary = new QLabel(this);
+    m_summary->setObjectName("normaliseSummary");
     m_summary->setWordWrap(true);
-    m_table = new QTableWidget(this);
-    m_table->setColumnCount(3);
-    m_table->setHorizontalHeaderLabels({tr("Take"), tr("Before"), tr("After")});
-    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
-    m_table->verticalHeader()->setVisible(false);
+    m_table = new QTreeWidget(this);
+    m_table->setObjectName("varianceTree");
+    m_table->setColumnCount(4);
+    m_table->setHeaderLabels({tr("Take / DOF family / part"), tr("Before"), tr("After"), tr("Change")});
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_table->setRootIsDecorated(true);
+    m_table->setMinimumHeight(90);
     m_curves = new QCustomPlot(this);
-    m_curves->setMinimumHeight(150);
+    m_curves->setObjectName("correspondencePlot");
+    m_curves->setMinimumHeight(120);
     m_curves->xAxis->setLabel(tr("reference frame"));
     m_curves->yAxis->setLabel(tr("sample frame"));
+    m_curves->legend->setVisible(true);
+    QFont legendFont = font();
+    legendFont.setPointSizeF(std::max(6.0, legendFont.pointSizeF() - 2.0));
+    m_curves->legend->setFont(legendFont);
+    m_curves->legend->setBrush(QColor(255, 255, 255, 210));
+    m_curves->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignLeft);
 
     auto* form = new QFormLayout;
+    form->setRowWrapPolicy(QFormLayout::WrapLongRows);
     form->addRow(tr("Reference"), m_reference);
     form->addRow(tr("tau"), m_tau);
     form->addRow(tr("T_cmp"), m_band);
@@ -90,41 +115,59 @@ NormalisePanel::NormalisePanel(Document& document, AnalysisController& analysis,
     layout->addWidget(m_table, 1);
     layout->addWidget(m_curves, 1);
 
-    // Every control edits the typed parameters through ChangeStageParameters; consecutive steps
-    // of a spin box (arrows, keys, wheel) are one undo step until it loses the focus.
-    auto edit = [this](const QString& control, const std::function<void(pl::NormaliseParameters&)>& change) {
+    // Every control edits the typed parameters through ChangeStageParameters, named after the
+    // value it sets; consecutive steps of a spin box (arrows, keys, wheel) are one undo step
+    // until it loses the focus.
+    auto edit = [this](const QString& control, const QString& text, const std::function<void(pl::NormaliseParameters&)>& change) {
         if (m_updating) return;
         changeStageParameters(
-            m_document, [&](AnalysisParameters& p) { change(p.normalise); }, tr("Change normalisation %1").arg(control),
-            QStringLiteral("normalise.") + control);
+            m_document, [&](AnalysisParameters& p) { change(p.normalise); }, text, QStringLiteral("normalise.") + control);
     };
     connect(m_reference, &QComboBox::currentIndexChanged, this, [this, edit] {
-        const auto [function, emotion] = cellOfTakeA(m_document);
+        const auto [function, emotion] = shownCell();
         if (function.empty()) return;
         const QString data = m_reference->currentData().toString();
         pl::ReferenceChoice choice;
         if (data == QStringLiteral("average")) choice.kind = pl::ReferenceKind::Average;
         else if (data != QStringLiteral("suggested")) choice = {pl::ReferenceKind::Take, data.toInt()};
-        edit(QStringLiteral("reference"), [&](pl::NormaliseParameters& p) {
-            if (choice == p.reference) p.cellReferences.erase(pl::cellName(function, emotion));
-            else p.cellReferences[pl::cellName(function, emotion)] = choice;
-        });
+        const QString cell = QString::fromStdString(pl::cellName(function, emotion));
+        edit(QStringLiteral("reference"), tr("Set the reference of %1 to %2").arg(cell, m_reference->currentText()),
+             [&](pl::NormaliseParameters& p) {
+                 if (choice == p.reference) p.cellReferences.erase(pl::cellName(function, emotion));
+                 else p.cellReferences[pl::cellName(function, emotion)] = choice;
+             });
     });
-    connect(m_tau, &QSpinBox::valueChanged, this, [edit](int value) { edit(QStringLiteral("tau"), [value](auto& p) { p.tau = value; }); });
-    connect(m_band, &QSpinBox::valueChanged, this,
-            [edit](int value) { edit(QStringLiteral("searchBand"), [value](auto& p) { p.searchBand = value; }); });
-    connect(m_scales, &QSpinBox::valueChanged, this,
-            [edit](int value) { edit(QStringLiteral("maxScale"), [value](auto& p) { p.maxScale = value; }); });
-    for (QSpinBox* box : {m_tau, m_band, m_scales})
+    connect(m_tau, &QSpinBox::valueChanged, this, [edit](int value) {
+        edit(QStringLiteral("tau"), tr("Set tau to %1").arg(framesText(value)), [value](auto& p) { p.tau = value; });
+    });
+    connect(m_band, &QSpinBox::valueChanged, this, [edit](int value) {
+        edit(QStringLiteral("searchBand"), tr("Set T_cmp to %1").arg(framesText(value)), [value](auto& p) { p.searchBand = value; });
+    });
+    connect(m_scales, &QSpinBox::valueChanged, this, [edit](int value) {
+        edit(QStringLiteral("maxScale"), tr("Set the largest scale to %1").arg(value), [value](auto& p) { p.maxScale = value; });
+    });
+    for (widgets::BoundedSpinBox* box : {m_tau, m_band, m_scales}) {
         connect(box, &QSpinBox::editingFinished, &document, &Document::endStepSeries);
+        connect(box, &widgets::BoundedSpinBox::clamped, this, [this, box](int requested, int applied) {
+            const QString name = box == m_tau ? tr("tau") : box == m_band ? tr("T_cmp") : tr("The largest scale");
+            emit statusMessage(tr("%1 %2%3 is %4 the limit: set to %5%3 (%6)")
+                                   .arg(name)
+                                   .arg(requested)
+                                   .arg(box->suffix())
+                                   .arg(requested > applied ? tr("above") : tr("below"))
+                                   .arg(applied)
+                                   .arg(box->limitsText()));
+        });
+    }
     connect(m_coupling, &QComboBox::currentTextChanged, this, [this, edit](const QString& text) {
         const std::string spec = text.trimmed().toStdString();
         if (spec.empty() || spec.size() > 4096) return;
-        edit(QStringLiteral("coupling"), [&](pl::NormaliseParameters& p) { p.coupling = spec; });
+        edit(QStringLiteral("coupling"), tr("Set the coupling to %1").arg(text.trimmed()),
+             [&](pl::NormaliseParameters& p) { p.coupling = spec; });
     });
     connect(m_path, &QComboBox::currentIndexChanged, this, [this, edit] {
         const bool optimal = m_path->currentData().toString() == QStringLiteral("optimal");
-        edit(QStringLiteral("path"), [optimal](pl::NormaliseParameters& p) {
+        edit(QStringLiteral("path"), tr("Set the path to %1").arg(m_path->currentText()), [optimal](pl::NormaliseParameters& p) {
             p.path = optimal ? analysis::PathMethod::Optimal : analysis::PathMethod::Greedy;
         });
     });
@@ -137,7 +180,10 @@ NormalisePanel::NormalisePanel(Document& document, AnalysisController& analysis,
         refreshControls();
         showResult();
     });
-    connect(&document, &Document::corpusChanged, this, &NormalisePanel::refreshControls);
+    connect(&document, &Document::corpusChanged, this, [this] {
+        refreshControls();
+        showResult();
+    });
     connect(&analysis, &AnalysisController::resultChanged, this, [this](int slot) {
         if (slot == AnalysisController::kNormaliseSlot) showResult();
     });
@@ -156,10 +202,18 @@ TakePointer NormalisePanel::normalisedTake() const
 
 QString NormalisePanel::summaryText() const { return m_summary->text(); }
 
+std::pair<std::string, std::string> NormalisePanel::shownCell() const
+{
+    // Take A's cell; while A shows a derived take (the normalised take itself), the cell last shown.
+    auto cell = cellOfTakeA(m_document);
+    if (cell.first.empty()) cell = {m_analysis.cellFunction(), m_analysis.cellEmotion()};
+    return cell;
+}
+
 void NormalisePanel::refreshControls()
 {
     m_updating = true;
-    const auto [function, emotion] = cellOfTakeA(m_document);
+    const auto [function, emotion] = shownCell();
     const pl::NormaliseParameters& parameters = m_document.parameters().normalise;
     if (!function.empty()) {
         m_reference->clear();
@@ -186,23 +240,31 @@ void NormalisePanel::showResult()
         return;
     }
     const auto output = m_analysis.normalised();
-    const auto [function, emotion] = cellOfTakeA(m_document);
+    const auto [function, emotion] = shownCell();
     const pl::CellNormalisation* cell = output && !function.empty() ? output->cell(function, emotion) : nullptr;
     if (!cell) {
         m_summary->setText(scheduler.state(slot) == SlotState::Running ? tr("Normalising every cell...") : QString());
+        m_table->clear();
+        m_curves->clearGraphs();
+        m_curves->replot();
         return;
     }
     const auto& variance = cell->variance;
-    m_summary->setText(tr("Cell %1/%2 normalised to <b>%3</b>%4. Squared difference to the reference, summed over channels:")
+    m_summary->setText(tr("Cell <b>%1/%2</b> normalised to <b>%3</b> with %4%5. Squared difference to the reference, "
+                          "summed over frames, per DOF family and part:")
                            .arg(QString::fromStdString(function), QString::fromStdString(emotion),
-                                QString::fromStdString(cell->referenceName),
-                                scheduler.state(slot) == SlotState::Running ? tr(" (recomputing)") : QString()));
-    m_table->setRowCount(int(variance.takeNames.size()));
-    for (int k = 0; k < int(variance.takeNames.size()); ++k) {
-        m_table->setItem(k, 0, new QTableWidgetItem(QString::fromStdString(variance.takeNames[std::size_t(k)])));
-        m_table->setItem(k, 1, new QTableWidgetItem(QString::number(variance.totalBefore[k], 'g', 4)));
-        m_table->setItem(k, 2, new QTableWidgetItem(QString::number(variance.totalAfter[k], 'g', 4)));
+                                QString::fromStdString(cell->referenceName).toHtmlEscaped(),
+                                AnalysisController::normaliseParametersText(m_analysis.normalisedParameters()).toHtmlEscaped(),
+                                scheduler.state(slot) == SlotState::Running ? tr(" (recomputing with the new parameters)") : QString()));
+    std::vector<QString> labels;
+    const std::size_t reference = std::size_t(cell->suggestion.takeIndex);
+    for (std::size_t k = 0; k < cell->takeIndices.size(); ++k) {
+        const bool isReference = cell->reference.kind == pl::ReferenceKind::Take ? cell->takeIndices[k] == cell->reference.takeIndex
+                                 : cell->reference.kind == pl::ReferenceKind::Suggested ? k == reference
+                                                                                        : false;
+        labels.push_back(isReference ? tr("take %1 (ref.)").arg(cell->takeIndices[k]) : tr("take %1").arg(cell->takeIndices[k]));
     }
+    fillVarianceTree(m_table, variance, cell->referenceTake.channels, labels);
     m_curves->clearGraphs();
     const std::size_t count = cell->normalisations.size();
     for (std::size_t k = 0; k < count; ++k) {
@@ -216,6 +278,8 @@ void NormalisePanel::showResult()
         auto* graph = m_curves->addGraph();
         graph->setData(x, y, true);
         graph->setPen(QPen(QColor::fromHsv(int(k * 360 / std::max<std::size_t>(1, count)), 200, 200), 1.5));
+        graph->setName(k < variance.takeNames.size() ? QString::fromStdString(variance.takeNames[k])
+                                                     : tr("take %1").arg(cell->takeIndices[k]));
     }
     m_curves->rescaleAxes();
     m_curves->replot();

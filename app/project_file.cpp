@@ -2,13 +2,16 @@
 
 #include "analysis/pipeline/parameters_json.h"
 
-#include <QFile>
-#include <QFileInfo>
+#include "analysis/io/atomic_file.h"
+#include "analysis/io/import_options_json.h"
+
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QRegularExpression>
-#include <QSaveFile>
+
+#include <filesystem>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
@@ -95,7 +98,11 @@ analysis::Status writeProject(const ProjectState& state, const QString& file)
     root["version"] = kProjectFormatVersion;
     root["corpus"] = state.corpus;
     QJsonArray imported;
-    for (const auto& recipe : state.imported) imported.append(QJsonObject{{"path", recipe.path}, {"label", recipe.label}});
+    for (const auto& recipe : state.imported) {
+        const QByteArray options =
+            QByteArray::fromStdString(analysis::io::importOptionsToJson(recipe.options).dump(-1, ' ', false, json::error_handler_t::replace));
+        imported.append(QJsonObject{{"path", recipe.path}, {"label", recipe.label}, {"options", QJsonDocument::fromJson(options).object()}});
+    }
     root["imported"] = imported;
     root["parameters"] = QJsonDocument::fromJson(QByteArray::fromStdString(analysis::pipeline::toJson(state.parameters).dump())).object();
     root["takeA"] = state.takeA;
@@ -103,24 +110,22 @@ analysis::Status writeProject(const ProjectState& state, const QString& file)
     root["time_s"] = state.timeSeconds;
     root["view"] = QJsonObject::fromVariantMap(state.view);
 
-    QSaveFile out(file);
-    if (!out.open(QIODevice::WriteOnly))
-        return makeError(ErrorCode::Io, file.toStdString() + ": cannot write: " + out.errorString().toStdString());
-    out.write(QJsonDocument(root).toJson(QJsonDocument::Indented));
-    if (!out.commit())
-        return makeError(ErrorCode::Io, file.toStdString() + ": cannot write: " + out.errorString().toStdString());
-    return analysis::okStatus();
+    const QByteArray text = QJsonDocument(root).toJson(QJsonDocument::Indented);
+    return analysis::io::writeFileAtomically(std::filesystem::path(file.toStdString()),
+                                             std::string_view(text.constData(), std::size_t(text.size())));
 }
 
 analysis::Result<ProjectState> readProject(const QString& file)
 {
-    const std::string name = file.toStdString();
-    const QFileInfo info(file);
-    if (!info.isFile()) return makeError(ErrorCode::Io, name + ": not a regular file");
-    if (info.size() > kMaxProjectBytes) return parseError(name, 0, "larger than 64 MB: not a project file");
-    QFile in(file);
-    if (!in.open(QIODevice::ReadOnly)) return makeError(ErrorCode::Io, name + ": cannot open: " + in.errorString().toStdString());
-    const QByteArray text = in.read(kMaxProjectBytes + 1);
+    // A regular file of at most 64 MB (a FIFO or device is refused, never waited on), read whole.
+    auto text = analysis::io::readTextFile(std::filesystem::path(file.toStdString()), std::uintmax_t(kMaxProjectBytes));
+    if (!text) return text.error();
+    return parseProject(QByteArray::fromStdString(*text), file);
+}
+
+analysis::Result<ProjectState> parseProject(const QByteArray& text, const QString& sourceName)
+{
+    const std::string name = sourceName.toStdString();
     QJsonParseError error;
     const QJsonDocument document = QJsonDocument::fromJson(text, &error);
     if (error.error != QJsonParseError::NoError)
@@ -139,11 +144,22 @@ analysis::Result<ProjectState> readProject(const QString& file)
     const QJsonValue importedValue = root["imported"];
     if (!importedValue.isUndefined() && !importedValue.isArray()) return parseError(name, 0, "expected \"imported\": [...]");
     if (importedValue.toArray().size() > kMaxImported) return parseError(name, 0, "more than 10000 \"imported\" takes");
-    for (const auto& value : importedValue.toArray()) {
-        const QJsonObject recipe = value.toObject();
+    const QJsonArray imported = importedValue.toArray();
+    for (qsizetype i = 0; i < imported.size(); ++i) {
+        const QJsonObject recipe = imported[i].toObject();
         if (!recipe["path"].isString() || recipe["path"].toString().isEmpty())
             return parseError(name, 0, "expected \"path\" in every \"imported\" entry");
-        state.imported.push_back({recipe["path"].toString(), recipe["label"].toString()});
+        ImportedTakeRecipe item{recipe["path"].toString(), recipe["label"].toString(), {}};
+        // What the take was imported with (older projects: the defaults).
+        if (recipe.contains("options")) {
+            const std::string where = "imported[" + std::to_string(i) + "].options";
+            if (!recipe["options"].isObject()) return parseError(name, 0, where + ": expected an object");
+            const QByteArray options = QJsonDocument(recipe["options"].toObject()).toJson(QJsonDocument::Compact);
+            auto read = analysis::io::importOptionsFromJson(json::parse(options.toStdString(), nullptr, false), name + ": " + where);
+            if (!read) return read.error();
+            item.options = std::move(read).value();
+        }
+        state.imported.push_back(std::move(item));
     }
     // The parameters: strictly typed and range-checked before anything uses them.
     json parameters = json::object();
@@ -180,8 +196,25 @@ analysis::Result<ProjectState> readProject(const QString& file)
             return parseError(name, 0, std::string("expected \"view\".\"") + range.key + "\" in " + QString::number(range.low).toStdString() +
                                            ".." + QString::number(range.high).toStdString());
     }
-    if (viewObject.contains("part") && (!viewObject["part"].isString() || viewObject["part"].toString().size() > 256))
-        return parseError(name, 0, "expected \"view\".\"part\": a part name");
+    for (const char* key : {"part", "dof", "weightEmotion"})
+        if (viewObject.contains(key) && (!viewObject[key].isString() || viewObject[key].toString().size() > 256))
+            return parseError(name, 0, std::string("expected \"view\".\"") + key + "\": a name of at most 256 characters");
+    if (viewObject.contains("camera")) {
+        // {"angle", "elevation", "distance", "target": [x, y, z], "fov"}: finite, in the ranges a
+        // camera can take (render/camera.h).
+        const QJsonObject camera = viewObject["camera"].toObject();
+        const QJsonArray target = camera["target"].toArray();
+        const auto inRange = [](const QJsonValue& value, double low, double high) {
+            return value.isDouble() && value.toDouble() >= low && value.toDouble() <= high;
+        };
+        bool valid = viewObject["camera"].isObject() && inRange(camera["angle"], -3600.0, 3600.0) &&
+                     inRange(camera["elevation"], -90.0, 90.0) && inRange(camera["distance"], 10.0, 5000.0) &&
+                     (camera["fov"].isUndefined() || inRange(camera["fov"], 1.0, 170.0)) && target.size() == 3;
+        for (const QJsonValue& coordinate : target) valid = valid && inRange(coordinate, -1e6, 1e6);
+        if (!valid)
+            return parseError(name, 0, "expected \"view\".\"camera\": {\"angle\": deg, \"elevation\": deg in -90..90, "
+                                       "\"distance\": cm in 10..5000, \"target\": [x, y, z] cm, \"fov\": deg in 1..170}");
+    }
     state.view = viewObject.toVariantMap();
     return state;
 }

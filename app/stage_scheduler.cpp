@@ -5,7 +5,9 @@
 #include <QRunnable>
 #include <QThreadPool>
 
+#include <algorithm>
 #include <exception>
+#include <vector>
 
 namespace bunraku::app {
 
@@ -30,19 +32,30 @@ StageScheduler::~StageScheduler()
     *m_alive = false;
 }
 
+void StageScheduler::release(int slotId, Slot& slot)
+{
+    // The job's inputs are no longer this slot's: it stops unless another slot still waits for it.
+    if (slot.job != 0 && slot.stop) {
+        const bool shared = std::any_of(m_slots.begin(), m_slots.end(),
+                                        [&](const auto& other) { return other.first != slotId && other.second.job == slot.job; });
+        if (!shared) slot.stop->request_stop();
+    }
+    slot.job = 0;
+    slot.stop.reset();
+}
+
 void StageScheduler::request(int slotId, StageKey key, StageWork work)
 {
     Slot& slot = m_slots[slotId];
     if (slot.key == key && (slot.job != 0 || slot.state == SlotState::Finished || slot.state == SlotState::Failed)) return;
-    if (slot.stop) slot.stop->request_stop(); // its inputs changed: the running job is of no use
+    release(slotId, slot); // its inputs changed: the running job is of no use to it
     slot.key = key;
-    slot.job = 0;
-    slot.stop.reset();
     slot.value.reset();
     slot.error.clear();
     slot.progress = 0.0;
-    // The cache holds results of every slot by key (a stage's key already names its stage).
-    if (StageValue cached = m_cache->find<void>(analysis::pipeline::Stage(0), StageKey{key.value ^ std::uint64_t(slotId)})) {
+    // A key names its result (a stage's key is seeded with the stage's name): any slot asking
+    // for a key finds what any slot computed under it.
+    if (StageValue cached = m_cache->find<void>(analysis::pipeline::Stage(0), key)) {
         slot.value = std::move(cached);
         slot.state = SlotState::Finished;
         slot.progress = 1.0;
@@ -61,6 +74,17 @@ void StageScheduler::request(int slotId, StageKey key, StageWork work)
             Qt::QueuedConnection);
         return;
     }
+    // Another slot computing the same key already: wait for its job instead of starting one.
+    for (auto& [otherId, other] : m_slots) {
+        if (otherId == slotId || other.job == 0 || !(other.key == key)) continue;
+        slot.job = other.job;
+        slot.stop = other.stop;
+        slot.state = SlotState::Running;
+        slot.progress = other.progress;
+        emit stateChanged(slotId);
+        emit progressChanged(slotId, slot.progress);
+        return;
+    }
     const quint64 job = ++m_nextJob;
     slot.job = job;
     slot.stop = std::make_shared<std::stop_source>();
@@ -71,17 +95,18 @@ void StageScheduler::request(int slotId, StageKey key, StageWork work)
     QPointer<StageScheduler> self(this);
     auto alive = m_alive;
     auto stop = slot.stop;
-    m_executor->run([self, alive, stop, job, slotId, key, work = std::move(work)] {
-        analysis::RunControl control{stop->get_token(), [self, alive, slotId, job](double fraction) {
+    m_executor->run([self, alive, stop, job, key, work = std::move(work)] {
+        analysis::RunControl control{stop->get_token(), [self, alive, job](double fraction) {
                                          if (!*alive) return;
                                          QMetaObject::invokeMethod(
                                              self.data(),
-                                             [self, slotId, job, fraction] {
+                                             [self, job, fraction] {
                                                  if (!self) return;
-                                                 auto found = self->m_slots.find(slotId);
-                                                 if (found == self->m_slots.end() || found->second.job != job) return;
-                                                 found->second.progress = fraction;
-                                                 emit self->progressChanged(slotId, fraction);
+                                                 for (auto& [id, waiting] : self->m_slots) {
+                                                     if (waiting.job != job) continue;
+                                                     waiting.progress = fraction;
+                                                     emit self->progressChanged(id, fraction);
+                                                 }
                                              },
                                              Qt::QueuedConnection);
                                      }};
@@ -96,35 +121,47 @@ void StageScheduler::request(int slotId, StageKey key, StageWork work)
         if (!*alive) return;
         QMetaObject::invokeMethod(
             self.data(),
-            [self, slotId, job, key, result = std::move(result)]() mutable {
-                if (self) self->deliver(slotId, job, key, std::move(result));
+            [self, job, key, result = std::move(result)]() mutable {
+                if (self) self->deliver(job, key, std::move(result));
             },
             Qt::QueuedConnection);
     });
 }
 
-void StageScheduler::deliver(int slotId, quint64 job, StageKey key, analysis::Result<StageValue> result)
+void StageScheduler::deliver(quint64 job, StageKey key, analysis::Result<StageValue> result)
 {
-    if (result.ok()) m_cache->store<void>(analysis::pipeline::Stage(0), StageKey{key.value ^ std::uint64_t(slotId)}, *result);
-    auto found = m_slots.find(slotId);
-    // A job whose inputs changed meanwhile (or that was cleared) is never shown.
-    if (found == m_slots.end() || found->second.job != job || !(found->second.key == key)) return;
-    Slot& slot = found->second;
-    slot.job = 0;
-    slot.stop.reset();
-    if (!result.ok()) {
-        slot.state = SlotState::Failed;
-        slot.error = QString::fromStdString(result.error().message);
-        emit stateChanged(slotId);
-        emit failed(slotId, slot.error);
-        return;
+    if (result.ok()) m_cache->store<void>(analysis::pipeline::Stage(0), key, *result);
+    // Every slot still waiting for this job; a job whose inputs changed meanwhile (or that was
+    // cleared) has none and is never shown.
+    std::vector<int> waiting;
+    for (const auto& [id, slot] : m_slots)
+        if (slot.job == job && slot.key == key) waiting.push_back(id);
+    for (int slotId : waiting) {
+        Slot& slot = m_slots[slotId];
+        slot.job = 0;
+        slot.stop.reset();
+        if (!result.ok()) {
+            slot.state = SlotState::Failed;
+            slot.error = QString::fromStdString(result.error().message);
+        } else {
+            slot.value = *result;
+            slot.state = SlotState::Finished;
+            slot.progress = 1.0;
+        }
     }
-    slot.value = std::move(result).value();
-    slot.state = SlotState::Finished;
-    slot.progress = 1.0;
-    emit progressChanged(slotId, 1.0);
-    emit stateChanged(slotId);
-    emit finished(slotId);
+    // Signals after every waiting slot is updated: a receiver may request again.
+    for (int slotId : waiting) {
+        const auto found = m_slots.find(slotId);
+        if (found == m_slots.end() || !(found->second.key == key)) continue;
+        if (found->second.state == SlotState::Failed) {
+            emit stateChanged(slotId);
+            emit failed(slotId, found->second.error);
+        } else if (found->second.state == SlotState::Finished) {
+            emit progressChanged(slotId, 1.0);
+            emit stateChanged(slotId);
+            emit finished(slotId);
+        }
+    }
 }
 
 void StageScheduler::clear(int slotId)
@@ -132,7 +169,7 @@ void StageScheduler::clear(int slotId)
     auto found = m_slots.find(slotId);
     if (found == m_slots.end()) return;
     Slot& slot = found->second;
-    if (slot.stop) slot.stop->request_stop();
+    release(slotId, slot);
     const bool wasShown = slot.state != SlotState::Idle;
     const int starts = slot.starts; // kept: counts every job the slot started
     slot = Slot{};

@@ -8,6 +8,9 @@
 ///    normalisation);
 ///  - a new key cancels the slot's running job (its std::stop_token) and starts the new one,
 ///    or takes the result from the cache (pipeline::StageCache) at once;
+///  - a key names its result, whichever slot asks: a slot asking for a key another slot
+///    computed takes it from the cache, one asking for a key another slot is computing waits for
+///    that job (a job is cancelled only when no slot waits for it any more);
 ///  - a finished job whose key is no longer the slot's is dropped (cached, never shown);
 ///  - results reach the GUI thread only, through queued calls; exceptions never cross.
 /// Jobs run on an Executor: the thread pool by default, a manual one in tests (no wall clock).
@@ -70,7 +73,8 @@ public:
     QString error(int slot) const;
     double progress(int slot) const;
     bool busy() const;
-    /// Jobs started per slot (tests: a slot that was not restarted).
+    /// Jobs started per slot (tests: a slot that was not restarted; a slot that waited for
+    /// another's job or took a cached result started none).
     int starts(int slot) const;
     analysis::pipeline::StageCache& cache() { return *m_cache; }
 
@@ -91,7 +95,9 @@ private:
         double progress = 0.0;
         int starts = 0;
     };
-    void deliver(int slot, quint64 job, analysis::pipeline::StageKey key, analysis::Result<StageValue> result);
+    void deliver(quint64 job, analysis::pipeline::StageKey key, analysis::Result<StageValue> result);
+    /// Leaves the slot's job (stopped when no other slot waits for it).
+    void release(int slotId, Slot& slot);
 
     std::shared_ptr<Executor> m_executor;
     std::shared_ptr<analysis::pipeline::StageCache> m_cache;

@@ -1,9 +1,9 @@
 #pragma once
 /// Export of the 3D view as a video: which frames (a frame range of take A, resampled to any
 /// frame rate), and where they go (an MP4 H.264 file through ffmpeg, or a PNG sequence). The
-/// caller renders each frame (the view's grabFramebuffer or an OffscreenRenderer); this file
-/// plans the times, streams the images to a FrameSink and cleans up on cancel or error, so a
-/// half-written result never stays on disk.
+/// caller renders each frame (the view's grabFramebuffer or an OffscreenRenderer) on the GUI
+/// thread; this file plans the times, and a worker thread streams the images to a FrameSink that
+/// cleans up on cancel or error, so a half-written result never stays on disk.
 
 #include "analysis/core/result.h"
 
@@ -71,22 +71,28 @@ QString frameCountText(int count);
 /// The frame_*.png files already in `folder` (file names, sorted); empty when it does not exist.
 QStringList existingFrames(const QString& folder);
 
-/// PNG files frame_00000.png ... in `folder` (created if needed). The frames are written into a
-/// fresh hidden folder inside it (.partial-XXXXXX); finish() removes the folder's old
-/// frame_*.png and moves the new ones in, so an aborted export leaves the old frames untouched.
-/// open() refuses a folder that already holds frame_*.png unless `overwrite`. abort() removes
-/// only what this sink created (its hidden folder, and `folder` itself when it made it).
+/// PNG files frame_00000.png ... in `folder`, built in a hidden folder beside it and swapped in
+/// by finish() (analysis/io/staged_folder.h): the folder then holds exactly the new sequence. An
+/// aborted export leaves the folder as it was. open() refuses a folder that already holds
+/// frame_*.png unless `overwrite`, and always one holding files this program did not write there.
 std::unique_ptr<FrameSink> makePngSequenceSink(const QString& folder, bool overwrite = false);
 
 /// Renders the scene at `seconds`: the image, or why there is none (the view hidden, its OpenGL
 /// context lost...), which stops the export with an error naming the take frame.
 using FrameRenderer = std::function<analysis::Result<QImage>(double seconds)>;
-/// Called before each frame and after the last with (frames done, total); false cancels.
+/// Called on the GUI thread before each frame and after the last with (frames done, total);
+/// false cancels.
 using ExportProgress = std::function<bool(int done, int total)>;
 
-/// Renders the planned frames one by one into the sink of `options` (MP4 or PNG; options.fps and
-/// the range are already in `plan`). Every image is brought to options.size (the first image's
-/// size when empty, cropped to even dimensions for MP4). Checks for ffmpeg before rendering.
+/// Why the export cannot start (no output, an empty range, no ffmpeg, a folder of earlier frames
+/// without overwrite or of someone else's files, a tiny size); empty when it can.
+QString exportRefusal(const VideoExportOptions& options, const FramePlan& plan);
+
+/// Renders the planned frames into the sink of `options` (MP4 or PNG; options.fps and the range
+/// are already in `plan`) as a VideoExportJob (video_export_job.h): frames are rendered on this
+/// thread while a local event loop runs, and encoded and written by a worker thread. Every image
+/// is brought to options.size (the first image's size when empty, cropped to even dimensions for
+/// MP4). Checks for ffmpeg before rendering.
 VideoExportResult exportFrames(const VideoExportOptions& options, const FramePlan& plan,
                                const FrameRenderer& render, const ExportProgress& progress = {});
 

@@ -1,6 +1,7 @@
 #include "app/video_export_dialog.h"
 
 #include "app/ffmpeg_encoder.h"
+#include "app/file_dialogs.h"
 
 #include <QButtonGroup>
 #include <QComboBox>
@@ -18,7 +19,6 @@
 #include <QRadioButton>
 #include <QSettings>
 #include <QSpinBox>
-#include <QStandardPaths>
 #include <QToolButton>
 
 #include <algorithm>
@@ -27,12 +27,6 @@ namespace bunraku::app {
 namespace {
 
 const QString kGroup = QStringLiteral("videoExport");
-
-QString defaultFolder()
-{
-    const QString movies = QStandardPaths::writableLocation(QStandardPaths::MoviesLocation);
-    return movies.isEmpty() ? QDir::homePath() : movies;
-}
 
 QString sizeText(QSize size) { return QStringLiteral("%1 x %2").arg(size.width()).arg(size.height()); }
 
@@ -131,9 +125,18 @@ VideoExportDialog::VideoExportDialog(const VideoExportLimits& limits, QWidget* p
     connect(m_fps, &QDoubleSpinBox::valueChanged, this, &VideoExportDialog::updateSummary);
     connect(m_resolution, &QComboBox::currentIndexChanged, this, &VideoExportDialog::updateSummary);
 
-    m_mp4Path = QDir(defaultFolder()).filePath(QStringLiteral("bunraku-view.mp4"));
-    m_pngFolder = QDir(defaultFolder()).filePath(QStringLiteral("bunraku-frames"));
+    // Where the person last wrote a video (else the last folder they chose for anything or home:
+    // never a folder they did not go to).
+    m_mp4Path = QDir(rememberedFolder(FilePurpose::Video)).filePath(QStringLiteral("bunraku-view.mp4"));
+    m_pngFolder = QDir(rememberedFolder(FilePurpose::VideoFrames)).filePath(QStringLiteral("bunraku-frames"));
     setOptions(rememberedOptions());
+}
+
+void VideoExportDialog::suggestOutput(const QString& name, const QString& projectFile)
+{
+    m_mp4Path = QDir(rememberedFolder(FilePurpose::Video, projectFile)).filePath(name + QStringLiteral(".mp4"));
+    m_pngFolder = QDir(rememberedFolder(FilePurpose::VideoFrames, projectFile)).filePath(name + QStringLiteral("-frames"));
+    m_output->setText(format() == VideoFormat::Mp4 ? m_mp4Path : m_pngFolder);
 }
 
 VideoFormat VideoExportDialog::format() const { return VideoFormat(m_format->currentData().toInt()); }
@@ -229,6 +232,7 @@ void VideoExportDialog::accept()
         }
     }
     rememberOptions(options());
+    rememberFolder(format() == VideoFormat::Mp4 ? FilePurpose::Video : FilePurpose::VideoFrames, output);
     QDialog::accept();
 }
 
@@ -238,7 +242,7 @@ void VideoExportDialog::browse()
     if (format() == VideoFormat::Mp4)
         chosen = QFileDialog::getSaveFileName(this, tr("MP4 video"), m_output->text(), tr("MP4 videos (*.mp4)"));
     else
-        chosen = QFileDialog::getExistingDirectory(this, tr("Folder for the PNG frames"), m_output->text());
+        chosen = QFileDialog::getExistingDirectory(this, tr("Folder for the PNG frames"), QFileInfo(m_output->text()).absolutePath());
     if (!chosen.isEmpty()) m_output->setText(chosen);
 }
 

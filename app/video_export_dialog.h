@@ -34,6 +34,10 @@ public:
     /// the take's rate, empty size = the view's).
     VideoExportOptions options() const;
     void setOptions(const VideoExportOptions& options);
+    /// Suggests outputs named `name` (no suffix: "demo-greeting-none-2.mp4", "...-frames") in
+    /// the folders last chosen for videos and frames (app/file_dialogs.h; `projectFile`'s folder
+    /// or home when none was), instead of the last outputs' names.
+    void suggestOutput(const QString& name, const QString& projectFile = {});
 
     /// The choices of the last accepted dialog (defaults the first time).
     static VideoExportOptions rememberedOptions();

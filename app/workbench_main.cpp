@@ -6,6 +6,7 @@
 #include "app/installed_files.h"
 #include "app/launch_paths.h"
 #include "app/main_window.h"
+#include "app/screenshot_run.h"
 #include "app/viewport_panel.h"
 #include "render/scene.h"
 
@@ -13,7 +14,6 @@
 #include <QComboBox>
 #include <QCommandLineParser>
 #include <QMessageBox>
-#include <QTimer>
 
 #include <cstdio>
 #include <cstring>
@@ -39,6 +39,7 @@ void describeOptions(QCommandLineParser& parser)
     parser.addOption({QStringLiteral("figure"),
                       QStringLiteral("The 3D view's figure for takes A and B: puppet, skeleton (the performer's, for takes read from BVH) or both."),
                       QStringLiteral("figure")});
+    addScreenshotOptions(parser);
 }
 
 /// --help and --version need no display: they are answered before the GUI starts.
@@ -93,6 +94,12 @@ int runWorkbench(int argc, char** argv)
     describeOptions(parser);
     parser.process(application);
     const bool batch = parser.isSet(QStringLiteral("screenshot"));
+    QString optionError;
+    const QSize size = requestedWindowSize(parser, optionError);
+    if (!optionError.isEmpty()) {
+        std::fprintf(stderr, "bunraku-workbench: %s\n", qPrintable(optionError));
+        return 2;
+    }
 
     if (userGuidePath().isEmpty())
         std::fprintf(stderr, "bunraku-workbench: warning: the user guide is not installed (expected %s)\n",
@@ -123,17 +130,17 @@ int runWorkbench(int argc, char** argv)
         std::fprintf(stderr, "bunraku-workbench: %s\n", qPrintable(error));
         return 1;
     }
+    if (size.isValid()) window.resize(size);
     window.show();
+    if (!raiseRequestedDock(window, parser, optionError)) {
+        std::fprintf(stderr, "bunraku-workbench: %s\n", qPrintable(optionError));
+        return 2;
+    }
     // The file controller has shown its own errors; this one is about the arguments.
     if (!error.isEmpty() && error != window.files().lastError()) QMessageBox::warning(&window, QObject::tr("Cannot open"), error);
 
     if (batch) {
-        const QString file = parser.value(QStringLiteral("screenshot"));
-        QTimer::singleShot(1200, &window, [&window, file] {
-            const bool saved = window.saveScreenshot(file);
-            if (!saved) std::fprintf(stderr, "bunraku-workbench: cannot write %s\n", qPrintable(file));
-            QApplication::exit(saved ? 0 : 1);
-        });
+        screenshotWhenIdle(window, parser.value(QStringLiteral("screenshot")));
     } else {
         window.files().offerRecovery();
     }

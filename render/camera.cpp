@@ -103,7 +103,7 @@ void Camera::panBy(QPointF pixelDelta, QSize size)
 void Camera::zoomBy(float factor)
 {
     if (factor <= 0.0f) return;
-    distance = std::clamp(distance / factor, 10.0f, 5000.0f);
+    distance = std::clamp(distance / factor, kMinCameraDistance, kMaxCameraDistance);
 }
 
 } // namespace bunraku::render

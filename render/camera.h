@@ -16,6 +16,10 @@
 
 namespace bunraku::render {
 
+/// The distances (cm) a camera may zoom between.
+inline constexpr float kMinCameraDistance = 10.0f;
+inline constexpr float kMaxCameraDistance = 5000.0f;
+
 enum class CameraPreset {
     Top,    ///< straight above, looking down
     Bottom, ///< straight below, looking up

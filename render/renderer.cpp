@@ -1,6 +1,7 @@
 #include "render/renderer.h"
 
 #include "analysis/core/puppet_layout.h"
+#include "render/orbit_geometry.h"
 #include "render/puppet_geometry.h"
 #include "render/skeleton_geometry.h"
 
@@ -44,11 +45,14 @@ Mesh partnerMesh()
 
 struct Renderer::Slot {
     analysis::Take take;
+    analysis::BodyDescription body; ///< the scene's body, or the take's own
+    std::vector<GpuMesh> meshes;    ///< the take's own body's meshes; empty: the scene's
     analysis::BodyBinding binding;
     std::vector<analysis::RigidTransform> world_T_axis;
     glm::vec3 centre{0.0f};
     std::vector<Eigen::Index> sensorFirstChannel; ///< one per 6-DOF part of the take
-    std::vector<GpuMesh> orbits;                  ///< one line strip per sensor, take coordinates
+    std::vector<GpuMesh> orbits;                  ///< one tube per sensor, take coordinates
+    float orbitRadius = 0.4f;                     ///< cm, the tubes' (orbitTubeRadius)
     Eigen::Index frame = 0;
     std::vector<glm::mat4> take_T_part; ///< at `frame`, one per body part
     std::shared_ptr<SkeletonFigure> skeleton; ///< the performer's skeleton, when the take has one
@@ -117,6 +121,7 @@ void Renderer::releaseSceneBuffers()
     m_partMeshes.clear();
     for (Slot& slot : m_slots) {
         for (GpuMesh& orbit : slot.orbits) orbit.release(*m_gl);
+        for (GpuMesh& mesh : slot.meshes) mesh.release(*m_gl);
         if (slot.skeleton) slot.skeleton->release(*m_gl);
     }
     m_slots.clear();
@@ -153,23 +158,46 @@ analysis::Status Renderer::setScene(const SceneContent& scene, const LayoutOptio
     const std::vector<Mesh> meshes = buildPuppetMeshes(m_body, scene.partMeshes);
     m_partMeshes.resize(meshes.size());
     for (std::size_t i = 0; i < meshes.size(); ++i) m_partMeshes[i].upload(*m_gl, meshes[i]);
+    m_partBounds.assign(meshes.size(), Bounds{});
+    for (std::size_t i = 0; i < meshes.size(); ++i)
+        for (const Vertex& vertex : meshes[i].vertices) m_partBounds[i].add(vertex.position);
 
     for (std::size_t s = 0; s < scene.takes.size(); ++s) {
         const TakeSlot& source = scene.takes[s];
         Slot slot;
         slot.take = source.take;
-        slot.binding = analysis::bindBody(m_body, slot.take).value();
+        slot.body = source.body ? *source.body : m_body;
+        const std::vector<Mesh> ownMeshes = source.body ? buildPuppetMeshes(slot.body) : std::vector<Mesh>{};
+        for (const Mesh& mesh : ownMeshes) {
+            GpuMesh gpu;
+            gpu.upload(*m_gl, mesh);
+            slot.meshes.push_back(std::move(gpu));
+        }
+        const std::vector<Mesh>& slotMeshes = source.body ? ownMeshes : meshes;
+        slot.binding = analysis::bindBody(slot.body, slot.take).value();
         slot.world_T_axis = source.world_T_axis;
         slot.centre = takeCentre(slot.take, m_body.mirrorFramePart.empty() ? "shoulder" : m_body.mirrorFramePart);
         const auto sensors = analysis::sixDofParts(slot.take);
+        std::vector<std::vector<glm::vec3>> paths(sensors.size());
+        Bounds pathBounds;
         for (std::size_t k = 0; k < sensors.size(); ++k) {
             slot.sensorFirstChannel.push_back(sensors[k].firstChannel);
-            std::vector<glm::vec3> points;
-            points.reserve(std::size_t(slot.take.frameCount()));
-            for (Eigen::Index f = 0; f < slot.take.frameCount(); ++f)
-                points.push_back(sensorPosition(slot.take, f, sensors[k].firstChannel));
+            paths[k].reserve(std::size_t(slot.take.frameCount()));
+            for (Eigen::Index f = 0; f < slot.take.frameCount(); ++f) {
+                paths[k].push_back(sensorPosition(slot.take, f, sensors[k].firstChannel));
+                pathBounds.add(paths[k].back());
+            }
+        }
+        // Tubes sized from the figure and the orbits' span, so they read beside a puppet and
+        // along a long walk.
+        const auto firstPoses = analysis::worldPartPoses(m_body, slot.binding, slot.take, 0);
+        for (std::size_t p = 0; p < firstPoses.size() && p < m_partBounds.size(); ++p)
+            for (const glm::vec3& corner : {m_partBounds[p].lower, m_partBounds[p].upper})
+                if (!m_partBounds[p].empty()) pathBounds.add(glm::vec3(toMatrix(firstPoses[p]) * glm::vec4(corner, 1.0f)));
+        slot.orbitRadius = orbitTubeRadius(pathBounds.extent());
+        for (std::size_t k = 0; k < sensors.size(); ++k) {
             GpuMesh orbit;
-            orbit.upload(*m_gl, polylineMesh(points, orbitColour(int(s), int(k))));
+            orbit.upload(*m_gl, orbitTubeMesh(paths[k], slot.orbitRadius, orbitColour(int(s), int(k))));
             slot.orbits.push_back(std::move(orbit));
         }
         // The floor: under the lowest vertex of the figures at the first frame.
@@ -185,8 +213,8 @@ analysis::Status Renderer::setScene(const SceneContent& scene, const LayoutOptio
             if (low > high) low = high = 0.0f;
         };
         std::vector<glm::mat4> partPoses;
-        for (const auto& pose : analysis::worldPartPoses(m_body, slot.binding, slot.take, 0)) partPoses.push_back(toMatrix(pose));
-        extent(meshes, partPoses, slot.puppetLowest, slot.puppetHighest);
+        for (const auto& pose : analysis::worldPartPoses(slot.body, slot.binding, slot.take, 0)) partPoses.push_back(toMatrix(pose));
+        extent(slotMeshes, partPoses, slot.puppetLowest, slot.puppetHighest);
         if (slot.take.skeleton) {
             slot.skeleton = skeletonFigure(*slot.take.skeleton, reusable);
             // Joint spheres are the figure's extremes (bones are thinner).
@@ -230,7 +258,7 @@ std::shared_ptr<Renderer::SkeletonFigure> Renderer::skeletonFigure(const analysi
 
 void Renderer::updatePoses(Slot& slot) const
 {
-    const auto poses = analysis::worldPartPoses(m_body, slot.binding, slot.take, slot.frame);
+    const auto poses = analysis::worldPartPoses(slot.body, slot.binding, slot.take, slot.frame);
     slot.take_T_part.resize(poses.size());
     for (std::size_t p = 0; p < poses.size(); ++p) slot.take_T_part[p] = toMatrix(poses[p]);
     slot.take_T_joint.clear();
@@ -346,6 +374,84 @@ Camera Renderer::framingCamera() const
     return camera;
 }
 
+Bounds Renderer::displayedBounds(const Camera& camera, const BoundsQuery& query) const
+{
+    const Eigen::Index sampled = std::max(1, query.sampledFrames);
+    Bounds bounds;
+    for (std::size_t s = 0; s < m_slots.size(); ++s) {
+        if (query.takeSlot >= 0 && query.takeSlot != int(s)) continue;
+        const Slot& slot = m_slots[s];
+        const glm::mat4 root = takeRoot(int(s), camera);
+        std::vector<Eigen::Index> frames{slot.frame};
+        if (query.span == FramingSpan::WholeTake) {
+            frames.clear();
+            const Eigen::Index count = slot.take.frameCount();
+            const Eigen::Index step = std::max<Eigen::Index>(1, count / sampled);
+            for (Eigen::Index f = 0; f < count; f += step) frames.push_back(f);
+            frames.push_back(count - 1);
+        }
+        const auto wanted = [&](const std::string& name, const std::string& drivenBy) {
+            return query.part.empty() || name == query.part || drivenBy == query.part;
+        };
+        if (puppetDrawn(int(s))) {
+            for (const Eigen::Index f : frames) {
+                const auto poses = analysis::worldPartPoses(m_body, slot.binding, slot.take, f);
+                for (std::size_t p = 0; p < poses.size() && p < m_partBounds.size(); ++p) {
+                    if (!wanted(m_body.parts[p].name, m_body.parts[p].drivenBy) || m_partBounds[p].empty()) continue;
+                    const glm::mat4 world_T_part = root * toMatrix(poses[p]);
+                    const Bounds& box = m_partBounds[p];
+                    for (int corner = 0; corner < 8; ++corner)
+                        bounds.add(glm::vec3(world_T_part * glm::vec4((corner & 1) ? box.upper.x : box.lower.x,
+                                                                      (corner & 2) ? box.upper.y : box.lower.y,
+                                                                      (corner & 4) ? box.upper.z : box.lower.z, 1.0f)));
+                }
+            }
+        }
+        // The skeleton: every joint (a sphere of the joint radius; the bones run between them).
+        if (skeletonDrawn(int(s)) && slot.skeleton) {
+            const float radius = slot.skeleton->jointRadius;
+            for (const Eigen::Index f : frames) {
+                const auto poses = slot.take.skeleton->worldPoses(f);
+                for (std::size_t j = 0; j < poses.size(); ++j) {
+                    const std::string& part = j < slot.skeleton->jointParts.size() ? slot.skeleton->jointParts[j] : std::string();
+                    const std::string& name = j < slot.skeleton->jointNames.size() ? slot.skeleton->jointNames[j] : std::string();
+                    if (!wanted(name, part)) continue;
+                    const glm::vec3 joint(root * glm::vec4(float(poses[j].translation.x()), float(poses[j].translation.y()),
+                                                           float(poses[j].translation.z()), 1.0f));
+                    bounds.add(joint - glm::vec3(radius));
+                    bounds.add(joint + glm::vec3(radius));
+                }
+            }
+        }
+        // The orbits, or the sensors standing for a hidden puppet.
+        if (m_visibility.orbitsDrawn() || !m_visibility.puppet) {
+            for (const Eigen::Index first : slot.sensorFirstChannel) {
+                if (!wanted(slot.take.channels[std::size_t(first)].part, {})) continue;
+                for (const Eigen::Index f : frames) bounds.add(glm::vec3(root * glm::vec4(sensorPosition(slot.take, f, first), 1.0f)));
+            }
+        }
+        if (!query.part.empty()) continue;
+        if (m_visibility.partner && !query.figuresOnly) {
+            // partnerMesh: a disc of radius 14 cm on the floor under a cone 46 cm high.
+            const glm::vec3 partner = slot.centre + glm::vec3(m_layout.partnerDistance, 0.0f, 0.0f);
+            for (const glm::vec3 corner : {glm::vec3(-14.0f, -14.0f, 0.0f), glm::vec3(14.0f, 14.0f, 46.0f)})
+                bounds.add(glm::vec3(root * glm::vec4(partner.x + corner.x, partner.y + corner.y, floorHeight() + corner.z, 1.0f)));
+        }
+        if (m_visibility.axis && !slot.world_T_axis.empty()) {
+            for (const Eigen::Index f : frames) {
+                const glm::mat4 world_T_axis = root * toMatrix(slot.world_T_axis[std::size_t(f)]);
+                for (int axis = 0; axis < 3; ++axis) {
+                    glm::vec4 tip(0.0f, 0.0f, 0.0f, 1.0f);
+                    tip[axis] = m_layout.axisBarLength;
+                    bounds.add(glm::vec3(world_T_axis * tip));
+                }
+                bounds.add(glm::vec3(world_T_axis[3]));
+            }
+        }
+    }
+    return bounds;
+}
+
 void Renderer::setModel(const glm::mat4& model)
 {
     const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(model)));
@@ -389,13 +495,14 @@ void Renderer::drawScene(const Camera& camera, QSize size, bool partIds)
         const Slot& slot = m_slots[s];
         const glm::mat4 root = takeRoot(int(s), camera);
         if (puppetDrawn(int(s))) {
-            for (std::size_t p = 0; p < m_partMeshes.size() && p < slot.take_T_part.size(); ++p) {
+            const std::vector<GpuMesh>& meshes = slot.meshes.empty() ? m_partMeshes : slot.meshes;
+            for (std::size_t p = 0; p < meshes.size() && p < slot.take_T_part.size(); ++p) {
                 setModel(root * slot.take_T_part[p]);
                 if (partIds)
                     setColour(glm::vec3(float(1 + int(p) + kIdsPerSlot * int(s)) / 255.0f, 0.0f, 0.0f), false, false);
                 else
                     setColour(glm::vec3(1.0f), true, true);
-                m_partMeshes[p].draw(gl);
+                meshes[p].draw(gl);
             }
         }
         if (skeletonDrawn(int(s))) {
@@ -419,15 +526,19 @@ void Renderer::drawScene(const Camera& camera, QSize size, bool partIds)
             m_partner.draw(gl);
         }
         if (m_visibility.orbitsDrawn()) {
+            // Over the puppet, like the motion axis: the sensors sit inside its parts.
+            gl.glDepthRangef(0.0f, 0.0005f);
             setModel(root);
-            setColour(glm::vec3(1.0f), true, false);
+            setColour(glm::vec3(1.0f), true, true);
             for (const GpuMesh& orbit : slot.orbits) orbit.draw(gl);
+            const float pointRadius = std::max(m_layout.orbitPointRadius, 2.5f * slot.orbitRadius);
             for (std::size_t k = 0; k < slot.sensorFirstChannel.size(); ++k) {
                 const glm::vec3 position = sensorPosition(slot.take, slot.frame, slot.sensorFirstChannel[k]);
-                setModel(root * glm::scale(glm::translate(glm::mat4(1.0f), position), glm::vec3(m_layout.orbitPointRadius)));
+                setModel(root * glm::scale(glm::translate(glm::mat4(1.0f), position), glm::vec3(pointRadius)));
                 setColour(orbitColour(int(s), int(k)), false, true);
                 m_sphere.draw(gl);
             }
+            gl.glDepthRangef(0.0f, 1.0f);
         }
     }
 

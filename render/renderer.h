@@ -10,6 +10,7 @@
 #include "analysis/body/body_pose.h"
 #include "analysis/core/result.h"
 #include "render/camera.h"
+#include "render/framing.h"
 #include "render/gpu_mesh.h"
 #include "render/scene.h"
 
@@ -104,6 +105,11 @@ public:
     /// looking at the figures' middle height, far enough back for one or two puppets, or for
     /// skeletons of any height (sized from the take).
     Camera framingCamera() const;
+    /// The box (world, cm, under `camera`'s side-by-side placement) around what is drawn now:
+    /// the puppets' parts, the orbits (or the sensors when the puppet is hidden), the partner
+    /// marker and the motion axis, over the frames and takes `query` asks for; only the parts
+    /// of `query.part` when given. Empty without a scene (or when the part is not drawn).
+    Bounds displayedBounds(const Camera& camera, const BoundsQuery& query = {}) const;
 
 private:
     struct Slot;
@@ -133,6 +139,7 @@ private:
     analysis::BodyDescription m_body;
     std::vector<std::string> m_partNames;
     std::vector<GpuMesh> m_partMeshes; ///< one per body part, in the part frame
+    std::vector<Bounds> m_partBounds;  ///< one per body part: its mesh's box in the part frame
     std::vector<Slot> m_slots;
     GpuMesh m_grid;
     GpuMesh m_box;    ///< unit cube for the axis bars

@@ -25,7 +25,14 @@ analysis::Status validateScene(const SceneContent& scene)
     for (const TakeSlot& slot : scene.takes) {
         const std::string name = slot.take.displayName();
         if (auto status = analysis::validateTake(slot.take); !status.ok()) return status.error();
-        if (auto binding = analysis::bindBody(scene.body, slot.take); !binding.ok()) return binding.error();
+        const analysis::BodyDescription& body = slot.body ? *slot.body : scene.body;
+        if (slot.body) {
+            bool same = slot.body->parts.size() == scene.body.parts.size();
+            for (std::size_t p = 0; same && p < scene.body.parts.size(); ++p) same = slot.body->parts[p].name == scene.body.parts[p].name;
+            if (!same)
+                return makeError(ErrorCode::InvalidArgument, "take " + name + ": its own body does not have the scene body's parts");
+        }
+        if (auto binding = analysis::bindBody(body, slot.take); !binding.ok()) return binding.error();
         if (!slot.world_T_axis.empty() && Eigen::Index(slot.world_T_axis.size()) != slot.take.frameCount())
             return makeError(ErrorCode::InvalidArgument,
                              "take " + name + ": " + std::to_string(slot.world_T_axis.size()) + " axis poses for " +

@@ -14,6 +14,7 @@
 
 #include <array>
 #include <map>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -30,6 +31,10 @@ struct TakeSlot {
     /// world_T_axis per frame (one per take frame): the motion axis, origin at the centre of
     /// mass, x front-back, z the long axis (thesis 5.2.1). Empty: no axis for this take.
     std::vector<analysis::RigidTransform> world_T_axis;
+    /// This take's own body, with the same parts as SceneContent::body (the puppet fitted to the
+    /// take's skeleton, analysis/body/body_fit.h); null: SceneContent::body. Drawn from its
+    /// primitives (SceneContent::partMeshes replace the shared body's only).
+    std::shared_ptr<const analysis::BodyDescription> body = nullptr;
 };
 
 struct SceneContent {
@@ -76,8 +81,8 @@ struct LayoutOptions {
     float orbitPointRadius = 1.6f; ///< cm, the moving point on each orbit
 };
 
-/// Checks 1..2 takes, a body of 1..kMaxBodyParts parts, every take valid and able to drive the body (bindBody), axis poses one per
-/// frame when given, part meshes named after body parts.
+/// Checks 1..2 takes, a body of 1..kMaxBodyParts parts, every take valid and able to drive its body (bindBody), a take's own
+/// body with the scene body's parts, axis poses one per frame when given, part meshes named after body parts.
 analysis::Status validateScene(const SceneContent& scene);
 
 /// Where a take stands: the mean position over the take of `centrePart`'s sensor (the puppet's

@@ -15,10 +15,14 @@ namespace bunraku::render {
 
 struct TakeSceneOptions {
     bool computeAxes = true;      ///< the motion axis of every take (else no axis is drawn)
+    /// A take with a skeleton gets the body fitted to it (else every take is on `body` as given).
+    bool fitToSkeleton = true;
     analysis::AxisOptions axis;   ///< mass-point lattice of the axis computation
 };
 
-/// One or two takes on `body`; validateScene's errors, or the axis module's.
+/// One or two takes on `body`: a take with a skeleton whose parts are bound gets `body` fitted
+/// to its performer (analysis/body/body_fit.h) as its own body, and its motion axis is computed
+/// over that body. validateScene's errors, or the axis module's.
 analysis::Result<SceneContent> makeTakeScene(const analysis::BodyDescription& body, std::vector<analysis::Take> takes,
                                              const TakeSceneOptions& options = {},
                                              const analysis::RunControl& control = {});

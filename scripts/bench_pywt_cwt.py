@@ -1,9 +1,9 @@
 #!/usr/bin/python3
 """Times Debian python3-pywt's CWT of 100,000 samples at scales 1..16 (run with /usr/bin/python3).
 
-Prints one line per variant: name and median seconds over the repeats. bench_normalise_extras
-calls this and prints the ratio to the C++ transform measured in the same run
-(docs/PERFORMANCE.md).
+Prints one line per variant: name, median wall seconds and median CPU seconds (this process)
+over the repeats. bench_normalise_extras calls this and prints the ratios to the C++ transform
+measured in the same run (docs/PERFORMANCE.md).
   mexh-conv, mexh-fft: pywt.cwt(x, 1..16, 'mexh', method=...)
   sym3-legacy: pywt 1.1.1's cwt refuses discrete wavelets, so the legacy MATLAB steps with
                pywt.integrate_wavelet + numpy.convolve, exactly what pywt.cwt does for
@@ -17,12 +17,15 @@ import pywt
 
 
 def median_time(function, repeats):
-    times = []
+    walls = []
+    cpus = []
     for _ in range(repeats):
         start = time.perf_counter()
+        cpu = time.process_time()
         function()
-        times.append(time.perf_counter() - start)
-    return sorted(times)[len(times) // 2]
+        cpus.append(time.process_time() - cpu)
+        walls.append(time.perf_counter() - start)
+    return "%.6f %.6f" % (sorted(walls)[len(walls) // 2], sorted(cpus)[len(cpus) // 2])
 
 
 def sym3_legacy(x, scales):

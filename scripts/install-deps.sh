@@ -9,13 +9,14 @@ packages=(
   qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev libqt6openglwidgets6 libgl-dev
   libqcustomplot-dev libqcustomplot2.1-qt6
   libeigen3-dev libglm-dev nlohmann-json3-dev libcli11-dev catch2 libtinygltf-dev
-  libfftw3-dev libassimp-dev libbenchmark-dev
+  libfftw3-dev libassimp-dev libbenchmark-dev assimp-utils
   xvfb xauth libgl1-mesa-dri libglx-mesa0 libegl-mesa0 mesa-utils
   fonts-dejavu-core ffmpeg chromium
   librsvg2-bin help2man file dpkg-dev
   lintian desktop-file-utils appstream shared-mime-info man-db strace
   # Blender 3.4: the real client the BVH and glTF exports are checked against (tests/cli)
   blender
+  clang-14 libfuzzer-14-dev
   python3 python3-numpy python3-pywt python3-statsmodels
   # Snakemake: the batch workflow over motion-capture libraries (workflows/Snakefile)
   snakemake

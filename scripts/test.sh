@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # README command 2: install the dependencies, build everything (Release, warnings as errors),
 # run every test (GUI and rendering tests under Xvfb), then build the analysis layer without Qt
-# under AddressSanitizer + UndefinedBehaviorSanitizer and run its tests.
+# under AddressSanitizer + UndefinedBehaviorSanitizer and run its tests, then fuzz every reader
+# for 20,000 executions (scripts/fuzz.sh; docs/RELIABILITY.md).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 jobs="$(nproc)"
@@ -17,3 +18,6 @@ bash "$root/scripts/build.sh" "$root/build-sanitize" -DCMAKE_BUILD_TYPE=Debug -D
   -DBUNRAKU_WITH_QT=OFF -DBUNRAKU_SANITIZE=ON -DBUNRAKU_BUILD_BENCHMARKS=OFF
 (cd "$root/build-sanitize" && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
    ctest --output-on-failure --parallel "$jobs" --timeout 900)
+
+echo "== Fuzz smoke run: 20,000 executions of each reader"
+bash "$root/scripts/fuzz.sh" 20000

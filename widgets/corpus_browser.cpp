@@ -97,6 +97,20 @@ void CorpusBrowser::setEntries(const std::vector<BrowserEntry>& entries)
     setChosen(m_chosen[0], m_chosen[1]);
 }
 
+void CorpusBrowser::setEntryLabel(const QString& id, const QString& label)
+{
+    if (QTreeWidgetItem* item = findLeaf(id)) {
+        item->setText(0, label);
+        item->setToolTip(0, label);
+    }
+}
+
+QString CorpusBrowser::entryText(const QString& id) const
+{
+    const QTreeWidgetItem* item = findLeaf(id);
+    return item ? item->text(0) : QString();
+}
+
 void CorpusBrowser::setChosen(const QString& idA, const QString& idB)
 {
     m_chosen[0] = idA;

@@ -33,6 +33,10 @@ public:
 
     /// Replaces the listed takes, keeping the expansion of branches that still exist.
     void setEntries(const std::vector<BrowserEntry>& entries);
+    /// Renames the derived take `id` in place (selection and expansion kept).
+    void setEntryLabel(const QString& id, const QString& label);
+    /// The text the tree shows for `id`, empty when not listed.
+    QString entryText(const QString& id) const;
     /// Marks which takes are A and B (empty id: none).
     void setChosen(const QString& idA, const QString& idB);
 

@@ -4,6 +4,7 @@
 
 #include <qcustomplot.h>
 
+#include <QScrollArea>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -42,11 +43,19 @@ std::pair<double, double> padded(const ValueRange& range)
 
 } // namespace
 
-GraphGrid::GraphGrid(QWidget* parent) : QWidget(parent), m_plot(new QCustomPlot(this))
+GraphGrid::GraphGrid(QWidget* parent) : QWidget(parent), m_plot(new QCustomPlot)
 {
+    // The plot fills the widget; when every graph at its readable height does not fit (24
+    // graphs in a short dock), it scrolls instead of squeezing them into one another.
+    m_scroll = new QScrollArea(this);
+    m_scroll->setObjectName("graphScroll");
+    m_scroll->setFrameShape(QFrame::NoFrame);
+    m_scroll->setWidgetResizable(true);
+    m_scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    m_scroll->setWidget(m_plot);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
-    layout->addWidget(m_plot);
+    layout->addWidget(m_scroll);
     m_plot->setObjectName("graphPlot");
     // Paint buffers: [background grid main axes] [live] [cursor] [legend overlay].
     m_plot->addLayer(kLiveLayer, m_plot->layer("axes"), QCustomPlot::limAbove);
@@ -65,9 +74,8 @@ GraphGrid::GraphGrid(QWidget* parent) : QWidget(parent), m_plot(new QCustomPlot(
     // The layout is known only inside a replot: graphs that changed width are resampled there,
     // before anything is drawn.
     connect(m_plot, &QCustomPlot::afterLayout, this, [this] { resampleCurves(true); });
-    m_settle.setSingleShot(true);
     m_settle.setInterval(kSettleMs);
-    connect(&m_settle, &QTimer::timeout, this, [this] {
+    connect(&m_settle, &ClockTimer::timeout, this, [this] {
         if (!interactionActive()) settleValueRanges();
     });
 }
@@ -76,22 +84,57 @@ GraphGrid::~GraphGrid() = default;
 
 const analysis::Take* GraphGrid::slotTake(int slot) const { return m_takes[slot].get(); }
 
-void GraphGrid::setTakes(std::shared_ptr<const analysis::Take> takeA, std::shared_ptr<const analysis::Take> takeB)
+void GraphGrid::setTakes(std::shared_ptr<const analysis::Take> takeA, std::shared_ptr<const analysis::Take> takeB,
+                         const QString& identity)
 {
+    // Without an identity the takes are the same ones changed (only the first ones are "other").
     const bool firstTakes = !m_takes[0];
+    const QString shown = identity.isEmpty() ? m_shownIdentity : identity;
+    const bool otherTakes = firstTakes || shown != m_shownIdentity;
+    // The whole take was in view: a new length of the same takes is followed.
+    const double before = shownDuration();
+    const bool wholeShown = m_rangeLower <= 1e-9 && std::abs(m_rangeUpper - before) <= 1e-6 * std::max(1.0, before);
+    m_shownIdentity = shown;
     m_takes[0] = std::move(takeA);
     m_takes[1] = std::move(takeB);
     rebuild(false);
-    if (firstTakes) resetTimeRange();
+    const bool lengthChanged = std::abs(shownDuration() - before) > 1e-9;
+    if (otherTakes) {
+        m_followLength = false;
+        resetTimeRange();
+    } else if (lengthChanged && (wholeShown || m_followLength)) {
+        if (interactionActive()) m_followLength = true; // refitted once the drag ends
+        else resetTimeRange();
+    }
+}
+
+double GraphGrid::shownDuration() const
+{
+    double duration = 0.0;
+    for (const auto& take : m_takes)
+        if (take) duration = std::max(duration, take->duration());
+    if (m_ghost) duration = std::max(duration, m_ghost->duration());
+    return duration;
 }
 
 void GraphGrid::beginInteraction() { m_interacting = true; }
+
+void GraphGrid::setClock(Clock* clock)
+{
+    m_clock = clock ? clock : &steadyClock();
+    m_settle.setClock(m_clock);
+    m_lastDataMs.reset();
+}
 
 void GraphGrid::endInteraction()
 {
     if (!m_interacting) return;
     m_interacting = false;
     settleValueRanges();
+    if (m_followLength) {
+        m_followLength = false;
+        resetTimeRange();
+    }
 }
 
 void GraphGrid::settleValueRanges()
@@ -129,6 +172,35 @@ void GraphGrid::setValueScale(ValueScale scale)
     m_plot->replot();
 }
 
+void GraphGrid::setThesisTicks(bool on)
+{
+    if (on == m_thesisTicks) return;
+    m_thesisTicks = on;
+    applyTickers();
+    m_plot->replot();
+}
+
+void GraphGrid::applyTickers()
+{
+    for (auto& graph : m_graphs) {
+        // time: every 2 s (thesis 6.3.3), and by default multiples of 2 s when zoomed out
+        auto time = QSharedPointer<QCPAxisTickerFixed>::create();
+        time->setTickStep(2.0);
+        time->setScaleStrategy(m_thesisTicks ? QCPAxisTickerFixed::ssNone : QCPAxisTickerFixed::ssMultiples);
+        graph.rect->axis(QCPAxis::atBottom)->setTicker(time);
+        if (m_thesisTicks) {
+            auto value = QSharedPointer<QCPAxisTickerFixed>::create();
+            value->setTickStep(10.0); // value ticks every 10 units (thesis 6.3.3)
+            value->setScaleStrategy(QCPAxisTickerFixed::ssNone);
+            graph.rect->axis(QCPAxis::atLeft)->setTicker(value);
+        } else {
+            auto value = QSharedPointer<QCPAxisTicker>::create();
+            value->setTickCount(3);
+            graph.rect->axis(QCPAxis::atLeft)->setTicker(value);
+        }
+    }
+}
+
 void GraphGrid::setSelectedChannel(const std::string& part, const std::string& dof)
 {
     if (part == m_options.selectedPart && dof == m_options.selectedDof) return;
@@ -152,6 +224,7 @@ void GraphGrid::rebuild(bool allData)
         m_graphs.clear();
         int lastRow = 0;
         for (const auto& cell : cells) lastRow = std::max(lastRow, cell.row);
+        m_plot->setMinimumHeight(cells.empty() ? 0 : (lastRow + 1) * kMinimumGraphHeight + 20);
         auto* margins = new QCPMarginGroup(m_plot);
         QFont tickFont = font();
         tickFont.setPointSizeF(std::max(6.0, tickFont.pointSizeF() - 2.0));
@@ -163,19 +236,20 @@ void GraphGrid::rebuild(bool allData)
             graph.rect->setMarginGroup(QCP::msLeft | QCP::msRight, margins);
             graph.rect->setRangeZoom(Qt::Horizontal);
             graph.rect->setRangeDrag(Qt::Horizontal);
-            graph.rect->setMinimumSize(60, 28);
+            graph.rect->setMinimumSize(60, 20);
+            // Thin top and bottom margins (QCustomPlot's default is 15 px each): in a row of
+            // kMinimumGraphHeight pixels the curve keeps most of the height. The bottom row's
+            // time labels still get the margin they need.
+            graph.rect->setMinimumMargins(QMargins(15, 6, 15, 4));
             auto* timeAxis = graph.rect->axis(QCPAxis::atBottom);
             auto* valueAxis = graph.rect->axis(QCPAxis::atLeft);
             graph.rect->axis(QCPAxis::atTop)->setVisible(false);
             graph.rect->axis(QCPAxis::atRight)->setVisible(false);
             timeAxis->setTickLabelFont(tickFont);
             valueAxis->setTickLabelFont(tickFont);
-            valueAxis->ticker()->setTickCount(3);
-            // 2 s time ticks as in the thesis's graphs; tick labels only under the bottom row.
-            auto ticker = QSharedPointer<QCPAxisTickerFixed>::create();
-            ticker->setTickStep(2.0);
-            ticker->setScaleStrategy(QCPAxisTickerFixed::ssMultiples);
-            timeAxis->setTicker(ticker);
+            valueAxis->setLabelFont(tickFont);
+            valueAxis->setLabelPadding(1);
+            // tick labels only under the bottom row; the tickers: applyTickers
             timeAxis->setTickLabels(cell.row == lastRow);
             timeAxis->setRange(m_rangeLower, m_rangeUpper);
             connect(timeAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this,
@@ -229,6 +303,7 @@ void GraphGrid::rebuild(bool allData)
             m_plot->setCurrentLayer("main");
             m_graphs.push_back(std::move(graph));
         }
+        applyTickers();
         allData = true;
     }
 
@@ -245,6 +320,14 @@ void GraphGrid::rebuild(bool allData)
             if (take) graph.channels[slot] = findChannel(*take, graph.cell.part, graph.cell.dof);
             if (take && graph.channels[slot]) graph.envelopes[slot] = SeriesEnvelope(m_takes[slot], *graph.channels[slot]);
         }
+        if (changed[0] || changed[1]) {
+            // The unit of the graph's channel (take A's, else B's): "cm", "deg".
+            QString unit;
+            for (int slot = 0; slot < 2 && unit.isEmpty(); ++slot)
+                if (graph.channels[slot]) unit = QString::fromStdString(slotTake(slot)->channels[std::size_t(*graph.channels[slot])].unit);
+            auto* valueAxis = graph.rect->axis(QCPAxis::atLeft);
+            if (valueAxis->label() != unit) valueAxis->setLabel(unit);
+        }
         if (graph.ghost && allData) {
             graph.ghostChannel = findChannel(*m_ghost, graph.cell.part, graph.cell.dof);
             graph.ghostEnvelope = graph.ghostChannel ? SeriesEnvelope(m_ghost, *graph.ghostChannel) : SeriesEnvelope();
@@ -258,8 +341,9 @@ void GraphGrid::rebuild(bool allData)
         return;
     }
     if (!allData) {
-        const bool burst = m_sinceData.isValid() && m_sinceData.elapsed() < kSettleMs;
-        m_sinceData.restart();
+        const qint64 now = m_clock->milliseconds();
+        const bool burst = m_lastDataMs && now - *m_lastDataMs < kSettleMs;
+        m_lastDataMs = now;
         if (interactionActive() || burst) {
             // Only the curves of A and B changed and the value ranges are held: the axes,
             // ticks, labels and ghost in the layers below stay as they are.
@@ -371,10 +455,7 @@ std::pair<double, double> GraphGrid::timeRange() const { return {m_rangeLower, m
 
 void GraphGrid::resetTimeRange()
 {
-    double duration = 0.0;
-    for (const auto& take : m_takes)
-        if (take) duration = std::max(duration, take->duration());
-    if (m_ghost) duration = std::max(duration, m_ghost->duration());
+    const double duration = shownDuration();
     setTimeRange(0.0, duration > 0.0 ? duration : 1.0);
 }
 
@@ -411,8 +492,11 @@ std::pair<double, double> GraphGrid::graphValueRange(int graph) const
 
 QRect GraphGrid::graphRect(int graph) const
 {
-    return m_graphs.at(std::size_t(graph)).rect->rect().translated(m_plot->pos());
+    const QRect rect = m_graphs.at(std::size_t(graph)).rect->rect();
+    return QRect(m_plot->mapTo(this, rect.topLeft()), rect.size());
 }
+
+QString GraphGrid::graphValueLabel(int graph) const { return m_graphs.at(std::size_t(graph)).rect->axis(QCPAxis::atLeft)->label(); }
 
 void GraphGrid::onMousePress(QMouseEvent* event)
 {

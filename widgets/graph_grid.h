@@ -9,7 +9,9 @@
 /// interaction (beginInteraction/endInteraction) and for a burst of data changes less than
 /// kSettleMs apart; they autoscale once when it ends (a full replot).
 /// Zoom (wheel) and pan (middle or Shift+left drag) on time are shared by every graph; a left
-/// press or drag in any graph scrubs (timeScrubbed); a double click resets the time range.
+/// press or drag in any graph scrubs (timeScrubbed); a double click resets the time range, and so
+/// does showing other takes. Value axes carry the channels' units. Each graph keeps a readable
+/// height (kMinimumGraphHeight): when the widget is shorter, the graphs scroll.
 /// Curves hold only what their view needs (take_series.h SeriesEnvelope: at most 4 points a
 /// pixel column, every frame when zoomed in): resampled when the time range or the graphs'
 /// width changes, never when only the cursor moves, so an hour-long take draws like a short one.
@@ -20,8 +22,9 @@
 #include "analysis/core/take.h"
 
 #include <QColor>
-#include <QElapsedTimer>
 #include <QTimer>
+
+#include "widgets/clock.h"
 #include <QWidget>
 
 #include <memory>
@@ -35,6 +38,7 @@ class QCPItemStraightLine;
 class QCPItemTracer;
 class QCPItemText;
 class QMouseEvent;
+class QScrollArea;
 
 namespace bunraku::widgets {
 
@@ -58,12 +62,21 @@ public:
     ~GraphGrid() override;
 
     /// Take A (required for any graph) and take B (may be null). Rebuilds the graphs.
-    void setTakes(std::shared_ptr<const analysis::Take> takeA, std::shared_ptr<const analysis::Take> takeB);
+    /// `identity` names what is shown (the app passes the takes' ids; empty: the same takes as
+    /// before, changed): when it changes, the time axis is refitted to the shown takes; while it
+    /// stays (a live take recomputed, a designed take on every drag step) the zoom is kept, and
+    /// a view showing the whole take follows a new length once no drag is under way.
+    void setTakes(std::shared_ptr<const analysis::Take> takeA, std::shared_ptr<const analysis::Take> takeB,
+                  const QString& identity = {});
     /// A take drawn faintly behind A (the original under a designed take); null hides it.
     void setGhost(std::shared_ptr<const analysis::Take> ghost);
     void setGraphLayout(GraphLayout layout);
     void setTwoTakeMode(TwoTakeMode mode);
     void setValueScale(ValueScale scale);
+    /// The thesis's ticks (6.3.3): value ticks every 10 units and time ticks every 2 s at any
+    /// zoom. Off: about 3 value ticks per graph and time ticks at multiples of 2 s.
+    void setThesisTicks(bool on);
+    bool thesisTicks() const { return m_thesisTicks; }
     /// The part and DOF used by the OnePart, OneDof and Single layouts.
     void setSelectedChannel(const std::string& part, const std::string& dof);
 
@@ -82,6 +95,9 @@ public:
     /// Data changes closer together than this (ms) form a burst that holds the value ranges;
     /// this long after the last one, the ranges autoscale.
     static constexpr int kSettleMs = 250;
+    /// The clock that tells a burst from isolated changes and times its end (null: the steady
+    /// clock); tests inject a ManualClock.
+    void setClock(Clock* clock);
 
     /// Moves the time cursor (seconds) and replots only the cursor layer.
     void setCursorTime(double seconds);
@@ -91,6 +107,10 @@ public:
     std::pair<double, double> timeRange() const;
     /// Shows the whole of the longer take.
     void resetTimeRange();
+    /// The longest of the shown takes and the ghost, seconds.
+    double shownDuration() const;
+    /// The label of graph `graph`'s value axis (the channel's unit: "cm", "deg").
+    QString graphValueLabel(int graph) const;
 
     int graphCount() const { return int(m_graphs.size()); }
     const GraphCell& graphCell(int graph) const;
@@ -109,6 +129,8 @@ public:
     QCPGraph* curve(int graph, int slot) const { return m_graphs.at(std::size_t(graph)).curves[slot]; }
     /// How many times the curves were resampled for a new view (time range, width or data).
     int samplingCount() const { return m_samplings; }
+    /// The smallest height (pixels) of one row of graphs; below it the grid scrolls.
+    static constexpr int kMinimumGraphHeight = 34;
 
 signals:
     /// The user pressed or dragged at `seconds` in a graph.
@@ -140,6 +162,8 @@ private:
     void sampleCurves(Graph& graph);
     /// Resamples every graph (a new time range), or only those whose width changed.
     void resampleCurves(bool onlyResized);
+    /// The tickers of every graph for m_thesisTicks.
+    void applyTickers();
     /// Autoscales and replots if data changed while the ranges were held.
     void settleValueRanges();
     void updateCursorItems();
@@ -150,15 +174,18 @@ private:
     const analysis::Take* slotTake(int slot) const;
 
     QCustomPlot* m_plot = nullptr;
+    QScrollArea* m_scroll = nullptr;
     std::shared_ptr<const analysis::Take> m_takes[2];
     std::shared_ptr<const analysis::Take> m_ghost;
     std::shared_ptr<const analysis::Take> m_plotted[2]; ///< the takes whose data the curves hold
     bool m_interacting = false;
     bool m_rangesStale = false; ///< data changed while the ranges were held
-    QElapsedTimer m_sinceData;  ///< since the last change of A's or B's data
-    QTimer m_settle;            ///< autoscales after a burst of data changes
+    Clock* m_clock = &steadyClock();
+    std::optional<qint64> m_lastDataMs; ///< when A's or B's data last changed (m_clock)
+    ClockTimer m_settle;                ///< autoscales after a burst of data changes
     GraphLayoutOptions m_options;
     ValueScale m_scale = ValueScale::PerGraph;
+    bool m_thesisTicks = false;
     GraphColours m_colours;
     std::vector<Graph> m_graphs;
     double m_cursorTime = 0.0;
@@ -166,6 +193,8 @@ private:
     double m_rangeUpper = 1.0;
     bool m_propagating = false;
     int m_samplings = 0;
+    QString m_shownIdentity; ///< what setTakes last showed (its identity)
+    bool m_followLength = false; ///< the whole take was shown when a drag changed its length
     enum class Drag { None, Scrub, Pan } m_drag = Drag::None;
     QCPAxisRect* m_dragRect = nullptr;
     double m_panAnchor = 0.0;

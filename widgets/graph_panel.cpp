@@ -1,9 +1,11 @@
 #include "widgets/graph_panel.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QSignalBlocker>
+#include <QToolBar>
 #include <QVBoxLayout>
 
 namespace bunraku::widgets {
@@ -41,24 +43,30 @@ GraphPanel::GraphPanel(QWidget* parent) : QWidget(parent), m_grid(new GraphGrid(
     m_scale->setObjectName("valueScale");
     m_scale->addItem(tr("Scale per graph"), int(ValueScale::PerGraph));
     m_scale->addItem(tr("Scale per DOF"), int(ValueScale::PerDof));
+    m_thesisTicks = new QCheckBox(tr("Thesis ticks"), this);
+    m_thesisTicks->setObjectName("thesisTicks");
+    m_thesisTicks->setToolTip(tr("Value ticks every 10 units and time ticks every 2 s, as the thesis's graphs"));
     m_layout->setToolTip(tr("Which graphs to show"));
     m_part->setToolTip(tr("The part shown by the 'one part' and 'single' layouts"));
     m_dof->setToolTip(tr("The DOF shown by the 'one DOF' and 'single' layouts"));
 
-    auto* controls = new QHBoxLayout;
-    controls->setContentsMargins(4, 2, 4, 0);
-    controls->addWidget(m_layout);
-    controls->addWidget(m_part);
-    controls->addWidget(m_dof);
-    controls->addWidget(m_mode);
-    controls->addWidget(m_scale);
-    auto* hint = new QLabel(tr("drag: scrub   wheel: zoom   Shift+drag: pan   double click: whole take"), this);
+    m_mode->setToolTip(tr("How take B is shown beside take A"));
+    m_scale->setToolTip(tr("Each graph fits its own values, or graphs of one DOF share their range"));
+    // A tool bar: in a narrow dock the controls that do not fit move behind its extension
+    // button instead of widening the dock.
+    auto* controls = new QToolBar(this);
+    controls->setObjectName("graphToolBar");
+    for (QWidget* widget : std::initializer_list<QWidget*>{m_layout, m_part, m_dof, m_mode, m_scale, m_thesisTicks}) controls->addWidget(widget);
+    const QString help = tr("drag: scrub   wheel: zoom   Shift+drag: pan   double click: whole take");
+    auto* hint = new QLabel(help, this);
     hint->setEnabled(false);
-    controls->addWidget(hint, 1, Qt::AlignRight);
+    hint->setContentsMargins(8, 0, 0, 0);
+    controls->addWidget(hint);
+    m_grid->setToolTip(help);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(2);
-    layout->addLayout(controls);
+    layout->addWidget(controls);
     layout->addWidget(m_grid, 1);
 
     connect(m_layout, &QComboBox::currentIndexChanged, this,
@@ -67,11 +75,13 @@ GraphPanel::GraphPanel(QWidget* parent) : QWidget(parent), m_grid(new GraphGrid(
             [this] { m_grid->setTwoTakeMode(TwoTakeMode(m_mode->currentData().toInt())); });
     connect(m_scale, &QComboBox::currentIndexChanged, this,
             [this] { m_grid->setValueScale(ValueScale(m_scale->currentData().toInt())); });
+    connect(m_thesisTicks, &QCheckBox::toggled, m_grid, &GraphGrid::setThesisTicks);
     connect(m_part, &QComboBox::currentIndexChanged, this, &GraphPanel::applySelection);
     connect(m_dof, &QComboBox::currentIndexChanged, this, &GraphPanel::applySelection);
 }
 
-void GraphPanel::setTakes(std::shared_ptr<const analysis::Take> takeA, std::shared_ptr<const analysis::Take> takeB)
+void GraphPanel::setTakes(std::shared_ptr<const analysis::Take> takeA, std::shared_ptr<const analysis::Take> takeB,
+                          const QString& identity)
 {
     QStringList parts;
     QStringList dofs;
@@ -86,12 +96,13 @@ void GraphPanel::setTakes(std::shared_ptr<const analysis::Take> takeA, std::shar
     refill(m_part, parts);
     refill(m_dof, dofs);
     m_grid->setSelectedChannel(selectedPart().toStdString(), selectedDof().toStdString());
-    m_grid->setTakes(std::move(takeA), std::move(takeB));
+    m_grid->setTakes(std::move(takeA), std::move(takeB), identity);
 }
 
 void GraphPanel::setGraphLayout(GraphLayout layout) { m_layout->setCurrentIndex(m_layout->findData(int(layout))); }
 void GraphPanel::setTwoTakeMode(TwoTakeMode mode) { m_mode->setCurrentIndex(m_mode->findData(int(mode))); }
 void GraphPanel::setValueScale(ValueScale scale) { m_scale->setCurrentIndex(m_scale->findData(int(scale))); }
+void GraphPanel::setThesisTicks(bool on) { m_thesisTicks->setChecked(on); }
 
 void GraphPanel::selectPart(const QString& part)
 {
@@ -100,6 +111,12 @@ void GraphPanel::selectPart(const QString& part)
     m_part->setCurrentIndex(index);
     if (m_grid->graphLayout() == GraphLayout::AllChannels || m_grid->graphLayout() == GraphLayout::OneDof)
         setGraphLayout(GraphLayout::OnePart);
+}
+
+void GraphPanel::selectDof(const QString& dof)
+{
+    const int index = m_dof->findText(dof);
+    if (index >= 0) m_dof->setCurrentIndex(index);
 }
 
 QString GraphPanel::selectedPart() const { return m_part->currentText(); }

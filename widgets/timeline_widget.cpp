@@ -51,7 +51,6 @@ TimelineWidget::TimelineWidget(QWidget* parent) : QWidget(parent)
 
     m_bar = new ScrubBar(this);
     m_label = new QLabel(this);
-    m_label->setMinimumWidth(170);
     m_label->setObjectName("timeLabel");
     m_speed = new QDoubleSpinBox(this);
     m_speed->setRange(0.1, 4.0);
@@ -59,7 +58,8 @@ TimelineWidget::TimelineWidget(QWidget* parent) : QWidget(parent)
     m_speed->setDecimals(1);
     m_speed->setValue(1.0);
     m_speed->setSuffix(QStringLiteral("x"));
-    m_speed->setToolTip(tr("Playback speed"));
+    m_speed->setObjectName("playbackSpeed");
+    m_speed->setToolTip(tr("Playback speed, %1x to %2x").arg(m_speed->minimum(), 0, 'f', 1).arg(m_speed->maximum(), 0, 'f', 1));
 
     auto* row = new QHBoxLayout;
     row->setContentsMargins(0, 0, 0, 0);
@@ -84,6 +84,7 @@ TimelineWidget::TimelineWidget(QWidget* parent) : QWidget(parent)
     connect(m_loop, &QAction::toggled, this, &TimelineWidget::loopToggled);
     connect(m_speed, &QDoubleSpinBox::valueChanged, this, &TimelineWidget::speedChanged);
     connect(m_bar, &ScrubBar::scrubbed, this, &TimelineWidget::timeScrubbed);
+    fitLabelWidth();
     updateLabel();
 }
 
@@ -92,6 +93,7 @@ void TimelineWidget::setDuration(double seconds, double rateHz)
     m_duration = seconds;
     m_rateHz = rateHz > 0.0 ? rateHz : 1.0;
     m_bar->setDuration(seconds);
+    fitLabelWidth();
     updateLabel();
 }
 
@@ -118,15 +120,33 @@ void TimelineWidget::setLooping(bool loop) { m_loop->setChecked(loop); }
 double TimelineWidget::speed() const { return m_speed->value(); }
 bool TimelineWidget::looping() const { return m_loop->isChecked(); }
 
+QString TimelineWidget::timeText(double seconds) const
+{
+    return tr("%1 s / %2 s   frame %3 / %4")
+        .arg(seconds, 0, 'f', 2)
+        .arg(m_duration, 0, 'f', 2)
+        .arg(std::lround(seconds * m_rateHz))
+        .arg(std::lround(m_duration * m_rateHz));
+}
+
 void TimelineWidget::updateLabel()
 {
-    const auto frame = std::lround(m_time * m_rateHz);
-    const auto last = std::lround(m_duration * m_rateHz);
-    m_label->setText(tr("%1 s / %2 s   frame %3 / %4")
-                         .arg(m_time, 0, 'f', 2)
-                         .arg(m_duration, 0, 'f', 2)
-                         .arg(frame)
-                         .arg(last));
+    m_label->setText(timeText(m_time));
+}
+
+void TimelineWidget::fitLabelWidth()
+{
+    // As wide as the widest text of this duration (every digit of the longest read-out made the
+    // widest digit): the scrub bar beside it, and its ticks, never move while the time changes.
+    const QFontMetrics metrics(m_label->font());
+    QChar widest = QLatin1Char('0');
+    for (char digit = '0'; digit <= '9'; ++digit)
+        if (metrics.horizontalAdvance(QLatin1Char(digit)) > metrics.horizontalAdvance(widest)) widest = QLatin1Char(digit);
+    QString longest = timeText(m_duration);
+    for (QChar& c : longest)
+        if (c.isDigit()) c = widest;
+    m_label->setFixedWidth(metrics.horizontalAdvance(longest) + m_label->contentsMargins().left() +
+                           m_label->contentsMargins().right() + 4);
 }
 
 } // namespace bunraku::widgets

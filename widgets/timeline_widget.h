@@ -49,8 +49,15 @@ signals:
     void speedChanged(double factor);
     void timeScrubbed(double seconds);
 
+public:
+    /// The time read-out (its width is fixed per duration, so the scrub bar never moves).
+    QLabel* timeLabel() const { return m_label; }
+    QDoubleSpinBox* speedBox() const { return m_speed; }
+
 private:
+    QString timeText(double seconds) const;
     void updateLabel();
+    void fitLabelWidth();
 
     ScrubBar* m_bar = nullptr;
     QLabel* m_label = nullptr;

@@ -21,12 +21,8 @@ ViewportWidget::ViewportWidget(QWidget* parent, int samples) : QWidget(parent), 
     setFocusPolicy(Qt::StrongFocus);
     // Every paint covers the whole widget with the rendered image: no background fill needed.
     setAttribute(Qt::WA_OpaquePaintEvent);
-    m_settle.setSingleShot(true);
     m_settle.setInterval(kSettleMs);
-    // Precise: a coarse timer may fire a few milliseconds early, when paintEvent would still
-    // take the view for moving and draw another quick frame instead of the still one.
-    m_settle.setTimerType(Qt::PreciseTimer);
-    connect(&m_settle, &QTimer::timeout, this, [this] {
+    connect(&m_settle, &ClockTimer::timeout, this, [this] {
         if (m_imageSamples == m_samples || !isVisible()) return;
         renderImage(m_samples); // the still, full-quality frame
         update();
@@ -34,6 +30,13 @@ ViewportWidget::ViewportWidget(QWidget* parent, int samples) : QWidget(parent), 
 }
 
 ViewportWidget::~ViewportWidget() = default; // the OffscreenRenderer frees its GL objects
+
+void ViewportWidget::setClock(Clock* clock)
+{
+    m_clock = clock ? clock : &steadyClock();
+    m_settle.setClock(m_clock);
+    m_lastFrameMs.reset();
+}
 
 const render::Renderer* ViewportWidget::renderer() const { return m_offscreen ? &m_offscreen->renderer() : nullptr; }
 
@@ -85,6 +88,13 @@ void ViewportWidget::setCamera(const render::Camera& camera)
 {
     m_camera = camera;
     m_cameraChosen = true;
+    // The camera fits the scene shown now, or (none uploaded yet: a project's camera) the next.
+    m_framedFor.reset();
+    if (!m_scene && m_offscreen && m_offscreen->renderer().hasScene()) {
+        render::BoundsQuery figures;
+        figures.figuresOnly = true;
+        m_framedFor = sceneBounds(figures);
+    }
     emit cameraChanged();
     invalidate();
 }
@@ -122,13 +132,10 @@ void ViewportWidget::prepareFrame()
     }
     if (renderer.hasScene()) {
         renderer.setVisibility(m_visibility);
-        if (m_reframe && !m_cameraChosen) {
-            m_camera = renderer.framingCamera();
-            emit cameraChanged();
-        }
-        m_reframe = false;
         if (m_time) renderer.setTime(*m_time);
         else renderer.setFrame(m_frame);
+        if (m_reframe) adaptCameraToScene();
+        m_reframe = false;
     }
 }
 
@@ -141,7 +148,7 @@ void ViewportWidget::renderImage(int samples)
     m_imageSamples = samples;
     m_imageStale = false;
     ++m_renderedFrames;
-    m_sinceFrame.restart();
+    m_lastFrameMs = m_clock->milliseconds();
     if (samples != m_samples) m_settle.start();
     else m_settle.stop();
 }
@@ -156,7 +163,7 @@ void ViewportWidget::paintEvent(QPaintEvent*)
 {
     QPainter painter(this);
     if (m_imageStale || m_image.size() != pixelSize()) {
-        const bool moving = m_sinceFrame.isValid() && m_sinceFrame.elapsed() < kSettleMs;
+        const bool moving = m_lastFrameMs && m_clock->milliseconds() - *m_lastFrameMs < kSettleMs;
         renderImage(moving ? 0 : m_samples);
     }
     if (m_image.isNull()) {

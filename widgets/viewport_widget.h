@@ -2,7 +2,8 @@
 /// The 3D view as a widget: a raster QWidget that shows render::Renderer's image, drawn by an
 /// OffscreenRenderer (its own OpenGL context on a QOffscreenSurface and a framebuffer object),
 /// and drives it with the mouse (left drag orbits the camera, right or middle drag pans, the
-/// wheel zooms, a click picks the body part under the pointer).
+/// wheel zooms, a click picks the body part under the pointer; Frame All, Frame Selected and
+/// Reset Camera fit the camera to the scene's box, and a take of another size is framed again).
 ///
 /// Why not a QOpenGLWidget: Qt composes a whole top-level window holding one through OpenGL on
 /// every flush, so with a software rasteriser (Mesa llvmpipe under Xvfb or in a VM) every repaint
@@ -18,13 +19,15 @@
 /// still frame is redrawn with the view's multisampling. grabFramebuffer always uses it.
 
 #include "render/camera.h"
+#include "render/framing.h"
 #include "render/renderer.h"
 #include "render/scene.h"
 
-#include <QElapsedTimer>
 #include <QImage>
 #include <QPoint>
 #include <QTimer>
+
+#include "widgets/clock.h"
 #include <QWidget>
 
 #include <memory>
@@ -53,6 +56,22 @@ public:
     void setCamera(const render::Camera& camera);
     const render::Camera& camera() const { return m_camera; }
     void setCameraPreset(render::CameraPreset preset);
+    /// Frame All (F): the camera keeps its angle and elevation and fits everything the scene
+    /// draws over the whole take (viewport_camera.cpp).
+    void frameAll();
+    /// Frame Selected (Shift+F): fits take part `part` ("hand": the body parts it drives) of
+    /// every shown take at the current frame; every figure at the current frame when `part` is
+    /// empty or not drawn.
+    void frameSelected(const QString& part);
+    /// Reset Camera (Home with the view focused): the first view of a scene (angle 340 deg,
+    /// elevation 15 deg) framing the whole take; new scenes are framed again until the camera
+    /// is moved.
+    void resetCamera();
+    /// Whether the camera was moved or set (then a new scene keeps its angle and elevation, and
+    /// is reframed only when its box differs from the one the camera was framed for).
+    bool cameraChosen() const { return m_cameraChosen; }
+    /// The box the camera was last framed for (empty before a scene was shown).
+    render::Bounds framedBounds() const { return m_framedFor.value_or(render::Bounds{}); }
     /// The renderer, for queries (displayed transforms, floor height); null before the first
     /// paint (or grabFramebuffer / makeCurrent) and when OpenGL 3.3 core is unavailable.
     const render::Renderer* renderer() const;
@@ -71,6 +90,9 @@ public:
     int shownSamples() const { return m_imageSamples; }
     /// A frame drawn this soon (ms) after the previous one is a moving frame.
     static constexpr int kSettleMs = 150;
+    /// The clock that decides what "soon" is and times the still frame (null: the steady clock);
+    /// tests inject a ManualClock.
+    void setClock(Clock* clock);
 
 public slots:
     /// Shows frame `frame` of every take.
@@ -90,6 +112,8 @@ signals:
     void renderError(const QString& message);
 
 protected:
+    bool event(QEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
     void paintEvent(QPaintEvent* event) override;
     void mousePressEvent(QMouseEvent* event) override;
     void mouseMoveEvent(QMouseEvent* event) override;
@@ -106,6 +130,12 @@ private:
     void renderImage(int samples);
     /// Marks the image stale and schedules a paint.
     void invalidate();
+    /// After a scene upload: a camera never moved frames the scene from the first view; a
+    /// chosen one keeps its angle and is refitted when the scene's box differs from the one it
+    /// was framed for (a take of another size, or walking elsewhere).
+    void adaptCameraToScene();
+    /// The renderer's box for `query` with the pending scene uploaded; empty without OpenGL.
+    render::Bounds sceneBounds(const render::BoundsQuery& query);
 
     std::unique_ptr<render::OffscreenRenderer> m_offscreen;
     int m_samples = 4;
@@ -114,16 +144,18 @@ private:
     QImage m_image; ///< the last rendered frame
     int m_imageSamples = 0;
     bool m_imageStale = true;
-    QElapsedTimer m_sinceFrame; ///< since the last frame was drawn
-    QTimer m_settle;            ///< redraws the still frame with multisampling
+    Clock* m_clock = &steadyClock();
+    std::optional<qint64> m_lastFrameMs; ///< when the last frame was drawn (m_clock)
+    ClockTimer m_settle;                 ///< redraws the still frame with multisampling
     int m_renderedFrames = 0;
     std::optional<render::SceneContent> m_scene; ///< kept until uploaded
     bool m_sceneUploaded = false;
     render::LayoutOptions m_layout;
     render::SceneVisibility m_visibility;
     render::Camera m_camera;
-    bool m_cameraChosen = false; ///< set by setCamera or the mouse: scenes no longer reframe it
-    bool m_reframe = false; ///< frame the scene again at the next paint (unless the camera was chosen)
+    bool m_cameraChosen = false; ///< set by setCamera or the mouse: scenes no longer reset it
+    std::optional<render::Bounds> m_framedFor; ///< the box the camera fits; none: adopt the next scene's
+    bool m_reframe = false; ///< a new scene, or figures shown or hidden: adapt the camera at the next paint
     int m_frame = 0;
     std::optional<double> m_time; ///< when set, wins over m_frame
     QPoint m_pressPosition;

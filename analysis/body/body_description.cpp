@@ -1,5 +1,7 @@
 #include "analysis/body/body_description.h"
 
+#include "analysis/io/atomic_file.h"
+
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -280,11 +282,9 @@ Result<BodyDescription> parseBodyDescription(std::string_view jsonText, std::str
 
 Result<BodyDescription> loadBodyDescription(const std::filesystem::path& path)
 {
-    std::ifstream stream(path, std::ios::binary);
-    if (!stream) return makeError(ErrorCode::Io, path.string() + ": cannot open the body description");
-    std::ostringstream text;
-    text << stream.rdbuf();
-    return parseBodyDescription(text.str(), path.string());
+    auto text = io::readTextFile(path, io::kDocumentLimitBytes);
+    if (!text) return text.error();
+    return parseBodyDescription(*text, path.string());
 }
 
 } // namespace bunraku::analysis

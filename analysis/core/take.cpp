@@ -4,8 +4,20 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace bunraku::analysis {
+
+namespace {
+
+std::string numberText(double value)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", value);
+    return text;
+}
+
+} // namespace
 
 std::optional<Eigen::Index> Take::channelIndex(std::string_view part, std::string_view dof) const
 {
@@ -40,6 +52,13 @@ bool plausibleRate(double hz) { return std::isfinite(hz) && hz > 0.0 && hz <= kM
 
 std::string rateExpectation() { return "expected a sample rate in (0, 1000000] Hz"; }
 
+double valueLimit(std::string_view unit)
+{
+    if (unit == "cm") return 1e7;
+    if (unit == "deg") return 1e9;
+    return 1e12;
+}
+
 Status validateTake(const Take& take)
 {
     const std::string name = take.displayName();
@@ -56,6 +75,16 @@ Status validateTake(const Take& take)
             if (!std::isfinite(take.values(f, c)))
                 return makeError(ErrorCode::Numerical, name + ": non-finite value at frame " + std::to_string(f) +
                                                            ", channel " + take.channels[std::size_t(c)].name());
+    for (Eigen::Index c = 0; c < take.values.cols(); ++c) {
+        const Channel& channel = take.channels[std::size_t(c)];
+        const double limit = valueLimit(channel.unit);
+        for (Eigen::Index f = 0; f < take.values.rows(); ++f)
+            if (std::fabs(take.values(f, c)) > limit)
+                return makeError(ErrorCode::Numerical, name + ": value " + numberText(take.values(f, c)) + " at frame " +
+                                                           std::to_string(f) + ", channel " + channel.name() +
+                                                           " is beyond +-" + numberText(limit) +
+                                                           (channel.unit.empty() ? "" : " " + channel.unit));
+    }
     if (take.skeleton) {
         if (auto ok = validateSkeletalMotion(*take.skeleton); !ok)
             return makeError(ok.error().code, name + ": " + ok.error().message);

@@ -64,7 +64,8 @@ struct Take {
 };
 
 /// Checks the shape (one Channel per column, at least one frame, positive rate) and that every
-/// value is finite; the error names the first offending frame and channel.
+/// value is finite and within valueLimit of its unit; the error names the first offending frame
+/// and channel.
 Status validateTake(const Take& take);
 
 /// The highest sample rate a take may have (Hz): well above any motion capture system, low
@@ -76,5 +77,11 @@ bool plausibleRate(double hz);
 
 /// "expected a sample rate in (0, 1000000] Hz", for error messages.
 std::string rateExpectation();
+
+/// The largest magnitude a channel value may have, by unit: 1e7 for "cm" (100 km), 1e9 for
+/// "deg" (unwrapped angles of hours of spinning), 1e12 for anything else. Far beyond any motion,
+/// small enough that squares and sums over a take never overflow (positions of 1e308 would turn
+/// variances and ARMA tables into inf). Readers refuse larger values with the line.
+double valueLimit(std::string_view unit);
 
 } // namespace bunraku::analysis

@@ -1,9 +1,11 @@
 #include "analysis/decompose/arma.h"
 
 #include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <limits>
 #include <string>
 
@@ -64,7 +66,70 @@ Eigen::VectorXd hannanRissanen(const Eigen::VectorXd& x, int p, int q)
     return theta;
 }
 
+/// Roots of b_0 z^q + b_1 z^(q-1) + ... + b_q (b_0 != 0) as the companion matrix's eigenvalues.
+Eigen::VectorXcd polynomialRoots(const Eigen::VectorXd& b)
+{
+    const Eigen::Index q = b.size() - 1;
+    Eigen::MatrixXd companion = Eigen::MatrixXd::Zero(q, q);
+    for (Eigen::Index k = 0; k < q; ++k) companion(0, k) = -b(k + 1) / b(0);
+    for (Eigen::Index k = 1; k < q; ++k) companion(k, k - 1) = 1.0;
+    return Eigen::EigenSolver<Eigen::MatrixXd>(companion, false).eigenvalues();
+}
+
+/// gain * prod (z - r): coefficients b_0..b_q (real parts; the roots come in conjugate pairs).
+Eigen::VectorXd fromRoots(double gain, const Eigen::VectorXcd& roots)
+{
+    Eigen::VectorXcd coefficients = Eigen::VectorXcd::Zero(roots.size() + 1);
+    coefficients(0) = 1.0;
+    for (Eigen::Index k = 0; k < roots.size(); ++k)
+        for (Eigen::Index n = k + 1; n >= 1; --n) coefficients(n) -= roots(k) * coefficients(n - 1);
+    Eigen::VectorXd b = gain * coefficients.real();
+    if (b(0) < 0.0) b = -b; // w -> -w
+    return b;
+}
+
+/// Reflects into (inside = true) or out of the unit circle the roots `select` picks.
+template <typename Select>
+Eigen::VectorXd reflectRoots(const Eigen::VectorXd& b, Select select)
+{
+    if (b.size() < 2 || b(0) == 0.0 || !b.allFinite()) return b;
+    Eigen::VectorXcd roots = polynomialRoots(b);
+    double gain = b(0);
+    for (Eigen::Index k = 0; k < roots.size(); ++k) {
+        const double modulus = std::abs(roots(k));
+        if (modulus == 0.0 || !select(roots(k))) continue;
+        roots(k) = 1.0 / std::conj(roots(k));
+        gain *= modulus; // |e^{iw} - r| = |r| |e^{iw} - 1 / conj(r)|
+    }
+    return fromRoots(gain, roots);
+}
+
 } // namespace
+
+Eigen::VectorXd thesisMaConvention(const Eigen::VectorXd& b)
+{
+    if (b.size() < 2 || b(0) == 0.0 || !b.allFinite()) return b;
+    const Eigen::VectorXcd roots = polynomialRoots(b);
+    const double largest = roots.cwiseAbs().maxCoeff();
+    if (!(largest > 0.0)) return b;
+    return reflectRoots(b, [largest](std::complex<double> r) {
+        const double modulus = std::abs(r);
+        return modulus >= largest * (1.0 - 1e-9) && modulus < 1.0;
+    });
+}
+
+Eigen::VectorXd invertibleMa(const Eigen::VectorXd& b)
+{
+    return reflectRoots(b, [](std::complex<double> r) { return std::abs(r) > 1.0; });
+}
+
+Eigen::VectorXd maAutocovariance(const Eigen::VectorXd& b)
+{
+    Eigen::VectorXd gamma = Eigen::VectorXd::Zero(b.size());
+    for (Eigen::Index k = 0; k < b.size(); ++k)
+        for (Eigen::Index n = 0; n + k < b.size(); ++n) gamma(k) += b(n) * b(n + k);
+    return gamma;
+}
 
 Result<ArmaModel> fitArma(const Eigen::VectorXd& series, int p, int q, const ArmaOptions& options)
 {
@@ -121,6 +186,7 @@ Result<ArmaModel> fitArma(const Eigen::VectorXd& series, int p, int q, const Arm
     model.b.resize(q + 1);
     model.b(0) = sigma;
     for (int l = 1; l <= q; ++l) model.b(l) = model.c(l - 1) * sigma;
+    model.bThesis = thesisMaConvention(model.b);
     const double ratio = double(p + q + 1) / double(n); // eq. 4.10
     model.fpe = (1.0 + ratio) / (1.0 - ratio) * model.innovationVariance;
     return model;
@@ -167,6 +233,7 @@ Result<std::vector<ArmaCellRow>> armaCellTable(const Decomposition& decompositio
         row.mean.a = Eigen::VectorXd::Zero(p);
         row.mean.c = Eigen::VectorXd::Zero(q);
         row.mean.b = Eigen::VectorXd::Zero(q + 1);
+        row.mean.bThesis = Eigen::VectorXd::Zero(q + 1);
         for (const auto& eta : decomposition.fluctuations) {
             if (eta.labels.function != cell.function || eta.labels.emotion != cell.emotion) continue;
             if (!(eta.values.col(channel).squaredNorm() > 0.0)) continue; // a single take or a constant channel
@@ -177,6 +244,7 @@ Result<std::vector<ArmaCellRow>> armaCellTable(const Decomposition& decompositio
             row.mean.a += model->a;
             row.mean.c += model->c;
             row.mean.b += model->b;
+            row.mean.bThesis += model->bThesis;
             row.mean.innovationVariance += model->innovationVariance;
             row.mean.fpe += model->fpe;
             ++row.takes;
@@ -186,6 +254,7 @@ Result<std::vector<ArmaCellRow>> armaCellTable(const Decomposition& decompositio
             row.mean.a /= k;
             row.mean.c /= k;
             row.mean.b /= k;
+            row.mean.bThesis /= k;
             row.mean.innovationVariance /= k;
             row.mean.fpe /= k;
         }

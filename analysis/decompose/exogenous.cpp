@@ -11,15 +11,13 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-/// KM2O data of one cell from its diff series; a noise-free cell (all takes identical) gets
-/// gamma = 0 and unit variance, i.e. its inputs are its mean.
-Result<Km2oLangevinData> cellLangevin(const Eigen::MatrixXd& takes, const Eigen::VectorXd& mean, int m)
+/// KM2O data of one cell from the autocovariance of its diff series (R(0..M) at least); a
+/// noise-free cell (all takes identical) gets gamma = 0 and unit variance, i.e. its inputs are
+/// its mean.
+Km2oLangevinData cellLangevin(const Eigen::VectorXd& r, const Eigen::VectorXd& mean, Eigen::Index takes, int m)
 {
-    const Eigen::MatrixXd diff = takes.colwise() - mean;
-    auto r = biasedAutocovariance(diff, m);
-    if (!r) return r.error();
     const double scale = std::max(1.0, mean.squaredNorm() / double(mean.size()));
-    auto data = (*r)(0) > 1e-24 * scale ? km2oFromAutocovariance(*r, m) : Result<Km2oLangevinData>(Error{});
+    auto data = r(0) > 1e-24 * scale ? km2oFromAutocovariance(r, m) : Result<Km2oLangevinData>(Error{});
     if (!data) {
         Km2oLangevinData flat;
         flat.correlationLength = m;
@@ -28,10 +26,10 @@ Result<Km2oLangevinData> cellLangevin(const Eigen::MatrixXd& takes, const Eigen:
         flat.partialForward = Eigen::VectorXd::Zero(m + 1);
         return flat;
     }
-    const double k = double(takes.cols());
+    const double k = double(takes);
     data->varianceForward *= k / (k - 1.0); // eq. 4.35: V_+ = K/(K-1) V_+(diff)
     data->varianceBackward *= k / (k - 1.0);
-    return data;
+    return std::move(data).value();
 }
 
 /// For each absolute time, whether a window offset t >= first reaches it.
@@ -49,13 +47,90 @@ Eigen::MatrixXd weightedMeans(const Eigen::MatrixXd& sum, const Eigen::MatrixXd&
     return (weight.array() > 0.0).select(sum.array() / weight.array(), kNaN).matrix();
 }
 
+Error outOfRange(int m, int maxM, Eigen::Index frames)
+{
+    return Error{ErrorCode::InvalidArgument, "KM2O: correlation length M = " + std::to_string(m) + " outside 0..M_max = " +
+                                                 std::to_string(maxM) + " (M_max = floor(3 sqrt(T+1)) - 1, T = " +
+                                                 std::to_string(frames - 1) + ", thesis eq. 4.30)"};
+}
+
+/// The first m + 1 offsets of KM2O data computed up to a larger M: the recursion's values for
+/// t <= m do not depend on how far it goes.
+Km2oLangevinData leading(const Km2oLangevinData& data, int m)
+{
+    Km2oLangevinData out;
+    out.correlationLength = m;
+    out.gammaPlus = data.gammaPlus.topLeftCorner(m + 1, m + 1);
+    out.gammaMinus = data.gammaMinus.topLeftCorner(m + 1, m + 1);
+    out.varianceForward = data.varianceForward.head(m + 1);
+    out.varianceBackward = data.varianceBackward.head(m + 1);
+    out.partialForward = data.partialForward.head(m + 1);
+    return out;
+}
+
+/// out[i] = first[i] + sum (or - sum) over s < count of coefficients[s] * series[s stride + i],
+/// for i < n, the terms added in order s = 0, 1, ... for every i: the same bits as one i at a
+/// time, eight independent sums at once.
+template <bool Subtract>
+void addTerms(double* out, const double* first, const double* series, Eigen::Index stride, const double* coefficients, int count,
+              Eigen::Index n)
+{
+    using Block8 = Eigen::Array<double, 8, 1>;
+    Eigen::Index i = 0;
+    for (; i + 8 <= n; i += 8) {
+        Block8 a = Eigen::Map<const Block8>(first + i);
+        for (int s = 0; s < count; ++s) {
+            const Eigen::Map<const Block8> x(series + Eigen::Index(s) * stride + i);
+            if constexpr (Subtract)
+                a -= coefficients[s] * x;
+            else
+                a += coefficients[s] * x;
+        }
+        Eigen::Map<Block8>(out + i) = a;
+    }
+    for (; i < n; ++i) {
+        double a = first[i];
+        for (int s = 0; s < count; ++s) {
+            if constexpr (Subtract)
+                a -= coefficients[s] * series[Eigen::Index(s) * stride + i];
+            else
+                a += coefficients[s] * series[Eigen::Index(s) * stride + i];
+        }
+        out[i] = a;
+    }
+}
+
 } // namespace
 
-Result<ExogenousEstimate> estimateExogenousInputs(const std::vector<Eigen::MatrixXd>& cells, const ExogenousOptions& options)
+void ExogenousCells::markovGains(const std::vector<Km2oLangevinData>& langevin, int m, std::vector<Eigen::MatrixXd>& gain,
+                                 std::vector<Eigen::VectorXd>& estimateVariance) const
+{
+    // Markov estimate per window offset t: unknowns theta = (u, v^{i2}..v^{iJ}), observations
+    // e^{ij} = u + v^{ij} + noise of variance V_+^{ij}(t)/K_j (eq. 4.36), so
+    // theta = (A^T W A)^-1 A^T W e with A = [1 0; 1 I] and W = diag(K_j / V_+^{ij}(t)).
+    const int cellCount = int(m_cells.size());
+    Eigen::MatrixXd design = Eigen::MatrixXd::Zero(cellCount, cellCount);
+    for (int j = 0; j < cellCount; ++j) {
+        design(j, 0) = 1.0;
+        if (j > 0) design(j, j) = 1.0;
+    }
+    gain.resize(std::size_t(m + 1));
+    estimateVariance.resize(std::size_t(m + 1));
+    for (int t = 0; t <= m; ++t) {
+        Eigen::VectorXd w(cellCount);
+        for (int j = 0; j < cellCount; ++j)
+            w(j) = double(m_cells[std::size_t(j)].cols()) / langevin[std::size_t(j)].varianceForward(t);
+        const Eigen::MatrixXd normal = design.transpose() * w.asDiagonal() * design;
+        const Eigen::MatrixXd covariance = normal.inverse();
+        gain[std::size_t(t)] = covariance * design.transpose() * w.asDiagonal();
+        estimateVariance[std::size_t(t)] = covariance.diagonal();
+    }
+}
+
+Result<ExogenousCells> ExogenousCells::prepare(std::vector<Eigen::MatrixXd> cells, int maxCorrelationLength)
 {
     if (cells.empty()) return makeError(ErrorCode::InvalidArgument, "KM2O inputs: no cells");
     const Eigen::Index frames = cells[0].rows();
-    const int cellCount = int(cells.size());
     for (std::size_t j = 0; j < cells.size(); ++j) {
         if (cells[j].rows() != frames)
             return makeError(ErrorCode::InvalidArgument, "KM2O inputs: cell " + std::to_string(j + 1) + " has " +
@@ -67,47 +142,74 @@ Result<ExogenousEstimate> estimateExogenousInputs(const std::vector<Eigen::Matri
         if (!cells[j].allFinite())
             return makeError(ErrorCode::Numerical, "KM2O inputs: cell " + std::to_string(j + 1) + " has non-finite values");
     }
+    const int maxM = analysis::maxCorrelationLength(frames);
+    if (maxCorrelationLength < 0 || maxCorrelationLength > maxM) return outOfRange(maxCorrelationLength, maxM, frames);
+    ExogenousCells prepared;
+    prepared.m_maxLag = maxCorrelationLength;
+    prepared.m_means.resize(frames, Eigen::Index(cells.size()));
+    // R(tau) of every lag is computed alone, so R(0..M) of a smaller M is a prefix of these.
+    const int lags = int(std::min<Eigen::Index>(maxCorrelationLength, frames - 1));
+    for (std::size_t j = 0; j < cells.size(); ++j) {
+        prepared.m_means.col(Eigen::Index(j)) = cells[j].rowwise().mean();
+        const Eigen::MatrixXd diff = cells[j].colwise() - prepared.m_means.col(Eigen::Index(j));
+        auto r = biasedAutocovariance(diff, lags);
+        if (!r) return r.error();
+        prepared.m_autocovariance.push_back(std::move(r).value());
+    }
+    prepared.m_cells = std::move(cells);
+    // The KM2O data and Markov gains up to the longest M serve every shorter M when the
+    // recursion went all the way for every cell (a cell whose recursion stops at some M is
+    // flat from there on only: its shorter M are computed on their own).
+    prepared.m_leading = true;
+    for (std::size_t j = 0; j < prepared.m_cells.size(); ++j) {
+        const Eigen::VectorXd& r = prepared.m_autocovariance[j];
+        const Eigen::VectorXd mean = prepared.m_means.col(Eigen::Index(j));
+        const double scale = std::max(1.0, mean.squaredNorm() / double(mean.size()));
+        const bool flatForEveryM = !(r(0) > 1e-24 * scale);
+        if (!flatForEveryM && !km2oFromAutocovariance(r, lags)) prepared.m_leading = false;
+        prepared.m_langevin.push_back(cellLangevin(r, mean, prepared.m_cells[j].cols(), lags));
+    }
+    if (prepared.m_leading) prepared.markovGains(prepared.m_langevin, lags, prepared.m_gain, prepared.m_estimateVariance);
+    return prepared;
+}
+
+Result<ExogenousEstimate> estimateExogenousInputs(const std::vector<Eigen::MatrixXd>& cells, const ExogenousOptions& options)
+{
+    auto prepared = ExogenousCells::prepare(cells, options.correlationLength);
+    if (!prepared) return prepared.error();
+    return prepared->estimate(options);
+}
+
+Result<ExogenousEstimate> ExogenousCells::estimate(const ExogenousOptions& options) const
+{
+    const Eigen::Index frames = frameCount();
+    const int cellCount = int(m_cells.size());
     const int m = options.correlationLength;
-    const int maxM = maxCorrelationLength(frames);
-    if (m < 0 || m > maxM)
-        return makeError(ErrorCode::InvalidArgument,
-                         "KM2O: correlation length M = " + std::to_string(m) + " outside 0..M_max = " + std::to_string(maxM) +
-                             " (M_max = floor(3 sqrt(T+1)) - 1, T = " + std::to_string(frames - 1) + ", thesis eq. 4.30)");
+    if (m < 0 || m > analysis::maxCorrelationLength(frames)) return outOfRange(m, analysis::maxCorrelationLength(frames), frames);
+    if (m > m_maxLag)
+        return makeError(ErrorCode::InvalidArgument, "KM2O: correlation length M = " + std::to_string(m) +
+                                                         " beyond the " + std::to_string(m_maxLag) + " the cells were prepared for");
     const Eigen::Index lastFrame = frames - 1;
     const Eigen::Index lastT0 = options.initialTimes == InitialTimeRange::Full ? lastFrame - m : lastFrame - m - 1;
     if (lastT0 < 0)
         return makeError(ErrorCode::InvalidArgument, "KM2O: M = " + std::to_string(m) + " leaves no initial time T0 for " +
                                                          std::to_string(frames) + " frames");
+    const Eigen::Index windows = lastT0 + 1;
 
     ExogenousEstimate est;
     est.correlationLength = m;
-    est.cellMeans.resize(frames, cellCount);
-    for (int j = 0; j < cellCount; ++j) {
-        est.cellMeans.col(j) = cells[std::size_t(j)].rowwise().mean();
-        auto data = cellLangevin(cells[std::size_t(j)], est.cellMeans.col(j), m);
-        if (!data) return data.error();
-        est.langevin.push_back(std::move(*data));
-    }
-
-    // Markov estimate per window offset t: unknowns theta = (u, v^{i2}..v^{iJ}), observations
-    // e^{ij} = u + v^{ij} + noise of variance V_+^{ij}(t)/K_j (eq. 4.36), so
-    // theta = (A^T W A)^-1 A^T W e with A = [1 0; 1 I] and W = diag(K_j / V_+^{ij}(t)).
-    Eigen::MatrixXd design = Eigen::MatrixXd::Zero(cellCount, cellCount);
-    for (int j = 0; j < cellCount; ++j) {
-        design(j, 0) = 1.0;
-        if (j > 0) design(j, j) = 1.0;
-    }
-    std::vector<Eigen::MatrixXd> gain(std::size_t(m + 1));
-    std::vector<Eigen::VectorXd> estimateVariance(std::size_t(m + 1));
-    for (int t = 0; t <= m; ++t) {
-        Eigen::VectorXd w(cellCount);
+    est.cellMeans = m_means;
+    std::vector<Eigen::MatrixXd> ownGain;
+    std::vector<Eigen::VectorXd> ownVariance;
+    if (m_leading) {
+        for (int j = 0; j < cellCount; ++j) est.langevin.push_back(leading(m_langevin[std::size_t(j)], m));
+    } else {
         for (int j = 0; j < cellCount; ++j)
-            w(j) = double(cells[std::size_t(j)].cols()) / est.langevin[std::size_t(j)].varianceForward(t);
-        const Eigen::MatrixXd normal = design.transpose() * w.asDiagonal() * design;
-        const Eigen::MatrixXd covariance = normal.inverse();
-        gain[std::size_t(t)] = covariance * design.transpose() * w.asDiagonal();
-        estimateVariance[std::size_t(t)] = covariance.diagonal();
+            est.langevin.push_back(cellLangevin(m_autocovariance[std::size_t(j)], m_means.col(j), m_cells[std::size_t(j)].cols(), m));
+        markovGains(est.langevin, m, ownGain, ownVariance);
     }
+    const std::vector<Eigen::MatrixXd>& gain = m_leading ? m_gain : ownGain;
+    const std::vector<Eigen::VectorXd>& estimateVariance = m_leading ? m_estimateVariance : ownVariance;
 
     const auto reached = reachedByLateOffsets(frames, m, lastT0, options.firstWindowOffset);
     auto used = [&](Eigen::Index t0, int t) {
@@ -117,31 +219,54 @@ Result<ExogenousEstimate> estimateExogenousInputs(const std::vector<Eigen::Matri
         return options.average == WindowAverage::Uniform ? 1.0 : 1.0 / estimateVariance[std::size_t(t)](unknown);
     };
 
+    // Every window at once, offset by offset: row T0 of theta holds the Markov estimates of the
+    // window starting at T0, column t J + i unknown i at offset t. Every number takes the same
+    // operations in the same order as it would one window at a time (the left side of eq. 4.36
+    // summed over s = 0..t-1, the gain applied column by column from zero, the estimates of an
+    // absolute time averaged from the earliest window on), so the layout does not change a bit.
+    Eigen::MatrixXd theta(windows, (m + 1) * cellCount);
+    Eigen::MatrixXd e(windows, cellCount);
+    Eigen::ArrayXd sum(windows);
+    std::vector<double> coefficients(std::size_t(m + 1));
+    auto rowOf = [&](const Eigen::MatrixXd& g, int t) {
+        for (int s = 0; s < t; ++s) coefficients[std::size_t(s)] = g(t, s);
+        return coefficients.data();
+    };
+    for (int t = 0; t <= m; ++t) {
+        for (int j = 0; j < cellCount; ++j) {
+            const double* means = m_means.col(j).data();
+            addTerms<false>(e.col(j).data(), means + t, means, 1, rowOf(est.langevin[std::size_t(j)].gammaPlus, t), t, windows);
+        }
+        const Eigen::MatrixXd& k = gain[std::size_t(t)];
+        for (int i = 0; i < cellCount; ++i) {
+            sum.setZero();
+            for (int j = 0; j < cellCount; ++j) sum = e.col(j).array() * k(i, j) + sum;
+            theta.col(t * cellCount + i) = (sum + 0.0).matrix();
+        }
+    }
+
+    // Window estimates summed per absolute time T0 + t, from the earliest window T0 on: offsets
+    // from the last down.
+    auto accumulate = [&](Eigen::MatrixXd& total, Eigen::MatrixXd& weights, int t, int unknown, const double* estimates) {
+        const double wt = weightOf(t, unknown);
+        if (t >= options.firstWindowOffset) {
+            total.col(unknown).segment(t, windows) += wt * Eigen::Map<const Eigen::VectorXd>(estimates, windows);
+            weights.col(unknown).segment(t, windows).array() += wt;
+            return;
+        }
+        for (Eigen::Index t0 = 0; t0 <= lastT0; ++t0) {
+            if (!used(t0, t)) continue;
+            total(t0 + t, unknown) += wt * estimates[t0];
+            weights(t0 + t, unknown) += wt;
+        }
+    };
     Eigen::MatrixXd inputSum = Eigen::MatrixXd::Zero(frames, cellCount); // col 0 u, col j v^{ij}
-    Eigen::MatrixXd initialValues(lastT0 + 1, cellCount); // the t = 0 Markov estimate of each window (eq. 4.41)
     Eigen::MatrixXd inputWeight = Eigen::MatrixXd::Zero(frames, cellCount);
     est.estimateCount = Eigen::VectorXi::Zero(frames);
-    Eigen::VectorXd e(cellCount);
-    Eigen::VectorXd theta(cellCount);
-    for (Eigen::Index t0 = 0; t0 <= lastT0; ++t0) {
-        for (int t = 0; t <= m; ++t) {
-            if (t > 0 && !used(t0, t)) continue;
-            for (int j = 0; j < cellCount; ++j) {
-                const auto& g = est.langevin[std::size_t(j)].gammaPlus;
-                double value = est.cellMeans(t0 + t, j);
-                for (int s = 0; s < t; ++s) value += g(t, s) * est.cellMeans(t0 + s, j);
-                e(j) = value; // left side of eq. 4.36
-            }
-            theta.noalias() = gain[std::size_t(t)] * e;
-            if (t == 0) initialValues.row(t0) = theta.transpose();
-            if (!used(t0, t)) continue;
-            for (int j = 0; j < cellCount; ++j) {
-                const double wt = weightOf(t, j);
-                inputSum(t0 + t, j) += wt * theta(j);
-                inputWeight(t0 + t, j) += wt;
-            }
-            ++est.estimateCount(t0 + t);
-        }
+    for (int t = m; t >= 0; --t) {
+        for (int j = 0; j < cellCount; ++j) accumulate(inputSum, inputWeight, t, j, theta.col(t * cellCount + j).data());
+        for (Eigen::Index t0 = 0; t0 <= lastT0; ++t0)
+            if (used(t0, t)) ++est.estimateCount(t0 + t);
     }
     const Eigen::MatrixXd inputs = weightedMeans(inputSum, inputWeight);
     est.functionInput = inputs.col(0);
@@ -150,25 +275,19 @@ Result<ExogenousEstimate> estimateExogenousInputs(const std::vector<Eigen::Matri
 
     // Components (eqs. 4.41-4.43): per window, the recursion with gamma of the neutral cell for
     // y, of cell j for z, from the window's own t = 0 estimate; averaged per absolute time like
-    // the inputs.
+    // the inputs. Again every window at once: window.col(t) holds offset t of every window.
     Eigen::MatrixXd componentSum = Eigen::MatrixXd::Zero(frames, cellCount);
     Eigen::MatrixXd componentWeight = Eigen::MatrixXd::Zero(frames, cellCount);
-    Eigen::VectorXd window(m + 1);
+    Eigen::MatrixXd window(windows, m + 1);
     for (int j = 0; j < cellCount; ++j) {
         const auto& g = est.langevin[std::size_t(j)].gammaPlus;
-        for (Eigen::Index t0 = 0; t0 <= lastT0; ++t0) {
-            for (int t = 0; t <= m; ++t) {
-                // eq. 4.41: the window starts from its own t = 0 Markov estimate (variance V_+(0));
-                // later offsets use the inputs averaged per absolute time (eqs. 4.42/4.43).
-                double value = t == 0 ? initialValues(t0, j) : inputs(t0 + t, j);
-                for (int s = 0; s < t; ++s) value -= g(t, s) * window(s);
-                window(t) = value;
-                if (!used(t0, t)) continue;
-                const double wt = weightOf(t, j);
-                componentSum(t0 + t, j) += wt * value;
-                componentWeight(t0 + t, j) += wt;
-            }
+        for (int t = 0; t <= m; ++t) {
+            // eq. 4.41: the window starts from its own t = 0 Markov estimate (variance V_+(0));
+            // later offsets use the inputs averaged per absolute time (eqs. 4.42/4.43).
+            const double* first = t == 0 ? theta.col(j).data() : inputs.col(j).data() + t;
+            addTerms<true>(window.col(t).data(), first, window.data(), windows, rowOf(g, t), t, windows);
         }
+        for (int t = m; t >= 0; --t) accumulate(componentSum, componentWeight, t, j, window.col(t).data());
     }
     const Eigen::MatrixXd components = weightedMeans(componentSum, componentWeight);
     est.functionComponent = components.col(0);

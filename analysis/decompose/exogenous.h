@@ -60,6 +60,39 @@ struct ExogenousEstimate {
 Result<ExogenousEstimate> estimateExogenousInputs(const std::vector<Eigen::MatrixXd>& cells,
                                                   const ExogenousOptions& options = {});
 
+/// What estimateExogenousInputs computes independently of M, for estimating many M of the same
+/// cells (choosing M by P, thesis 4.4.4): the checked cells, their means x_mean^{ij} (eq. 4.22)
+/// and the autocovariance of their diff series (eq. 4.26) up to the largest M asked for.
+class ExogenousCells {
+public:
+    /// Errors as estimateExogenousInputs's for the cells, and for maxCorrelationLength outside
+    /// 0..M_max.
+    static Result<ExogenousCells> prepare(std::vector<Eigen::MatrixXd> cells, int maxCorrelationLength);
+
+    /// Bit for bit estimateExogenousInputs(cells, options); InvalidArgument for an M beyond the
+    /// prepared one.
+    Result<ExogenousEstimate> estimate(const ExogenousOptions& options) const;
+
+    Eigen::Index frameCount() const { return m_means.rows(); }
+    int maxCorrelationLength() const { return m_maxLag; }
+
+private:
+    ExogenousCells() = default;
+    /// Eq. 4.36's Markov gains (A^T W A)^-1 A^T W and estimate variances, offsets 0..m.
+    void markovGains(const std::vector<Km2oLangevinData>& langevin, int m, std::vector<Eigen::MatrixXd>& gain,
+                     std::vector<Eigen::VectorXd>& estimateVariance) const;
+
+    std::vector<Eigen::MatrixXd> m_cells;
+    Eigen::MatrixXd m_means;                       ///< frames x J
+    std::vector<Eigen::VectorXd> m_autocovariance; ///< per cell, R(0..maxLag) of the diff series
+    int m_maxLag = 0;
+    /// Whether the data below, computed up to maxLag, hold every shorter M's as their first rows.
+    bool m_leading = false;
+    std::vector<Km2oLangevinData> m_langevin;      ///< per cell, eq. 4.35's scaling applied
+    std::vector<Eigen::MatrixXd> m_gain;           ///< per offset 0..maxLag
+    std::vector<Eigen::VectorXd> m_estimateVariance;
+};
+
 /// Relative error P = sum_t (estimate - truth)^2 / sum_t truth^2 (thesis eq. 4.40, a fraction,
 /// not percent), over the frames where the estimate is finite. NaN when truth is all zero.
 double relativeError(const Eigen::VectorXd& estimate, const Eigen::VectorXd& truth);

@@ -42,22 +42,36 @@ Status checkDecomposable(const Corpus& corpus)
     return okStatus();
 }
 
-Result<Decomposition> decomposeLeastSquares(const Corpus& corpus)
+Decomposition decomposeLinear(const LinearCorpus& linear)
 {
-    if (auto status = checkDecomposable(corpus); !status) return status.error();
+    const Corpus& corpus = linear.corpus;
     Decomposition d;
     d.rateHz = corpus.rateHz;
     d.channels = corpus.takes.front().channels;
     d.neutralEmotion = corpus.neutralEmotion;
+    d.charts = linear.charts;
+    d.angleBranches = linear.angleBranches;
     const auto emotions = corpus.emotions();
     auto cellMean = [](const std::vector<const Take*>& takes) {
         Eigen::MatrixXd mean = Eigen::MatrixXd::Zero(takes.front()->frameCount(), takes.front()->channelCount());
         for (const Take* take : takes) mean += take->values;
         return Eigen::MatrixXd(mean / double(takes.size()));
     };
-    for (const auto& function : corpus.functions()) {
-        const Eigen::MatrixXd y = cellMean(corpus.cell(function, corpus.neutralEmotion)); // eq. 4.4-4.5
+    const bool skeletal = !linear.skeletonCoordinates.empty();
+    // The mean of the skeleton coordinates of a cell's takes.
+    auto skeletonMean = [&](const std::vector<const Take*>& takes) {
+        const Eigen::MatrixXd& first = linear.skeletonCoordinates.front();
+        Eigen::MatrixXd mean = Eigen::MatrixXd::Zero(first.rows(), first.cols());
+        for (const Take* take : takes) mean += linear.skeletonCoordinates[std::size_t(take - corpus.takes.data())];
+        return Eigen::MatrixXd(mean / double(takes.size()));
+    };
+    if (skeletal) d.skeleton = SkeletalComponents{linear.skeletonCharts, {}, {}};
+    for (const auto& function : linear.functions) {
+        const auto neutral = corpus.cell(function, corpus.neutralEmotion);
+        const Eigen::MatrixXd y = cellMean(neutral); // eq. 4.4-4.5
         d.functions.push_back({function, y});
+        const Eigen::MatrixXd ySkeleton = skeletal ? skeletonMean(neutral) : Eigen::MatrixXd();
+        if (skeletal) d.skeleton->functions.push_back(ySkeleton);
         // Neutral first, then the other emotions in corpus order.
         std::vector<std::string> order{corpus.neutralEmotion};
         for (const auto& e : emotions)
@@ -68,6 +82,7 @@ Result<Decomposition> decomposeLeastSquares(const Corpus& corpus)
             const Eigen::MatrixXd mean = cellMean(takes);
             d.emotions.push_back({function, emotion, mean - y}); // minimiser of eq. 4.8
             d.cellMeans.push_back(mean);
+            if (skeletal) d.skeleton->emotions.push_back(skeletonMean(takes) - ySkeleton);
         }
     }
     for (const auto& take : corpus.takes) {
@@ -75,6 +90,12 @@ Result<Decomposition> decomposeLeastSquares(const Corpus& corpus)
         d.fluctuations.push_back({take.labels, take.values - d.cellMeans[std::size_t(c)]});
     }
     return d;
+}
+
+Result<Decomposition> decomposeLeastSquares(const Corpus& corpus)
+{
+    if (auto status = checkDecomposable(corpus); !status) return status.error();
+    return decomposeLinear(lineariseCorpus(corpus));
 }
 
 } // namespace bunraku::analysis

@@ -1,6 +1,7 @@
 #include "analysis/design/motion_design.h"
 
 #include "analysis/core/puppet_layout.h"
+#include "analysis/skeleton/skeleton_resample.h"
 
 #include <algorithm>
 #include <cmath>
@@ -81,7 +82,24 @@ DesignedMotion designMotion(const DesignBasis& basis, const WarpCurve& warp, con
             }
         }
     }
+    if (basis.functional.skeleton) designed.take.skeleton = designedSkeleton(basis, at, designed.world_T_axis);
     return designed;
+}
+
+SkeletalMotionPtr designedSkeleton(const DesignBasis& basis, const Eigen::VectorXd& at,
+                                   const std::vector<RigidTransform>& world_T_designedAxis)
+{
+    if (!basis.functional.skeleton || basis.functional.skeleton->frameCount() == 0) return nullptr;
+    const SkeletalMotion& source = *basis.functional.skeleton;
+    // Every joint at the warped time, then the whole body (the roots of the parts' chains) moved
+    // by the axis correction world_T_designedAxis * (world_T_axis at the warped time)^-1: the
+    // relative motion of every joint in the axis frame is kept, as for the 4 parts.
+    SkeletalMotionPtr warped = resampleSkeletalMotion(source, at);
+    const Eigen::MatrixXd functionalAxis = resampleRows(basis.coordinates, at);
+    std::vector<RigidTransform> corrections(std::size_t(at.size()));
+    for (Eigen::Index u = 0; u < at.size(); ++u)
+        corrections[std::size_t(u)] = world_T_designedAxis[std::size_t(u)] * axisFromCoordinates(functionalAxis.row(u)).inverse();
+    return moveSkeletalRoots(*warped, corrections, partChainRoots(*source.skeleton));
 }
 
 Result<GainSet> extractGainsWithWarp(const Eigen::MatrixXd& functional, const Eigen::MatrixXd& emotional,

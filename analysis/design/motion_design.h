@@ -16,6 +16,7 @@
 #include "analysis/design/phase_extraction.h"
 #include "analysis/design/phrase_gains.h"
 #include "analysis/design/warp_curve.h"
+#include "analysis/skeleton/skeleton_resample.h"
 
 #include <Eigen/Core>
 
@@ -43,8 +44,21 @@ struct DesignedMotion {
 /// thesis 5.5 steps 2-4: gains on the axis coordinates per phrase (functional time), recombined
 /// with the relative motion, then output frame u shows functional time warp(u) (axis
 /// coordinates and part positions interpolated linearly, rotations by slerp). An empty gain set
-/// scales nothing; the warp must be valid (validateWarpCurve) or the identity is used.
+/// scales nothing; the warp must be valid (validateWarpCurve) or the identity is used. The
+/// warp may change the length by any amount (outputFrames). When the functional take carries
+/// its full skeleton, the designed take carries it too (designedSkeleton).
 DesignedMotion designMotion(const DesignBasis& basis, const WarpCurve& warp, const GainSet& gains);
+
+/// The designed full skeleton (docs/MOTION-AXIS.md, "The skeleton in a design"): every joint of
+/// the functional take's skeleton at the warped time `at` (functional frames, one per output
+/// frame; slerp, linear root translation), and the roots of the 4 parts' chains moved by the
+/// axis correction C(u) = world_T_designedAxis(u) * world_T_axis(at(u))^-1 - the one rigid
+/// transform that takes every part from its warped to its designed pose, since design keeps
+/// each part's motion relative to the axis. Every other joint follows through its unchanged
+/// local motion, so bone lengths stay those of the source; a root without a part in its tree
+/// keeps its warped motion. Null when the functional take has no skeleton.
+SkeletalMotionPtr designedSkeleton(const DesignBasis& basis, const Eigen::VectorXd& at,
+                                   const std::vector<RigidTransform>& world_T_designedAxis);
 
 struct ExtractionOptions {
     PhaseOptions phase;

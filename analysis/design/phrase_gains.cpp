@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
-#include <fstream>
 #include <numbers>
 #include <sstream>
 
@@ -240,88 +239,6 @@ Result<std::vector<Eigen::Index>> parsePhraseBoundaries(const std::string& text,
         return makeError(ErrorCode::InvalidArgument, "phrase boundaries \"" + text + "\": expected increasing frames from 0 to " +
                                                          std::to_string(frames - 1));
     return boundaries;
-}
-
-Status writeGainsJson(const GainSet& gains, const std::filesystem::path& file)
-{
-    nlohmann::json document;
-    document["dofs"] = gains.dofNames;
-    document["blend_frames"] = gains.blendFrames;
-    document["convention"] = "thesis eqs. 5.22/5.23: g0 = a0_no/a0_em, g1 = A1_no/A1_em; design: mean_no/g0 (or mean_no + offset) + (x_no - mean_no)/g1";
-    nlohmann::json phrases = nlohmann::json::array();
-    for (const PhraseGains& phrase : gains.phrases) {
-        nlohmann::json entries = nlohmann::json::array();
-        for (std::size_t d = 0; d < phrase.dofs.size(); ++d) {
-            const DofGain& g = phrase.dofs[d];
-            entries.push_back({{"dof", d < gains.dofNames.size() ? gains.dofNames[d] : std::to_string(d)},
-                               {"g0", g.g0},
-                               {"g1", g.g1},
-                               {"mode", g.dcMode == DcMode::Offset ? "offset" : "scale"},
-                               {"offset", g.offset},
-                               {"ac_mode", g.acMode == AcMode::Additive ? "additive" : "scale"},
-                               {"harmonic_cos", g.harmonicCos},
-                               {"harmonic_sin", g.harmonicSin},
-                               {"reason", g.reason},
-                               {"a0_functional", g.a0Functional},
-                               {"a0_emotional", g.a0Emotional},
-                               {"A1_functional", g.a1Functional},
-                               {"A1_emotional", g.a1Emotional}});
-        }
-        phrases.push_back({{"begin", phrase.begin}, {"end", phrase.end}, {"gains", entries}});
-    }
-    document["phrases"] = phrases;
-    std::ofstream stream(file);
-    if (!stream) return makeError(ErrorCode::Io, file.string() + ": cannot write the gains");
-    stream << document.dump(2) << '\n';
-    stream.flush();
-    if (!stream) return makeError(ErrorCode::Io, file.string() + ": writing the gains failed");
-    return okStatus();
-}
-
-Result<GainSet> readGainsJson(const std::filesystem::path& file)
-{
-    std::ifstream stream(file);
-    if (!stream) return makeError(ErrorCode::Io, file.string() + ": cannot open the gains");
-    const std::string source = file.string();
-    try {
-        const nlohmann::json document = nlohmann::json::parse(stream);
-        GainSet gains;
-        gains.dofNames = document.at("dofs").get<std::vector<std::string>>();
-        gains.blendFrames = document.value("blend_frames", 3);
-        const auto& phrases = document.at("phrases");
-        for (std::size_t p = 0; p < phrases.size(); ++p) {
-            PhraseGains phrase;
-            phrase.begin = phrases[p].at("begin").get<Eigen::Index>();
-            phrase.end = phrases[p].at("end").get<Eigen::Index>();
-            const auto& entries = phrases[p].at("gains");
-            if (entries.size() != gains.dofNames.size())
-                return parseError(source, 0, "phrases[" + std::to_string(p) + "].gains: expected one entry per DOF");
-            for (const auto& entry : entries) {
-                DofGain g;
-                g.g0 = entry.value("g0", 1.0);
-                g.g1 = entry.value("g1", 1.0);
-                const std::string mode = entry.value("mode", std::string("scale"));
-                if (mode != "scale" && mode != "offset")
-                    return parseError(source, 0, "phrases[" + std::to_string(p) + "]: mode must be \"scale\" or \"offset\"");
-                g.dcMode = mode == "offset" ? DcMode::Offset : DcMode::Scale;
-                g.offset = entry.value("offset", 0.0);
-                const std::string acMode = entry.value("ac_mode", std::string("scale"));
-                if (acMode != "scale" && acMode != "additive")
-                    return parseError(source, 0, "phrases[" + std::to_string(p) + "]: ac_mode must be \"scale\" or \"additive\"");
-                g.acMode = acMode == "additive" ? AcMode::Additive : AcMode::Scale;
-                g.harmonicCos = entry.value("harmonic_cos", 0.0);
-                g.harmonicSin = entry.value("harmonic_sin", 0.0);
-                g.reason = entry.value("reason", std::string());
-                if (!std::isfinite(g.g0) || !std::isfinite(g.g1) || g.g0 == 0.0 || g.g1 == 0.0)
-                    return parseError(source, 0, "phrases[" + std::to_string(p) + "]: g0 and g1 must be finite and non-zero");
-                phrase.dofs.push_back(g);
-            }
-            gains.phrases.push_back(std::move(phrase));
-        }
-        return gains;
-    } catch (const nlohmann::json::exception& error) {
-        return parseError(source, 0, std::string("expected a gains document with dofs and phrases (") + error.what() + ")");
-    }
 }
 
 } // namespace bunraku::analysis

@@ -116,9 +116,23 @@ std::vector<Eigen::Index> suggestPhraseBoundaries(const Eigen::MatrixXd& axisCoo
 /// "0,40,105" -> {0, 40, 105}; Parse errors name the text.
 Result<std::vector<Eigen::Index>> parsePhraseBoundaries(const std::string& text, Eigen::Index frames);
 
+/// Bounds of a gains document: the last frame a phrase may reach, the widest blend, the largest
+/// |g0|, |g1|, |offset| and harmonic amplitude.
+inline constexpr Eigen::Index kMaxGainsFrame = 100'000'000;
+inline constexpr int kMaxBlendFrames = 1000;
+inline constexpr double kMaxGainMagnitude = 1e6;
+inline constexpr double kMaxGainOffset = 1e9;
+
 /// gains.json: {"dofs": [...], "blend_frames": 3, "phrases": [{"begin", "end", "gains": [{"dof", "g0", "g1",
-/// "mode", "offset", "reason", ...}]}]}.
+/// "mode", "offset", "reason", ...}]}]}. Written atomically.
 Status writeGainsJson(const GainSet& gains, const std::filesystem::path& file);
+/// Parses gains JSON text, checking every field: dofs a non-empty list of distinct names;
+/// blend_frames a whole number in [0, kMaxBlendFrames]; phrases in order, each begin < end,
+/// whole frames in [0, kMaxGainsFrame], the first beginning at 0 and each next one where the
+/// previous ends; one gain per DOF, g0 and g1 finite, non-zero and within kMaxGainMagnitude,
+/// offsets and harmonics within kMaxGainOffset. Errors name `sourceName` and the field.
+Result<GainSet> parseGainsJson(const std::string& text, const std::string& sourceName);
+/// parseGainsJson of a file (a regular file of at most io::kDocumentLimitBytes).
 Result<GainSet> readGainsJson(const std::filesystem::path& file);
 
 } // namespace bunraku::analysis

@@ -2,9 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <limits>
-#include <sstream>
 
 namespace bunraku::analysis {
 
@@ -147,43 +145,6 @@ WarpCurve warpCurveFromSamples(const Eigen::VectorXd& sourceOfOutput, int spacin
     }
     if (curve.points.empty() || curve.points.back().output < double(last))
         curve.points.push_back({double(last), std::max(previous, sourceOfOutput[last])});
-    return curve;
-}
-
-Status writeWarpCsv(const WarpCurve& curve, const std::filesystem::path& file)
-{
-    std::ofstream stream(file);
-    if (!stream) return makeError(ErrorCode::Io, file.string() + ": cannot write the warp curve");
-    stream.precision(17);
-    stream << "output_frame,source_frame\n";
-    for (const WarpPoint& p : curve.points) stream << p.output << ',' << p.source << '\n';
-    stream.flush();
-    if (!stream) return makeError(ErrorCode::Io, file.string() + ": writing the warp curve failed");
-    return okStatus();
-}
-
-Result<WarpCurve> readWarpCsv(const std::filesystem::path& file)
-{
-    std::ifstream stream(file);
-    if (!stream) return makeError(ErrorCode::Io, file.string() + ": cannot open the warp curve");
-    WarpCurve curve;
-    std::string line;
-    long lineNumber = 0;
-    while (std::getline(stream, line)) {
-        ++lineNumber;
-        if (!line.empty() && line.back() == '\r') line.pop_back();
-        if (line.empty()) continue;
-        if (lineNumber == 1 && line.find_first_not_of("0123456789.,-+eE ") != std::string::npos) continue; // header
-        std::istringstream fields(line);
-        WarpPoint point;
-        char comma = 0;
-        if (!(fields >> point.output >> comma >> point.source) || comma != ',')
-            return parseError(file.string(), lineNumber, "expected \"output_frame,source_frame\" (two numbers)");
-        curve.points.push_back(point);
-    }
-    if (!curve.points.empty()) curve.outputFrames = Eigen::Index(std::floor(curve.points.back().output)) + 1;
-    if (Status valid = validateWarpCurve(curve); !valid.ok())
-        return makeError(ErrorCode::Parse, file.string() + ": " + valid.error().message);
     return curve;
 }
 

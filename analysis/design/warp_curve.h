@@ -55,9 +55,19 @@ WarpCurve moveControlPoint(const WarpCurve& curve, std::size_t index, const Warp
 /// every `spacing` frames plus the last frame.
 WarpCurve warpCurveFromSamples(const Eigen::VectorXd& sourceOfOutput, int spacing = 8);
 
-/// CSV "output_frame,source_frame" with a header, one control point per line.
+/// The largest frame a warp CSV may name (output or source) and the most control points it may
+/// hold: a curve past them would design takes of gigabytes (an output frame of 1e9).
+inline constexpr double kWarpCsvMaxFrame = 1e6;
+inline constexpr std::size_t kWarpCsvMaxPoints = 1'000'001;
+
+/// CSV "output_frame,source_frame" with a header, one control point per line; written atomically.
 Status writeWarpCsv(const WarpCurve& curve, const std::filesystem::path& file);
-/// Parse errors name the file, line and what was expected; the curve is validated.
+/// Parses warp CSV text: an optional UTF-8 byte order mark, an optional header line exactly
+/// "output_frame,source_frame", then lines of exactly two numbers in [0, kWarpCsvMaxFrame] (blank
+/// lines skipped, nothing after a number). Parse errors name `sourceName`, the line and what was
+/// expected; the curve is validated (validateWarpCurve).
+Result<WarpCurve> parseWarpCsv(const std::string& text, const std::string& sourceName);
+/// parseWarpCsv of a file (a regular file of at most io::kDocumentLimitBytes).
 Result<WarpCurve> readWarpCsv(const std::filesystem::path& file);
 
 } // namespace bunraku::analysis

@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -18,6 +19,10 @@ enum class BvhChannel { Xposition, Yposition, Zposition, Xrotation, Yrotation, Z
 
 /// "Xposition" ... "Zrotation".
 const char* bvhChannelName(BvhChannel channel);
+/// True for the three position channels.
+bool isPositionChannel(BvhChannel channel);
+/// 0, 1, 2 for the channel's axis X, Y, Z.
+int channelAxis(BvhChannel channel);
 
 /// One ROOT/JOINT or End Site of the hierarchy.
 struct BvhJoint {
@@ -52,11 +57,24 @@ struct BvhFile {
     std::string source;
 };
 
+/// The longest frame time accepted (s): one frame an hour. Larger values (a corrupt
+/// `Frame Time: 1e308`) would give frame times that overflow.
+inline constexpr double kMaxBvhFrameTime = 3600.0;
+/// The largest BVH file read (bytes), checked before reading.
+inline constexpr std::uintmax_t kMaxBvhFileBytes = std::uintmax_t(2) << 30;
+
 /// Parses BVH text: ROOT/JOINT/End Site at any depth, OFFSET, CHANNELS with 0 to 6 channels
 /// in any order, MOTION with Frames and Frame Time. Tolerates CRLF, tabs, trailing spaces and
 /// scientific notation. Errors: "source:line: what was expected"; NaN/Inf are rejected.
+/// Linear in the size of the text, whatever the hierarchy's shape (40,000 sibling joints or a
+/// 10,000-deep chain), and the motion matrix is only allocated once the bytes left in the
+/// text can hold the rows `Frames` claims.
 Result<BvhFile> parseBvh(const std::string& text, const std::string& sourceName);
+/// Reads a regular file of at most kMaxBvhFileBytes (a pipe or device is refused) and parses it.
 Result<BvhFile> readBvh(const std::filesystem::path& file);
+/// The hierarchy and only the first `frames` motion rows (fewer when the file has fewer; what
+/// follows them is not read): enough to map the parts or preview the first pose of a big file.
+Result<BvhFile> readBvhStart(const std::filesystem::path& file, Eigen::Index frames = 1);
 
 /// How position channels of a joint combine with its OFFSET.
 enum class BvhPositionMode {

@@ -1,34 +1,22 @@
 #include "analysis/io/bvh_import.h"
 
 #include "analysis/core/puppet_layout.h"
+#include "analysis/core/skeleton_calibration.h"
+#include "analysis/core/skeleton_take.h"
 #include "analysis/io/atomic_file.h"
 #include "analysis/io/bvh_export.h"
+#include "analysis/io/bvh_joint_map.h"
 #include "analysis/io/text_scan.h"
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 
 namespace bunraku::analysis::io {
 
 namespace {
-
-/// Built-in maps, tried in order: Bandai Namco, Mixamo (prefixed and plain), CMU, Daz/Truebones,
-/// this workbench's own export.
-const std::vector<JointMap>& builtInMaps()
-{
-    static const std::vector<JointMap> maps{
-        JointMap{{"Head", "Chest", "LowerArm_R", "Hand_R"}},
-        JointMap{{"mixamorig:Head", "mixamorig:Spine2", "mixamorig:RightForeArm", "mixamorig:RightHand"}},
-        JointMap{{"Head", "Spine2", "RightForeArm", "RightHand"}},
-        JointMap{{"Head", "Spine1", "RightForeArm", "RightHand"}},
-        JointMap{{"Head", "Chest", "RightForeArm", "RightHand"}},
-        JointMap{{"head", "chest", "rForeArm", "rHand"}},
-        JointMap{{"head", "shoulder", "arm", "hand"}}, // bvh_export.h
-    };
-    return maps;
-}
 
 int partIndex(std::string_view part)
 {
@@ -37,42 +25,10 @@ int partIndex(std::string_view part)
     return -1;
 }
 
-std::string jointList(const BvhSkeleton& skeleton)
-{
-    std::string out;
-    for (const auto& joint : skeleton.joints) {
-        if (joint.endSite) continue;
-        if (!out.empty()) out += ", ";
-        out += joint.name;
-    }
-    return out;
-}
-
 RigidTransform toWorkbench(const RigidTransform& file_T_joint, const Eigen::Quaterniond& world_R_file, double scale)
 {
     return RigidTransform{(world_R_file * file_T_joint.rotation * world_R_file.conjugate()).normalized(),
                           world_R_file * (scale * file_T_joint.translation)};
-}
-
-/// Resolves the joint map (explicit parts over defaults) into joint indices.
-Result<std::array<int, 4>> resolveJoints(const BvhFile& file, const BvhImportOptions& options)
-{
-    const auto fallback = defaultJointMap(file.skeleton);
-    std::array<int, 4> indices{};
-    for (std::size_t p = 0; p < 4; ++p) {
-        std::string name = options.jointMap ? options.jointMap->joints[p] : std::string();
-        if (name.empty() && fallback) name = fallback->joints[p];
-        if (name.empty())
-            return makeError(ErrorCode::NotFound, file.source + ": no joint for the puppet part '" + std::string(kPuppetParts[p]) +
-                                                      "': the skeleton matches no built-in joint map; give --joints " +
-                                                      "head=...,shoulder=...,arm=...,hand=... (joints: " + jointList(file.skeleton) + ")");
-        const int index = file.skeleton.find(name);
-        if (index < 0)
-            return makeError(ErrorCode::NotFound, file.source + ": joint '" + name + "' (for part '" + std::string(kPuppetParts[p]) +
-                                                      "') is not in the skeleton (joints: " + jointList(file.skeleton) + ")");
-        indices[p] = index;
-    }
-    return indices;
 }
 
 Status checkOptions(const BvhFile& file, const BvhImportOptions& options)
@@ -81,6 +37,19 @@ Status checkOptions(const BvhFile& file, const BvhImportOptions& options)
         return makeError(ErrorCode::InvalidArgument, file.source + ": the unit scale must be a positive number");
     if (file.motion.values.rows() < 1) return makeError(ErrorCode::InvalidArgument, file.source + ": the BVH file has no frames");
     return okStatus();
+}
+
+/// A puppet take written by bvh_export.h: the root kBvhExportRootName and the four parts as
+/// its children.
+bool isWorkbenchExport(const BvhFile& file)
+{
+    const auto& joints = file.skeleton.joints;
+    if (joints.empty() || joints.front().name != kBvhExportRootName) return false;
+    for (const auto part : kPuppetParts) {
+        const int j = file.skeleton.find(std::string(part));
+        if (j < 0 || joints[std::size_t(j)].parent != 0) return false;
+    }
+    return true;
 }
 
 JointChannel toJointChannel(BvhChannel channel)
@@ -144,12 +113,9 @@ Result<JointMap> readJointMapJson(const std::filesystem::path& file, const Joint
 
 std::optional<JointMap> defaultJointMap(const BvhSkeleton& skeleton)
 {
-    for (const JointMap& map : builtInMaps()) {
-        bool all = true;
-        for (const auto& name : map.joints) all = all && skeleton.find(name) >= 0;
-        if (all) return map;
-    }
-    return std::nullopt;
+    auto map = mapPuppetParts(skeleton);
+    if (!map) return std::nullopt;
+    return map->names;
 }
 
 BvhUpAxis resolveUpAxis(const BvhFile& file, BvhUpAxis requested)
@@ -203,19 +169,72 @@ double bvhRateHz(double frameTime)
     return whole > 0.0 && std::fabs(rate - whole) <= 1e-4 * rate ? whole : rate;
 }
 
+BvhUnitsGuess guessBvhUnits(const BvhFile& file, BvhUpAxis upAxis)
+{
+    BvhUnitsGuess guess;
+    const BvhUpAxis up = resolveUpAxis(file, upAxis);
+    std::vector<Eigen::Vector3d> points;
+    if (file.motion.values.rows() > 0) {
+        for (const auto& pose : bvhWorldPoses(file, 0)) points.push_back(pose.translation);
+    } else {
+        for (std::size_t j = 0; j < file.skeleton.joints.size(); ++j) {
+            const int parent = file.skeleton.joints[j].parent;
+            points.push_back(file.skeleton.joints[j].offset + (parent >= 0 ? points[std::size_t(parent)] : Eigen::Vector3d::Zero()));
+        }
+    }
+    double low = 0.0, high = 0.0;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const double h = up == BvhUpAxis::Z ? points[i].z() : points[i].y();
+        low = i == 0 ? h : std::min(low, h);
+        high = i == 0 ? h : std::max(high, h);
+    }
+    guess.height = high - low;
+    const std::string height = detail::shortText(guess.height);
+    if (guess.height > 0.0 && guess.height < 5.0) {
+        guess.unit = "m";
+        guess.cmPerUnit = 100.0;
+        guess.note = "the joints span " + height + " units from top to bottom: metres";
+    } else if (guess.height >= 500.0 && guess.height < 5000.0) {
+        guess.unit = "mm";
+        guess.cmPerUnit = 0.1;
+        guess.note = "the joints span " + height + " units from top to bottom: millimetres";
+    } else {
+        guess.note = "the joints span " + height + " units from top to bottom: centimetres";
+        if (guess.height >= 40.0 && guess.height < 100.0) guess.note += " (or inches: give --units in)";
+    }
+    return guess;
+}
+
+double bvhUnitScale(const BvhFile& file, const BvhImportOptions& options)
+{
+    return options.guessUnits ? guessBvhUnits(file, options.upAxis).cmPerUnit : options.unitScale;
+}
+
 Result<std::shared_ptr<const SkeletalMotion>> bvhToSkeletalMotion(const BvhFile& file, const BvhImportOptions& options,
                                                                   const std::array<int, 4>* joints)
 {
     if (auto ok = checkOptions(file, options); !ok) return ok.error();
     const BvhUpAxis upAxis = resolveUpAxis(file, options.upAxis);
     const Eigen::Quaterniond world_R_file = bvhAxisChange(upAxis);
-    const double scale = options.unitScale;
+    const Eigen::Matrix3d C = world_R_file.toRotationMatrix();
+    const double scale = bvhUnitScale(file, options);
+    const std::size_t slots = file.skeleton.joints.size();
+    const Eigen::Index frames = file.motion.values.rows();
+    const Eigen::Index width = file.motion.values.cols();
+    // Memory follows the file's content, not its claims: the motion (a quaternion per joint
+    // and frame) may take at most 8 times the channel data, plus 256 MB.
+    const double bytes = double(frames) * double(slots) * double(sizeof(Eigen::Quaterniond) + sizeof(Eigen::Vector3d));
+    if (bytes > 8.0 * double(frames) * double(std::max<Eigen::Index>(width, 1)) * 8.0 + 256e6)
+        return makeError(ErrorCode::InvalidArgument,
+                         file.source + ": " + std::to_string(slots) + " joints for " + std::to_string(width) + " channels over " +
+                             std::to_string(frames) + " frames: the motion would take " + detail::shortText(bytes / 1e6) +
+                             " MB (expected at most 8 times the channel data)");
+
     auto skeleton = std::make_shared<Skeleton>();
     skeleton->name = std::filesystem::path(file.source).stem().string();
     skeleton->source = SourceFrame{world_R_file, scale, upAxis == BvhUpAxis::Z ? "z" : "y"};
     skeleton->positionMode = options.kinematics.positionMode == BvhPositionMode::ReplaceOffset ? PositionChannelMode::ReplaceOffset
                                                                                                : PositionChannelMode::AddToOffset;
-    const std::size_t slots = file.skeleton.joints.size();
     skeleton->joints.reserve(slots);
     for (const BvhJoint& joint : file.skeleton.joints) {
         SkeletonJoint out;
@@ -226,68 +245,107 @@ Result<std::shared_ptr<const SkeletalMotion>> bvhToSkeletalMotion(const BvhFile&
         for (const BvhChannel c : joint.channels) out.channels.push_back(toJointChannel(c));
         skeleton->joints.push_back(std::move(out));
     }
-    if (joints)
-        for (std::size_t p = 0; p < 4; ++p) skeleton->parts.push_back(PartBinding{std::string(kPuppetParts[p]), (*joints)[p], {}});
     if (auto valid = validateSkeleton(*skeleton); !valid) return makeError(valid.error().code, file.source + ": " + valid.error().message);
 
-    const Eigen::Index frames = file.motion.values.rows();
-    auto motion = std::make_shared<SkeletalMotion>(makeRestMotion(skeleton, frames));
-    // Local translations of every frame first, to tell moving joints from static ones.
-    std::vector<Eigen::Vector3d> translations(std::size_t(frames) * slots);
-    for (Eigen::Index f = 0; f < frames; ++f) {
-        const auto local = bvhLocalPoses(file, f, options.kinematics);
-        for (std::size_t j = 0; j < slots; ++j) {
-            const RigidTransform pose = toWorkbench(local[j], world_R_file, scale);
-            motion->rotation(f, int(j)) = pose.rotation;
-            translations[std::size_t(f) * slots + j] = pose.translation;
-        }
-    }
+    // A joint moves when one of its position channels changes over the take.
+    auto motion = std::make_shared<SkeletalMotion>();
+    motion->skeleton = skeleton;
+    motion->staticTranslations.resize(slots);
     for (std::size_t j = 0; j < slots; ++j) {
-        const Eigen::Vector3d first = frames > 0 ? translations[j] : skeleton->joints[j].offset;
+        const BvhJoint& joint = file.skeleton.joints[j];
         bool moving = false;
-        for (Eigen::Index f = 1; f < frames && !moving; ++f) moving = translations[std::size_t(f) * slots + j] != first;
-        motion->staticTranslations[j] = first;
+        for (std::size_t k = 0; k < joint.channels.size() && !moving; ++k) {
+            if (!isPositionChannel(joint.channels[k])) continue;
+            const auto column = file.motion.values.col(joint.firstChannel + Eigen::Index(k));
+            moving = (column.array() != column(0)).any();
+        }
         if (moving) motion->movingJoints.push_back(int(j));
     }
+    motion->rotations.resize(std::size_t(frames) * slots);
     motion->movingTranslations.resize(frames, Eigen::Index(3 * motion->movingJoints.size()));
-    for (std::size_t k = 0; k < motion->movingJoints.size(); ++k)
-        for (Eigen::Index f = 0; f < frames; ++f)
-            motion->movingTranslations.block<1, 3>(f, Eigen::Index(3 * k)) =
-                translations[std::size_t(f) * slots + std::size_t(motion->movingJoints[k])].transpose();
+    std::vector<int> movingSlot(slots, -1);
+    for (std::size_t k = 0; k < motion->movingJoints.size(); ++k) movingSlot[std::size_t(motion->movingJoints[k])] = int(k);
+
+    const bool replace = options.kinematics.positionMode == BvhPositionMode::ReplaceOffset;
+    const Eigen::Quaterniond file_R_world = world_R_file.conjugate();
+    // Joint by joint: each joint's channels are contiguous columns of the (column-major) matrix.
+    struct ChannelUse {
+        const double* column;
+        int axis;
+        bool position;
+    };
+    std::vector<ChannelUse> uses;
+    for (std::size_t j = 0; j < slots; ++j) {
+        const BvhJoint& joint = file.skeleton.joints[j];
+        uses.clear();
+        for (std::size_t k = 0; k < joint.channels.size(); ++k)
+            uses.push_back({file.motion.values.col(joint.firstChannel + Eigen::Index(k)).data(), channelAxis(joint.channels[k]),
+                            isPositionChannel(joint.channels[k])});
+        const bool moving = movingSlot[j] >= 0;
+        Eigen::Quaterniond* rotations = motion->rotations.data() + j;
+        for (Eigen::Index f = 0; f < frames; ++f) {
+            Eigen::Vector3d translation = joint.offset;
+            Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();
+            for (const ChannelUse& use : uses) {
+                const double value = use.column[f];
+                if (use.position) {
+                    translation[use.axis] = replace ? value : translation[use.axis] + value;
+                } else {
+                    const double half = 0.5 * value * M_PI / 180.0;
+                    Eigen::Quaterniond step(std::cos(half), 0.0, 0.0, 0.0);
+                    step.vec()[use.axis] = std::sin(half);
+                    rotation = rotation * step;
+                }
+            }
+            rotations[std::size_t(f) * slots] = (world_R_file * rotation * file_R_world).normalized();
+            if (moving) motion->movingTranslations.block<1, 3>(f, 3 * movingSlot[j]) = (C * (scale * translation)).transpose();
+            else if (f == 0) motion->staticTranslations[j] = C * (scale * translation);
+        }
+    }
     if (auto valid = validateSkeletalMotion(*motion); !valid)
         return makeError(ErrorCode::Numerical, file.source + ": the poses overflow (values too large?): " + valid.error().message);
+    if (joints && isWorkbenchExport(file)) {
+        // This workbench's own export: its joints are the puppet's part frames already.
+        for (std::size_t p = 0; p < 4; ++p) skeleton->parts.push_back(PartBinding{std::string(kPuppetParts[p]), (*joints)[p], {}});
+    } else if (joints) {
+        CalibrationOptions calibration;
+        calibration.side = options.side;
+        calibration.referenceFrame = std::clamp<Eigen::Index>(options.calibrationFrame, 0, std::max<Eigen::Index>(frames - 1, 0));
+        auto bindings = calibratePartBindings(*motion, *joints, calibration);
+        if (!bindings) return makeError(bindings.error().code, file.source + ": " + bindings.error().message);
+        skeleton->parts = std::move(bindings).value();
+    }
     return std::shared_ptr<const SkeletalMotion>(std::move(motion));
+}
+
+Result<BvhPuppetImport> importBvhPuppet(const BvhFile& file, const BvhImportOptions& options)
+{
+    if (auto ok = checkOptions(file, options); !ok) return ok.error();
+    std::optional<JointMap> given = options.jointMap;
+    if (!given && isWorkbenchExport(file)) given = JointMap{{"head", "shoulder", "arm", "hand"}};
+    auto map = mapPuppetParts(file, given, PartMapOptions{options.side}, options);
+    if (!map) return map.error();
+    auto motion = bvhToSkeletalMotion(file, options, &map->joints);
+    if (!motion) return motion.error();
+    TakeLabels labels = options.labels;
+    if (labels.source.empty()) labels.source = file.source;
+    auto take = puppetTakeFromSkeleton(*motion, bvhRateHz(file.motion.frameTime), labels);
+    if (!take) return makeError(take.error().code, file.source + ": " + take.error().message);
+    return BvhPuppetImport{std::move(take).value(), std::make_shared<const PartMap>(std::move(map).value()),
+                           bvhUnitScale(file, options), resolveUpAxis(file, options.upAxis)};
 }
 
 Result<Take> bvhToPuppetTake(const BvhFile& file, const BvhImportOptions& options)
 {
-    if (auto ok = checkOptions(file, options); !ok) return ok.error();
-    auto joints = resolveJoints(file, options);
-    if (!joints) return joints.error();
-    const BvhUpAxis upAxis = resolveUpAxis(file, options.upAxis);
-    Take take;
-    take.channels = puppetChannels();
-    take.rateHz = bvhRateHz(file.motion.frameTime);
-    take.values = Eigen::MatrixXd::Zero(file.motion.values.rows(), kPuppetChannelCount);
-    take.labels = options.labels;
-    if (take.labels.source.empty()) take.labels.source = file.source;
-    for (Eigen::Index f = 0; f < take.frameCount(); ++f) {
-        const auto poses = bvhWorkbenchPoses(file, f, upAxis, options.unitScale, options.kinematics);
-        for (int p = 0; p < kPuppetPartCount; ++p)
-            setPartPose(take, f, Eigen::Index(p) * kDofCount, poses[std::size_t((*joints)[std::size_t(p)])]);
-    }
-    auto skeleton = bvhToSkeletalMotion(file, options, &*joints);
-    if (!skeleton) return skeleton.error();
-    take.skeleton = *skeleton;
-    if (auto valid = validateTake(take); !valid)
-        return makeError(ErrorCode::Numerical, file.source + ": the poses overflow (values too large?): " + valid.error().message);
-    return take;
+    auto imported = importBvhPuppet(file, options);
+    if (!imported) return imported.error();
+    return std::move(imported->take);
 }
 
 Result<Take> bvhToJointTake(const BvhFile& file, const BvhImportOptions& options)
 {
-    if (auto ok = checkOptions(file, options); !ok) return ok.error();
-    const BvhUpAxis upAxis = resolveUpAxis(file, options.upAxis);
+    auto motion = bvhToSkeletalMotion(file, options);
+    if (!motion) return motion.error();
     std::vector<std::size_t> kept;
     Take take;
     for (std::size_t j = 0; j < file.skeleton.joints.size(); ++j) {
@@ -300,12 +358,10 @@ Result<Take> bvhToJointTake(const BvhFile& file, const BvhImportOptions& options
     take.labels = options.labels;
     if (take.labels.source.empty()) take.labels.source = file.source;
     for (Eigen::Index f = 0; f < take.frameCount(); ++f) {
-        const auto poses = bvhWorkbenchPoses(file, f, upAxis, options.unitScale, options.kinematics);
+        const auto poses = (*motion)->worldPoses(f);
         for (std::size_t k = 0; k < kept.size(); ++k) setPartPose(take, f, Eigen::Index(k) * kDofCount, poses[kept[k]]);
     }
-    auto skeleton = bvhToSkeletalMotion(file, options);
-    if (!skeleton) return skeleton.error();
-    take.skeleton = *skeleton;
+    take.skeleton = *motion;
     if (auto valid = validateTake(take); !valid)
         return makeError(ErrorCode::Numerical, file.source + ": the poses overflow (values too large?): " + valid.error().message);
     return take;

@@ -4,6 +4,7 @@
 /// (right-handed, z up, x towards the partner = the performer's forward, cm). docs/FORMATS.md.
 
 #include "analysis/core/skeleton.h"
+#include "analysis/core/skeleton_anatomy.h"
 #include "analysis/core/take.h"
 #include "analysis/io/bvh.h"
 
@@ -25,7 +26,8 @@ struct JointMap {
 Result<JointMap> parseJointMap(const std::string& text, const JointMap& base = {});
 /// Reads a JSON joint map: {"head": "Head", "shoulder": "Chest", "arm": "...", "hand": "..."}.
 Result<JointMap> readJointMapJson(const std::filesystem::path& file, const JointMap& base = {});
-/// The first built-in map (Bandai, CMU, Mixamo, generic) whose 4 joints all exist.
+/// The automatic part map of the skeleton (bvh_joint_map.h: names, then topology; right side;
+/// the rest pose's geometry), or nullopt when it finds no joint for some part.
 std::optional<JointMap> defaultJointMap(const BvhSkeleton& skeleton);
 
 /// The file's up axis. Y up: the performer faces +Z (the BVH custom). Z up: the file is taken
@@ -33,14 +35,35 @@ std::optional<JointMap> defaultJointMap(const BvhSkeleton& skeleton);
 enum class BvhUpAxis { Auto, Y, Z };
 
 struct BvhImportOptions {
-    /// When unset, defaultJointMap is used; parts left empty are filled from it too.
+    /// Parts named here take these joints; the others (all, when unset) come from the automatic
+    /// part map (bvh_joint_map.h).
     std::optional<JointMap> jointMap;
     BvhUpAxis upAxis = BvhUpAxis::Auto;
     /// Centimetres per file unit (1 for cm, 100 for metres, 2.54 for inches).
     double unitScale = 1.0;
+    /// When true, unitScale is replaced by guessBvhUnits' choice (metres, millimetres or cm).
+    bool guessUnits = false;
     BvhKinematicsOptions kinematics;
     TakeLabels labels;
+    /// The limbs the puppet's arm and hand follow (`--side left`).
+    BodySide side = BodySide::Right;
+    /// The frame whose pose calibrates the part frames (skeleton_calibration.h).
+    Eigen::Index calibrationFrame = 0;
 };
+
+/// What the skeleton's size says about the file's length unit.
+struct BvhUnitsGuess {
+    std::string unit = "cm";  ///< "m", "mm" or "cm"
+    double cmPerUnit = 1.0;   ///< 100, 0.1 or 1
+    double height = 0.0;      ///< the joints' extent along the up axis at the first frame, file units
+    std::string note;         ///< why, for reports
+};
+/// A performer's joints span about 1.2-2 m standing: an extent below 5 units is metres, from
+/// 500 to 5000 millimetres, anything else centimetres (inches, 40-100 units, are only noted:
+/// a small skeleton in cm spans as much).
+BvhUnitsGuess guessBvhUnits(const BvhFile& file, BvhUpAxis upAxis = BvhUpAxis::Auto);
+/// The unit scale an import with `options` uses (guessBvhUnits when guessUnits is set).
+double bvhUnitScale(const BvhFile& file, const BvhImportOptions& options);
 
 /// The up axis actually used: Auto picks Z when the joints of the first frame (or of the rest
 /// pose without frames) spread further along Z than along Y, else Y.
@@ -60,12 +83,27 @@ double bvhRateHz(double frameTime);
 
 /// The file's whole skeleton and motion in workbench axes and cm (analysis/core/skeleton.h):
 /// offsets and local poses re-expressed as C * file_T_joint * C^-1 with scaled translations,
-/// the source's channels and axes kept for writing it back. `parts` binds the puppet parts of
-/// `joints` (when given) with the identity calibration.
+/// the source's channels and axes kept for writing it back. When `joints` is given the puppet
+/// parts are bound to those joints with the anatomical calibration of
+/// analysis/core/skeleton_calibration.h (reference frame and side from `options`).
 Result<std::shared_ptr<const SkeletalMotion>> bvhToSkeletalMotion(const BvhFile& file, const BvhImportOptions& options = {},
                                                                   const std::array<int, 4>* joints = nullptr);
 
-/// The 24-channel puppet take (head.x ... hand.roll), angles continuous, rate 1/Frame Time.
+struct PartMap; // bvh_joint_map.h
+
+/// A puppet take read from a BVH file and what the import decided.
+struct BvhPuppetImport {
+    Take take;
+    std::shared_ptr<const PartMap> map; ///< the joints of the four parts and how they were found
+    double cmPerUnit = 1.0;             ///< the unit scale used
+    BvhUpAxis upAxis = BvhUpAxis::Y;    ///< the up axis used
+};
+/// bvhToPuppetTake with the decisions it made, for reports.
+Result<BvhPuppetImport> importBvhPuppet(const BvhFile& file, const BvhImportOptions& options = {});
+
+/// The 24-channel puppet take (head.x ... hand.roll), angles continuous, rate 1/Frame Time:
+/// each part the calibrated frame of its joint (skeleton_calibration.h), the joints chosen by
+/// the part map (options.jointMap, then the automatic map), the skeleton kept with the take.
 Result<Take> bvhToPuppetTake(const BvhFile& file, const BvhImportOptions& options = {});
 /// One 6-DOF part per joint (End Sites excluded), named as in the file, angles continuous.
 Result<Take> bvhToJointTake(const BvhFile& file, const BvhImportOptions& options = {});

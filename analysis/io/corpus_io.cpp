@@ -1,6 +1,8 @@
 #include "analysis/io/corpus_io.h"
 
 #include "analysis/io/atomic_file.h"
+#include "analysis/io/skeleton_io.h"
+#include "analysis/io/staged_folder.h"
 #include "analysis/io/text_format.h"
 #include "analysis/io/text_scan.h"
 
@@ -62,6 +64,20 @@ Result<double> numberField(const ManifestReader& reader, const json& object, con
     return value;
 }
 
+/// A plain file name inside the corpus folder, or an error.
+Result<fs::path> fileInFolder(const ManifestReader& reader, const std::string& where, const char* key, const std::string& name,
+                              const fs::path& folder)
+{
+    const fs::path relative(name);
+    const bool climbs = std::any_of(relative.begin(), relative.end(), [](const fs::path& part) { return part == ".."; });
+    if (relative.empty() || relative.is_absolute() || name.front() == '.' || climbs)
+        return reader.error(where, std::string("\"") + key + "\" must be a file name inside the corpus folder, found \"" + name + "\"");
+    std::error_code ec;
+    if (!fs::is_regular_file(folder / relative, ec))
+        return reader.error(where, std::string("\"") + key + "\": no such file \"" + name + "\" in " + folder.string());
+    return folder / relative;
+}
+
 json manifestOf(const Corpus& corpus, const std::vector<std::string>& files)
 {
     json channels = json::array();
@@ -75,6 +91,11 @@ json manifestOf(const Corpus& corpus, const std::vector<std::string>& files)
                       {"take", take.labels.takeIndex},
                       {"file", files[i]},
                       {"frames", take.frameCount()}};
+        if (take.skeleton) { // skeleton_io.h: beside the take's CSV
+            const std::string stem = files[i].substr(0, files[i].size() - 4);
+            entry["skeleton"] = stem + ".skeleton.json";
+            entry["motion"] = stem + ".motion.csv";
+        }
         if (!take.labels.source.empty()) entry["source"] = take.labels.source;
         takes.push_back(entry);
     }
@@ -94,23 +115,20 @@ json manifestOf(const Corpus& corpus, const std::vector<std::string>& files)
 bool isCorpusFolder(const fs::path& folder)
 {
     std::error_code ec;
-    return fs::is_directory(folder, ec) && fs::is_regular_file(folder / "corpus.json", ec);
+    // Any corpus.json counts: reading it then says what is wrong (a folder, a device, a FIFO).
+    return fs::is_directory(folder, ec) && fs::exists(fs::symlink_status(folder / "corpus.json", ec));
 }
 
-Result<Corpus> readCorpus(const fs::path& folder)
+Result<CorpusManifest> parseCorpusManifest(const std::string& text, const std::string& sourceName)
 {
-    std::error_code ec;
-    if (!fs::is_directory(folder, ec)) return makeError(ErrorCode::NotFound, folder.string() + ": no such corpus folder");
-    const fs::path manifestPath = folder / "corpus.json";
-    auto text = readTextFile(manifestPath);
-    if (!text) return text.error();
-    const ManifestReader reader{manifestPath.string()};
-
+    const ManifestReader reader{sourceName};
     json manifest;
     try {
-        manifest = json::parse(*text);
+        manifest = json::parse(text);
     } catch (const json::parse_error& e) {
-        return parseError(reader.file, lineOfOffset(*text, e.byte), std::string("invalid JSON: ") + e.what());
+        return parseError(reader.file, lineOfOffset(text, e.byte), std::string("invalid JSON: ") + e.what());
+    } catch (const json::exception& e) { // a number out of range (1e400) and the like
+        return parseError(reader.file, 0, std::string("invalid JSON: ") + e.what());
     }
     if (!manifest.is_object()) return reader.error("top level", "expected a JSON object");
     auto format = stringField(reader, manifest, "format", "top level");
@@ -123,26 +141,25 @@ Result<Corpus> readCorpus(const fs::path& folder)
         return makeError(ErrorCode::Unsupported, reader.file + ": corpus format version " + nlohmann::json(*version).dump() +
                                                      " is not supported (expected " + std::to_string(kCorpusFormatVersion) + ")");
 
-    Corpus corpus;
+    CorpusManifest result;
     auto name = stringField(reader, manifest, "name", "top level", false);
     if (!name) return name.error();
-    corpus.name = *name;
+    result.name = *name;
     auto rate = numberField(reader, manifest, "rate_hz", "top level");
     if (!rate) return rate.error();
     if (!plausibleRate(*rate)) return reader.error("\"rate_hz\"", rateExpectation());
-    corpus.rateHz = *rate;
+    result.rateHz = *rate;
     if (manifest.contains("convention")) {
         auto convention = stringField(reader, manifest, "convention", "top level");
         if (!convention) return convention.error();
-        corpus.convention = *convention;
+        result.convention = *convention;
     }
     if (manifest.contains("neutral_emotion")) {
         auto neutral = stringField(reader, manifest, "neutral_emotion", "top level");
         if (!neutral) return neutral.error();
-        corpus.neutralEmotion = *neutral;
+        result.neutralEmotion = *neutral;
     }
 
-    std::vector<Channel> channels;
     const auto channelsIt = manifest.find("channels");
     if (channelsIt == manifest.end() || !channelsIt->is_array())
         return reader.error("top level", "missing \"channels\" (an array)");
@@ -156,7 +173,7 @@ Result<Corpus> readCorpus(const fs::path& folder)
         if (!dof) return dof.error();
         auto unit = stringField(reader, entry, "unit", where, false);
         if (!unit) return unit.error();
-        channels.push_back(Channel{*part, *dof, *unit});
+        result.channels.push_back(Channel{*part, *dof, *unit});
     }
 
     const auto takesIt = manifest.find("takes");
@@ -165,8 +182,7 @@ Result<Corpus> readCorpus(const fs::path& folder)
         const json& entry = (*takesIt)[i];
         const std::string where = "takes[" + std::to_string(i) + "]";
         if (!entry.is_object()) return reader.error(where, "expected an object {function, emotion, take, file, frames}");
-        TakeCsvOptions options;
-        options.rateHz = corpus.rateHz;
+        CorpusManifest::Entry item;
         auto function = stringField(reader, entry, "function", where);
         if (!function) return function.error();
         auto emotion = stringField(reader, entry, "emotion", where);
@@ -181,14 +197,64 @@ Result<Corpus> readCorpus(const fs::path& folder)
         const bool climbs = std::any_of(relative.begin(), relative.end(), [](const fs::path& part) { return part == ".."; });
         if (relative.empty() || relative.is_absolute() || *file.value().begin() == '.' || climbs)
             return reader.error(where, "\"file\" must be a file name inside the corpus folder, found \"" + *file + "\"");
-        if (!fs::is_regular_file(folder / relative, ec))
-            return reader.error(where, "\"file\": no such take file \"" + *file + "\" in " + folder.string());
         if (*index != std::floor(*index) || *index < 0.0 || *index > 1e9)
             return reader.error(where, "\"take\" must be a whole number from 0 (unknown) upwards");
-        options.labels = TakeLabels{*function, *emotion, int(*index), *source};
+        item.labels = TakeLabels{*function, *emotion, int(*index), *source};
+        item.file = *file;
+        if (entry.contains("frames")) {
+            auto frames = numberField(reader, entry, "frames", where);
+            if (!frames) return frames.error();
+            if (*frames != std::floor(*frames) || *frames < 1.0 || *frames > double(kMaxCorpusTakeFrames))
+                return reader.error(where, "\"frames\" must be a whole number from 1 to " + std::to_string(kMaxCorpusTakeFrames));
+            item.frames = Eigen::Index(*frames);
+        }
+        if (entry.contains("skeleton") || entry.contains("motion")) { // skeleton_io.h: both or neither
+            for (const char* key : {"skeleton", "motion"}) {
+                auto named = stringField(reader, entry, key, where);
+                if (!named) return named.error();
+                const fs::path path(*named);
+                const bool out = std::any_of(path.begin(), path.end(), [](const fs::path& part) { return part == ".."; });
+                if (path.empty() || path.is_absolute() || named->front() == '.' || out)
+                    return reader.error(where, std::string("\"") + key + "\" must be a file name inside the corpus folder, found \"" + *named + "\"");
+                (std::string(key) == "skeleton" ? item.skeleton : item.motion) = *named;
+            }
+        }
+        result.takes.push_back(std::move(item));
+    }
+    if (result.takes.empty()) return reader.error("\"takes\"", "expected at least one take");
+    return result;
+}
+
+Result<Corpus> readCorpus(const fs::path& folder)
+{
+    std::error_code ec;
+    if (!fs::is_directory(folder, ec)) return makeError(ErrorCode::NotFound, folder.string() + ": no such corpus folder");
+    const fs::path manifestPath = folder / "corpus.json";
+    auto text = readTextFile(manifestPath, kDocumentLimitBytes);
+    if (!text) return text.error();
+    auto manifest = parseCorpusManifest(*text, manifestPath.string());
+    if (!manifest) return manifest.error();
+    const ManifestReader reader{manifestPath.string()};
+
+    Corpus corpus;
+    corpus.name = manifest->name;
+    corpus.rateHz = manifest->rateHz;
+    corpus.convention = manifest->convention;
+    corpus.neutralEmotion = manifest->neutralEmotion;
+    const std::vector<Channel>& channels = manifest->channels;
+    for (std::size_t i = 0; i < manifest->takes.size(); ++i) {
+        const CorpusManifest::Entry& entry = manifest->takes[i];
+        const std::string where = "takes[" + std::to_string(i) + "]";
+        const fs::path relative(entry.file);
+        if (!fs::is_regular_file(folder / relative, ec))
+            return reader.error(where, "\"file\": no such take file \"" + entry.file + "\" in " + folder.string());
+        TakeCsvOptions options;
+        options.rateHz = corpus.rateHz;
+        options.timeMustMatchRate = true; // a 10 Hz take in a 5 Hz corpus is an error, not a silent resampling
+        options.labels = entry.labels;
         auto take = readTakeCsv(folder / relative, options);
         if (!take) return take.error();
-        if (source->empty()) take->labels.source = *file;
+        if (entry.labels.source.empty()) take->labels.source = entry.file;
         if (take->channels.size() != channels.size())
             return makeError(ErrorCode::Parse, (folder / relative).string() + ": " + std::to_string(take->channels.size()) +
                                                    " channels, but corpus.json lists " + std::to_string(channels.size()));
@@ -199,54 +265,34 @@ Result<Corpus> readCorpus(const fs::path& folder)
                                                        channels[c].name());
             take->channels[c].unit = channels[c].unit;
         }
-        if (entry.contains("frames")) {
-            auto frames = numberField(reader, entry, "frames", where);
-            if (!frames) return frames.error();
-            if (*frames != double(take->frameCount()))
+        if (entry.frames && *entry.frames != take->frameCount())
+            return makeError(ErrorCode::Parse, (folder / relative).string() + ": " + std::to_string(take->frameCount()) +
+                                                   " frames, but corpus.json says " + std::to_string(*entry.frames));
+        if (!entry.skeleton.empty()) {
+            auto skeletonFile = fileInFolder(reader, where, "skeleton", entry.skeleton, folder);
+            if (!skeletonFile) return skeletonFile.error();
+            auto motionFile = fileInFolder(reader, where, "motion", entry.motion, folder);
+            if (!motionFile) return motionFile.error();
+            auto skeleton = readSkeletalMotion(*skeletonFile, *motionFile, corpus.rateHz);
+            if (!skeleton) return skeleton.error();
+            if ((**skeleton).frameCount() != take->frameCount())
                 return makeError(ErrorCode::Parse, (folder / relative).string() + ": " + std::to_string(take->frameCount()) +
-                                                       " frames, but corpus.json says " + nlohmann::json(*frames).dump());
+                                                       " frames, but its skeleton's motion has " + std::to_string((**skeleton).frameCount()));
+            take->skeleton = *skeleton;
         }
         corpus.takes.push_back(std::move(*take));
     }
-    if (corpus.takes.empty()) return reader.error("\"takes\"", "expected at least one take");
     if (auto valid = validateCorpus(corpus); !valid)
         return makeError(valid.error().code, folder.string() + ": " + valid.error().message);
     return corpus;
 }
 
-Status writeCorpus(const Corpus& corpus, const fs::path& folder)
+Status writeCorpusFiles(const Corpus& corpus, StagedFolder& folder)
 {
-    if (corpus.takes.empty()) return makeError(ErrorCode::InvalidArgument, folder.string() + ": the corpus has no takes");
+    const fs::path& shown = folder.target();
+    if (corpus.takes.empty()) return makeError(ErrorCode::InvalidArgument, shown.string() + ": the corpus has no takes");
     if (auto valid = validateCorpus(corpus); !valid)
-        return makeError(valid.error().code, folder.string() + ": " + valid.error().message);
-
-    std::error_code ec;
-    const fs::path target = fs::absolute(folder, ec).lexically_normal();
-    fs::path parent = target.parent_path();
-    std::string leaf = target.filename().string();
-    if (leaf.empty()) { // "out/" normalises to "out/" with an empty filename
-        leaf = target.parent_path().filename().string();
-        parent = target.parent_path().parent_path();
-    }
-    const fs::path destination = parent / leaf;
-    if (fs::exists(destination, ec)) {
-        if (!fs::is_directory(destination, ec))
-            return makeError(ErrorCode::Io, destination.string() + ": exists and is not a folder");
-        if (!fs::is_empty(destination, ec) && !isCorpusFolder(destination))
-            return makeError(ErrorCode::Io, destination.string() + ": refusing to replace a non-empty folder that is not a corpus");
-    }
-    fs::create_directories(parent, ec);
-    if (ec) return makeError(ErrorCode::Io, parent.string() + ": cannot create folder: " + ec.message());
-
-    const fs::path temp = parent / temporarySiblingName(leaf, ".tmp-");
-    fs::create_directory(temp, ec);
-    if (ec) return makeError(ErrorCode::Io, destination.string() + ": cannot create a temporary folder beside it: " + ec.message());
-    const auto fail = [&](Error error) -> Status {
-        std::error_code ignored;
-        fs::remove_all(temp, ignored);
-        return error;
-    };
-
+        return makeError(valid.error().code, shown.string() + ": " + valid.error().message);
     std::vector<std::string> files;
     std::set<std::string> used;
     for (const Take& take : corpus.takes) {
@@ -256,25 +302,27 @@ Status writeCorpus(const Corpus& corpus, const fs::path& folder)
         for (int n = 2; used.count(name) != 0; ++n) name = base + "-" + std::to_string(n) + ".csv";
         used.insert(name);
         files.push_back(name);
-        if (auto written = writeTakeCsv(take, temp / name); !written) return fail(written.error());
+        if (auto written = folder.writeFile(name, formatTakeCsv(take)); !written) return written;
+        if (take.skeleton) { // skeleton_io.h: beside the take's CSV, named as manifestOf names them
+            const std::string stem = name.substr(0, name.size() - 4);
+            auto texts = formatSkeletalMotion(*take.skeleton, take.rateHz);
+            if (!texts) return makeError(texts.error().code, (shown / name).string() + ": " + texts.error().message);
+            if (auto written = folder.writeFile(stem + ".skeleton.json", texts->first); !written) return written;
+            if (auto written = folder.writeFile(stem + ".motion.csv", texts->second); !written) return written;
+        }
     }
-    if (auto written = writeFileAtomically(temp / "corpus.json", manifestOf(corpus, files).dump(2) + "\n"); !written)
-        return fail(written.error());
+    return folder.writeFile("corpus.json", manifestOf(corpus, files).dump(2, ' ', false, json::error_handler_t::replace) + "\n");
+}
 
-    const fs::path old = parent / temporarySiblingName(leaf, ".old-");
-    const bool hadOld = fs::exists(destination, ec);
-    if (hadOld) {
-        fs::rename(destination, old, ec);
-        if (ec) return fail(makeError(ErrorCode::Io, destination.string() + ": cannot move the old corpus aside: " + ec.message()));
-    }
-    fs::rename(temp, destination, ec);
-    if (ec) {
-        std::error_code ignored;
-        if (hadOld) fs::rename(old, destination, ignored);
-        return fail(makeError(ErrorCode::Io, destination.string() + ": cannot move the new corpus in place: " + ec.message()));
-    }
-    if (hadOld) fs::remove_all(old, ec);
-    return okStatus();
+Status writeCorpus(const Corpus& corpus, const fs::path& folder)
+{
+    if (corpus.takes.empty()) return makeError(ErrorCode::InvalidArgument, folder.string() + ": the corpus has no takes");
+    if (auto valid = validateCorpus(corpus); !valid)
+        return makeError(valid.error().code, folder.string() + ": " + valid.error().message);
+    auto staged = StagedFolder::begin(folder);
+    if (!staged) return staged.error();
+    if (auto written = writeCorpusFiles(corpus, *staged); !written) return written;
+    return staged->commit();
 }
 
 } // namespace bunraku::analysis::io

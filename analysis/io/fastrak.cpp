@@ -83,6 +83,11 @@ Result<Take> parseFastrak(const std::string& text, const std::string& sourceName
                                              (parsed.status == detail::NumberStatus::NonFinite ? "non-finite value " : "expected a number, found ") +
                                              detail::quoted(tokens[i + 1]));
             v[i] = parsed.value;
+            const double limit = i < 3 ? valueLimit("cm") / scale : valueLimit("deg");
+            if (std::fabs(v[i]) > limit)
+                return parseError(sourceName, line.number, std::string("field ") + names[i] + ": " + detail::quoted(tokens[i + 1]) +
+                                                               " is beyond +-" + detail::shortText(limit) +
+                                                               (i < 3 ? (scale == 1.0 ? " cm" : " in") : " deg"));
         }
         int part = -1;
         for (std::size_t p = 0; p < 4; ++p)

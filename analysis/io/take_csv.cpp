@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <set>
 
 namespace bunraku::analysis::io {
@@ -23,12 +24,99 @@ std::string unitForDof(std::string_view dof)
 
 char detectSeparator(std::string_view header)
 {
-    const auto count = [&](char c) { return std::count(header.begin(), header.end(), c); };
-    const long commas = count(','), semicolons = count(';'), tabs = count('\t');
+    // Separators inside double quotes (a quoted channel name) do not count.
+    long commas = 0, semicolons = 0, tabs = 0;
+    bool quoted = false;
+    for (const char c : header) {
+        if (c == '"') quoted = !quoted;
+        else if (!quoted) {
+            commas += c == ',';
+            semicolons += c == ';';
+            tabs += c == '\t';
+        }
+    }
     if (commas == 0 && semicolons == 0 && tabs == 0) return ' ';
     if (commas >= semicolons && commas >= tabs) return ',';
     return semicolons >= tabs ? ';' : '\t';
 }
+
+/// The header's names: fields split at the separator, a field in double quotes taken literally
+/// ("" inside is one quote, RFC 4180). nullopt with `problem` set for an unterminated quote or
+/// text after a closing quote.
+std::optional<std::vector<std::string>> headerFields(std::string_view line, char separator, std::string& problem)
+{
+    std::vector<std::string> fields;
+    if (separator == ' ' && line.find('"') == std::string_view::npos) {
+        for (const auto token : detail::splitWhitespace(line)) fields.emplace_back(token);
+        return fields;
+    }
+    const auto isSeparator = [&](char c) { return separator == ' ' ? (c == ' ' || c == '\t') : c == separator; };
+    std::size_t i = 0;
+    while (true) {
+        while (i < line.size() && (line[i] == ' ' || line[i] == '\t') && !isSeparator(line[i])) ++i;
+        if (separator == ' ') while (i < line.size() && isSeparator(line[i])) ++i;
+        std::string field;
+        if (i < line.size() && line[i] == '"') {
+            ++i;
+            bool closed = false;
+            while (i < line.size()) {
+                if (line[i] == '"') {
+                    if (i + 1 < line.size() && line[i + 1] == '"') {
+                        field += '"';
+                        i += 2;
+                        continue;
+                    }
+                    ++i;
+                    closed = true;
+                    break;
+                }
+                field += line[i++];
+            }
+            if (!closed) {
+                problem = "a quoted name is not closed";
+                return std::nullopt;
+            }
+            while (i < line.size() && (line[i] == ' ' || line[i] == '\t') && !isSeparator(line[i])) ++i;
+            if (i < line.size() && !isSeparator(line[i])) {
+                problem = "text after the closing quote of " + detail::quoted(field);
+                return std::nullopt;
+            }
+        } else {
+            const std::size_t start = i;
+            while (i < line.size() && !isSeparator(line[i])) ++i;
+            field = std::string(detail::trim(line.substr(start, i - start)));
+        }
+        fields.push_back(std::move(field));
+        if (i >= line.size()) break;
+        ++i; // the separator
+        if (separator == ' ') {
+            while (i < line.size() && isSeparator(line[i])) ++i;
+            if (i >= line.size()) break;
+        }
+    }
+    return fields;
+}
+
+/// A header name as written: in double quotes when it holds a separator, a quote or surrounding
+/// spaces, so that any channel name reads back unchanged.
+void appendHeaderName(std::string& out, const std::string& name)
+{
+    const bool plain = name.find_first_of(",;\t\"") == std::string::npos && !name.empty() && name.front() != ' ' &&
+                       name.back() != ' ' && name.front() != '#';
+    if (plain) {
+        out += name;
+        return;
+    }
+    out += '"';
+    for (const char c : name) {
+        if (c == '"') out += '"';
+        out += c;
+    }
+    out += '"';
+}
+
+/// The largest |time_s| accepted (seconds): 31 years.
+constexpr double kTimeLimitSeconds = 1e9;
 
 std::vector<std::string_view> fieldsOf(std::string_view line, char separator)
 {
@@ -53,7 +141,10 @@ Result<Take> parseTakeCsv(const std::string& text, const std::string& sourceName
 
     const detail::TextLine headerLine = lines[index++];
     const char separator = detectSeparator(headerLine.text);
-    const auto header = fieldsOf(detail::trim(headerLine.text), separator);
+    std::string headerProblem;
+    const auto parsedHeader = headerFields(detail::trim(headerLine.text), separator, headerProblem);
+    if (!parsedHeader) return parseError(sourceName, headerLine.number, "header: " + headerProblem);
+    const std::vector<std::string>& header = *parsedHeader;
     const bool hasTime = !header.empty() && isTimeColumn(header.front());
     Take take;
     std::set<std::string> seen;
@@ -65,6 +156,8 @@ Result<Take> parseTakeCsv(const std::string& text, const std::string& sourceName
             return parseError(sourceName, headerLine.number,
                               where + ": expected a channel name `part.dof` (e.g. head.x)" +
                                   (isTimeColumn(name) ? " (the time column must come first)" : ""));
+        if (name.find_first_of("\r\n") != std::string_view::npos)
+            return parseError(sourceName, headerLine.number, where + ": a line break in a channel name");
         if (!seen.insert(std::string(name)).second)
             return parseError(sourceName, headerLine.number, where + ": channel named twice");
         const std::string dof(name.substr(dot + 1));
@@ -73,6 +166,9 @@ Result<Take> parseTakeCsv(const std::string& text, const std::string& sourceName
     if (take.channels.empty())
         return parseError(sourceName, headerLine.number, "expected at least one channel column `part.dof` in the header");
 
+    std::vector<double> limits; // per column, by the channel's unit
+    for (std::size_t c = 0; c < header.size(); ++c)
+        limits.push_back(hasTime && c == 0 ? kTimeLimitSeconds : valueLimit(take.channels[c - (hasTime ? 1 : 0)].unit));
     std::vector<double> times;
     std::vector<long> rowLines;
     std::vector<double> data;
@@ -92,6 +188,10 @@ Result<Take> parseTakeCsv(const std::string& text, const std::string& sourceName
                 return parseError(sourceName, line.number, column + ": expected a number, found " + detail::quoted(fields[c]));
             if (parsed.status == NumberStatus::NonFinite)
                 return parseError(sourceName, line.number, column + ": non-finite value " + detail::quoted(fields[c]) + " (NaN/Inf are not allowed)");
+            if (std::fabs(parsed.value) > limits[c])
+                return parseError(sourceName, line.number, column + ": " + detail::quoted(fields[c]) + " is beyond +-" +
+                                                               detail::shortText(limits[c]) +
+                                                               (hasTime && c == 0 ? " s" : " " + take.channels[c - (hasTime ? 1 : 0)].unit));
             if (hasTime && c == 0) times.push_back(parsed.value);
             else data.push_back(parsed.value);
         }
@@ -116,6 +216,10 @@ Result<Take> parseTakeCsv(const std::string& text, const std::string& sourceName
                                   "time_s is not uniform: step " + detail::shortText(d) + " s, expected " +
                                       detail::shortText(step) + " s");
         }
+        if (options.rateHz && options.timeMustMatchRate && std::fabs(step * *options.rateHz - 1.0) > options.timeTolerance)
+            return parseError(sourceName, rowLines[1],
+                              "time_s steps of " + detail::shortText(step) + " s are a rate of " + detail::shortText(1.0 / step) +
+                                  " Hz, expected " + detail::shortText(*options.rateHz) + " Hz like the rest of the corpus");
         if (!options.rateHz) {
             rate = 1.0 / step;
             // Times written with finite precision: snap to a rate with few decimals when that close.
@@ -142,7 +246,7 @@ Result<Take> parseTakeCsv(const std::string& text, const std::string& sourceName
 
 Result<Take> readTakeCsv(const std::filesystem::path& file, const TakeCsvOptions& options)
 {
-    auto text = readTextFile(file);
+    auto text = readTextFile(file, kTakeFileLimitBytes);
     if (!text) return text.error();
     return parseTakeCsv(*text, file.string(), options);
 }
@@ -152,7 +256,7 @@ std::string formatTakeCsv(const Take& take)
     std::string out = "time_s";
     for (const auto& channel : take.channels) {
         out += ',';
-        out += channel.name();
+        appendHeaderName(out, channel.name());
     }
     out += "\n";
     for (Eigen::Index f = 0; f < take.frameCount(); ++f) {
@@ -169,6 +273,10 @@ std::string formatTakeCsv(const Take& take)
 Status writeTakeCsv(const Take& take, const std::filesystem::path& file)
 {
     if (auto valid = validateTake(take); !valid) return makeError(valid.error().code, file.string() + ": " + valid.error().message);
+    for (const auto& channel : take.channels)
+        if (channel.name().find_first_of("\r\n") != std::string::npos)
+            return makeError(ErrorCode::InvalidArgument, file.string() + ": channel " + detail::quoted(channel.name()) +
+                                                             " has a line break in its name, which CSV cannot hold");
     return writeFileAtomically(file, formatTakeCsv(take));
 }
 

@@ -1,7 +1,9 @@
 #pragma once
 /// CSV takes: `time_s` then one column per channel named `part.dof` (e.g. `head.x ... hand.roll`).
 /// Reading is tolerant: `,` `;` or tab separators (detected from the header), CRLF line ends,
-/// `#` comment lines and blank lines. Writing is atomic (see atomic_file.h). Format: docs/FORMATS.md.
+/// `#` comment lines and blank lines; a header name holding a separator or quote is written in
+/// double quotes (RFC 4180). Values are range-checked (analysis/core/take.h valueLimit). Writing
+/// is atomic (see atomic_file.h). Format: docs/FORMATS.md.
 
 #include "analysis/core/result.h"
 #include "analysis/core/take.h"
@@ -16,6 +18,9 @@ struct TakeCsvOptions {
     /// Sample rate in Hz. Without a `time_s` column it is required; with one it overrides the
     /// rate measured from the time column (which must still be uniform).
     std::optional<double> rateHz;
+    /// With rateHz and a time column: the column's rate must be rateHz (within timeTolerance),
+    /// else a Parse error naming the line (a take of another rate inside a corpus).
+    bool timeMustMatchRate = false;
     /// Relative tolerance on the spacing of the time column (fraction of the mean step).
     double timeTolerance = 1e-3;
     /// Labels given to the take (source defaults to the file path).

@@ -1,5 +1,7 @@
 #include "analysis/normalise/average_take.h"
 
+#include "analysis/skeleton/skeleton_blend.h"
+
 #include <algorithm>
 #include <string>
 
@@ -34,7 +36,16 @@ Eigen::VectorXd resampleMonotone(const Eigen::VectorXd& abscissa, const Eigen::V
 
 } // namespace
 
-Result<Take> averageTake(const std::vector<const Take*>& takes, const AverageOptions& options, const RunControl& control)
+namespace {
+
+/// The checked base and the included takes other than the base, in the takes' order.
+struct Members {
+    const Take* base = nullptr;
+    std::vector<int> others; ///< indices into the takes
+    std::string names;       ///< "3,1,2,5": the base first
+};
+
+Result<Members> membersOf(const std::vector<const Take*>& takes, const AverageOptions& options)
 {
     const int count = int(takes.size());
     if (count == 0) return makeError(ErrorCode::InvalidArgument, "average take: no takes given");
@@ -50,42 +61,105 @@ Result<Take> averageTake(const std::vector<const Take*>& takes, const AverageOpt
             return makeError(ErrorCode::InvalidArgument, "average take: the base take cannot be excluded");
         included[std::size_t(excluded)] = false;
     }
-    const Take& base = *takes[std::size_t(options.baseTake)];
-    std::vector<const Take*> others;
-    std::string members = std::to_string(base.labels.takeIndex);
+    Members members;
+    members.base = takes[std::size_t(options.baseTake)];
+    members.names = std::to_string(members.base->labels.takeIndex);
     for (int k = 0; k < count; ++k) {
         if (k == options.baseTake || !included[std::size_t(k)]) continue;
-        others.push_back(takes[std::size_t(k)]);
-        members.push_back(',');
-        members.append(std::to_string(takes[std::size_t(k)]->labels.takeIndex));
+        members.others.push_back(k);
+        members.names.push_back(',');
+        members.names.append(std::to_string(takes[std::size_t(k)]->labels.takeIndex));
     }
-    auto normalised = normaliseTakes(base, others, options.normalise, control);
-    if (!normalised) return normalised.error();
+    return members;
+}
 
-    // Thesis 3.7: t_bar = mean_k t_k, x_bar = mean_k x_k(t_k), the base contributing t_b itself.
+/// Thesis 3.7: t_bar = mean_k t_k, x_bar = mean_k x_k(t_k), the base contributing t_b itself;
+/// angles as rotation coordinates about the base's mean part orientations. `normalised` holds
+/// the other members normalised to the base, in the members' order.
+Take averageOf(const std::vector<const Take*>& takes, const Members& members, const std::vector<const TakeNormalisation*>& normalised)
+{
+    const Take& base = *members.base;
     const Eigen::Index frames = base.frameCount();
-    const double members_count = double(others.size() + 1);
+    const double members_count = double(normalised.size() + 1);
+    const RotationChart chart = normalised.empty() ? meanPartChart({&base}) : normalised.front()->chart;
+    const Eigen::MatrixXd baseCoordinates = rotationCoordinates(base, chart);
     Take average;
     average.channels = base.channels;
     average.rateHz = base.rateHz;
     average.labels = base.labels;
     average.labels.takeIndex = 0;
-    average.labels.source = "average of takes " + members + " (base " + std::to_string(base.labels.takeIndex) + ")";
-    average.values.resize(frames, base.channelCount());
+    average.labels.source = "average of takes " + members.names + " (base " + std::to_string(base.labels.takeIndex) + ")";
+    Eigen::MatrixXd coordinates(frames, base.channelCount());
     const Eigen::VectorXd baseTimes = Eigen::VectorXd::LinSpaced(frames, 0.0, double(frames - 1));
     for (Eigen::Index c = 0; c < base.channelCount(); ++c) {
         Eigen::VectorXd time = baseTimes;
-        Eigen::VectorXd value = base.values.col(c);
-        for (const auto& one : *normalised) {
-            time += one.correspondence.col(c).cast<double>();
-            value += one.normalised.values.col(c);
+        Eigen::VectorXd value = baseCoordinates.col(c);
+        for (const TakeNormalisation* one : normalised) {
+            time += one->correspondence.col(c).cast<double>();
+            value += one->coordinates.col(c);
         }
         time /= members_count;
         value /= members_count;
-        average.values.col(c) = resampleMonotone(time, value, frames);
+        coordinates.col(c) = resampleMonotone(time, value, frames);
     }
+    average.values = eulerFromRotationCoordinates(base, coordinates, chart, Eigen::RowVectorXd(base.values.row(0)));
+
+    // The skeleton: per base frame every joint's mean rotation of the members at their body
+    // times, shown at the mean body time t_bar and resampled onto the base's frames.
+    bool skeletons = bool(base.skeleton);
+    for (int k : members.others) skeletons = skeletons && takes[std::size_t(k)]->skeleton;
+    if (skeletons) {
+        std::vector<BlendMember> blend{{base.skeleton.get(), baseTimes, 1.0}};
+        Eigen::VectorXd meanTime = baseTimes;
+        for (std::size_t k = 0; k < members.others.size(); ++k) {
+            blend.push_back({takes[std::size_t(members.others[k])]->skeleton.get(), normalised[k]->bodyTime, 1.0});
+            meanTime += normalised[k]->bodyTime;
+        }
+        meanTime /= members_count;
+        auto mean = meanSkeletalMotion(blend);
+        // Takes on other skeletons average their channels only.
+        if (mean) average.skeleton = resampleSkeletalMotion(**mean, resampleMonotone(meanTime, baseTimes, frames));
+    }
+    return average;
+}
+
+} // namespace
+
+Result<Take> averageTake(const std::vector<const Take*>& takes, const AverageOptions& options, const RunControl& control)
+{
+    auto members = membersOf(takes, options);
+    if (!members) return members.error();
+    std::vector<const Take*> others;
+    for (int k : members->others) others.push_back(takes[std::size_t(k)]);
+    auto normalised = normaliseTakes(*members->base, others, options.normalise, control);
+    if (!normalised) return normalised.error();
+    std::vector<const TakeNormalisation*> pointers;
+    for (const auto& one : *normalised) pointers.push_back(&one);
+    Take average = averageOf(takes, *members, pointers);
     control.report(1.0);
     return average;
+}
+
+Result<Take> averageTakeFrom(const std::vector<const Take*>& takes, const AverageOptions& options,
+                             const std::vector<TakeNormalisation>& toBase)
+{
+    auto members = membersOf(takes, options);
+    if (!members) return members.error();
+    if (toBase.size() != takes.size())
+        return makeError(ErrorCode::InvalidArgument, "average take: " + std::to_string(toBase.size()) + " normalisations for " +
+                                                         std::to_string(takes.size()) + " takes");
+    std::vector<const TakeNormalisation*> pointers;
+    for (int k : members->others) {
+        const TakeNormalisation& one = toBase[std::size_t(k)];
+        if (one.normalised.values.rows() != members->base->frameCount() ||
+            one.normalised.values.cols() != members->base->channelCount() || one.correspondence.rows() != members->base->frameCount() ||
+            one.correspondence.cols() != members->base->channelCount() || one.coordinates.rows() != members->base->frameCount() ||
+            one.coordinates.cols() != members->base->channelCount() || one.bodyTime.size() != members->base->frameCount())
+            return makeError(ErrorCode::InvalidArgument, "average take: the normalisation of take " + takes[std::size_t(k)]->displayName() +
+                                                             " is not on the base take's frames and channels");
+        pointers.push_back(&one);
+    }
+    return averageOf(takes, *members, pointers);
 }
 
 } // namespace bunraku::analysis

@@ -2,27 +2,39 @@
 
 #include "analysis/normalise/distance_kernel.h"
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <cstdlib>
+#include <new>
+
+#ifdef __linux__
+#include <sys/mman.h>
+#endif
 
 namespace bunraku::analysis {
 
+namespace detail {
+
+void FreeWords::operator()(std::uint64_t* words) const { std::free(words); }
+
+WordBuffer allocateWords(std::size_t count)
+{
+    constexpr std::size_t kHugePage = std::size_t(2) << 20;
+    const std::size_t bytes = std::max<std::size_t>(count, 1) * sizeof(std::uint64_t);
+    const std::size_t rounded = (bytes + kHugePage - 1) / kHugePage * kHugePage;
+    void* memory = bytes < kHugePage ? std::malloc(bytes) : std::aligned_alloc(kHugePage, rounded);
+    if (!memory) throw std::bad_alloc();
+#ifdef __linux__
+    if (bytes >= kHugePage) madvise(memory, rounded, MADV_HUGEPAGE);
+#endif
+    return WordBuffer(static_cast<std::uint64_t*>(memory));
+}
+
+} // namespace detail
+
 namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
-// The highest set bit at or below `column` in one row's drop bits: the first minimum of that
-// row's columns 0..column.
-Eigen::Index lastDropAtOrBelow(const std::uint64_t* bits, Eigen::Index column)
-{
-    auto word = std::size_t(column >> 6);
-    const unsigned bit = unsigned(column & 63);
-    std::uint64_t mask = bits[word] & (bit == 63 ? ~std::uint64_t(0) : (std::uint64_t(1) << (bit + 1)) - 1);
-    while (mask == 0) {
-        if (word == 0) return -1;
-        mask = bits[--word];
-    }
-    return Eigen::Index(word * 64 + 63 - std::size_t(__builtin_clzll(mask)));
-}
 }
 
 PathBuilder::PathBuilder(int searchBand, Eigen::Index referenceFrames, Eigen::Index sampleFrames, PathMethod method)
@@ -33,11 +45,14 @@ PathBuilder::PathBuilder(int searchBand, Eigen::Index referenceFrames, Eigen::In
     assert(searchBand >= 0 && searchBand <= 16000);
     const std::size_t width = std::size_t(2 * searchBand + 1);
     if (optimal) {
-        m_previous.assign(width, kInfinity);
-        m_current.assign(width, kInfinity);
-        m_prefix.assign(width + 4, kInfinity);
-        m_words = (width + 63) / 64;
-        m_drops.assign(std::size_t(referenceFrames) * m_words, 0);
+        m_segment = detail::dpSegment(width);
+        m_previous.assign(detail::kDpLanes * m_segment, kInfinity);
+        m_current.assign(detail::kDpLanes * m_segment, kInfinity);
+        m_segmentPrefix.assign(detail::kDpLanes * m_segment, kInfinity);
+        m_nextSegmentPrefix.assign(detail::kDpLanes * m_segment, kInfinity);
+        m_costs.assign(detail::kDpLanes * m_segment, kInfinity);
+        m_words = detail::dpWords(m_segment);
+        m_drops = detail::allocateWords(std::size_t(referenceFrames) * m_words);
     } else {
         m_greedy = Eigen::VectorXi::Zero(referenceFrames);
     }
@@ -80,16 +95,39 @@ void PathBuilder::addRow(const double* costRow)
     // D(t, u) = cost(t, u) + min_{u' <= u} D(t - 1, u'); the previous row's column j' holds
     // sample frame firstSample - 1 + j', so u' <= u means j' <= j + 1. The previous row's prefix
     // minimum drops (first minimum on ties) are kept as bits for the back-pointers.
-    if (m_row == 0) {
-        std::fill(m_current.begin(), m_current.end(), kInfinity);
-        for (Eigen::Index j = lowColumn; j <= highColumn; ++j) m_current[std::size_t(j)] = costRow[j];
-    } else {
-        detail::dynamicProgrammeRow(m_previous.data(), costRow, std::size_t(width), std::size_t(lowColumn),
-                                    std::size_t(highColumn), m_prefix.data(),
-                                    m_drops.data() + std::size_t(m_row - 1) * m_words, m_current.data());
-    }
+    std::copy_n(costRow, width, m_costs.begin());
+    addOptimalRow({m_costs.data(), nullptr, nullptr}, lowColumn, highColumn);
+}
+
+void PathBuilder::addOptimalRow(const detail::DpCost& cost, Eigen::Index lowColumn, Eigen::Index highColumn)
+{
+    const auto width = std::size_t(2 * m_band + 1);
+    if (m_row == 0)
+        detail::dpFirstRow(cost, width, std::size_t(lowColumn), std::size_t(highColumn), m_current.data(), m_nextSegmentPrefix.data());
+    else
+        detail::dpRow(m_segmentPrefix.data(), cost, width, std::size_t(lowColumn), std::size_t(highColumn),
+                      m_drops.get() + std::size_t(m_row - 1) * m_words,
+                      m_row + 1 == m_referenceFrames ? m_current.data() : nullptr, m_nextSegmentPrefix.data());
     std::swap(m_previous, m_current);
+    std::swap(m_segmentPrefix, m_nextSegmentPrefix);
     ++m_row;
+}
+
+Eigen::Index PathBuilder::slidingRowLength(int searchBand) { return Eigen::Index(detail::kDpLanes * detail::dpSegment(std::size_t(2 * searchBand + 1))); }
+
+void PathBuilder::addRow(double* running, const double* entering, const double* leaving)
+{
+    const Eigen::Index width = 2 * m_band + 1;
+    if (!m_optimal) {
+        detail::windowSlide(running, entering, leaving, std::size_t(width));
+        addRow(running);
+        return;
+    }
+    assert(m_row < m_referenceFrames);
+    const Eigen::Index firstSample = m_row - m_band;
+    const Eigen::Index lowColumn = std::max<Eigen::Index>(0, -firstSample);
+    const Eigen::Index highColumn = std::min<Eigen::Index>(width - 1, m_sampleFrames - 1 - firstSample);
+    addOptimalRow({running, entering, leaving}, lowColumn, highColumn);
 }
 
 Eigen::VectorXi PathBuilder::finish(double* totalCost)
@@ -101,15 +139,16 @@ Eigen::VectorXi PathBuilder::finish(double* totalCost)
     }
     const Eigen::Index width = 2 * m_band + 1;
     const std::size_t last = std::size_t(m_referenceFrames - 1) * m_words;
-    detail::prefixMinimumBits(m_previous.data(), std::size_t(width), m_prefix.data(), m_drops.data() + last);
-    Eigen::Index best = lastDropAtOrBelow(m_drops.data() + last, width - 1);
-    const double bestCost = best >= 0 ? m_previous[std::size_t(best)] : kInfinity;
+    detail::dpDropBits(m_segmentPrefix.data(), std::size_t(width), m_drops.get() + last);
+    Eigen::Index best = detail::lastDropAtOrBelow(m_drops.get() + last, std::size_t(width - 1), m_segment);
+    const double bestCost = best >= 0 ? m_previous[detail::dpEntry(std::size_t(best), m_segment)] : kInfinity;
     Eigen::VectorXi path(m_referenceFrames);
     for (Eigen::Index t = m_referenceFrames - 1; t >= 0; --t) {
         assert(best >= 0);
         path[t] = int(t - m_band + best);
         if (t > 0)
-            best = lastDropAtOrBelow(m_drops.data() + std::size_t(t - 1) * m_words, std::min<Eigen::Index>(best + 1, width - 1));
+            best = detail::lastDropAtOrBelow(m_drops.get() + std::size_t(t - 1) * m_words,
+                                             std::size_t(std::min<Eigen::Index>(best + 1, width - 1)), m_segment);
     }
     if (totalCost) *totalCost = bestCost;
     return path;

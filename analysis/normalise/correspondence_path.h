@@ -10,9 +10,22 @@
 
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <vector>
 
 namespace bunraku::analysis {
+
+namespace detail {
+struct DpCost;
+
+struct FreeWords {
+    void operator()(std::uint64_t* words) const;
+};
+/// Uninitialised words; large buffers on transparent huge pages where the system offers them
+/// (one page fault per 2 MB instead of per 4 kB).
+using WordBuffer = std::unique_ptr<std::uint64_t[], FreeWords>;
+WordBuffer allocateWords(std::size_t count);
+}
 
 /// Window costs in the band: row t_ref, column j <-> sample frame t_ref - searchBand + j.
 /// Cells whose sample frame lies outside 0..sampleFrames-1 are ignored.
@@ -35,10 +48,18 @@ public:
     Eigen::Index firstUsefulSample() const;
     /// Adds row t_ref (= number of rows added so far).
     void addRow(const double* costRow);
+    /// Slides window sums one row on, running = (running + entering) - leaving, and adds them as
+    /// row t_ref: the same as detail::windowSlide then addRow(running), in one pass for the
+    /// optimal path. The three rows hold slidingRowLength(searchBand) entries, those past
+    /// 2 searchBand + 1 +infinity in `running` and 0 in the others.
+    void addRow(double* running, const double* entering, const double* leaving);
+    static Eigen::Index slidingRowLength(int searchBand);
     /// The path and its summed cost; call after every reference frame was added.
     Eigen::VectorXi finish(double* totalCost = nullptr);
 
 private:
+    void addOptimalRow(const detail::DpCost& cost, Eigen::Index lowColumn, Eigen::Index highColumn);
+
     int m_band;
     Eigen::Index m_referenceFrames;
     Eigen::Index m_sampleFrames;
@@ -48,10 +69,13 @@ private:
     // greedy and independent
     Eigen::VectorXi m_greedy;
     double m_greedyCost = 0;
-    // optimal
-    std::vector<double> m_previous, m_current, m_prefix;
+    // optimal: rows interleaved (detail::dpEntry), kDpLanes m_segment entries each
+    std::size_t m_segment = 0;
+    std::vector<double> m_previous, m_current;             // D of the last row and the next
+    std::vector<double> m_segmentPrefix, m_nextSegmentPrefix; // their prefix minima within each segment
+    std::vector<double> m_costs;                             // a cost row padded to kDpLanes m_segment entries
     std::size_t m_words = 0;            // 64-bit words of drop bits per row
-    std::vector<std::uint64_t> m_drops; // row t: where the prefix minimum of row t drops
+    detail::WordBuffer m_drops;         // row t: where the prefix minimum of row t drops
 };
 
 /// Thesis 3.5.3: for t_ref = 0, 1, ... choose the cheapest t_smp >= the previous choice (ties to

@@ -1,5 +1,7 @@
 #include "analysis/normalise/distance_kernel.h"
 
+#include "analysis/wavelet/simd_level.h"
+
 #include <algorithm>
 #include <limits>
 
@@ -14,33 +16,14 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-void squaredDistancesPlain(const double* a, const double* const* rows, std::size_t count, std::size_t features, double* out)
+inline void windowStartBody(const double* const* rows, std::size_t length, std::size_t columns, double* __restrict running)
 {
-    for (std::size_t j = 0; j < count; ++j) {
-        const double* b = rows[j];
-        double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
-        std::size_t f = 0;
-        for (; f + 4 <= features; f += 4) {
-            const double d0 = a[f] - b[f], d1 = a[f + 1] - b[f + 1], d2 = a[f + 2] - b[f + 2], d3 = a[f + 3] - b[f + 3];
-            s0 += d0 * d0;
-            s1 += d1 * d1;
-            s2 += d2 * d2;
-            s3 += d3 * d3;
-        }
-        for (; f < features; ++f) {
-            const double d = a[f] - b[f];
-            s0 += d * d;
-        }
-        out[j] = (s0 + s1) + (s2 + s3);
+    const double* __restrict first = rows[0];
+    for (std::size_t o = 0; o < columns; ++o) running[o] = first[o];
+    for (std::size_t s = 1; s < length; ++s) {
+        const double* __restrict row = rows[s];
+        for (std::size_t o = 0; o < columns; ++o) running[o] += row[o];
     }
-}
-
-inline void windowStartBody(const double* __restrict e, std::size_t length, std::size_t columns, std::size_t stride,
-                            double* __restrict running)
-{
-    for (std::size_t o = 0; o < columns; ++o) running[o] = e[o];
-    for (std::size_t s = 1; s < length; ++s)
-        for (std::size_t o = 0; o < columns; ++o) running[o] += e[s * stride + o];
 }
 
 inline void windowSlideBody(double* __restrict running, const double* __restrict entering, const double* __restrict leaving,
@@ -49,99 +32,51 @@ inline void windowSlideBody(double* __restrict running, const double* __restrict
     for (std::size_t o = 0; o < columns; ++o) running[o] = (running[o] + entering[o]) - leaving[o];
 }
 
-// The scan of the prefix minimum with its "drops here" bits, one column at a time.
-void prefixScalar(const double* values, std::size_t from, std::size_t width, double run, double* prefix, std::uint64_t* bits)
+// The costs of a row in column order (slid first when asked), 4 S entries.
+void slideIfAsked(const DpCost& cost, std::size_t segment)
 {
-    for (std::size_t k = from; k < width; ++k) {
-        const bool drop = values[k] < run;
-        run = drop ? values[k] : run;
-        prefix[k] = run;
-        bits[k >> 6] |= std::uint64_t(drop) << (k & 63);
+    if (cost.entering) windowSlideBody(cost.running, cost.entering, cost.leaving, 4 * segment);
+}
+
+// Quarter prefix minima of an interleaved row and the drops of its prefix minimum, plain.
+void dropBitsPlain(const double* segmentPrefix, std::size_t segment, std::uint64_t* bits)
+{
+    std::fill(bits, bits + dpWords(segment), std::uint64_t(0));
+    double before = kInfinity; // P(c - 1)
+    for (std::size_t c = 0; c < 4 * segment; ++c) {
+        const double prefix = std::min(before, segmentPrefix[dpEntry(c, segment)]);
+        const std::size_t entry = dpEntry(c, segment);
+        bits[entry >> 6] |= std::uint64_t(prefix < before) << (entry & 63);
+        before = prefix;
     }
 }
 
-void prefixPlain(const double* values, std::size_t width, double* prefix, std::uint64_t* bits)
+void dpRowPlain(const double* segmentPrefix, const DpCost& cost, std::size_t width, std::size_t low, std::size_t high,
+                std::uint64_t* bits, double* d, double* nextSegmentPrefix)
 {
-    prefixScalar(values, 0, width, kInfinity, prefix, bits);
+    const std::size_t segment = dpSegment(width);
+    slideIfAsked(cost, segment);
+    dropBitsPlain(segmentPrefix, segment, bits);
+    // P(c + 1) for c = 0 .. 4 S - 1 (the last padding column reads itself).
+    double prefix = kInfinity;
+    double next = std::min(prefix, segmentPrefix[dpEntry(0, segment)]);
+    double run = kInfinity;
+    for (std::size_t c = 0; c < 4 * segment; ++c) {
+        prefix = next;
+        if (c + 1 < 4 * segment) next = std::min(prefix, segmentPrefix[dpEntry(c + 1, segment)]);
+        const double value = c < low || c > high ? kInfinity : cost.running[c] + next;
+        if (c % segment == 0) run = kInfinity;
+        run = std::min(run, value);
+        if (d) d[dpEntry(c, segment)] = value;
+        nextSegmentPrefix[dpEntry(c, segment)] = run;
+    }
 }
 
 #ifdef BUNRAKU_AVX2_KERNEL
-__attribute__((target("avx2,fma"))) void squaredDistancesAvx2(const double* a, const double* const* rows,
-                                                                std::size_t count, std::size_t features, double* out)
+__attribute__((target("avx2,fma"))) void windowStartAvx2(const double* const* rows, std::size_t length, std::size_t columns,
+                                                           double* running)
 {
-    for (std::size_t j = 0; j < count; ++j) {
-        const double* b = rows[j];
-        __m256d s0 = _mm256_setzero_pd();
-        __m256d s1 = _mm256_setzero_pd();
-        std::size_t f = 0;
-        for (; f + 8 <= features; f += 8) {
-            const __m256d d0 = _mm256_sub_pd(_mm256_loadu_pd(a + f), _mm256_loadu_pd(b + f));
-            const __m256d d1 = _mm256_sub_pd(_mm256_loadu_pd(a + f + 4), _mm256_loadu_pd(b + f + 4));
-            s0 = _mm256_fmadd_pd(d0, d0, s0);
-            s1 = _mm256_fmadd_pd(d1, d1, s1);
-        }
-        for (; f + 4 <= features; f += 4) {
-            const __m256d d0 = _mm256_sub_pd(_mm256_loadu_pd(a + f), _mm256_loadu_pd(b + f));
-            s0 = _mm256_fmadd_pd(d0, d0, s0);
-        }
-        const __m256d s = _mm256_add_pd(s0, s1);
-        const __m128d half = _mm_add_pd(_mm256_castpd256_pd128(s), _mm256_extractf128_pd(s, 1));
-        double sum = _mm_cvtsd_f64(_mm_add_sd(half, _mm_unpackhi_pd(half, half)));
-        for (; f < features; ++f) {
-            const double d = a[f] - b[f];
-            sum += d * d;
-        }
-        out[j] = sum;
-    }
-}
-
-__attribute__((target("avx2,fma"))) double horizontalSum(__m256d s)
-{
-    const __m128d half = _mm_add_pd(_mm256_castpd256_pd128(s), _mm256_extractf128_pd(s, 1));
-    return _mm_cvtsd_f64(_mm_add_sd(half, _mm_unpackhi_pd(half, half)));
-}
-
-// Dot products of `a` with four rows at a time, so each load of `a` serves four rows.
-__attribute__((target("avx2,fma"))) void dotDistancesAvx2(const double* a, double aNorm, const double* first,
-                                                            const double* norms, std::size_t count,
-                                                            std::size_t features, double* out)
-{
-    const std::size_t vectorised = features - features % 4;
-    std::size_t j = 0;
-    for (; j + 4 <= count; j += 4) {
-        const double* b0 = first + j * features;
-        const double* b1 = b0 + features;
-        const double* b2 = b1 + features;
-        const double* b3 = b2 + features;
-        __m256d s0 = _mm256_setzero_pd(), s1 = _mm256_setzero_pd(), s2 = _mm256_setzero_pd(), s3 = _mm256_setzero_pd();
-        for (std::size_t f = 0; f < vectorised; f += 4) {
-            const __m256d va = _mm256_loadu_pd(a + f);
-            s0 = _mm256_fmadd_pd(va, _mm256_loadu_pd(b0 + f), s0);
-            s1 = _mm256_fmadd_pd(va, _mm256_loadu_pd(b1 + f), s1);
-            s2 = _mm256_fmadd_pd(va, _mm256_loadu_pd(b2 + f), s2);
-            s3 = _mm256_fmadd_pd(va, _mm256_loadu_pd(b3 + f), s3);
-        }
-        double dot[4] = {horizontalSum(s0), horizontalSum(s1), horizontalSum(s2), horizontalSum(s3)};
-        for (std::size_t f = vectorised; f < features; ++f) {
-            dot[0] += a[f] * b0[f];
-            dot[1] += a[f] * b1[f];
-            dot[2] += a[f] * b2[f];
-            dot[3] += a[f] * b3[f];
-        }
-        for (std::size_t k = 0; k < 4; ++k) out[j + k] = std::max(0.0, aNorm + norms[j + k] - 2.0 * dot[k]);
-    }
-    for (; j < count; ++j) {
-        const double* b = first + j * features;
-        double dot = 0.0;
-        for (std::size_t f = 0; f < features; ++f) dot += a[f] * b[f];
-        out[j] = std::max(0.0, aNorm + norms[j] - 2.0 * dot);
-    }
-}
-
-__attribute__((target("avx2,fma"))) void windowStartAvx2(const double* e, std::size_t length, std::size_t columns,
-                                                           std::size_t stride, double* running)
-{
-    windowStartBody(e, length, columns, stride, running);
+    windowStartBody(rows, length, columns, running);
 }
 
 __attribute__((target("avx2,fma"))) void windowSlideAvx2(double* running, const double* entering, const double* leaving,
@@ -150,117 +85,175 @@ __attribute__((target("avx2,fma"))) void windowSlideAvx2(double* running, const 
     windowSlideBody(running, entering, leaving, columns);
 }
 
-// Prefix minimum four columns at a time: an in-register scan (an in-lane and a cross-lane
-// shifted minimum) and a carried minimum. A drop at column c is prefix[c] < prefix[c - 1]: the
-// prefix shifted by one column (prefix[k - 3 .. k], built one block behind the scan) gives the
-// drop bits of columns k - 3 .. k and, with `cost`, current[j] = cost[j] + prefix[j + 1] for
-// j = k - 4 .. k - 1. Lane-crossing shuffles are the bottleneck here: three per block.
-// Returns how many leading entries of `current` are set (0 without `cost`).
-__attribute__((target("avx2,fma"))) std::size_t prefixAvx2(const double* values, std::size_t width, double* prefix,
-                                                              std::uint64_t* bits, const double* cost, double* current)
+// The minimum of the quarters before each lane's: (inf, m0, min(m0, m1), min(m0, m1, m2)) for
+// quarter minima m - the prefix minimum just before each quarter's first column.
+__attribute__((target("avx2,fma"))) __m256d quarterCarry(__m256d minima)
 {
-    if (width < 4) {
-        prefixScalar(values, 0, width, kInfinity, prefix, bits);
-        return 0;
-    }
     const __m256d infinity = _mm256_set1_pd(kInfinity);
-    __m256d carry = infinity;
-    __m256d previousBlock = infinity;
-    // The word of drop bits stays in a register until its 64 columns are done (or-ing into
-    // memory each block would chain every block through a store and a load).
-    std::uint64_t word = 0;
-    std::size_t k = 0;
-    for (; k + 4 <= width; k += 4) {
-        const __m256d x = _mm256_loadu_pd(values + k);
-        const __m256d y = _mm256_min_pd(x, _mm256_blend_pd(_mm256_permute_pd(x, 0x0), infinity, 0x5));
-        const __m256d z = _mm256_min_pd(y, _mm256_blend_pd(_mm256_permute4x64_pd(y, 0x55), infinity, 0x3));
-        const __m256d p = _mm256_min_pd(z, carry);
-        _mm256_storeu_pd(prefix + k, p);
-        if (k > 0) {
-            const __m256d next = _mm256_shuffle_pd(previousBlock, _mm256_permute2f128_pd(previousBlock, p, 0x21), 0x5);
-            const auto drops = std::uint64_t(_mm256_movemask_pd(_mm256_cmp_pd(next, previousBlock, _CMP_LT_OQ)));
-            if ((k & 63) == 0) { // columns k - 3 .. k - 1 end the previous word, k starts this one
-                bits[(k >> 6) - 1] = word | ((drops & 0x7) << 61);
-                word = drops >> 3;
-            } else {
-                word |= drops << ((k - 3) & 63);
-            }
-            if (cost) _mm256_storeu_pd(current + k - 4, _mm256_add_pd(_mm256_loadu_pd(cost + k - 4), next));
-        }
-        previousBlock = p;
-        // The carried minimum depends on the previous carry through one min only (the block's
-        // own minimum, z's last lane, is broadcast off the chain).
-        carry = _mm256_min_pd(carry, _mm256_permute4x64_pd(z, 0xff));
-    }
-    // Bits so far: columns 1 .. k - 4 (the last block's first column); then that block's other
-    // three columns, column 0 and the columns after the last block.
-    const std::size_t last = k - 4;
-    bits[last >> 6] = word;
-    for (std::size_t c = last + 1; c < k; ++c) bits[c >> 6] |= std::uint64_t(prefix[c] < prefix[c - 1]) << (c & 63);
-    bits[0] |= std::uint64_t(prefix[0] < kInfinity);
-    prefixScalar(values, k, width, prefix[k - 1], prefix, bits);
-    return cost ? last : 0;
+    // Lanes moved up one (inf, m0, m1, m2), then min with itself moved up one and two lanes
+    // (lane 0 is infinity, so moving it in needs no blend).
+    const __m256d shifted = _mm256_blend_pd(_mm256_permute4x64_pd(minima, 0x90), infinity, 0x1);
+    const __m256d pairs = _mm256_min_pd(shifted, _mm256_permute4x64_pd(shifted, 0x90));
+    return _mm256_min_pd(pairs, _mm256_permute4x64_pd(pairs, 0x40));
 }
 
-bool cpuHasAvx2()
+// Columns L S + k0 .. + 3 of the four quarters (natural order) as four interleaved vectors:
+// out[i] holds column L S + k0 + i in lane L. Slid first when the costs are window sums.
+template <bool kSlide>
+__attribute__((target("avx2,fma"))) inline void loadCosts(double* __restrict running, const double* __restrict entering,
+                                                            const double* __restrict leaving, std::size_t segment, std::size_t k0,
+                                                            __m256d* out)
 {
-    static const bool has = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-    return has;
+    __m256d quarter[4];
+    for (std::size_t l = 0; l < 4; ++l) {
+        const std::size_t c = l * segment + k0;
+        quarter[l] = _mm256_loadu_pd(running + c);
+        if constexpr (kSlide) {
+            quarter[l] = _mm256_sub_pd(_mm256_add_pd(quarter[l], _mm256_loadu_pd(entering + c)), _mm256_loadu_pd(leaving + c));
+            _mm256_storeu_pd(running + c, quarter[l]);
+        }
+    }
+    const __m256d low01 = _mm256_unpacklo_pd(quarter[0], quarter[1]);
+    const __m256d high01 = _mm256_unpackhi_pd(quarter[0], quarter[1]);
+    const __m256d low23 = _mm256_unpacklo_pd(quarter[2], quarter[3]);
+    const __m256d high23 = _mm256_unpackhi_pd(quarter[2], quarter[3]);
+    out[0] = _mm256_permute2f128_pd(low01, low23, 0x20);
+    out[1] = _mm256_permute2f128_pd(high01, high23, 0x20);
+    out[2] = _mm256_permute2f128_pd(low01, low23, 0x31);
+    out[3] = _mm256_permute2f128_pd(high01, high23, 0x31);
+}
+
+// The drops of four steps' prefix minima (each against the step before), four bits a step.
+__attribute__((target("avx2,fma"))) inline std::uint64_t drops(__m256d now, __m256d then)
+{
+    return std::uint64_t(unsigned(_mm256_movemask_pd(_mm256_cmp_pd(now, then, _CMP_LT_OQ))));
+}
+
+__attribute__((target("avx2,fma"))) inline std::uint64_t dropNibbles(__m256d before, const __m256d* prefix)
+{
+    return drops(prefix[0], before) | drops(prefix[1], prefix[0]) << 4 | drops(prefix[2], prefix[1]) << 8
+           | drops(prefix[3], prefix[2]) << 12;
+}
+
+// D at step k (cost plus P one column on; infinity outside low .. high when masked) and the
+// quarter prefix minima of D, stored at step k.
+template <bool kMasked>
+struct RowOutput {
+    __m256d infinity, low, high;
+    __m256d column; // of the next step stored
+    __m256d run;
+    double* d;
+    double* segmentPrefix;
+    __attribute__((target("avx2,fma"))) void store(std::size_t k, __m256d costs, __m256d next)
+    {
+        __m256d value = _mm256_add_pd(costs, next);
+        if constexpr (kMasked) {
+            const __m256d outside = _mm256_or_pd(_mm256_cmp_pd(column, low, _CMP_LT_OQ), _mm256_cmp_pd(column, high, _CMP_GT_OQ));
+            value = _mm256_blendv_pd(value, infinity, outside);
+            column = _mm256_add_pd(column, _mm256_set1_pd(1.0));
+        }
+        run = _mm256_min_pd(run, value);
+        if (d) _mm256_storeu_pd(d + 4 * k, value);
+        _mm256_storeu_pd(segmentPrefix + 4 * k, run);
+    }
+};
+
+// One row, four quarters side by side: at step k, P at columns L S + k is the quarter prefix
+// minimum with the carry of the quarters before; its drops against step k - 1 (or, at k = 0,
+// against the carry, which is P just before the quarter) are four bits; D at step k - 1 is the
+// cost plus P at step k (one column on), and the row's own quarter prefix minima follow D.
+template <bool kSlide, bool kMasked>
+__attribute__((target("avx2,fma"))) void dpRowAvx2(const double* segmentPrefix, const DpCost& cost, std::size_t width,
+                                                     std::size_t low, std::size_t high, std::uint64_t* bits, double* d,
+                                                     double* nextSegmentPrefix)
+{
+    const std::size_t segment = dpSegment(width);
+    const __m256d infinity = _mm256_set1_pd(kInfinity);
+    const __m256d carry = quarterCarry(_mm256_loadu_pd(segmentPrefix + 4 * (segment - 1)));
+    RowOutput<kMasked> output{infinity, _mm256_set1_pd(double(low)), _mm256_set1_pd(double(high)),
+                              _mm256_set_pd(double(3 * segment), double(2 * segment), double(segment), 0.0), infinity, d,
+                              nextSegmentPrefix};
+    __m256d before = carry;     // P at step k0 - 1
+    __m256d pending = infinity; // the costs of step k0 - 1
+    __m256d first = infinity;   // P at step 0
+    std::uint64_t word = 0;
+    double* running = cost.running;
+    const double* entering = cost.entering;
+    const double* leaving = cost.leaving;
+    // Four steps at a time (S is a multiple of 4): 16 drop bits, 16 aligned in their word.
+    for (std::size_t k0 = 0; k0 < segment; k0 += 4) {
+        __m256d costs[4];
+        loadCosts<kSlide>(running, entering, leaving, segment, k0, costs);
+        __m256d prefix[4];
+        for (std::size_t i = 0; i < 4; ++i) prefix[i] = _mm256_min_pd(_mm256_loadu_pd(segmentPrefix + 4 * (k0 + i)), carry);
+        word |= dropNibbles(before, prefix) << ((4 * k0) & 63);
+        if (((4 * k0) & 63) == 48) {
+            bits[(4 * k0) >> 6] = word;
+            word = 0;
+        }
+        if (k0 == 0)
+            first = prefix[0];
+        else
+            output.store(k0 - 1, pending, prefix[0]);
+        output.store(k0, costs[0], prefix[1]);
+        output.store(k0 + 1, costs[1], prefix[2]);
+        output.store(k0 + 2, costs[2], prefix[3]);
+        pending = costs[3];
+        before = prefix[3];
+    }
+    if (((4 * segment) & 63) != 0) bits[(4 * segment) >> 6] = word;
+    // The last step reads P one column on: the next quarter's first column (lanes moved down
+    // one); the last lane is padding and reads itself.
+    output.store(segment - 1, pending, _mm256_blend_pd(_mm256_permute4x64_pd(first, 0xf9), before, 0x8));
+}
+
+__attribute__((target("avx2,fma"))) void dropBitsAvx2(const double* segmentPrefix, std::size_t segment, std::uint64_t* bits)
+{
+    const __m256d carry = quarterCarry(_mm256_loadu_pd(segmentPrefix + 4 * (segment - 1)));
+    __m256d before = carry;
+    std::uint64_t word = 0;
+    for (std::size_t k0 = 0; k0 < segment; k0 += 4) {
+        __m256d prefix[4];
+        for (std::size_t i = 0; i < 4; ++i) prefix[i] = _mm256_min_pd(_mm256_loadu_pd(segmentPrefix + 4 * (k0 + i)), carry);
+        word |= dropNibbles(before, prefix) << ((4 * k0) & 63);
+        if (((4 * k0) & 63) == 48) {
+            bits[(4 * k0) >> 6] = word;
+            word = 0;
+        }
+        before = prefix[3];
+    }
+    if (((4 * segment) & 63) != 0) bits[(4 * segment) >> 6] = word;
 }
 #endif
+
+bool avx2() { return simdLevel() >= SimdLevel::Avx2; }
 
 } // namespace
 
-void squaredDistancesContiguous(const double* a, double aNorm, const double* first, const double* norms,
-                                std::size_t count, std::size_t features, double* out)
+const char* scanKernelName(SimdLevel level)
 {
 #ifdef BUNRAKU_AVX2_KERNEL
-    if (cpuHasAvx2()) {
-        dotDistancesAvx2(a, aNorm, first, norms, count, features, out);
-        return;
-    }
+    if (level >= SimdLevel::Avx2) return "avx2";
 #endif
-    for (std::size_t j = 0; j < count; ++j) {
-        const double* b = first + j * features;
-        double d0 = 0.0, d1 = 0.0, d2 = 0.0, d3 = 0.0;
-        std::size_t f = 0;
-        for (; f + 4 <= features; f += 4) {
-            d0 += a[f] * b[f];
-            d1 += a[f + 1] * b[f + 1];
-            d2 += a[f + 2] * b[f + 2];
-            d3 += a[f + 3] * b[f + 3];
-        }
-        for (; f < features; ++f) d0 += a[f] * b[f];
-        out[j] = std::max(0.0, aNorm + norms[j] - 2.0 * ((d0 + d1) + (d2 + d3)));
-    }
+    (void)level;
+    return "plain";
 }
 
-void squaredDistances(const double* a, const double* const* rows, std::size_t count, std::size_t features, double* out)
+void windowStart(const double* const* rows, std::size_t length, std::size_t columns, double* running)
 {
 #ifdef BUNRAKU_AVX2_KERNEL
-    if (cpuHasAvx2()) {
-        squaredDistancesAvx2(a, rows, count, features, out);
+    if (avx2()) {
+        windowStartAvx2(rows, length, columns, running);
         return;
     }
 #endif
-    squaredDistancesPlain(a, rows, count, features, out);
-}
-
-void windowStart(const double* e, std::size_t length, std::size_t columns, std::size_t stride, double* running)
-{
-#ifdef BUNRAKU_AVX2_KERNEL
-    if (cpuHasAvx2()) {
-        windowStartAvx2(e, length, columns, stride, running);
-        return;
-    }
-#endif
-    windowStartBody(e, length, columns, stride, running);
+    windowStartBody(rows, length, columns, running);
 }
 
 void windowSlide(double* running, const double* entering, const double* leaving, std::size_t columns)
 {
 #ifdef BUNRAKU_AVX2_KERNEL
-    if (cpuHasAvx2()) {
+    if (avx2()) {
         windowSlideAvx2(running, entering, leaving, columns);
         return;
     }
@@ -268,33 +261,69 @@ void windowSlide(double* running, const double* entering, const double* leaving,
     windowSlideBody(running, entering, leaving, columns);
 }
 
-void prefixMinimumBits(const double* values, std::size_t width, double* prefix, std::uint64_t* bits)
+std::size_t dpSegment(std::size_t width) { return (width / 4 + 1 + 3) / 4 * 4; }
+
+void dpFirstRow(const DpCost& cost, std::size_t width, std::size_t low, std::size_t high, double* d, double* segmentPrefix)
 {
-    std::fill(bits, bits + (width + 63) / 64, std::uint64_t(0));
+    const std::size_t segment = dpSegment(width);
+    slideIfAsked(cost, segment);
+    double run = kInfinity;
+    for (std::size_t c = 0; c < 4 * segment; ++c) {
+        const double value = c < low || c > high ? kInfinity : cost.running[c];
+        if (c % segment == 0) run = kInfinity;
+        run = std::min(run, value);
+        d[dpEntry(c, segment)] = value;
+        segmentPrefix[dpEntry(c, segment)] = run;
+    }
+}
+
+void dpRow(const double* segmentPrefix, const DpCost& cost, std::size_t width, std::size_t low, std::size_t high,
+           std::uint64_t* bits, double* d, double* nextSegmentPrefix)
+{
 #ifdef BUNRAKU_AVX2_KERNEL
-    if (cpuHasAvx2()) {
-        prefixAvx2(values, width, prefix, bits, nullptr, nullptr);
+    if (avx2()) {
+        const bool masked = low > 0 || high + 1 < width;
+        if (cost.entering)
+            masked ? dpRowAvx2<true, true>(segmentPrefix, cost, width, low, high, bits, d, nextSegmentPrefix)
+                   : dpRowAvx2<true, false>(segmentPrefix, cost, width, low, high, bits, d, nextSegmentPrefix);
+        else
+            masked ? dpRowAvx2<false, true>(segmentPrefix, cost, width, low, high, bits, d, nextSegmentPrefix)
+                   : dpRowAvx2<false, false>(segmentPrefix, cost, width, low, high, bits, d, nextSegmentPrefix);
         return;
     }
 #endif
-    prefixPlain(values, width, prefix, bits);
+    dpRowPlain(segmentPrefix, cost, width, low, high, bits, d, nextSegmentPrefix);
 }
 
-void dynamicProgrammeRow(const double* previous, const double* cost, std::size_t width, std::size_t low,
-                         std::size_t high, double* prefix, std::uint64_t* bits, double* current)
+void dpDropBits(const double* segmentPrefix, std::size_t width, std::uint64_t* bits)
 {
-    std::fill(bits, bits + (width + 63) / 64, std::uint64_t(0));
-    std::size_t done = 0;
 #ifdef BUNRAKU_AVX2_KERNEL
-    if (cpuHasAvx2())
-        done = prefixAvx2(previous, width, prefix, bits, cost, current);
-    else
+    if (avx2()) {
+        dropBitsAvx2(segmentPrefix, dpSegment(width), bits);
+        return;
+    }
 #endif
-        prefixPlain(previous, width, prefix, bits);
-    prefix[width] = prefix[width - 1]; // column width - 1 reads the whole previous row
-    for (std::size_t j = done; j < width; ++j) current[j] = cost[j] + prefix[j + 1];
-    std::fill(current, current + low, kInfinity);
-    std::fill(current + high + 1, current + width, kInfinity);
+    dropBitsPlain(segmentPrefix, dpSegment(width), bits);
+}
+
+std::ptrdiff_t lastDropAtOrBelow(const std::uint64_t* bits, std::size_t column, std::size_t segment)
+{
+    // Lane l's bits sit at entries 4 k + l: search the column's quarter up to its step, then the
+    // quarters before it whole.
+    constexpr std::uint64_t kLaneBits = 0x1111111111111111ull;
+    for (std::ptrdiff_t lane = std::ptrdiff_t(column / segment); lane >= 0; --lane) {
+        const std::size_t step = std::size_t(lane) == column / segment ? column % segment : segment - 1;
+        const std::size_t top = 4 * step + std::size_t(lane); // highest entry to look at
+        for (std::ptrdiff_t word = std::ptrdiff_t(top >> 6); word >= 0; --word) {
+            std::uint64_t mask = bits[word] & (kLaneBits << lane);
+            if (std::size_t(word) == top >> 6 && (top & 63) != 63) mask &= (std::uint64_t(1) << ((top & 63) + 1)) - 1;
+            if (mask != 0) {
+                const std::size_t entry = std::size_t(word) * 64 + 63 - std::size_t(__builtin_clzll(mask));
+                return std::ptrdiff_t(std::size_t(lane) * segment + entry / 4);
+            }
+        }
+    }
+    return -1;
 }
 
 } // namespace bunraku::analysis::detail

@@ -1,38 +1,64 @@
 #pragma once
-/// Internal: the innermost loops of matching, each with an AVX2/FMA version chosen at run time
-/// when the CPU has it (the portable build targets baseline x86-64) and a plain fallback that
-/// gives the same results up to rounding.
+/// Internal: the innermost loops of matching after the band distances (band_distances.h): window
+/// sums and the optimal path's dynamic programme, each with an AVX2 version chosen at run time
+/// (simdLevel(), analysis/wavelet/simd_level.h) and a plain one that gives the same results
+/// exactly (these loops only add, subtract and compare).
+
+#include "analysis/wavelet/simd_level.h"
 
 #include <cstddef>
 #include <cstdint>
 
 namespace bunraku::analysis::detail {
 
-/// out[j] = sum_f (a[f] - rows[j][f])^2 for j < count; every vector has `features` entries.
-void squaredDistances(const double* a, const double* const* rows, std::size_t count, std::size_t features, double* out);
-
-/// The same for `count` consecutive rows starting at `first` (row j at first + j * features),
-/// as |a|^2 + |b_j|^2 - 2 a.b_j (clamped at 0) from the squared norms aNorm and norms[j]: one
-/// multiply-add per feature instead of two.
-void squaredDistancesContiguous(const double* a, double aNorm, const double* first, const double* norms,
-                                std::size_t count, std::size_t features, double* out);
+/// The window sums' and dynamic programme's kernel at a level: "plain" or "avx2" (AVX-512 runs
+/// the AVX2 one).
+const char* scanKernelName(SimdLevel level);
 
 /// Window sums down the rows of e (each column is one diagonal of the band), one row at a time:
-/// windowStart sets running[o] = sum_{s = 0 .. length - 1} e[s * stride + o] for o < columns;
-/// windowSlide moves the window one row on: running = (running + entering) - leaving.
-void windowStart(const double* e, std::size_t length, std::size_t columns, std::size_t stride, double* running);
+/// windowStart sets running[o] = sum_{s = 0 .. length - 1} rows[s][o] for o < columns, adding
+/// the rows in order; windowSlide moves the window one row on: running = (running + entering) - leaving.
+void windowStart(const double* const* rows, std::size_t length, std::size_t columns, double* running);
 void windowSlide(double* running, const double* entering, const double* leaving, std::size_t columns);
 
-/// One row of the optimal path's dynamic programme over a band of `width` cells.
-/// prefix[k] = min(previous[0..k]); bits (one bit per column, 64 a word, (width + 63) / 64
-/// words) get bit k set where the prefix minimum strictly drops at k, so the first minimum of
-/// previous[0..k] is the highest set bit at or below k. Then
-/// current[j] = cost[j] + prefix[min(j + 1, width - 1)] for low <= j <= high and infinity
-/// elsewhere. `prefix` needs width + 4 entries of scratch.
-void dynamicProgrammeRow(const double* previous, const double* cost, std::size_t width, std::size_t low,
-                         std::size_t high, double* prefix, std::uint64_t* bits, double* current);
+/// The optimal path's dynamic programme over a band of `width` columns keeps its rows
+/// interleaved: column c at entry dpEntry(c, S) = 4 (c mod S) + c / S, S = dpSegment(width) (a
+/// multiple of 4 with 4 S > width), so the four quarters of a row run side by side in the
+/// vector lanes and the prefix minimum needs no shuffles. Entries of columns >= width are
+/// padding: infinity in D rows. Drop bits use the same order (dpWords(S) words a row).
+inline constexpr std::size_t kDpLanes = 4;
+std::size_t dpSegment(std::size_t width);
+inline std::size_t dpEntry(std::size_t column, std::size_t segment) { return kDpLanes * (column % segment) + column / segment; }
+inline std::size_t dpWords(std::size_t segment) { return (kDpLanes * segment + 63) / 64; }
 
-/// Just the prefix bits of `values` (as dynamicProgrammeRow), for the last row.
-void prefixMinimumBits(const double* values, std::size_t width, double* prefix, std::uint64_t* bits);
+/// A row's costs in column order, readable for 4 S entries, those >= width +infinity. With
+/// `entering` and `leaving` (4 S entries, 0 past width) the costs are window sums slid one row
+/// on first: running = (running + entering) - leaving, stored back.
+struct DpCost {
+    double* running = nullptr;
+    const double* entering = nullptr;
+    const double* leaving = nullptr;
+};
+
+/// Row 0: D = cost in low .. high, infinity elsewhere (interleaved), and the prefix minima of
+/// D within each quarter (segmentPrefix[dpEntry(c)] = min D(c0 .. c), c0 the quarter's first column).
+void dpFirstRow(const DpCost& cost, std::size_t width, std::size_t low, std::size_t high, double* d, double* segmentPrefix);
+
+/// Row t from row t - 1's quarter prefix minima: with P(c) = min D_{t-1}(0 .. c),
+/// D_t(c) = cost(c) + P(min(c + 1, width - 1)) for low <= c <= high and infinity elsewhere
+/// (thesis 3.5.3's monotone path: the previous row's column c + 1 is the same sample frame);
+/// `bits` gets row t - 1's drops (bit dpEntry(c) set where P strictly drops at c, so the first
+/// minimum of D_{t-1}(0 .. c) is the highest set bit at or below c); d = D_t (skipped when null:
+/// the next row needs only its quarter prefix minima) and nextSegmentPrefix those minima. Every
+/// word of `bits` is written.
+void dpRow(const double* segmentPrefix, const DpCost& cost, std::size_t width, std::size_t low, std::size_t high,
+           std::uint64_t* bits, double* d, double* nextSegmentPrefix);
+
+/// The drop bits of the row whose quarter prefix minima are given (the last row).
+void dpDropBits(const double* segmentPrefix, std::size_t width, std::uint64_t* bits);
+
+/// The highest column <= `column` whose drop bit is set in one row's bits: the first minimum
+/// of that row's columns 0 .. column; -1 when there is none.
+std::ptrdiff_t lastDropAtOrBelow(const std::uint64_t* bits, std::size_t column, std::size_t segment);
 
 } // namespace bunraku::analysis::detail

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -14,9 +15,25 @@ namespace bunraku::analysis {
 
 namespace {
 
-constexpr Eigen::Index kTile = 96; // reference frames per tile (a multiple of the distance kernel's 6-frame blocks)
+// Window sums restart (an exact sum of their rows) every kRestart reference frames, so
+// rounding accumulates over that many slides at most.
+constexpr Eigen::Index kRestart = 96;
+// Band distances are computed kBlock rows at a time (the distance kernel's register blocks),
+// from feature-major copies of kTileRows rows' features (a multiple of kBlock).
+constexpr Eigen::Index kBlock = 6;
+constexpr Eigen::Index kTileRows = 480;
 
 Eigen::Index roundUp(Eigen::Index value, Eigen::Index step) { return (value + step - 1) / step * step; }
+
+// norms[i] = sum_k series[k * stride + i]^2 for from <= i < to, summed over k in order.
+void squaredNorms(const double* series, Eigen::Index stride, Eigen::Index count, Eigen::Index from, Eigen::Index to, double* norms)
+{
+    std::fill(norms + from, norms + to, 0.0);
+    for (Eigen::Index k = 0; k < count; ++k) {
+        const double* values = series + k * stride;
+        for (Eigen::Index i = from; i < to; ++i) norms[i] += values[i] * values[i];
+    }
+}
 
 // Feature-major copy of the listed feature columns of frames first + from .. first + to - 1
 // (one tile's worth, so it stays in cache): out[k * stride + (i - first)] = features(clamp(i),
@@ -45,31 +62,18 @@ void featureMajor(const Features& features, const std::vector<Eigen::Index>& col
             std::fill(target + inTo, target + to, series[last]);
         }
     }
-    std::fill(norms + from, norms + to, 0.0);
-    for (std::size_t k = 0; k < columns.size(); ++k) {
-        const double* values = out + Eigen::Index(k) * stride;
-        for (Eigen::Index i = from; i < to; ++i) norms[i] += values[i] * values[i];
-    }
+    squaredNorms(out, stride, Eigen::Index(columns.size()), from, to, norms);
 }
 
-// out[j] = sum over the window's rows of ring[k][j].
-void sumRows(const double* __restrict ring, Eigen::Index rows, Eigen::Index width, double* __restrict out)
+// The columns listed are consecutive series of column-major features (a coupling set's own
+// features): tiles away from the takes' ends are then read in place, not copied.
+template <class Features>
+bool consecutiveSeries(const std::vector<Eigen::Index>& columns)
 {
-    for (Eigen::Index j = 0; j < width; ++j) out[j] = ring[j];
-    for (Eigen::Index k = 1; k < rows; ++k) {
-        const double* __restrict row = ring + k * width;
-        for (Eigen::Index j = 0; j < width; ++j) out[j] += row[j];
-    }
-}
-
-void addRow(double* __restrict out, const double* __restrict row, Eigen::Index width)
-{
-    for (Eigen::Index j = 0; j < width; ++j) out[j] += row[j];
-}
-
-void subtractRow(double* __restrict out, const double* __restrict row, Eigen::Index width)
-{
-    for (Eigen::Index j = 0; j < width; ++j) out[j] -= row[j];
+    if constexpr (Features::IsRowMajor) return false;
+    for (std::size_t k = 0; k < columns.size(); ++k)
+        if (columns[k] != columns[0] + Eigen::Index(k)) return false;
+    return true;
 }
 
 // The path once every row is in, its cost and its smooth (sub-frame) warp.
@@ -82,170 +86,114 @@ MatchResult finishedMatch(PathBuilder& builder, const RunControl& control)
     return result;
 }
 
-// Greedy and independent paths: band rows streamed one at a time, so greedy can skip the
-// distances left of its previous choice (about half the band).
-Result<MatchResult> matchStreamed(const FeatureMatrix& reference, const FeatureMatrix& sample, const FeatureMatchOptions& options,
-                                  const RunControl& control)
-{
-    const Eigen::Index referenceFrames = reference.rows();
-    const Eigen::Index sampleFrames = sample.rows();
-    const int band = options.searchBand;
-    const int tau = options.tau;
-    const Eigen::Index width = 2 * band + 1;
-    const Eigen::Index windowRows = 2 * tau + 1;
-    const std::size_t features = std::size_t(reference.cols());
-
-    // Ring of e(i, j) = |f_ref(i) - f_smp(i - T_cmp + j)|^2 rows for i = t - tau .. t + tau.
-    // Window indices beyond the ends replicate the edge frame (clamped row indices).
-    std::vector<double> ring(std::size_t(windowRows * width));
-    std::vector<const double*> rows(static_cast<std::size_t>(width));
-    const Eigen::VectorXd referenceNorms = reference.rowwise().squaredNorm();
-    const Eigen::VectorXd sampleNorms = sample.rowwise().squaredNorm();
-    // Row i's entries for sample frames below `firstSample` are left at 0: the greedy scan
-    // never reads a window that needs them (see the loop below).
-    auto fillRow = [&](Eigen::Index i, Eigen::Index firstSample) {
-        const Eigen::Index r = std::clamp<Eigen::Index>(i, 0, referenceFrames - 1);
-        const Eigen::Index slot = ((i % windowRows) + windowRows) % windowRows;
-        double* out = ring.data() + slot * width;
-        const Eigen::Index skip = std::clamp<Eigen::Index>(firstSample - (i - band), 0, width);
-        std::fill(out, out + skip, 0.0);
-        const double* a = reference.data() + r * reference.cols();
-        if (i - band + skip >= 0 && i + band <= sampleFrames - 1) {
-            detail::squaredDistancesContiguous(a, referenceNorms[r], sample.data() + (i - band + skip) * sample.cols(),
-                                               sampleNorms.data() + (i - band + skip), std::size_t(width - skip), features,
-                                               out + skip);
-            return;
-        }
-        for (Eigen::Index j = skip; j < width; ++j) {
-            const Eigen::Index s = std::clamp<Eigen::Index>(i - band + j, 0, sampleFrames - 1);
-            rows[std::size_t(j)] = sample.data() + s * sample.cols();
-        }
-        detail::squaredDistances(a, rows.data() + skip, std::size_t(width - skip), features, out + skip);
-    };
-
-    PathBuilder builder(band, referenceFrames, sampleFrames, options.path);
-    std::vector<double> cost(static_cast<std::size_t>(width));
-    for (Eigen::Index i = -tau; i < tau; ++i) fillRow(i, std::numeric_limits<Eigen::Index>::min() / 2);
-    const Eigen::Index progressEvery = std::max<Eigen::Index>(1, referenceFrames / 50);
-    for (Eigen::Index t = 0; t < referenceFrames; ++t) {
-        if (t % progressEvery == 0) {
-            if (control.cancelled()) return makeError(ErrorCode::Cancelled, "matching cancelled");
-            control.report(double(t) / double(referenceFrames));
-        }
-        // Greedy reads only sample frames >= its previous choice p, so the window of a cell it reads
-        // needs row t + tau only from sample frame p - tau on (earlier rows were filled under
-        // smaller or equal bounds). Other paths need every entry.
-        const Eigen::Index firstSample = options.path == PathMethod::Greedy && t > 0
-                                             ? builder.firstUsefulSample() - tau
-                                             : std::numeric_limits<Eigen::Index>::min() / 2;
-        // Slide the window: add the new row, drop the one leaving; an exact re-sum every 256
-        // rows keeps rounding from accumulating.
-        if (t % 256 == 0) {
-            fillRow(t + tau, firstSample);
-            sumRows(ring.data(), windowRows, width, cost.data());
-        } else {
-            const Eigen::Index leaving = (((t - tau - 1) % windowRows) + windowRows) % windowRows;
-            subtractRow(cost.data(), ring.data() + leaving * width, width);
-            fillRow(t + tau, firstSample);
-            addRow(cost.data(), ring.data() + ((((t + tau) % windowRows) + windowRows) % windowRows) * width, width);
-        }
-        builder.addRow(cost.data());
-    }
-    return finishedMatch(builder, control);
-}
-
-// Optimal path: every band cell is needed, so each per-frame distance is computed once on the
-// band's diagonals, tile by tile.
+// Every path: the per-frame squared distances e(i, o) = |f_ref(i) - f_smp(i - T_cmp + o)|^2 on
+// the band's diagonals o = 0 .. 2 T_cmp, computed once each, kBlock reference frames at a time
+// into a ring of rows; window sums along each diagonal, cost(t, o) = sum_{i = t - tau .. t + tau}
+// e(i, o) (eq. 3.21), slid one row at a time; each row handed to the path as soon as its
+// window is complete. The greedy scan reads only sample frames at or after its previous
+// choice, so its distances left of that (less the window) are skipped.
 template <class Features>
-Result<MatchResult> matchTiled(const Features& reference, const Features& sample, const std::vector<Eigen::Index>& columns,
-                               const FeatureMatchOptions& options, const RunControl& control)
+Result<MatchResult> matchBand(const Features& reference, const Features& sample, const std::vector<Eigen::Index>& columns,
+                              const FeatureMatchOptions& options, const RunControl& control)
 {
     const Eigen::Index referenceFrames = reference.rows();
     const Eigen::Index sampleFrames = sample.rows();
-    const int band = options.searchBand;
-    // Per-frame squared distances e(i, o) = |f_ref(i) - f_smp(i + o)|^2 on the diagonals
-    // o = -T_cmp..T_cmp (column j = o + T_cmp), computed once each, then window sums along each
-    // diagonal: cost(t, o) = sum_{i = t - tau .. t + tau} e(i, o) (eq. 3.21). Tiles of kTile
-    // reference frames keep the work in cache; each tile reuses the previous tile's last
-    // 2 tau distances of every diagonal.
+    const Eigen::Index band = options.searchBand;
     const Eigen::Index tau = options.tau;
-    const Eigen::Index width = 2 * Eigen::Index(band) + 1;
-    const Eigen::Index paddedWidth = roundUp(width, 4);
+    const Eigen::Index width = 2 * band + 1;
+    // Rows of distances and window sums padded as the path's sliding rows need (0 and infinity).
+    const Eigen::Index paddedWidth = std::max(roundUp(width, 4), PathBuilder::slidingRowLength(int(band)));
     const auto features = Eigen::Index(columns.size());
-    const auto readAhead = Eigen::Index(detail::kBandReadAhead);
-    // Tile buffers: rows of distances for frames t0 - tau .. (position p <-> frame t0 - tau + p),
-    // the window costs of the current row, and feature-major copies of the frames
-    // they need, padded with the edge frames (window indices beyond the ends replicate the edge
-    // frame); short strides keep them in cache.
-    const Eigen::Index distanceRows = roundUp(kTile + 2 * tau, 4);
-    const Eigen::Index referenceLength = distanceRows;
-    const Eigen::Index sampleLength = distanceRows + width + readAhead;
-    std::vector<double> a(std::size_t(referenceLength * features));
-    std::vector<double> aNorms(static_cast<std::size_t>(referenceLength));
-    std::vector<double> b(std::size_t(sampleLength * features));
-    std::vector<double> bNorms(static_cast<std::size_t>(sampleLength));
-    std::vector<const double*> aSeries(static_cast<std::size_t>(features));
-    std::vector<const double*> bSeries(static_cast<std::size_t>(features));
-    std::vector<double> distances(std::size_t(distanceRows * paddedWidth));
-    std::vector<double> running(static_cast<std::size_t>(paddedWidth));
+    const bool greedy = options.path == PathMethod::Greedy;
+    // Tile copies, padded with the edge frames: position p of `a` is reference frame
+    // tileStart + p, of `b` sample frame tileStart - T_cmp + p (or the same positions of the
+    // features themselves, read in place).
+    const Eigen::Index tileRows = std::min(kTileRows, roundUp(referenceFrames + 2 * tau, kBlock));
+    const Eigen::Index referenceLength = tileRows;
+    const Eigen::Index sampleLength = roundUp(tileRows + width + Eigen::Index(detail::kBandReadAhead), 4);
+    // (Left uninitialised: every entry the kernels read is copied in first, and tiles read in
+    // place never touch the copies.)
+    const std::unique_ptr<double[]> a(new double[std::size_t(referenceLength * features)]);
+    const std::unique_ptr<double[]> aNorms(new double[std::size_t(referenceLength)]);
+    const std::unique_ptr<double[]> b(new double[std::size_t(sampleLength * features)]);
+    const std::unique_ptr<double[]> bNorms(new double[std::size_t(sampleLength)]);
+    // Distance rows -tau .. referenceFrames - 1 + tau; row i in slot (i + tau) mod ringRows. Row
+    // t's window slides in row t + tau and out row t - tau - 1, while the block just computed
+    // holds up to kBlock rows past t + tau.
+    const Eigen::Index ringRows = roundUp(2 * tau + 1 + kBlock, kBlock);
+    std::vector<double> ring(std::size_t(ringRows * paddedWidth));
+    auto distanceRow = [&](Eigen::Index i) { return ring.data() + ((i + tau) % ringRows) * paddedWidth; };
+    std::vector<const double*> window(static_cast<std::size_t>(2 * tau + 1));
+    std::vector<double> running(static_cast<std::size_t>(paddedWidth), std::numeric_limits<double>::infinity());
 
-    PathBuilder builder(band, referenceFrames, sampleFrames, options.path);
-    const Eigen::Index progressEvery = std::max<Eigen::Index>(kTile, roundUp(referenceFrames / 50, kTile));
-    for (Eigen::Index t0 = 0; t0 < referenceFrames; t0 += kTile) {
-        if (t0 % progressEvery == 0) {
+    PathBuilder builder(int(band), referenceFrames, sampleFrames, options.path);
+    const Eigen::Index lastRow = referenceFrames - 1 + tau;
+    const Eigen::Index progressEvery = std::max<Eigen::Index>(kRestart, roundUp(referenceFrames / 50, kBlock));
+    Eigen::Index tileStart = 0;
+    Eigen::Index tileEnd = -tau; // rows tileStart .. tileEnd - 1 are in the copies
+    const bool inPlace = consecutiveSeries<Features>(columns);
+    const double* aBase = a.get();
+    const double* bBase = b.get();
+    Eigen::Index aStride = referenceLength;
+    Eigen::Index bStride = sampleLength;
+    Eigen::Index t = 0;          // the next reference frame to add to the path
+    for (Eigen::Index i0 = -tau; t < referenceFrames; i0 += kBlock) {
+        const Eigen::Index count = std::min(kBlock, lastRow + 1 - i0);
+        if (i0 + count > tileEnd) {
             if (control.cancelled()) return makeError(ErrorCode::Cancelled, "matching cancelled");
-            control.report(double(t0) / double(referenceFrames));
+            tileStart = i0;
+            tileEnd = std::min(i0 + tileRows, lastRow + 1);
+            const Eigen::Index sampleFrom = tileStart - band;
+            const Eigen::Index sampleCount = tileEnd - tileStart + width + Eigen::Index(detail::kBandReadAhead);
+            if (inPlace && tileStart >= 0 && tileEnd <= referenceFrames && sampleFrom >= 0 && sampleFrom + sampleCount <= sampleFrames) {
+                // The norms pass also brings the tile's features into cache for the kernel.
+                aBase = reference.data() + columns[0] * referenceFrames + tileStart;
+                aStride = referenceFrames;
+                bBase = sample.data() + columns[0] * sampleFrames + sampleFrom;
+                bStride = sampleFrames;
+                squaredNorms(aBase, aStride, features, 0, tileEnd - tileStart, aNorms.get());
+                squaredNorms(bBase, bStride, features, 0, sampleCount, bNorms.get());
+            } else {
+                featureMajor(reference, columns, tileStart, 0, tileEnd - tileStart, referenceLength, a.get(), aNorms.get());
+                featureMajor(sample, columns, sampleFrom, 0, sampleCount, sampleLength, b.get(), bNorms.get());
+                aBase = a.get();
+                aStride = referenceLength;
+                bBase = b.get();
+                bStride = sampleLength;
+            }
         }
-        const Eigen::Index count = std::min(kTile, referenceFrames - t0);
-        // The first tile computes all count + 2 tau rows, later ones keep the previous (full)
-        // tile's last 2 tau.
-        const Eigen::Index kept = t0 == 0 ? 0 : 2 * tau;
-        if (kept > 0) std::copy_n(distances.data() + kTile * paddedWidth, kept * paddedWidth, distances.data());
-        const Eigen::Index fresh = count + 2 * tau - kept;
-        // Position p of a is reference frame t0 - tau + p; of b, sample frame t0 - tau - T_cmp + p.
-        featureMajor(reference, columns, t0 - tau, kept, kept + fresh, referenceLength, a.data(), aNorms.data());
-        // The sample copy slides by kTile frames a tile: keep what overlaps, copy the rest.
-        const Eigen::Index reused = t0 == 0 ? 0 : sampleLength - kTile;
-        if (reused > 0) {
-            for (Eigen::Index f = 0; f < features; ++f)
-                std::copy_n(b.data() + f * sampleLength + kTile, reused, b.data() + f * sampleLength);
-            std::copy_n(bNorms.data() + kTile, reused, bNorms.data());
-        }
-        featureMajor(sample, columns, t0 - tau - band, reused, sampleLength, sampleLength, b.data(), bNorms.data());
+        const Eigen::Index offset = i0 - tileStart;
         detail::BandTile tile;
-        for (Eigen::Index k = 0; k < features; ++k) {
-            aSeries[std::size_t(k)] = a.data() + k * referenceLength + kept;
-            bSeries[std::size_t(k)] = b.data() + k * sampleLength + kept;
-        }
-        tile.a = aSeries.data();
-        tile.aNorms = aNorms.data() + kept;
-        tile.bNorms = bNorms.data() + kept;
-        tile.b = bSeries.data();
+        tile.a = aBase + offset;
+        tile.aStride = std::size_t(aStride);
+        tile.aNorms = aNorms.get() + offset;
+        tile.b = bBase + offset;
+        tile.bStride = std::size_t(bStride);
+        tile.bNorms = bNorms.get() + offset;
         tile.features = std::size_t(features);
-        tile.count = std::size_t(fresh);
+        tile.count = std::size_t(count);
         tile.width = std::size_t(width);
-        tile.e = distances.data() + kept * paddedWidth;
+        tile.e = distanceRow(i0);
         tile.eStride = std::size_t(paddedWidth);
+        // Greedy reads only sample frames >= its previous choice p in rows t.., so the windows
+        // it reads need these rows only from sample frame p - tau on (later choices only grow).
+        if (greedy && t > 0) tile.from = std::size_t(std::max<Eigen::Index>(0, builder.firstUsefulSample() - tau - (i0 - band)));
         detail::bandDistances(tile);
-        // Each tile starts its window sums afresh (rounding accumulates over kTile rows at most).
-        detail::windowStart(distances.data(), std::size_t(2 * tau + 1), std::size_t(width), std::size_t(paddedWidth),
-                            running.data());
-        builder.addRow(running.data());
-        for (Eigen::Index p = 1; p < count; ++p) {
-            detail::windowSlide(running.data(), distances.data() + (p + 2 * tau) * paddedWidth,
-                                distances.data() + (p - 1) * paddedWidth, std::size_t(width));
-            builder.addRow(running.data());
+        for (; t < referenceFrames && t + tau < i0 + count; ++t) {
+            if (t % progressEvery == 0) {
+                if (control.cancelled()) return makeError(ErrorCode::Cancelled, "matching cancelled");
+                control.report(double(t) / double(referenceFrames));
+            }
+            if (t % kRestart == 0) {
+                for (Eigen::Index s = 0; s <= 2 * tau; ++s) window[std::size_t(s)] = distanceRow(t - tau + s);
+                detail::windowStart(window.data(), window.size(), std::size_t(width), running.data());
+                builder.addRow(running.data());
+            } else {
+                builder.addRow(running.data(), distanceRow(t + tau), distanceRow(t - tau - 1));
+            }
         }
     }
     return finishedMatch(builder, control);
-}
-
-template <class Features>
-FeatureMatrix selectedColumns(const Features& features, const std::vector<Eigen::Index>& columns)
-{
-    FeatureMatrix out(features.rows(), Eigen::Index(columns.size()));
-    for (std::size_t k = 0; k < columns.size(); ++k) out.col(Eigen::Index(k)) = features.col(columns[k]);
-    return out;
 }
 
 template <class Features>
@@ -274,14 +222,7 @@ Result<MatchResult> matchSelected(const Features& reference, const Features& sam
                              + std::to_string(sampleFrames) + " frames) plus the search band T_cmp = " + std::to_string(band)
                              + ": its last frames have no sample frame to match");
 
-    if (options.path == PathMethod::Optimal) return matchTiled(reference, sample, columns, options, control);
-    // The streamed paths read whole rows: copy the selected columns when they are not all of them.
-    if constexpr (Features::IsRowMajor) {
-        const bool all = Eigen::Index(columns.size()) == reference.cols() && std::is_sorted(columns.begin(), columns.end())
-                         && std::adjacent_find(columns.begin(), columns.end()) == columns.end();
-        if (all) return matchStreamed(reference, sample, options, control);
-    }
-    return matchStreamed(selectedColumns(reference, columns), selectedColumns(sample, columns), options, control);
+    return matchBand(reference, sample, columns, options, control);
 }
 
 } // namespace

@@ -6,6 +6,7 @@
 #include "analysis/core/result.h"
 #include "analysis/core/run_control.h"
 #include "analysis/normalise/wavelet_matching.h"
+#include "analysis/wavelet/wavelet.h"
 
 #include <Eigen/Core>
 
@@ -36,10 +37,35 @@ struct NoiseExperimentOptions {
     PathMethod path = PathMethod::Independent;
 };
 
+/// The thesis's bands (3.4, Table 3.1, Figs. 3.7 and 3.9) as fractions of its signals'
+/// frequencies: "wavelet below the noise" considered 0.0178-0.0229 Hz with the reference at
+/// 0.0199 Hz (0.894-1.151 x the reference's frequency); "with the noise band" considered up to
+/// 0.160 Hz with the noise at 0.0801 Hz (2.0 x the noise's frequency), from the same lowest
+/// frequency. The thesis's "Hz" are cycles per sample of its 5119-sample signals: the analysing
+/// wavelet's 0.8005 Hz is sym3's centre frequency at scale 1 (eq. 3.14, F_scale = F_psi / scale).
+struct ThesisNoiseBands {
+    double lowestOfReference = 0.0178 / 0.0199;  ///< 0.894
+    double highestOfReference = 0.0229 / 0.0199; ///< 1.151
+    double highestOfNoise = 0.160 / 0.0801;      ///< 2.0
+};
+
+/// The integer scales whose pseudo-frequency (centre frequency / scale, cycles per frame) lies in
+/// [lowFrequency, highFrequency] for `wavelet`; empty when none does.
+std::vector<double> scalesInBand(double lowFrequency, double highFrequency, const Wavelet& wavelet = sym3Wavelet());
+
+/// The experiment with the thesis's bands: `base` (the signals, path, tau and band) with
+/// scalesBelowNoise and scalesWithNoise taken from ThesisNoiseBands at base's frequencies
+/// (for the defaults, 0.025 and 0.1 cycles per frame: scales 28..36 and 4..36).
+NoiseExperimentOptions thesisBandOptions(const NoiseExperimentOptions& base = {}, const ThesisNoiseBands& bands = {});
+
 struct MethodError {
     std::string name;
     double meanAbsErrorFrames = 0;
     double maxAbsErrorFrames = 0;
+    /// RMS of (noiseless sample at the matched frame - reference) over the frames: how far the
+    /// normalised signal is from the reference, what the thesis's Figs. 3.5-3.9 show (blind to
+    /// a match one period off).
+    double shapeRms = 0;
     std::vector<double> scales; ///< the scales used (empty for amplitude matching)
 };
 
@@ -48,6 +74,7 @@ struct NoiseExperimentResult {
     std::vector<MethodError> methods;
     Eigen::VectorXd reference;     ///< frames
     Eigen::VectorXd sample;        ///< frames, with the noise
+    Eigen::VectorXd cleanSample;   ///< frames, the sample without the noise (signal 1 of eq. 3.12)
     Eigen::VectorXd trueWarp;      ///< t_ref -> true t_smp (frames, sub-frame)
 };
 

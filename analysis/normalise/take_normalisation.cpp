@@ -2,6 +2,10 @@
 
 #include "analysis/normalise/feature_matching.h"
 #include "analysis/normalise/wavelet_features.h"
+#include "analysis/skeleton/skeleton_resample.h"
+
+#include <algorithm>
+#include <cmath>
 
 #include <optional>
 #include <string>
@@ -34,6 +38,8 @@ constexpr double kWholeTakeFeatureBytes = 64e6;
 // Everything that depends on the reference only, computed once for many samples.
 struct Prepared {
     Coupling coupling;
+    RotationChart chart;                  // the reference's mean part orientations
+    Eigen::MatrixXd referenceCoordinates; // the reference in rotation coordinates
     Eigen::VectorXd weights;
     CwtFilterBank bank;
     std::optional<FeatureSeries> referenceFeatures; // frames x channels * perChannel, for short references
@@ -77,7 +83,9 @@ Result<Prepared> prepare(const Take& reference, const NormaliseOptions& options,
     auto coupling = couplingFor(reference, options.coupling);
     if (!coupling) return coupling.error();
     prepared.coupling = std::move(*coupling);
-    prepared.weights = channelWeights(reference.values, options.match.weighting);
+    prepared.chart = meanPartChart({&reference}, ChartTime::Constant);
+    prepared.referenceCoordinates = rotationCoordinates(reference, prepared.chart);
+    prepared.weights = channelWeights(prepared.referenceCoordinates, options.match.weighting);
     if (options.features == MatchFeatures::Wavelet) {
         auto bank = makeCwtFilterBank(options.match.scales, options.match.cwt);
         if (!bank) return bank.error();
@@ -85,7 +93,7 @@ Result<Prepared> prepare(const Take& reference, const NormaliseOptions& options,
         prepared.perChannel = Eigen::Index(options.match.scales.size()) + (options.match.approximationWeight > 0 ? 1 : 0);
     }
     if (wholeTake(reference.frameCount(), reference.channelCount(), prepared.perChannel)) {
-        auto features = featuresOf(reference.values, prepared.weights, prepared, options, control);
+        auto features = featuresOf(prepared.referenceCoordinates, prepared.weights, prepared, options, control);
         if (!features) return features.error();
         prepared.referenceFeatures = std::move(*features);
     }
@@ -112,21 +120,32 @@ Result<TakeNormalisation> normalisePrepared(const Take& reference, const Take& s
         if (auto status = validateMatchOptions(options.match, reference.frameCount(), sample.frameCount()); !status)
             return status.error();
     }
+    // The sample in rotation coordinates about the reference's chart, so the matching sees the
+    // orientations and not the Euler branch they happen to be written on.
+    Take aligned;
+    aligned.channels = reference.channels;
+    aligned.values = *values;
+    const Eigen::MatrixXd coordinates = rotationCoordinates(aligned, prepared.chart);
+    // Takes of other lengths: a global time scale first (TimeScaling), then the local matching.
+    const Eigen::Index sampleFrames = sample.frameCount();
+    const double scale = globalTimeScale(options.match, reference.frameCount(), sampleFrames);
+    const Eigen::MatrixXd matched = scale == 1.0 ? coordinates : scaledInTime(coordinates, scale, reference.frameCount());
     // Short takes: every channel's features at once; long ones: a coupling set at a time.
     std::optional<FeatureSeries> sampleFeatures;
-    if (prepared.referenceFeatures && wholeTake(values->rows(), values->cols(), prepared.perChannel)) {
-        auto features = featuresOf(*values, prepared.weights, prepared, options, control);
+    if (prepared.referenceFeatures && wholeTake(matched.rows(), matched.cols(), prepared.perChannel)) {
+        auto features = featuresOf(matched, prepared.weights, prepared, options, control);
         if (!features) return features.error();
         sampleFeatures = std::move(*features);
     }
 
     TakeNormalisation result;
     result.coupling = prepared.coupling;
+    result.chart = prepared.chart;
     result.normalised.channels = reference.channels;
     result.normalised.rateHz = sample.rateHz;
     result.normalised.labels = sample.labels;
     result.normalised.labels.source = "normalised to " + reference.displayName();
-    result.normalised.values.resize(reference.frameCount(), reference.channelCount());
+    result.coordinates.resize(reference.frameCount(), reference.channelCount());
     result.correspondence.resize(reference.frameCount(), reference.channelCount());
     const FeatureMatchOptions matchOptions{options.match.tau, options.match.searchBand, options.match.path};
     FeatureSeries referenceSet, sampleSet; // reused from set to set
@@ -136,20 +155,27 @@ Result<TakeNormalisation> normalisePrepared(const Take& reference, const Take& s
             if (sampleFeatures)
                 return matchFeatures(*prepared.referenceFeatures, *sampleFeatures, setColumns(set, prepared.perChannel),
                                      matchOptions, control);
-            if (auto status = setFeatures(reference.values, set, prepared, options, referenceSet, control); !status)
+            if (auto status = setFeatures(prepared.referenceCoordinates, set, prepared, options, referenceSet, control); !status)
                 return status.error();
-            if (auto status = setFeatures(*values, set, prepared, options, sampleSet, control); !status) return status.error();
+            if (auto status = setFeatures(matched, set, prepared, options, sampleSet, control); !status) return status.error();
             return matchFeatures(referenceSet, sampleSet, matchOptions, control);
         };
         auto match = matchSet();
         if (!match) return match.error();
+        MatchResult unscaled = unscaledMatch(std::move(match).value(), scale, sampleFrames);
         for (Eigen::Index c : set) {
-            result.correspondence.col(c) = match->correspondence;
-            result.normalised.values.col(c) = applyCorrespondence(values->col(c), match->correspondence);
+            result.correspondence.col(c) = unscaled.correspondence;
+            result.coordinates.col(c) = applyCorrespondence(coordinates.col(c), unscaled.correspondence);
         }
-        result.cost += match->cost;
-        result.matches.push_back(std::move(*match));
+        result.cost += unscaled.cost;
+        result.matches.push_back(std::move(unscaled));
     }
+    // Back to Euler angles, continuous and starting on the branch of the sample frame shown first.
+    result.bodyTime = result.correspondence.cast<double>().rowwise().mean();
+    const Eigen::Index first = std::clamp<Eigen::Index>(Eigen::Index(std::lround(result.bodyTime[0])), 0, sampleFrames - 1);
+    result.normalised.values =
+        eulerFromRotationCoordinates(aligned, result.coordinates, prepared.chart, Eigen::RowVectorXd(values->row(first)));
+    if (sample.skeleton) result.normalised.skeleton = resampleSkeletalMotion(*sample.skeleton, result.bodyTime);
     return result;
 }
 

@@ -1,7 +1,12 @@
 #pragma once
 /// Normalising whole takes (thesis 3.6): every coupling set of a sample take is matched to the
-/// reference take and the sample is resampled on the reference's time axis.
+/// reference take and the sample is resampled on the reference's time axis. Angles are matched
+/// and resampled as rotation coordinates (analysis/core/angle_channels.h) about the
+/// reference's mean part orientations, so neither the Euler branch nor gimbal regions of the
+/// takes change the result; the normalised take's angles are Euler-filtered. Takes of any
+/// lengths: MatchOptions::timeScaling. The sample's full skeleton is resampled at its body time.
 
+#include "analysis/core/angle_channels.h"
 #include "analysis/core/result.h"
 #include "analysis/core/run_control.h"
 #include "analysis/core/take.h"
@@ -34,6 +39,13 @@ struct TakeNormalisation {
     std::vector<MatchResult> matches;
     /// reference frames x channels: the sample frame each channel took at each reference frame.
     Eigen::MatrixXi correspondence;
+    /// reference frames x channels: `normalised` in rotation coordinates about `chart`.
+    Eigen::MatrixXd coordinates;
+    /// The reference's mean part orientations (ChartTime::Constant), where angles were matched.
+    RotationChart chart;
+    /// Per reference frame the (fractional) sample frame the whole body shows: the mean of the
+    /// channels' correspondences. The normalised skeleton is the sample's resampled at it.
+    Eigen::VectorXd bodyTime;
     double cost = 0; ///< summed over the sets
 };
 

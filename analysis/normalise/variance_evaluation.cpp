@@ -1,5 +1,6 @@
 #include "analysis/normalise/variance_evaluation.h"
 
+#include "analysis/core/angle_channels.h"
 #include "analysis/normalise/amplitude_matching.h"
 
 #include <algorithm>
@@ -8,15 +9,29 @@
 
 namespace bunraku::analysis {
 
-Eigen::VectorXd squaredDifference(const Take& reference, const Take& take)
+namespace {
+
+// Sum over the reference's frames of the squared differences of two value matrices (frames
+// missing in `values` repeat its last one).
+Eigen::VectorXd summedSquares(const Eigen::MatrixXd& reference, const Eigen::MatrixXd& values)
 {
-    Eigen::VectorXd sum = Eigen::VectorXd::Zero(reference.channelCount());
-    if (take.frameCount() == 0) return sum;
-    for (Eigen::Index t = 0; t < reference.frameCount(); ++t) {
-        const Eigen::Index frame = std::min<Eigen::Index>(t, take.frameCount() - 1);
-        sum += (take.values.row(frame) - reference.values.row(t)).transpose().array().square().matrix();
+    Eigen::VectorXd sum = Eigen::VectorXd::Zero(reference.cols());
+    if (values.rows() == 0) return sum;
+    for (Eigen::Index t = 0; t < reference.rows(); ++t) {
+        const Eigen::Index frame = std::min<Eigen::Index>(t, values.rows() - 1);
+        sum += (values.row(frame) - reference.row(t)).transpose().array().square().matrix();
     }
     return sum;
+}
+
+} // namespace
+
+Eigen::VectorXd squaredDifference(const Take& reference, const Take& take)
+{
+    if (take.channels != reference.channels || sixDofParts(reference).empty())
+        return summedSquares(reference.values, take.values);
+    const RotationChart chart = meanPartChart({&reference});
+    return summedSquares(rotationCoordinates(reference, chart), rotationCoordinates(take, chart));
 }
 
 Result<VarianceTable> varianceTable(const Take& reference, const std::vector<const Take*>& rawTakes,
@@ -30,30 +45,43 @@ Result<VarianceTable> varianceTable(const Take& reference, const std::vector<con
     table.before.resize(takeCount, reference.channelCount());
     table.after.resize(takeCount, reference.channelCount());
     for (const auto& channel : reference.channels) table.channelNames.push_back(channel.name());
+    const RotationChart chart = meanPartChart({&reference});
+    const Eigen::MatrixXd referenceCoordinates = rotationCoordinates(reference, chart);
     for (Eigen::Index k = 0; k < takeCount; ++k) {
         const Take& raw = *rawTakes[std::size_t(k)];
         const Take& normalised = *normalisedTakes[std::size_t(k)];
         if (raw.channels != reference.channels || normalised.channels != reference.channels)
             return makeError(ErrorCode::InvalidArgument, "variance table: take " + raw.displayName() + " has other channels than the reference");
         table.takeNames.push_back(raw.displayName());
-        table.before.row(k) = squaredDifference(reference, raw).transpose();
-        table.after.row(k) = squaredDifference(reference, normalised).transpose();
+        table.before.row(k) = summedSquares(referenceCoordinates, rotationCoordinates(raw, chart)).transpose();
+        table.after.row(k) = summedSquares(referenceCoordinates, rotationCoordinates(normalised, chart)).transpose();
     }
     table.totalBefore = table.before.rowwise().sum();
     table.totalAfter = table.after.rowwise().sum();
     return table;
 }
 
-Result<ReferenceSuggestion> suggestReference(const std::vector<const Take*>& takes)
+Result<ReferenceSuggestion> suggestReference(const std::vector<const Take*>& givenTakes, const RunControl& control)
 {
-    const std::size_t count = takes.size();
+    const std::size_t count = givenTakes.size();
     if (count == 0) return makeError(ErrorCode::InvalidArgument, "reference suggestion: no takes given");
-    const Take& first = *takes.front();
-    for (const Take* take : takes) {
-        if (take->channels != first.channels || take->frameCount() < 2)
+    for (const Take* take : givenTakes) {
+        if (take->channels != givenTakes.front()->channels || take->frameCount() < 2)
             return makeError(ErrorCode::InvalidArgument, "reference suggestion: take " + take->displayName()
                                                              + " has other channels than the first or fewer than 2 frames");
     }
+    // Angles as rotation coordinates about the takes' common mean part orientations.
+    const RotationChart chart = meanPartChart(givenTakes);
+    std::vector<Take> linear;
+    linear.reserve(count);
+    for (const Take* take : givenTakes) {
+        linear.push_back(*take);
+        linear.back().skeleton.reset();
+        linear.back().values = rotationCoordinates(*take, chart);
+    }
+    std::vector<const Take*> takes;
+    for (const Take& take : linear) takes.push_back(&take);
+    const Take& first = *takes.front();
     // Channel scales over all takes, so cm and degrees weigh alike.
     Eigen::VectorXd deviation = Eigen::VectorXd::Zero(first.channelCount());
     {
@@ -91,13 +119,14 @@ Result<ReferenceSuggestion> suggestReference(const std::vector<const Take*>& tak
     for (const Take* take : takes) standardised.push_back(take->values * deviation.cwiseInverse().asDiagonal());
     std::vector<double> meanDistance(count, 0.0);
     for (std::size_t k = 0; k < count; ++k) {
+        if (control.cancelled()) return makeError(ErrorCode::Cancelled, "reference suggestion: cancelled");
         for (std::size_t l = 0; l < count; ++l) {
             if (k == l) continue;
             AmplitudeMatchOptions options;
             options.searchBand = int(std::max<Eigen::Index>(20, std::abs(takes[k]->frameCount() - takes[l]->frameCount()) + 1));
             auto aligned = matchAmplitudes(standardised[k], standardised[l], options);
             const double distance = aligned ? aligned->cost
-                                            : squaredDifference(*takes[k], *takes[l]).cwiseQuotient(deviation.cwiseAbs2()).sum();
+                                            : summedSquares(takes[k]->values, takes[l]->values).cwiseQuotient(deviation.cwiseAbs2()).sum();
             meanDistance[k] += distance / double(takes[k]->frameCount());
         }
         if (count > 1) meanDistance[k] /= double(count - 1);

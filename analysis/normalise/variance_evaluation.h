@@ -3,6 +3,7 @@
 /// take (thesis 3.6.1).
 
 #include "analysis/core/result.h"
+#include "analysis/core/run_control.h"
 #include "analysis/core/take.h"
 
 #include <Eigen/Core>
@@ -23,12 +24,16 @@ struct VarianceTable {
 };
 
 /// Frames are compared over the reference's length; a shorter raw take is padded with its last
-/// frame (thesis 2.2). InvalidArgument when counts or channels differ.
+/// frame (thesis 2.2). Angle channels of 6-DOF parts are compared as rotation coordinates about
+/// the reference's mean part orientations (degrees; analysis/core/angle_channels.h), so a take
+/// written on another Euler branch, or crossing a gimbal region, costs only what its
+/// orientations differ. InvalidArgument when counts or channels differ.
 Result<VarianceTable> varianceTable(const Take& reference, const std::vector<const Take*>& rawTakes,
                                     const std::vector<const Take*>& normalisedTakes);
 
 /// Sum of squared differences over frames of the reference's length (missing sample frames
-/// repeat the last one), per channel.
+/// repeat the last one), per channel; angles as in varianceTable when both takes have the same
+/// channels.
 Eigen::VectorXd squaredDifference(const Take& reference, const Take& take);
 
 struct ReferenceSuggestion {
@@ -40,11 +45,13 @@ struct ReferenceSuggestion {
 };
 
 /// Thesis 3.6.1: among takes that are not outliers, the one starting earliest, then the longest.
-/// Channels are standardised over all takes. Outlier: mean distance to the other takes after
+/// Angles are taken as rotation coordinates about the takes' mean part orientations, and
+/// channels are standardised over all takes. Outlier: mean distance to the other takes after
 /// aligning timing (amplitude DTW, band 20) above twice the median of those means (3+ takes).
 /// Motion starts at the first frame whose distance from the first frame exceeds 10% of its
 /// maximum; the active part ends at the last frame that far from the final frame.
-/// InvalidArgument for no takes, differing channels or takes under 2 frames.
-Result<ReferenceSuggestion> suggestReference(const std::vector<const Take*>& takes);
+/// InvalidArgument for no takes, differing channels or takes under 2 frames; Cancelled when
+/// `control` is (checked for every take: the outlier test compares every pair, n^2 alignments).
+Result<ReferenceSuggestion> suggestReference(const std::vector<const Take*>& takes, const RunControl& control = {});
 
 } // namespace bunraku::analysis

@@ -20,7 +20,9 @@ Status validateMatchOptions(const MatchOptions& options, Eigen::Index referenceF
         message << "matching: the approximation weight M must be finite and >= 0, got " << options.approximationWeight;
         return makeError(ErrorCode::InvalidArgument, message.str());
     }
-    const Eigen::Index frames = std::min(referenceFrames, sampleFrames);
+    // The sample is transformed at the reference's length when a global time scale applies.
+    const Eigen::Index transformedSample = globalTimeScale(options, referenceFrames, sampleFrames) == 1.0 ? sampleFrames : referenceFrames;
+    const Eigen::Index frames = std::min(referenceFrames, transformedSample);
     const int largest = largestScale(options.cwt.wavelet, frames);
     for (double scale : options.scales) {
         if (!std::isfinite(scale) || scale <= 0.0 || scale > double(largest)) {

@@ -12,8 +12,9 @@
 
 namespace bunraku::analysis {
 
-/// Checks the options against a take length (tau, band, scales fit: largestScale, M >= 0);
-/// InvalidArgument with the offending value.
+/// Checks the options against the take lengths (tau, band, scales fit the shorter of the
+/// reference and the sample as transformed - at the reference's length when a global time
+/// scale applies: largestScale, M >= 0); InvalidArgument with the offending value.
 Status validateMatchOptions(const MatchOptions& options, Eigen::Index referenceFrames, Eigen::Index sampleFrames);
 
 /// Per-channel multipliers: 1 (ChannelWeighting::None) or 1 / standard deviation of the

@@ -8,6 +8,32 @@
 
 namespace bunraku::analysis {
 
+double globalTimeScale(const MatchOptions& options, Eigen::Index referenceFrames, Eigen::Index sampleFrames)
+{
+    if (referenceFrames < 2 || sampleFrames < 2 || referenceFrames == sampleFrames) return 1.0;
+    const bool scale = options.timeScaling == TimeScaling::Global ||
+                       (options.timeScaling == TimeScaling::Auto &&
+                        double(std::abs(referenceFrames - sampleFrames)) > kAutoScalingBand * double(options.searchBand));
+    return scale ? double(sampleFrames - 1) / double(referenceFrames - 1) : 1.0;
+}
+
+Eigen::MatrixXd scaledInTime(const Eigen::MatrixXd& values, double scale, Eigen::Index frames)
+{
+    Eigen::VectorXd at(frames);
+    for (Eigen::Index t = 0; t < frames; ++t) at[t] = scale * double(t);
+    return applyWarp(values, at);
+}
+
+MatchResult unscaledMatch(MatchResult match, double scale, Eigen::Index sampleFrames)
+{
+    if (scale == 1.0) return match;
+    const double last = double(std::max<Eigen::Index>(sampleFrames - 1, 0));
+    for (Eigen::Index t = 0; t < match.correspondence.size(); ++t)
+        match.correspondence[t] = int(std::lround(std::clamp(scale * double(match.correspondence[t]), 0.0, last)));
+    for (Eigen::Index t = 0; t < match.smoothWarp.size(); ++t) match.smoothWarp[t] = std::clamp(scale * match.smoothWarp[t], 0.0, last);
+    return match;
+}
+
 Result<MatchResult> matchChannels(const Eigen::MatrixXd& reference, const Eigen::MatrixXd& sample,
                                   const MatchOptions& options, const RunControl& control)
 {
@@ -22,9 +48,13 @@ Result<MatchResult> matchChannels(const Eigen::MatrixXd& reference, const Eigen:
     const Eigen::VectorXd weights = channelWeights(reference, options.weighting);
     auto referenceFeatures = waveletFeatures(reference, weights, options, *bank, control);
     if (!referenceFeatures) return referenceFeatures.error();
-    auto sampleFeatures = waveletFeatures(sample, weights, options, *bank, control);
+    const double scale = globalTimeScale(options, reference.rows(), sample.rows());
+    auto sampleFeatures =
+        waveletFeatures(scale == 1.0 ? sample : scaledInTime(sample, scale, reference.rows()), weights, options, *bank, control);
     if (!sampleFeatures) return sampleFeatures.error();
-    return matchFeatures(*referenceFeatures, *sampleFeatures, {options.tau, options.searchBand, options.path}, control);
+    auto match = matchFeatures(*referenceFeatures, *sampleFeatures, {options.tau, options.searchBand, options.path}, control);
+    if (!match) return match.error();
+    return unscaledMatch(std::move(match).value(), scale, sample.rows());
 }
 
 Eigen::MatrixXd applyCorrespondence(const Eigen::MatrixXd& sample, const Eigen::VectorXi& correspondence)

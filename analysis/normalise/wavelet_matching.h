@@ -36,6 +36,23 @@ enum class LevelAlignment {
     FirstFrame,
 };
 
+/// How takes of different lengths are brought together before the local matching (which only
+/// moves each frame within +-T_cmp of the diagonal).
+enum class TimeScaling {
+    /// Global when the lengths differ by more than kAutoScalingBand of the band T_cmp, else None.
+    Auto,
+    /// As they are (the thesis): a reference longer than the sample plus T_cmp has no path, and
+    /// a sample longer than the reference plus T_cmp is cut.
+    None,
+    /// A global time scale first: the sample resampled (linearly) to the reference's length,
+    /// t_smp = s t_ref with s = (N_smp - 1) / (N_ref - 1); the local matching then runs in that
+    /// scaled time and its correspondence is mapped back (t_smp = s c(t_ref), rounded).
+    Global,
+};
+
+/// TimeScaling::Auto scales when |N_ref - N_smp| > kAutoScalingBand * T_cmp.
+inline constexpr double kAutoScalingBand = 0.5;
+
 struct MatchOptions {
     std::vector<double> scales = integerScales(16); ///< c_1..c_max (thesis: 1..16 or 1..21)
     int tau = 4;                     ///< half window, frames (thesis 3.5.2: tau = 4)
@@ -45,6 +62,7 @@ struct MatchOptions {
     ChannelWeighting weighting = ChannelWeighting::None;
     LevelAlignment level = LevelAlignment::FirstFrame;
     CwtOptions cwt;                  ///< wavelet (sym3) and transform method
+    TimeScaling timeScaling = TimeScaling::Auto; ///< takes of different lengths
 };
 
 struct MatchResult {
@@ -57,8 +75,20 @@ struct MatchResult {
     double cost = 0;
 };
 
+/// Sample frames per reference frame of the global time scale the options apply before the
+/// local matching: (N_smp - 1) / (N_ref - 1), or 1 when they apply none (TimeScaling).
+double globalTimeScale(const MatchOptions& options, Eigen::Index referenceFrames, Eigen::Index sampleFrames);
+
+/// The rows of `values` linearly interpolated at t * scale, t = 0..frames - 1 (clamped).
+Eigen::MatrixXd scaledInTime(const Eigen::MatrixXd& values, double scale, Eigen::Index frames);
+
+/// A match made in scaled sample time mapped back to the sample's frames: correspondence
+/// round(scale c), smooth warp scale w (both clamped to the sample), cost unchanged.
+MatchResult unscaledMatch(MatchResult match, double scale, Eigen::Index sampleFrames);
+
 /// Matches sample to reference: reference and sample are frames x channels (the same channels
-/// in the same order; the frame counts may differ), all channels sharing one correspondence.
+/// in the same order; the frame counts may differ by any amount: see TimeScaling), all
+/// channels sharing one correspondence.
 /// Window indices beyond either end replicate the edge frame. InvalidArgument for tau < 0,
 /// searchBand < 0, empty scales, a scale whose filter is longer than either signal
 /// (largestScale), channel counts that differ, NaN; Cancelled via control.

@@ -5,6 +5,7 @@
 #include "analysis/axis/axis_channels.h"
 #include "analysis/core/parallel.h"
 #include "analysis/body/body_description.h"
+#include "analysis/body/body_fit.h"
 #include "analysis/decompose/emotion_weight.h"
 
 #include <cmath>
@@ -60,6 +61,7 @@ StageKey axisKey(StageKey normalised, const AxisParameters& p)
         .add(p.searchBand)
         .add(p.maxScale)
         .add(p.approximationWeight)
+        .add(int(p.level))
         .add(int(p.path))
         .add(p.controlSpacing)
         .add(p.refinementPasses)
@@ -134,12 +136,39 @@ Result<AxisOutput> runAxes(const NormaliseOutput& normalised, const std::string&
             const DesignedMotion designed = designMotion(*function.basis, result.extracted.phase.curve, result.extracted.gains);
             result.designRelativeError = relativeError(designed.axisCoordinates, result.coordinates);
             result.undesignedRelativeError = relativeError(function.basis->coordinates, result.coordinates);
+            ApproximationErrorOptions approximation;
+            approximation.maxScale = parameters.maxScale;
+            auto errors = approximationErrorByScale(function.basis->coordinates, result.extracted.emotionalOnFunctionalTime,
+                                                    approximation, RunControl{control.stop, {}});
+            if (!errors) return makeError(errors.error().code, "approximation error of " + name + ": " + errors.error().message);
+            result.approximation = std::move(errors).value();
             report();
             return okStatus();
         },
         control.stop);
     if (!status) return cancelledOr(status).error();
     control.report(1.0);
+    return out;
+}
+
+StageKey takeAxisKey(StageKey take, const AxisParameters& p)
+{
+    return KeyBuilder("take-axis").add(take).add(int(p.frontBack)).add(p.massSpacing).key();
+}
+
+Result<TakeAxis> runTakeAxis(const Take& take, const AxisParameters& parameters, const RunControl& control)
+{
+    if (auto status = validate(parameters); !status) return status.error();
+    const AxisOptions options = parameters.axisOptions();
+    // The axis of a take with its performer's skeleton integrates over the puppet fitted to it.
+    const auto model = take.skeleton ? std::make_shared<const AxisModel>(makeAxisModel(bodyForTake(defaultBodyDescription(), take), options))
+                                     : defaultAxisModel(options);
+    auto axis = computeMotionAxis(*model, take, options, control);
+    if (!axis) return makeError(axis.error().code, "motion axis of " + take.displayName() + ": " + axis.error().message);
+    TakeAxis out;
+    out.coordinates = axisTake(*axis);
+    out.coordinates.labels.source = "axis of " + take.displayName();
+    out.world_T_axis = std::move(axis->world_T_axis);
     return out;
 }
 

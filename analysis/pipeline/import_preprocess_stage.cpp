@@ -58,6 +58,7 @@ StageKey preprocessKey(StageKey corpus, const PreprocessParameters& p)
         .add(p.alignStart)
         .add(p.alignHeading)
         .add(p.alignPosition)
+        .add(int(p.positionAlignment))
         .add(p.referenceTakeIndex)
         .key();
 }

@@ -23,7 +23,7 @@ Result<CellNormalisation> normaliseCell(const std::string& function, const std::
     out.function = function;
     out.emotion = emotion;
     for (const Take* take : takes) out.takeIndices.push_back(take->labels.takeIndex);
-    auto suggestion = suggestReference(takes);
+    auto suggestion = suggestReference(takes, RunControl{control.stop, {}});
     if (!suggestion) return prefixed(suggestion.error());
     out.suggestion = std::move(suggestion).value();
     const NormaliseOptions options = parameters.options();
@@ -57,37 +57,55 @@ Result<CellNormalisation> normaliseCell(const std::string& function, const std::
         for (std::size_t k = 0; k < takes.size(); ++k)
             if (out.suggestion.outlier[k] && int(k) != average.baseTake) average.excludedTakes.push_back(int(k));
     }
-    auto averaged = averageTake(takes, average, RunControl{control.stop, {}});
-    if (!averaged) return prefixed(averaged.error());
-    out.average = std::move(averaged).value();
+    // The reference's index among the takes (none for the average take, or a missing take).
+    out.reference = parameters.referenceFor(function, emotion);
+    int referenceIndex = -1;
+    if (out.reference.kind == ReferenceKind::Suggested) referenceIndex = out.suggestion.takeIndex;
+    if (out.reference.kind == ReferenceKind::Take) referenceIndex = indexOf(out.reference.takeIndex);
+
+    // Thesis 3.6.1's suggested reference is the base of the 3.7 average by default: the takes'
+    // matchings to it serve both the normalisation and the average (averageTakeFrom, the same
+    // bits as matching them twice).
+    const bool baseIsReference = referenceIndex >= 0 && referenceIndex == average.baseTake;
+    if (baseIsReference) {
+        auto normalised = normaliseTakes(*takes[std::size_t(referenceIndex)], takes, options, RunControl{control.stop, {}});
+        if (!normalised) return prefixed(normalised.error());
+        out.normalisations = std::move(normalised).value();
+        auto averaged = averageTakeFrom(takes, average, out.normalisations);
+        if (!averaged) return prefixed(averaged.error());
+        out.average = std::move(averaged).value();
+    } else {
+        auto averaged = averageTake(takes, average, RunControl{control.stop, {}});
+        if (!averaged) return prefixed(averaged.error());
+        out.average = std::move(averaged).value();
+    }
     for (std::size_t k = 0; k < takes.size(); ++k)
         if (std::find(average.excludedTakes.begin(), average.excludedTakes.end(), int(k)) == average.excludedTakes.end())
             out.averageMembers.push_back(out.takeIndices[k]);
     out.averageName = std::to_string(out.averageMembers.size()) + "ave";
 
-    out.reference = parameters.referenceFor(function, emotion);
     switch (out.reference.kind) {
     case ReferenceKind::Suggested:
         out.referenceTake = *takes[std::size_t(out.suggestion.takeIndex)];
         out.referenceName = "take " + std::to_string(out.referenceTake.labels.takeIndex) + " (suggested)";
         break;
-    case ReferenceKind::Take: {
-        const auto found = std::find(out.takeIndices.begin(), out.takeIndices.end(), out.reference.takeIndex);
-        if (found == out.takeIndices.end())
+    case ReferenceKind::Take:
+        if (referenceIndex < 0)
             return makeError(ErrorCode::NotFound, "normalise " + cell + ": the cell has no take " +
                                                       std::to_string(out.reference.takeIndex) + " to use as reference");
-        out.referenceTake = *takes[std::size_t(found - out.takeIndices.begin())];
+        out.referenceTake = *takes[std::size_t(referenceIndex)];
         out.referenceName = "take " + std::to_string(out.reference.takeIndex);
         break;
-    }
     case ReferenceKind::Average:
         out.referenceTake = out.average;
         out.referenceName = out.averageName;
         break;
     }
-    auto normalised = normaliseTakes(out.referenceTake, takes, options, RunControl{control.stop, {}});
-    if (!normalised) return prefixed(normalised.error());
-    out.normalisations = std::move(normalised).value();
+    if (!baseIsReference) {
+        auto normalised = normaliseTakes(out.referenceTake, takes, options, RunControl{control.stop, {}});
+        if (!normalised) return prefixed(normalised.error());
+        out.normalisations = std::move(normalised).value();
+    }
     std::vector<const Take*> results;
     for (auto& one : out.normalisations) {
         one.normalised.labels.source = "normalised to " + out.referenceName;

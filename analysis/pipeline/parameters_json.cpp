@@ -168,6 +168,8 @@ const std::map<std::string, DecomposeInput> kInputs{{"normalised", DecomposeInpu
 const std::map<std::string, ChannelWeighting> kWeightings{{"none", ChannelWeighting::None},
                                                           {"standardise", ChannelWeighting::Standardise}};
 const std::map<std::string, LevelAlignment> kLevels{{"first-frame", LevelAlignment::FirstFrame}, {"none", LevelAlignment::None}};
+const std::map<std::string, preprocess::PositionAlignment> kPositionAlignments{
+    {"rigid", preprocess::PositionAlignment::Rigid}, {"per-part", preprocess::PositionAlignment::PerPart}};
 const std::map<std::string, FrontBackAxis> kFrontBack{{"shoulder", FrontBackAxis::ShoulderForward},
                                                       {"principal", FrontBackAxis::Principal}};
 
@@ -376,6 +378,7 @@ json toJson(const ChainParameters& p)
               {"alignStart", p.preprocess.alignStart},
               {"alignHeading", p.preprocess.alignHeading},
               {"alignPosition", p.preprocess.alignPosition},
+              {"positionAlignment", preprocess::positionAlignmentName(p.preprocess.positionAlignment)},
               {"referenceTake", p.preprocess.referenceTakeIndex}}},
             {"normalise",
              {{"tau", p.normalise.tau},
@@ -402,6 +405,7 @@ json toJson(const ChainParameters& p)
               {"searchBand", p.axis.searchBand},
               {"maxScale", p.axis.maxScale},
               {"approximationWeight", p.axis.approximationWeight},
+              {"level", p.axis.level == LevelAlignment::None ? "none" : "first-frame"},
               {"path", pathName(p.axis.path)},
               {"controlSpacing", p.axis.controlSpacing},
               {"refinementPasses", p.axis.refinementPasses}}},
@@ -415,12 +419,13 @@ Result<ChainParameters> chainParametersFromJson(const json& value, const std::st
     if (!root.isObject()) return root.error();
     root.onlyKeys({"preprocess", "normalise", "decompose", "fluctuations", "axis", "design"});
     root.nested("preprocess", [&](Reader& r) {
-        r.onlyKeys({"pad", "unwrap", "alignStart", "alignHeading", "alignPosition", "referenceTake"});
+        r.onlyKeys({"pad", "unwrap", "alignStart", "alignHeading", "alignPosition", "positionAlignment", "referenceTake"});
         r.boolean("pad", p.preprocess.pad);
         r.boolean("unwrap", p.preprocess.unwrap);
         r.boolean("alignStart", p.preprocess.alignStart);
         r.boolean("alignHeading", p.preprocess.alignHeading);
         r.boolean("alignPosition", p.preprocess.alignPosition);
+        r.choice("positionAlignment", p.preprocess.positionAlignment, kPositionAlignments);
         r.integer("referenceTake", p.preprocess.referenceTakeIndex, 0, kMaxTakeIndex);
     });
     root.nested("normalise", [&](Reader& r) { readNormalise(r, p.normalise); });
@@ -437,7 +442,7 @@ Result<ChainParameters> chainParametersFromJson(const json& value, const std::st
         r.integer("welchSegment", p.fluctuations.welchSegment, 2, kMaxWelchSegment);
     });
     root.nested("axis", [&](Reader& r) {
-        r.onlyKeys({"frontBack", "massSpacing", "tau", "searchBand", "maxScale", "approximationWeight", "path", "controlSpacing",
+        r.onlyKeys({"frontBack", "massSpacing", "tau", "searchBand", "maxScale", "approximationWeight", "level", "path", "controlSpacing",
                     "refinementPasses"});
         r.choice("frontBack", p.axis.frontBack, kFrontBack);
         r.real("massSpacing", p.axis.massSpacing, kMinMassSpacing, kMaxMassSpacing);
@@ -445,6 +450,7 @@ Result<ChainParameters> chainParametersFromJson(const json& value, const std::st
         r.integer("searchBand", p.axis.searchBand, 0, kMaxSearchBand);
         r.integer("maxScale", p.axis.maxScale, 1, kMaxScale);
         r.real("approximationWeight", p.axis.approximationWeight, 0.0, kMaxApproximationWeight);
+        r.choice("level", p.axis.level, kLevels);
         r.choice("path", p.axis.path, kPaths);
         r.integer("controlSpacing", p.axis.controlSpacing, 1, kMaxControlSpacing);
         r.integer("refinementPasses", p.axis.refinementPasses, 0, kMaxRefinementPasses);

@@ -4,13 +4,13 @@
 /// and inside its range (checked before anything is allocated from it), errors naming the file,
 /// the parameter and what was expected. Missing keys keep their defaults. Format: docs/FORMATS.md.
 ///
-/// {"preprocess": {"pad", "unwrap", "alignStart", "alignHeading", "alignPosition", "referenceTake"},
+/// {"preprocess": {"pad", "unwrap", "alignStart", "alignHeading", "alignPosition", "positionAlignment", "referenceTake"},
 ///  "normalise": {"tau", "searchBand", "maxScale", "coupling", "path": "greedy"|"optimal",
 ///                "reference": "suggested"|"average"|K, "cellReferences": {"f/e": ...}, "averageExcludesOutliers"},
 ///  "decompose": {"input": "normalised"|"preprocessed", "method": "km2o"|"least-squares", "M"},
 ///  "fluctuations": {"armaP", "armaQ", "welchSegment"},
 ///  "axis": {"frontBack": "shoulder"|"principal", "massSpacing", "tau", "searchBand", "maxScale",
-///           "approximationWeight", "path", "controlSpacing", "refinementPasses"},
+///           "approximationWeight", "level": "first-frame"|"none", "path", "controlSpacing", "refinementPasses"},
 ///  "design": {"emotionWeight", "warp": [[output, source], ...] | null,
 ///             "gains": [{"phrase", "dof", "g0", "g1"}], "boundaries": "suggested" | [frame, ...]}}
 

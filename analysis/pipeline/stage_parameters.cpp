@@ -59,6 +59,7 @@ preprocess::PreprocessOptions PreprocessParameters::options() const
     options.alignStart = alignStart;
     options.alignHeading = alignHeading;
     options.alignPosition = alignPosition;
+    options.positionAlignment = positionAlignment;
     options.referenceTakeIndex = referenceTakeIndex;
     return options;
 }
@@ -100,6 +101,7 @@ ExtractionOptions AxisParameters::extractionOptions() const
     options.phase.match.searchBand = searchBand;
     options.phase.match.scales = integerScales(maxScale);
     options.phase.match.approximationWeight = approximationWeight;
+    options.phase.match.level = level;
     options.phase.match.path = path;
     options.phase.controlPointSpacing = controlSpacing;
     options.refinementPasses = refinementPasses;

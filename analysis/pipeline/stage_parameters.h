@@ -30,6 +30,8 @@ struct PreprocessParameters {
     bool alignStart = true;
     bool alignHeading = true;
     bool alignPosition = true;
+    /// 2.2-4: one rigid translation per take (thesis), or one offset per part.
+    preprocess::PositionAlignment positionAlignment = preprocess::PositionAlignment::Rigid;
     /// Take index of every cell's time reference; 0 = automatic (thesis 3.6.1 reading).
     int referenceTakeIndex = 0;
 
@@ -115,6 +117,9 @@ struct AxisParameters {
     int searchBand = 30;          ///< T_cmp (docs/MOTION-AXIS.md)
     int maxScale = 16;            ///< scales 1..16
     double approximationWeight = 8.0; ///< M of eq. 5.17
+    /// Each axis coordinate minus its first frame before the transform (docs/MOTION-AXIS.md,
+    /// "Level"), or the signals as they are (None, eq. 5.16 literally).
+    LevelAlignment level = LevelAlignment::FirstFrame;
     PathMethod path = PathMethod::Greedy;
     int controlSpacing = 8;       ///< frames between warp control points
     int refinementPasses = 2;     ///< extractDesign's refinement rounds

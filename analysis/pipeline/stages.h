@@ -15,6 +15,7 @@
 #include "analysis/decompose/km2o_decomposition.h"
 #include "analysis/decompose/least_squares.h"
 #include "analysis/decompose/spectrum.h"
+#include "analysis/design/approximation_error.h"
 #include "analysis/design/motion_design.h"
 #include "analysis/normalise/take_normalisation.h"
 #include "analysis/normalise/variance_evaluation.h"
@@ -149,6 +150,9 @@ struct CellAxis {
     DesignParameters extracted;      ///< phase, phase-adjusted axis, gains
     double designRelativeError = 0;  ///< designed (extracted parameters) vs emotional axis, eq. 5.18
     double undesignedRelativeError = 0; ///< functional vs emotional axis
+    /// 5.4.1: eq. 5.18 per largest scale c = 1..maxScale and axis DOF, functional axis vs the
+    /// phase-adjusted emotional axis (Fig. 5.16).
+    ApproximationError approximation;
 };
 
 struct AxisOutput {
@@ -162,6 +166,21 @@ StageKey axisKey(StageKey normalised, const AxisParameters& parameters);
 /// On the default body (the shipped puppet description).
 Result<AxisOutput> runAxes(const NormaliseOutput& normalised, const std::string& neutralEmotion,
                            const AxisParameters& parameters, const RunControl& control = {});
+
+// ---- the motion axis of one take (thesis 5.2.1), on demand: what the 3D view draws -------------
+
+/// A take's motion axis: per frame, and as the 6 axis-coordinate channels (axis_channels.h)
+/// labelled "axis of <the take's name>".
+struct TakeAxis {
+    std::vector<RigidTransform> world_T_axis;
+    Take coordinates;
+};
+
+/// Keyed on the take's content (takeKey) and the axis parameters the axis depends on (the
+/// front-back axis and the mass-point spacing), so each take's axis is computed once.
+StageKey takeAxisKey(StageKey take, const AxisParameters& parameters);
+/// On the default body, with the parameters' axis options (as the motion-axes stage).
+Result<TakeAxis> runTakeAxis(const Take& take, const AxisParameters& parameters, const RunControl& control = {});
 
 // ---- emotion weight and design (thesis 4.5, 5.5): cheap, computed on demand -------------------
 

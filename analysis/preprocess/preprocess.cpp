@@ -1,6 +1,8 @@
 #include "analysis/preprocess/preprocess.h"
 
+#include "analysis/core/angle_channels.h"
 #include "analysis/core/puppet_layout.h"
+#include "analysis/skeleton/skeleton_resample.h"
 
 #include <Eigen/Geometry>
 
@@ -8,6 +10,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 
 namespace bunraku::analysis::preprocess {
 
@@ -42,32 +45,38 @@ int functionReference(const Corpus& corpus, const std::string& function, const P
     return -1;
 }
 
+/// The heading part of a take as a 6-DOF part, when it is one.
+std::optional<SixDofPart> headingSixDof(const Take& take, const std::string& headingPart)
+{
+    for (const SixDofPart& part : sixDofParts(take))
+        if (part.part == headingPart) return part;
+    return std::nullopt;
+}
+
 /// Index of the heading reference of a function: among its takes with a yaw channel on the
 /// heading part, the one whose start heading is nearest (summed circular distance) to all the
 /// others', so that a reference take that is itself turned (e.g. by 180 deg) cannot turn the
-/// whole function; ties keep `fallback` (the function's position reference). -1 without such takes.
+/// whole function; ties keep `fallback` (the function's position reference). -1 without such
+/// takes. Headings differ by startHeadingDifference.
 int headingReference(const Corpus& corpus, const std::string& function, const std::string& headingPart, int fallback)
 {
     std::vector<int> candidates;
-    std::vector<double> headings;
     for (std::size_t i = 0; i < corpus.takes.size(); ++i) {
         const Take& take = corpus.takes[i];
         if (take.labels.function != function || take.frameCount() == 0) continue;
-        const auto yaw = take.channelIndex(headingPart, "yaw");
-        if (!yaw) continue;
+        if (!take.channelIndex(headingPart, "yaw")) continue;
         candidates.push_back(int(i));
-        headings.push_back(take.values(0, *yaw));
     }
     int best = -1;
     double bestSpread = std::numeric_limits<double>::infinity();
-    for (std::size_t a = 0; a < candidates.size(); ++a) {
+    for (int a : candidates) {
         double spread = 0.0;
-        for (double other : headings) spread += std::fabs(std::remainder(other - headings[a], 360.0));
-        const bool better = spread < bestSpread - 1e-9 ||
-                            (std::fabs(spread - bestSpread) <= 1e-9 && candidates[a] == fallback);
+        for (int other : candidates)
+            spread += std::fabs(startHeadingDifference(corpus.takes[std::size_t(other)], corpus.takes[std::size_t(a)], headingPart));
+        const bool better = spread < bestSpread - 1e-9 || (std::fabs(spread - bestSpread) <= 1e-9 && a == fallback);
         if (better) {
             bestSpread = spread;
-            best = candidates[a];
+            best = a;
         }
     }
     return best;
@@ -147,6 +156,7 @@ Eigen::Index padToLength(Take& take, Eigen::Index frames)
     padded.topRows(old) = take.values;
     padded.bottomRows(frames - old) = take.values.row(old - 1).replicate(frames - old, 1);
     take.values = std::move(padded);
+    if (take.skeleton) take.skeleton = resampleSkeletalMotion(*take.skeleton, shiftedFrames(old, frames, 0));
     return frames - old;
 }
 
@@ -169,9 +179,14 @@ int unwrapDegrees(Eigen::Ref<Eigen::VectorXd> column)
 
 int unwrapAngles(Take& take)
 {
-    int wraps = 0;
+    // 6-DOF parts: the Euler filter (whole turns and the mirrored triple, nearest the previous
+    // frame); lone angle channels: whole turns.
+    std::vector<bool> inPart(std::size_t(take.channelCount()), false);
+    for (const SixDofPart& part : sixDofParts(take))
+        for (Eigen::Index c = part.firstChannel + 3; c < part.firstChannel + 6; ++c) inPart[std::size_t(c)] = true;
+    int wraps = filterEulerAngles(take);
     for (Eigen::Index c = 0; c < take.channelCount(); ++c)
-        if (isAngleChannel(take.channels[std::size_t(c)])) wraps += unwrapDegrees(take.values.col(c));
+        if (isAngleChannel(take.channels[std::size_t(c)]) && !inPart[std::size_t(c)]) wraps += unwrapDegrees(take.values.col(c));
     return wraps;
 }
 
@@ -198,13 +213,32 @@ int matchAngleBranches(Take& take, const Take& reference)
     return turns;
 }
 
+double startHeadingDifference(const Take& reference, const Take& take, const std::string& headingPart)
+{
+    if (take.frameCount() == 0 || reference.frameCount() == 0) return 0.0;
+    const auto own = headingSixDof(take, headingPart);
+    const auto ref = headingSixDof(reference, headingPart);
+    if (own && ref) {
+        // The turn taking the take's start orientation to the reference's, in world axes, and
+        // of it the twist about the vertical (swing-twist decomposition).
+        const Eigen::Quaterniond q = (partPose(reference, 0, ref->firstChannel).rotation *
+                                      partPose(take, 0, own->firstChannel).rotation.conjugate()).normalized();
+        if (std::hypot(q.w(), q.z()) > 1e-9) return std::remainder(2.0 * std::atan2(q.z(), q.w()) * 180.0 / std::numbers::pi, 360.0);
+        return 0.0; // a half turn about a horizontal axis: no heading to speak of
+    }
+    const auto yaw = take.channelIndex(headingPart, "yaw");
+    const auto refYaw = reference.channelIndex(headingPart, "yaw");
+    if (!yaw || !refYaw) return 0.0;
+    return std::remainder(reference.values(0, *refYaw) - take.values(0, *yaw), 360.0);
+}
+
 double alignStartHeading(Take& take, const Take& reference, const std::string& headingPart)
 {
     const auto own = take.channelIndex(headingPart, "yaw");
     const auto ref = reference.channelIndex(headingPart, "yaw");
     if (!own || !ref || take.frameCount() == 0 || reference.frameCount() == 0) return 0.0;
     // The physical turn, within (-180, 180]: the branch is matched afterwards by whole turns.
-    const double offset = std::remainder(reference.values(0, *ref) - take.values(0, *own), 360.0);
+    const double offset = startHeadingDifference(reference, take, headingPart);
     // A rigid turn about the vertical through the heading part's start position: a rotation
     // about world z adds to every yaw (Rz(a) Rz(y) Ry(p) Rx(r) = Rz(a + y) Ry(p) Rx(r)) and
     // turns every position about the pivot.
@@ -225,6 +259,14 @@ double alignStartHeading(Take& take, const Take& reference, const std::string& h
     for (Eigen::Index c = 0; c < take.channelCount(); ++c)
         if (take.channels[std::size_t(c)].dof == "yaw" && isAngleChannel(take.channels[std::size_t(c)]))
             take.values.col(c).array() += offset;
+    if (take.skeleton && offset != 0.0) {
+        // The same rigid turn of the whole skeleton: about the vertical through the pivot.
+        RigidTransform turnAbout;
+        turnAbout.rotation = Eigen::Quaterniond(Eigen::AngleAxisd(offset * std::numbers::pi / 180.0, Eigen::Vector3d::UnitZ()));
+        const Eigen::Vector3d pivot3(pivot.x(), pivot.y(), 0.0);
+        turnAbout.translation = pivot3 - turnAbout.rotation * pivot3;
+        take.skeleton = moveSkeletalMotion(*take.skeleton, turnAbout);
+    }
     return offset;
 }
 
@@ -287,7 +329,9 @@ Result<PreprocessResult> preprocessCorpus(const Corpus& corpus, const Preprocess
                 // reference's, whichever branch the turn left it on.
                 if (options.alignHeading)
                     reports[i].headingOffsetDeg = alignStartHeading(take, reference, options.headingPart);
-                if (options.unwrap) reports[i].branchTurns = matchAngleBranches(take, reference);
+                if (options.unwrap) {
+                    reports[i].branchTurns = matchPartBranches(take, reference) + matchAngleBranches(take, reference);
+                }
             }
         }
     }
@@ -296,18 +340,21 @@ Result<PreprocessResult> preprocessCorpus(const Corpus& corpus, const Preprocess
         for (const auto& function : out.functions()) {
             const int ref = functionReference(out, function, options);
             if (ref < 0) continue;
-            const Eigen::RowVectorXd start = out.takes[std::size_t(ref)].values.row(0);
+            const Take reference = out.takes[std::size_t(ref)];
             for (std::size_t i = 0; i < out.takes.size(); ++i) {
                 Take& take = out.takes[i];
                 if (take.labels.function != function) continue;
                 reports[i].isPositionReference = int(i) == ref;
+                if (int(i) == ref) continue;
+                reports[i].positionOffsets = alignStartPosition(take, reference, options.positionAlignment);
+                // The skeleton is one rigid body: it moves by the heading part's offset (every
+                // part's under the default rigid alignment).
                 const auto parts = sixDofParts(take);
-                for (std::size_t p = 0; p < parts.size(); ++p) {
-                    const Eigen::Index c = parts[p].firstChannel;
-                    const Eigen::Vector3d offset = (start.segment(c, 3) - take.values.row(0).segment(c, 3)).transpose();
-                    take.values.middleCols(c, 3).rowwise() += offset.transpose();
-                    reports[i].positionOffsets[p] = offset;
-                }
+                std::optional<Eigen::Vector3d> bodyOffset;
+                for (std::size_t p = 0; p < parts.size() && p < reports[i].positionOffsets.size(); ++p)
+                    if (parts[p].part == options.headingPart || !bodyOffset) bodyOffset = reports[i].positionOffsets[p];
+                if (take.skeleton && bodyOffset && !bodyOffset->isZero())
+                    take.skeleton = moveSkeletalMotion(*take.skeleton, RigidTransform{Eigen::Quaterniond::Identity(), *bodyOffset});
             }
         }
     }

@@ -1,10 +1,14 @@
 #include "analysis/preprocess/start_alignment.h"
 
+#include "analysis/core/angle_channels.h"
 #include "analysis/core/puppet_layout.h"
+#include "analysis/core/rotation.h"
+#include "analysis/skeleton/skeleton_resample.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 namespace bunraku::analysis::preprocess {
 
@@ -20,26 +24,32 @@ double onsetThreshold(const Eigen::VectorXd& activity, double fraction, double q
     return floor + fraction * (peak - floor);
 }
 
-/// Distance between two frames of a take in cm: per 6-DOF part the Euclidean norm of its six
-/// changes (angles, within +-180, times cmPerDegree), summed over parts, plus the absolute
-/// change of every channel outside a part.
+/// Distance between two frames of a take in cm: per 6-DOF part the Euclidean norm of its
+/// position change and its turn (the angle of the rotation between the two orientations, deg,
+/// times cmPerDegree), summed over parts, plus the absolute change of every channel outside a
+/// part (angles within +-180, times cmPerDegree). The turn is measured on rotations, so neither
+/// the Euler branch, a gimbal region nor the part's frame convention changes it.
 class PoseDistance {
 public:
     PoseDistance(const Take& take, double cmPerDegree)
         : m_take(take), m_parts(sixDofParts(take)), m_inPart(std::size_t(take.channelCount()), false),
           m_cmPerDegree(cmPerDegree)
     {
-        for (const auto& part : m_parts)
+        for (const auto& part : m_parts) {
             for (Eigen::Index c = part.firstChannel; c < part.firstChannel + 6; ++c) m_inPart[std::size_t(c)] = true;
+            m_rotations.push_back(partRotations(take, part));
+        }
     }
 
     double operator()(Eigen::Index a, Eigen::Index b) const
     {
         double sum = 0.0;
-        for (const auto& part : m_parts) {
-            double squared = 0.0;
-            for (Eigen::Index c = part.firstChannel; c < part.firstChannel + 6; ++c) squared += change(a, b, c) * change(a, b, c);
-            sum += std::sqrt(squared);
+        for (std::size_t p = 0; p < m_parts.size(); ++p) {
+            const Eigen::Index first = m_parts[p].firstChannel;
+            const double moved = (m_take.values.row(a).segment(first, 3) - m_take.values.row(b).segment(first, 3)).norm();
+            const double turned =
+                m_cmPerDegree * rotationDistance(m_rotations[p][std::size_t(a)], m_rotations[p][std::size_t(b)]) * kDegreesPerRadian;
+            sum += std::hypot(moved, turned);
         }
         for (Eigen::Index c = 0; c < m_take.channelCount(); ++c)
             if (!m_inPart[std::size_t(c)]) sum += std::fabs(change(a, b, c));
@@ -47,6 +57,8 @@ public:
     }
 
 private:
+    static constexpr double kDegreesPerRadian = 180.0 / std::numbers::pi;
+
     double change(Eigen::Index a, Eigen::Index b, Eigen::Index c) const
     {
         const double d = m_take.values(a, c) - m_take.values(b, c);
@@ -55,6 +67,7 @@ private:
 
     const Take& m_take;
     std::vector<SixDofPart> m_parts;
+    std::vector<std::vector<Eigen::Quaterniond>> m_rotations; // per part, per frame
     std::vector<bool> m_inPart;
     double m_cmPerDegree;
 };
@@ -234,6 +247,7 @@ void shiftTake(Take& take, int shift)
         shifted.row(t) = take.values.row(source);
     }
     take.values = std::move(shifted);
+    if (take.skeleton) take.skeleton = resampleSkeletalMotion(*take.skeleton, shiftedFrames(frames, frames, shift));
 }
 
 } // namespace bunraku::analysis::preprocess

@@ -40,9 +40,10 @@ struct ActivityOptions {
 Eigen::VectorXd summedSpeed(const Take& take);
 
 /// Raw activity per frame (length frames, cm/frame, activity(0) = 0): for each 6-DOF part
-/// sqrt(|dp|^2 + (c |da|)^2) with dp the position change (cm), da the change of its three
-/// angles (deg, each taken within (-180, 180] so a wrap is no motion) and c = cmPerDegree,
-/// summed over parts; channels outside 6-DOF parts add |change| (angles weighted by c).
+/// sqrt(|dp|^2 + (c da)^2) with dp the position change (cm), da the angle of the part's turn
+/// between the frames (deg, measured on rotations: no Euler branch, gimbal region or part frame
+/// convention changes it) and c = cmPerDegree, summed over parts; channels outside 6-DOF parts
+/// add |change| (angles within (-180, 180], weighted by c).
 Eigen::VectorXd rawActivity(const Take& take, double cmPerDegree = kDefaultCmPerDegree);
 /// Centred moving average of width `window` (odd widths are symmetric; the window shrinks at the
 /// ends so the mean is always over existing frames). window <= 1 returns the signal.
@@ -51,7 +52,7 @@ Eigen::VectorXd movingAverage(const Eigen::VectorXd& signal, int window);
 Eigen::VectorXd activitySignal(const Take& take, const ActivityOptions& options = {});
 
 /// Departure from the start pose per frame (cm, smoothed like activitySignal): per 6-DOF part
-/// sqrt(|p(t) - p(0)|^2 + (c |a(t) - a(0)|)^2), summed over parts.
+/// sqrt(|p(t) - p(0)|^2 + (c angle(R(t), R(0)))^2), summed over parts.
 Eigen::VectorXd departureSignal(const Take& take, const ActivityOptions& options = {});
 
 /// Noise floor of an activity: its `quietFraction` quantile over the frames with activity > 0
@@ -92,7 +93,8 @@ struct ReferenceCandidate {
 int chooseTimeReference(const std::vector<ReferenceCandidate>& candidates, double longFraction = 0.95);
 
 /// Drops `shift` frames at the start and repeats the last frame at the end (shift < 0: repeats
-/// the first frame in front and drops at the end); the frame count is unchanged.
+/// the first frame in front and drops at the end); the frame count is unchanged. The take's
+/// skeleton (when it has one) is shifted with it.
 void shiftTake(Take& take, int shift);
 
 } // namespace bunraku::analysis::preprocess

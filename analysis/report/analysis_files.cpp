@@ -1,7 +1,9 @@
 #include "analysis/report/analysis_files.h"
 
 #include "analysis/axis/axis_channels.h"
+#include "analysis/decompose/emotion_weight.h"
 #include "analysis/io/atomic_file.h"
+#include "analysis/io/staged_folder.h"
 #include "analysis/io/take_csv.h"
 #include "analysis/io/text_format.h"
 #include "analysis/pipeline/parameters_json.h"
@@ -151,9 +153,13 @@ Result<std::vector<OutputFile>> analysisDataFiles(const ChainResult& chain, cons
     }
 
     const Decomposition& d = chain.decomposed->components;
-    for (const auto& y : d.functions)
-        if (auto s = addTake(componentTake(d, y.values, {y.function, "", 0, "y"}), "y_" + io::fileSafeLabel(y.function) + ".csv"); !s)
-            return s.error();
+    for (const auto& y : d.functions) {
+        // y as a pose (Euler angles); z's angle columns are rotation coordinates (docs/FORMATS.md)
+        auto pose = functionComponentTake(d, y.function);
+        if (!pose) return pose.error();
+        pose->labels = {y.function, "", 0, "y"};
+        if (auto s = addTake(*pose, "y_" + io::fileSafeLabel(y.function) + ".csv"); !s) return s.error();
+    }
     for (const auto& z : d.emotions)
         if (auto s = addTake(componentTake(d, z.values, {z.function, z.emotion, 0, "z"}), "z_" + cellStem(z.function, z.emotion) + ".csv");
             !s)
@@ -201,6 +207,7 @@ Result<std::vector<OutputFile>> analysisDataFiles(const ChainResult& chain, cons
     std::string arma = "channel,function,emotion,takes";
     for (int m = 1; m <= fluctuations.armaP; ++m) arma += ",a" + std::to_string(m);
     for (int n = 0; n <= fluctuations.armaQ; ++n) arma += ",b" + std::to_string(n);
+    for (int n = 0; n <= fluctuations.armaQ; ++n) arma += ",b" + std::to_string(n) + "_thesis";
     arma += ",innovation_variance,fpe\n";
     for (std::size_t ch = 0; ch < fluctuations.armaTables.size(); ++ch)
         for (const auto& row : fluctuations.armaTables[ch]) {
@@ -208,6 +215,7 @@ Result<std::vector<OutputFile>> analysisDataFiles(const ChainResult& chain, cons
             arma += fluctuations.channelNames[ch] + "," + row.function + "," + row.emotion + "," + std::to_string(row.takes);
             for (int m = 0; m < fluctuations.armaP; ++m) arma += "," + shortestNumber(row.mean.a(m));
             for (int n = 0; n <= fluctuations.armaQ; ++n) arma += "," + shortestNumber(row.mean.b(n));
+            for (int n = 0; n <= fluctuations.armaQ; ++n) arma += "," + shortestNumber(row.mean.bThesis(n));
             arma += "," + shortestNumber(row.mean.innovationVariance) + "," + shortestNumber(row.mean.fpe) + "\n";
         }
     files.push_back({"arma_table.csv", arma});
@@ -236,6 +244,18 @@ Result<std::vector<OutputFile>> analysisDataFiles(const ChainResult& chain, cons
             phase += std::to_string(t) + "," + shortestNumber(cell.extracted.phase.emotionalToFunctional[t]) + "\n";
         files.push_back({"phase_" + stem + ".csv", phase});
         files.push_back({"gains_" + stem + ".csv", gainsCsv(cell.extracted.gains)});
+        // 5.4.1, eq. 5.18, Fig. 5.16: one row per largest scale c, one column per axis DOF and the mean
+        const ApproximationError& approximation = cell.approximation;
+        std::string scales = "scale";
+        for (const auto& channel : axisCoordinateChannels()) scales += "," + channel.name();
+        scales += ",mean\n";
+        for (std::size_t c = 0; c < approximation.scales.size(); ++c) {
+            scales += std::to_string(approximation.scales[c]);
+            for (Eigen::Index q = 0; q < approximation.relativeError.cols(); ++q)
+                scales += "," + shortestNumber(approximation.relativeError(Eigen::Index(c), q));
+            scales += "," + shortestNumber(approximation.meanRelativeError(Eigen::Index(c))) + "\n";
+        }
+        files.push_back({"approximation_" + stem + ".csv", scales});
         axes.push_back({{"function", cell.function},
                         {"emotion", cell.emotion},
                         {"phrase_boundaries", chain.axes->function(cell.function)->boundaries},
@@ -258,18 +278,17 @@ Result<std::vector<OutputFile>> analysisDataFiles(const ChainResult& chain, cons
                                  {"decomposition", decomposition},
                                  {"axes", axes},
                                  {"files", names}};
-    files.push_back({"summary.json", summary.dump(2) + "\n"});
+    files.push_back({"summary.json", summary.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n"});
     return files;
 }
 
 Status writeOutputFiles(const std::filesystem::path& folder, const std::vector<OutputFile>& files)
 {
-    std::error_code error;
-    std::filesystem::create_directories(folder, error);
-    if (error) return makeError(ErrorCode::Io, folder.string() + ": cannot create the folder: " + error.message());
+    auto staged = io::StagedFolder::begin(folder);
+    if (!staged) return staged.error();
     for (const auto& file : files)
-        if (auto status = io::writeFileAtomically(folder / file.name, file.content); !status) return status;
-    return okStatus();
+        if (auto status = staged->writeFile(file.name, file.content); !status) return status;
+    return staged->commit();
 }
 
 } // namespace bunraku::analysis::report

@@ -28,7 +28,8 @@ struct OutputFile {
 /// Every data file's text, computed before anything is written (needs every stage's result).
 Result<std::vector<OutputFile>> analysisDataFiles(const pipeline::ChainResult& chain, const pipeline::ChainParameters& parameters);
 
-/// Creates `folder` and writes each file atomically (temporary file + rename); Io errors name
+/// Writes the files as one folder output (io/staged_folder.h): built beside `folder` and swapped
+/// in whole, refused when `folder` holds files this program did not write there; Io errors name
 /// the file.
 Status writeOutputFiles(const std::filesystem::path& folder, const std::vector<OutputFile>& files);
 

@@ -1,5 +1,6 @@
 #include "analysis/report/html_report.h"
 
+#include "analysis/axis/axis_channels.h"
 #include "analysis/io/text_format.h"
 #include "analysis/pipeline/parameters_json.h"
 #include "analysis/report/analysis_files.h"
@@ -203,12 +204,16 @@ void armaSection(Html& html, const ChainResult& chain)
     const auto& f = *chain.fluctuations;
     html.section("arma", "ARMA identification of the fluctuation (thesis 4.3.2, Table 4.1)");
     html << "<p>ARMA(" + std::to_string(f.armaP) + "," + std::to_string(f.armaQ) +
-                ") per take, averaged over each cell's takes (data: arma_table.csv, every channel). Head-x as Table 4.1:</p>";
+                ") per take, averaged over each cell's takes (data: arma_table.csv, every channel). Head-x as Table 4.1. "
+                "The MA part is known only up to its spectrum: b is the invertible factor (every root of B inside the "
+                "unit circle), b<sup>T</sup> the same spectrum in Table 4.1's convention (B's largest root outside, "
+                "b1/b0 &gt; 1; docs/ARMA.md):</p>";
     const auto at = std::find(f.channelNames.begin(), f.channelNames.end(), "head.x");
     const std::size_t ch = at == f.channelNames.end() ? 0 : std::size_t(at - f.channelNames.begin());
     html << "<table class=\"numbers\" data-table=\"arma\"><tr><th>cell</th>";
     for (int m = 1; m <= f.armaP; ++m) html << "<th>a" + std::to_string(m) + "</th>";
     for (int n = 0; n <= f.armaQ; ++n) html << "<th>b" + std::to_string(n) + "</th>";
+    for (int n = 0; n <= f.armaQ; ++n) html << "<th>b" + std::to_string(n) + "<sup>T</sup></th>";
     const bool thesisShape = f.armaP == 2 && f.armaQ == 2;
     if (thesisShape) html << "<th class=\"thesis\">thesis a1</th><th class=\"thesis\">a2</th><th class=\"thesis\">b0</th><th class=\"thesis\">b1</th><th class=\"thesis\">b2</th>";
     html << "</tr>";
@@ -219,12 +224,14 @@ void armaSection(Html& html, const ChainResult& chain)
             html << "<tr><td>" + escapeXml(row.function + "/" + row.emotion) + "</td>";
             for (int m = 0; m < f.armaP; ++m) html << dataCell("arma_table.csv", key, "a" + std::to_string(m + 1), row.mean.a(m));
             for (int n = 0; n <= f.armaQ; ++n) html << dataCell("arma_table.csv", key, "b" + std::to_string(n), row.mean.b(n));
+            for (int n = 0; n <= f.armaQ; ++n)
+                html << dataCell("arma_table.csv", key, "b" + std::to_string(n) + "_thesis", row.mean.bThesis(n));
             if (thesisShape)
                 for (double value : thesisArmaHeadX(thesisFunctionIndex(row.function), thesisEmotionIndex(row.emotion)))
                     html << thesisCell(value);
             html << "</tr>";
         }
-        if (!f.armaErrors[ch].empty()) html << "<tr><td colspan=\"11\">" + escapeXml(f.armaErrors[ch]) + "</td></tr>";
+        if (!f.armaErrors[ch].empty()) html << "<tr><td colspan=\"14\">" + escapeXml(f.armaErrors[ch]) + "</td></tr>";
     }
     html << "</table>\n";
     html.end();
@@ -325,6 +332,44 @@ void warpsSection(Html& html, const ChainResult& chain)
     html.end();
 }
 
+void approximationSection(Html& html, const ChainResult& chain)
+{
+    html.section("approximation", "Approximation error per scale (thesis 5.4.1, eq. 5.18, Fig. 5.16)");
+    html << "<p>For each emotional cell, the relative error of eq. 5.18 between the wavelet approximations (scales 1..c, "
+            "eq. 5.13) of the functional axis and of the phase-adjusted emotional axis, against c (data: approximation_*.csv). "
+            "The thesis plots it for no emotion against friendly (Fig. 5.16, no values printed): it falls as c grows but "
+            "stays large for some DOF, which is why the amplitude is taken from Fourier series over phrases (5.4.2).</p>"
+            "<div class=\"figures\">";
+    const auto channels = axisCoordinateChannels();
+    for (const auto& cell : chain.axes->cells) {
+        const ApproximationError& error = cell.approximation;
+        if (error.scales.empty()) continue;
+        SvgPlot plot{cell.function + "/" + cell.emotion, "largest scale c", "relative error", 420, 260, false, {}};
+        Eigen::VectorXd scales(Eigen::Index(error.scales.size()));
+        for (Eigen::Index c = 0; c < scales.size(); ++c) scales[c] = error.scales[std::size_t(c)];
+        for (Eigen::Index q = 0; q < error.relativeError.cols(); ++q)
+            plot.series.push_back({q < Eigen::Index(channels.size()) ? channels[std::size_t(q)].dof : std::to_string(q), scales,
+                                   error.relativeError.col(q), paletteColour(std::size_t(q)), false, 1.2});
+        plot.series.push_back({"mean", scales, error.meanRelativeError, "#000", false, 2.2});
+        html << renderSvg(plot);
+    }
+    html << "</div>\n<table class=\"numbers\" data-table=\"approximation\"><tr><th>cell</th>";
+    const std::vector<int> shownScales{1, 2, 4, 8, 12, 16};
+    for (int c : shownScales) html << "<th>mean, c = " + std::to_string(c) + "</th>";
+    html << "</tr>";
+    for (const auto& cell : chain.axes->cells) {
+        const std::string source = "approximation_" + cellStem(cell.function, cell.emotion) + ".csv";
+        html << "<tr><td>" + escapeXml(cell.function + "/" + cell.emotion) + "</td>";
+        for (int c : shownScales)
+            html << (c <= int(cell.approximation.scales.size())
+                         ? dataCell(source, std::to_string(c), "mean", cell.approximation.meanRelativeError(c - 1))
+                         : std::string("<td>&mdash;</td>"));
+        html << "</tr>";
+    }
+    html << "</table>\n";
+    html.end();
+}
+
 void gainsSection(Html& html, const ChainResult& chain)
 {
     html.section("gains", "Amplitude: gains per phrase (thesis 5.4) and the design check (5.5)");
@@ -364,7 +409,7 @@ th{background:#f3f3f3}td:first-child{text-align:left}.thesis{color:#777;backgrou
 const std::vector<std::string>& reportSections()
 {
     static const std::vector<std::string> ids{"overview", "preprocess", "normalise", "average", "spectra",
-                                              "arma",     "km2o",       "axes",      "warps",   "gains"};
+                                              "arma",     "km2o",       "axes",      "warps",   "approximation", "gains"};
     return ids;
 }
 
@@ -386,6 +431,7 @@ Result<std::string> htmlReport(const ChainResult& chain, const pipeline::ChainPa
     km2oSection(html, chain);
     axesSection(html, chain);
     warpsSection(html, chain);
+    approximationSection(html, chain);
     gainsSection(html, chain);
     html << "<footer><p class=\"note\">" + escapeXml(options.generator) +
                 ". Thesis: M. Hattori, Analysis of emotional expression in the performance motions of Bunraku puppets, Kobe "

@@ -1,9 +1,11 @@
 // The demo ground truth on disk: truth.json (scalars, phrase tables, take randomisation) plus
 // CSVs for every per-frame series. Format: docs/DEMO-CORPUS.md.
 #include "analysis/synth/demo_corpus.h"
+#include "analysis/synth/demo_corpus_io.h"
 
 #include "analysis/core/puppet_layout.h"
 #include "analysis/io/atomic_file.h"
+#include "analysis/io/staged_folder.h"
 #include "analysis/io/text_format.h"
 
 #include <nlohmann/json.hpp>
@@ -53,8 +55,9 @@ std::string matrixCsv(const std::vector<std::string>& columns, const Eigen::Matr
 
 Result<Eigen::MatrixXd> readMatrixCsv(const fs::path& file, const std::vector<std::string>& columns)
 {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) return makeError(ErrorCode::Io, file.string() + ": cannot open");
+    auto text = io::readTextFile(file);
+    if (!text) return text.error();
+    std::istringstream in(*text);
     std::string expectedHeader = "frame";
     for (const auto& c : columns) {
         expectedHeader += ',';
@@ -167,9 +170,8 @@ Status checkShapes(const DemoGroundTruth& truth)
     return okStatus();
 }
 
-} // namespace
-
-Status writeGroundTruth(const DemoGroundTruth& truth, const std::filesystem::path& folder)
+/// Every file of the ground truth (relative path, content), truth.json last.
+std::vector<std::pair<fs::path, std::string>> groundTruthFiles(const DemoGroundTruth& truth)
 {
     const auto channels = channelNames();
     json manifest;
@@ -229,23 +231,36 @@ Status writeGroundTruth(const DemoGroundTruth& truth, const std::filesystem::pat
                                      {"warp_file", file}});
         files.emplace_back(file, matrixCsv({"cell_frame"}, t.takeToCell));
     }
-    for (const auto& [file, content] : files)
-        if (Status s = writeAtomically(folder / file, content); !s) return s;
     // The manifest last: a folder with truth.json is complete.
-    return writeAtomically(folder / "truth.json", manifest.dump(2) + "\n");
+    files.emplace_back("truth.json", manifest.dump(2, ' ', false, json::error_handler_t::replace) + "\n");
+    return files;
+}
+
+} // namespace
+
+Status writeGroundTruth(const DemoGroundTruth& truth, const std::filesystem::path& folder)
+{
+    for (const auto& [file, content] : groundTruthFiles(truth))
+        if (Status s = writeAtomically(folder / file, content); !s) return s;
+    return okStatus();
+}
+
+Status writeGroundTruthFiles(const DemoGroundTruth& truth, io::StagedFolder& folder, const std::filesystem::path& subfolder)
+{
+    for (const auto& [file, content] : groundTruthFiles(truth))
+        if (Status s = folder.writeFile(subfolder / file, content); !s) return s;
+    return okStatus();
 }
 
 Result<DemoGroundTruth> readGroundTruth(const std::filesystem::path& folder)
 {
     const fs::path manifestFile = folder / "truth.json";
-    std::ifstream in(manifestFile, std::ios::binary);
-    if (!in) return makeError(ErrorCode::Io, manifestFile.string() + ": cannot open");
-    std::stringstream buffer;
-    buffer << in.rdbuf();
+    auto text = io::readTextFile(manifestFile, io::kDocumentLimitBytes);
+    if (!text) return text.error();
     json manifest;
     try {
-        manifest = json::parse(buffer.str());
-    } catch (const json::parse_error& e) {
+        manifest = json::parse(*text);
+    } catch (const json::exception& e) {
         return parseError(manifestFile.string(), 0, std::string("expected JSON: ") + e.what());
     }
     const auto channels = channelNames();

@@ -18,7 +18,7 @@ namespace bunraku::analysis {
 enum class CwtMethod {
     Automatic, ///< Direct for short signals and filters, Fft otherwise
     Direct,    ///< time-domain convolution, O(N * filter length) per scale
-    Fft,       ///< FFTW3 convolution, O(N log N) per scale; agrees with Direct to 1e-9 relative
+    Fft,       ///< FFTW3 convolution by overlap-save, O(N log L) per scale; agrees with Direct to 1e-9 relative
 };
 
 struct CwtOptions {
@@ -60,15 +60,19 @@ CwtMethod resolvedCwtMethod(Eigen::Index samples, const CwtFilterBank& bank);
 /// The CWT of one signal at every scale of the bank. Any positive scale is computed (as MATLAB and
 /// pywt do; scales past largestScale are dominated by the zero edges - matching rejects them).
 /// InvalidArgument when the signal is empty or not finite; Cancelled when the stop token fires
-/// between scales; progress is reported per scale.
+/// (checked between scales or every few thousand frames); progress is reported as the work
+/// advances. The direct method sums each coefficient's terms in one order whatever the layout,
+/// so its coefficients equal cwtChannels' bit for bit at a given SIMD level
+/// (analysis/wavelet/simd_level.h; the SIMD levels fuse the multiply-adds, plain does not).
 Result<CwtResult> cwt(const Eigen::VectorXd& signal, const CwtFilterBank& bank, const RunControl& control = {});
 
 /// frames x (channels * scales), row-major: a frame's coefficients are contiguous.
 using CoefficientRows = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
 /// The CWT of every column of `input` (frames x channels): column c * scales + s holds
-/// channel c at scale s, equal to cwt(input.col(c)) (to rounding). The direct method runs
-/// all channels together (vectorised across channels); the FFT method one channel at a time.
+/// channel c at scale s, equal to cwt(input.col(c)). The direct method runs all channels
+/// together (eight series side by side in the vector lanes, long channels cut into segments);
+/// the FFT method one channel at a time.
 Result<CoefficientRows> cwtChannels(const Eigen::MatrixXd& input, const CwtFilterBank& bank,
                                     const RunControl& control = {});
 

@@ -51,7 +51,46 @@ std::vector<double> scaleWeights(const std::vector<double>& scales)
     return weights;
 }
 
+/// Adds scale s's term of eq. 5.13 (before the division by C_psi) to `out`.
+void addScaleTerm(const CwtFilterBank& bank, const CwtResult& coefficients, const std::vector<double>& scales,
+                  const std::vector<double>& weights, std::size_t s, Eigen::Ref<Eigen::VectorXd> out)
+{
+    const Eigen::Index n = out.size();
+    const Eigen::VectorXd& kernel = bank.kernels[s];
+    const Eigen::Index m = kernel.size() - 1;
+    const Eigen::Index offset = (m - 2) / 2;
+    const Eigen::VectorXd reversed = kernel.reverse();
+    const double factor = -std::sqrt(scales[s]) * weights[s] / (scales[s] * scales[s]);
+    for (Eigen::Index t = 0; t < n; ++t) {
+        const Eigen::Index start = t + offset + 1 - m;
+        const Eigen::Index first = std::max<Eigen::Index>(0, -start);
+        const Eigen::Index last = std::min<Eigen::Index>(m, n - 1 - start);
+        if (last < first) continue;
+        out.segment(start + first, last - first + 1) +=
+            (factor * coefficients.coefficients(t, Eigen::Index(s))) * reversed.segment(first, last - first + 1);
+    }
+}
+
 } // namespace
+
+Result<Eigen::MatrixXd> cwtScaleContributions(const Eigen::VectorXd& signal, const std::vector<double>& scales,
+                                              const CwtOptions& options, const RunControl& control)
+{
+    if (!std::is_sorted(scales.begin(), scales.end()) || std::adjacent_find(scales.begin(), scales.end()) != scales.end())
+        return makeError(ErrorCode::InvalidArgument, "cwt reconstruction: scales must be strictly increasing");
+    auto bank = makeCwtFilterBank(scales, options);
+    if (!bank) return bank.error();
+    auto coefficients = cwt(signal, *bank, control);
+    if (!coefficients) return coefficients.error();
+    const std::vector<double> weights = scaleWeights(scales);
+    Eigen::MatrixXd contributions = Eigen::MatrixXd::Zero(signal.size(), Eigen::Index(scales.size()));
+    for (std::size_t s = 0; s < scales.size(); ++s) {
+        if (control.cancelled()) return makeError(ErrorCode::Cancelled, "cwt reconstruction cancelled");
+        addScaleTerm(*bank, *coefficients, scales, weights, s, contributions.col(Eigen::Index(s)));
+    }
+    contributions /= admissibilityConstant(options.wavelet, options.precision);
+    return contributions;
+}
 
 Result<Eigen::VectorXd> cwtReconstruction(const Eigen::VectorXd& signal, const std::vector<double>& scales,
                                           const CwtOptions& options, const RunControl& control)
@@ -70,19 +109,7 @@ Result<Eigen::VectorXd> cwtReconstruction(const Eigen::VectorXd& signal, const s
     Eigen::VectorXd reconstruction = Eigen::VectorXd::Zero(n);
     for (std::size_t s = 0; s < scales.size(); ++s) {
         if (control.cancelled()) return makeError(ErrorCode::Cancelled, "cwt reconstruction cancelled");
-        const Eigen::VectorXd& kernel = bank->kernels[s];
-        const Eigen::Index m = kernel.size() - 1;
-        const Eigen::Index offset = (m - 2) / 2;
-        const Eigen::VectorXd reversed = kernel.reverse();
-        const double factor = -std::sqrt(scales[s]) * weights[s] / (scales[s] * scales[s]);
-        for (Eigen::Index t = 0; t < n; ++t) {
-            const Eigen::Index start = t + offset + 1 - m;
-            const Eigen::Index first = std::max<Eigen::Index>(0, -start);
-            const Eigen::Index last = std::min<Eigen::Index>(m, n - 1 - start);
-            if (last < first) continue;
-            reconstruction.segment(start + first, last - first + 1) +=
-                (factor * coefficients->coefficients(t, Eigen::Index(s))) * reversed.segment(first, last - first + 1);
-        }
+        addScaleTerm(*bank, *coefficients, scales, weights, s, reconstruction);
     }
     reconstruction /= admissibilityConstant(options.wavelet, options.precision);
     return reconstruction;

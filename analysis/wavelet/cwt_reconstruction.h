@@ -19,6 +19,13 @@ namespace bunraku::analysis {
 Result<Eigen::VectorXd> cwtReconstruction(const Eigen::VectorXd& signal, const std::vector<double>& scales,
                                           const CwtOptions& options = {}, const RunControl& control = {});
 
+/// Each scale's term of cwtReconstruction separately (samples x scales, each scale with its share
+/// of the scale axis among `scales`): their row sums are the reconstruction. For the integer
+/// scales 1..c every share is 1, so the approximation of scales 1..k (k <= c) is x minus the
+/// sum of the first k columns (thesis 5.4.1's per-scale approximations in one transform).
+Result<Eigen::MatrixXd> cwtScaleContributions(const Eigen::VectorXd& signal, const std::vector<double>& scales,
+                                              const CwtOptions& options = {}, const RunControl& control = {});
+
 /// A(t) = x(t) - cwtReconstruction(x)(t): the approximation below the largest scale.
 Result<Eigen::VectorXd> cwtApproximation(const Eigen::VectorXd& signal, const std::vector<double>& scales,
                                          const CwtOptions& options = {}, const RunControl& control = {});

@@ -53,24 +53,34 @@ std::vector<std::complex<double>> realSpectrum(const Eigen::VectorXd& values, st
     return spectrum;
 }
 
-FftConvolver::FftConvolver(const Eigen::VectorXd& signal, std::size_t length)
-    : m_length(length)
+BlockConvolver::BlockConvolver(const std::vector<Eigen::VectorXd>& kernels)
 {
-    m_real = fftw_alloc_real(length);
-    m_spectrum = reinterpret_cast<std::complex<double>*>(fftw_alloc_complex(length / 2 + 1));
-    auto* spectrum = reinterpret_cast<fftw_complex*>(m_spectrum);
+    std::size_t longest = 1;
+    for (const auto& kernel : kernels) longest = std::max(longest, std::size_t(kernel.size()));
+    m_reach = longest - 1;
+    // Blocks of at least 8 kernel lengths (so at most an eighth of each block is repeated) and
+    // at least 2048 samples (so FFTW's per-transform overhead stays small).
+    m_length = 2048;
+    while (m_length < 8 * longest) m_length *= 2;
+    const std::size_t bins = m_length / 2 + 1;
+    m_real = fftw_alloc_real(m_length);
+    m_block = fftw_alloc_real(m_length);
+    m_spectrum = reinterpret_cast<std::complex<double>*>(fftw_alloc_complex(bins));
+    m_product = reinterpret_cast<std::complex<double>*>(fftw_alloc_complex(bins));
     {
         std::lock_guard lock(plannerMutex());
-        m_forward = fftw_plan_dft_r2c_1d(int(length), m_real, spectrum, FFTW_ESTIMATE);
-        m_backward = fftw_plan_dft_c2r_1d(int(length), spectrum, m_real, FFTW_ESTIMATE);
+        m_forward = fftw_plan_dft_r2c_1d(int(m_length), m_real, reinterpret_cast<fftw_complex*>(m_spectrum), FFTW_ESTIMATE);
+        m_backward = fftw_plan_dft_c2r_1d(int(m_length), reinterpret_cast<fftw_complex*>(m_product), m_block, FFTW_ESTIMATE);
     }
-    std::fill(m_real, m_real + length, 0.0);
-    std::copy(signal.data(), signal.data() + signal.size(), m_real);
-    fftw_execute(static_cast<fftw_plan>(m_forward));
-    m_signalSpectrum.assign(m_spectrum, m_spectrum + length / 2 + 1);
+    for (const auto& kernel : kernels) {
+        std::fill(m_real, m_real + m_length, 0.0);
+        std::copy(kernel.data(), kernel.data() + kernel.size(), m_real);
+        fftw_execute(static_cast<fftw_plan>(m_forward));
+        m_spectra.emplace_back(m_spectrum, m_spectrum + bins);
+    }
 }
 
-FftConvolver::~FftConvolver()
+BlockConvolver::~BlockConvolver()
 {
     {
         std::lock_guard lock(plannerMutex());
@@ -78,22 +88,48 @@ FftConvolver::~FftConvolver()
         fftw_destroy_plan(static_cast<fftw_plan>(m_backward));
     }
     fftw_free(m_real);
+    fftw_free(m_block);
     fftw_free(m_spectrum);
+    fftw_free(m_product);
 }
 
-Eigen::VectorXd FftConvolver::convolve(const Eigen::VectorXd& kernel, std::size_t offset, std::size_t count)
+bool BlockConvolver::convolve(const Eigen::VectorXd& signal, const std::vector<std::size_t>& offsets,
+                              const std::vector<double>& factors, Eigen::Ref<Eigen::MatrixXd> out, const std::stop_token& stop)
 {
-    std::fill(m_real, m_real + m_length, 0.0);
-    std::copy(kernel.data(), kernel.data() + kernel.size(), m_real);
-    fftw_execute(static_cast<fftw_plan>(m_forward));
+    const auto n = std::ptrdiff_t(signal.size());
+    const auto count = std::ptrdiff_t(out.rows());
     const std::size_t bins = m_length / 2 + 1;
-    for (std::size_t k = 0; k < bins; ++k) m_spectrum[k] *= m_signalSpectrum[k];
-    // c2r destroys its input; the spectrum buffer is rebuilt on every call anyway.
-    fftw_execute(static_cast<fftw_plan>(m_backward));
-    Eigen::VectorXd out(static_cast<Eigen::Index>(count));
+    const auto useful = std::ptrdiff_t(m_length - m_reach); // full-convolution samples a block yields
+    std::ptrdiff_t first = 0;
+    std::ptrdiff_t last = 0; // full-convolution samples needed: first .. last - 1
+    for (std::size_t k = 0; k < offsets.size(); ++k) {
+        first = k == 0 ? std::ptrdiff_t(offsets[k]) : std::min(first, std::ptrdiff_t(offsets[k]));
+        last = std::max(last, std::ptrdiff_t(offsets[k]) + count);
+    }
     const double norm = 1.0 / double(m_length);
-    for (std::size_t i = 0; i < count; ++i) out[Eigen::Index(i)] = m_real[offset + i] * norm;
-    return out;
+    for (std::ptrdiff_t begin = first / useful * useful; begin < last; begin += useful) {
+        if (stop.stop_requested()) return false;
+        // Block sample i is signal sample begin - reach + i; circular outputs reach .. length - 1
+        // are the full convolution's samples begin .. begin + useful - 1.
+        const std::ptrdiff_t start = begin - std::ptrdiff_t(m_reach);
+        for (std::ptrdiff_t i = 0; i < std::ptrdiff_t(m_length); ++i) {
+            const std::ptrdiff_t at = start + i;
+            m_real[i] = at >= 0 && at < n ? signal[at] : 0.0;
+        }
+        fftw_execute(static_cast<fftw_plan>(m_forward));
+        for (std::size_t k = 0; k < m_spectra.size(); ++k) {
+            const std::ptrdiff_t from = std::max(begin, std::ptrdiff_t(offsets[k]));
+            const std::ptrdiff_t to = std::min(begin + useful, std::ptrdiff_t(offsets[k]) + count);
+            if (from >= to) continue;
+            const std::complex<double>* kernel = m_spectra[k].data();
+            for (std::size_t b = 0; b < bins; ++b) m_product[b] = m_spectrum[b] * kernel[b];
+            fftw_execute(static_cast<fftw_plan>(m_backward)); // c2r overwrites m_product
+            const double scale = factors[k] * norm;
+            for (std::ptrdiff_t j = from; j < to; ++j)
+                out(j - std::ptrdiff_t(offsets[k]), std::ptrdiff_t(k)) = scale * m_block[j - start];
+        }
+    }
+    return true;
 }
 
 } // namespace bunraku::analysis::detail

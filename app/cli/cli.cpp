@@ -2,11 +2,35 @@
 
 #include "app/build_info.h"
 
+#include <filesystem>
 #include <iostream>
+#include <new>
+#include <stdexcept>
 
 namespace bunraku::app::cli {
 
-void printJson(const nlohmann::json& document) { std::cout << document.dump(2) << std::endl; }
+namespace {
+
+/// An allocation failed somewhere in a command: say so, naming the command and the files and
+/// folders on its command line (the inputs that asked for that much memory).
+std::string outOfMemoryMessage(int argc, char** argv)
+{
+    std::string command = argc > 1 ? argv[1] : "";
+    std::string inputs;
+    for (int i = 2; i < argc; ++i) {
+        std::error_code ec;
+        if (std::filesystem::exists(argv[i], ec)) inputs += (inputs.empty() ? "" : ", ") + std::string(argv[i]);
+    }
+    return "out of memory while running `bunraku " + command + "`" + (inputs.empty() ? std::string() : " on " + inputs) +
+           ": the input is larger than this machine can hold (or asks for more than its content justifies)";
+}
+
+} // namespace
+
+void printJson(const nlohmann::json& document)
+{
+    std::cout << document.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << std::endl;
+}
 
 int runCli(int argc, char** argv)
 {
@@ -33,6 +57,12 @@ int runCli(int argc, char** argv)
         return e.get_exit_code() == 0 ? 2 : e.get_exit_code();
     } catch (const CliError& e) {
         std::cerr << "bunraku: error: " << e.what() << "\n";
+        return 1;
+    } catch (const std::bad_alloc&) {
+        std::cerr << "bunraku: error: " << outOfMemoryMessage(argc, argv) << "\n";
+        return 1;
+    } catch (const std::length_error&) {
+        std::cerr << "bunraku: error: " << outOfMemoryMessage(argc, argv) << "\n";
         return 1;
     } catch (const std::exception& e) {
         std::cerr << "bunraku: error: " << e.what() << "\n";

@@ -1,6 +1,9 @@
 // Subcommand: analyse - the thesis's whole chain (analysis/pipeline) with data files and the
 // HTML report (analysis/report).
 #include "app/cli/commands.h"
+#include "app/cli/output_guard.h"
+
+#include "analysis/io/atomic_file.h"
 
 #include "analysis/pipeline/chain.h"
 #include "analysis/pipeline/parameters_json.h"
@@ -12,10 +15,8 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
-#include <sstream>
 
 namespace bunraku::app::cli {
 namespace {
@@ -46,17 +47,11 @@ public:
 pl::ChainParameters readParameters(const std::string& file)
 {
     if (file.empty()) return {};
-    std::error_code error;
-    if (!std::filesystem::is_regular_file(file, error)) throw CliError(file + ": not a regular file");
-    const auto size = std::filesystem::file_size(file, error);
-    if (error || size > 64u * 1024 * 1024) throw CliError(file + ": larger than 64 MB, not a parameters file");
-    std::ifstream in(file, std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
+    const std::string text = unwrap(analysis::io::readTextFile(file, analysis::io::kDocumentLimitBytes));
     nlohmann::json document;
     try {
-        document = nlohmann::json::parse(text.str());
-    } catch (const nlohmann::json::parse_error& parse) {
+        document = nlohmann::json::parse(text);
+    } catch (const nlohmann::json::exception& parse) { // a syntax error, or a number out of range (1e400)
         throw CliError(file + ": expected JSON: " + parse.what());
     }
     // A project file holds the parameters under "parameters"; a parameters file may too.
@@ -66,6 +61,7 @@ pl::ChainParameters readParameters(const std::string& file)
 
 void runAnalyse(const AnalyseArguments& arguments)
 {
+    refuseOutputOverInputs(arguments.output, OutputKind::Folder, {arguments.corpus, arguments.parameters});
     const pl::ChainParameters parameters = readParameters(arguments.parameters);
     const pl::CorpusInput corpus = unwrap(pl::importCorpus(arguments.corpus));
     const bool terminal = ::isatty(STDERR_FILENO) == 1;

@@ -1,10 +1,12 @@
 // Subcommands: axis, phase, gains, design, experiment design (thesis chapter 5).
 #include "app/cli/commands.h"
 #include "app/cli/take_output.h"
+#include "app/cli/output_guard.h"
 
 #include "analysis/axis/axis_channels.h"
 #include "analysis/axis/inertia_axis.h"
 #include "analysis/body/body_description.h"
+#include "analysis/body/body_fit.h"
 #include "analysis/core/puppet_layout.h"
 #include "analysis/design/design_corpus.h"
 #include "analysis/design/design_experiment.h"
@@ -52,11 +54,13 @@ an::AxisOptions axisOptions(const AxisArguments& arguments)
     return options;
 }
 
-an::AxisModel axisModel(const AxisArguments& arguments)
+/// The body given with --body, else the shipped puppet, fitted to `take`'s skeleton when it
+/// has one (analysis/body/body_fit.h: the axis of a BVH take is its performer's).
+an::AxisModel axisModel(const AxisArguments& arguments, const an::Take* take = nullptr)
 {
-    const an::BodyDescription body =
-        arguments.body.empty() ? an::defaultBodyDescription() : unwrap(an::loadBodyDescription(arguments.body));
-    return an::makeAxisModel(body, axisOptions(arguments));
+    if (!arguments.body.empty()) return an::makeAxisModel(unwrap(an::loadBodyDescription(arguments.body)), axisOptions(arguments));
+    const an::BodyDescription& puppet = an::defaultBodyDescription();
+    return an::makeAxisModel(take ? an::bodyForTake(puppet, *take) : puppet, axisOptions(arguments));
 }
 
 an::MotionAxis motionAxis(const an::AxisModel& model, const an::Take& take, const AxisArguments& arguments)
@@ -85,8 +89,9 @@ struct AxisCommandArguments {
 
 void runAxis(const AxisCommandArguments& arguments)
 {
+    refuseOutputOverInputs(arguments.output, OutputKind::File, {arguments.take, arguments.axis.body});
     const an::Take take = unwrap(an::io::readTakeFile(arguments.take));
-    const an::AxisModel model = axisModel(arguments.axis);
+    const an::AxisModel model = axisModel(arguments.axis, &take);
     const an::MotionAxis axis = motionAxis(model, take, arguments.axis);
     an::Take out = an::axisTake(axis);
     if (arguments.coordinates) {
@@ -123,6 +128,8 @@ struct PhaseArguments {
     double approximationWeight = 8.0;
     std::string path = "greedy";
     std::string weighting = "none";
+    std::string level = "first-frame";
+    std::string timeScale = "auto";
     int spacing = 8;
 };
 
@@ -137,8 +144,16 @@ void addPhaseOptions(CLI::App* command, PhaseArguments& arguments)
         ->check(CLI::IsMember({"greedy", "optimal"}));
     command->add_option("--weighting", arguments.weighting, "none (thesis, default) or standardise")
         ->check(CLI::IsMember({"none", "standardise"}));
+    command->add_option("--level", arguments.level,
+                        "Level of each axis coordinate before the transform: first-frame (minus its first frame, default) "
+                        "or none (eq. 5.16 read literally)")
+        ->check(CLI::IsMember({"none", "first-frame"}));
     command->add_option("--control-spacing", arguments.spacing, "Frames between warp control points (default 8)")
         ->check(CLI::PositiveNumber);
+    command->add_option("--time-scale", arguments.timeScale,
+                        "Takes of other lengths: auto (default: a global time scale first when the lengths differ by more "
+                        "than half of T_cmp), global (always) or none (the band alone)")
+        ->check(CLI::IsMember({"auto", "global", "none"}));
 }
 
 an::PhaseOptions phaseOptions(const PhaseArguments& arguments)
@@ -150,6 +165,10 @@ an::PhaseOptions phaseOptions(const PhaseArguments& arguments)
     options.match.approximationWeight = arguments.approximationWeight;
     options.match.path = arguments.path == "optimal" ? an::PathMethod::Optimal : an::PathMethod::Greedy;
     options.match.weighting = arguments.weighting == "standardise" ? an::ChannelWeighting::Standardise : an::ChannelWeighting::None;
+    options.match.level = arguments.level == "first-frame" ? an::LevelAlignment::FirstFrame : an::LevelAlignment::None;
+    options.match.timeScaling = arguments.timeScale == "global" ? an::TimeScaling::Global
+                                : arguments.timeScale == "none" ? an::TimeScaling::None
+                                                                : an::TimeScaling::Auto;
     options.controlPointSpacing = arguments.spacing;
     return options;
 }
@@ -165,12 +184,16 @@ struct PhaseCommandArguments {
 
 void runPhase(const PhaseCommandArguments& arguments)
 {
+    refuseOutputOverInputs(arguments.output, OutputKind::File, {arguments.reference, arguments.sample, arguments.axis.body});
     const an::Take reference = unwrap(an::io::readTakeFile(arguments.reference));
     const an::Take sample = unwrap(an::io::readTakeFile(arguments.sample));
     const an::AxisModel model = axisModel(arguments.axis);
     const Eigen::MatrixXd functional = an::axisCoordinates(motionAxis(model, reference, arguments.axis).world_T_axis);
     const Eigen::MatrixXd emotional = an::axisCoordinates(motionAxis(model, sample, arguments.axis).world_T_axis);
-    const an::PhaseResult phase = unwrap(an::extractPhase(functional, emotional, phaseOptions(arguments.phase)));
+    auto extracted = an::extractPhase(functional, emotional, phaseOptions(arguments.phase));
+    if (!extracted)
+        throw CliError(arguments.sample + " against " + arguments.reference + ": " + extracted.error().message);
+    const an::PhaseResult phase = std::move(extracted).value();
     unwrap(an::writeWarpCsv(phase.curve, arguments.output));
     const Eigen::VectorXd identity = Eigen::VectorXd::LinSpaced(phase.emotionalToFunctional.size(), 0.0,
                                                                  double(phase.emotionalToFunctional.size() - 1));
@@ -207,6 +230,8 @@ struct GainsCommandArguments {
 
 void runGains(const GainsCommandArguments& arguments)
 {
+    refuseOutputOverInputs(arguments.output, OutputKind::File,
+                           {arguments.reference, arguments.sample, arguments.warp, arguments.axis.body});
     const an::Take reference = unwrap(an::io::readTakeFile(arguments.reference));
     const an::Take sample = unwrap(an::io::readTakeFile(arguments.sample));
     const an::WarpCurve warp = unwrap(an::readWarpCsv(arguments.warp));
@@ -251,8 +276,12 @@ struct DesignCommandArguments {
 void runDesign(const DesignCommandArguments& arguments)
 {
     requireTakeOutput(arguments.output);
+    for (const std::string& output : {arguments.output, arguments.axisOutput})
+        refuseOutputOverInputs(output, OutputKind::File, {arguments.take, arguments.warp, arguments.gains, arguments.axis.body},
+                               output == arguments.output ? "-o" : "--axis-output");
+    if (arguments.output == arguments.axisOutput) throw CliError(arguments.output + ": -o and --axis-output name the same file");
     const an::Take take = unwrap(an::io::readTakeFile(arguments.take));
-    const an::AxisModel model = axisModel(arguments.axis);
+    const an::AxisModel model = axisModel(arguments.axis, &take);
     const an::DesignBasis basis = unwrap(an::prepareDesign(model, take, axisOptions(arguments.axis)));
     const an::WarpCurve warp = arguments.warp.empty() ? an::identityWarp(take.frameCount()) : unwrap(an::readWarpCsv(arguments.warp));
     if (!warp.points.empty() && warp.points.back().source > double(take.frameCount() - 1) + 1e-9)
@@ -288,6 +317,7 @@ void runDesign(const DesignCommandArguments& arguments)
 struct ExperimentArguments {
     std::string corpus;
     std::string means = "measured";
+    std::string position = "rigid";
     bool json = false;
     AxisArguments axis;
     PhaseArguments phase;
@@ -304,6 +334,7 @@ void runExperiment(const ExperimentArguments& arguments)
         return std::move(read).value();
     }();
     an::DesignCorpusOptions corpusOptions;
+    an::preprocess::parsePositionAlignment(arguments.position, corpusOptions.preprocess.positionAlignment);
     an::Corpus corpus;
     if (arguments.means == "measured") {
         corpus = unwrap(an::io::readCorpus(arguments.corpus));
@@ -424,6 +455,10 @@ void addMotionAxisCommands(CommandSet& commands)
                             "'measured' (default): the preprocessed takes of each cell averaged by the thesis 3.7 average take; "
                             "'truth': the ground truth's noiseless cell motions")
             ->check(CLI::IsMember({"truth", "measured"}));
+        command->add_option("--position", arguments->position,
+                            "Start-position step of the preprocessing (thesis 2.2-4): rigid (one translation per take, "
+                            "default) or per-part")
+            ->check(CLI::IsMember({"rigid", "per-part"}));
         command->add_flag("--json", arguments->json, "Print a machine-readable summary");
         addAxisOptions(command, arguments->axis);
         addPhaseOptions(command, arguments->phase);

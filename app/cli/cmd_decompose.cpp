@@ -1,6 +1,7 @@
 // Subcommands: decompose, emotion, experiment km2o.
 #include "app/cli/commands.h"
 #include "app/cli/take_output.h"
+#include "app/cli/output_guard.h"
 
 #include "analysis/decompose/arma.h"
 #include "analysis/decompose/emotion_weight.h"
@@ -8,8 +9,8 @@
 #include "analysis/decompose/km2o_experiment.h"
 #include "analysis/decompose/least_squares.h"
 #include "analysis/decompose/spectrum.h"
-#include "analysis/io/atomic_file.h"
 #include "analysis/io/corpus_io.h"
+#include "analysis/io/staged_folder.h"
 #include "analysis/io/take_csv.h"
 #include "analysis/io/text_format.h"
 #include "analysis/pipeline/stages.h"
@@ -21,6 +22,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -119,9 +121,6 @@ Take asTake(const Decomposition& d, const Eigen::MatrixXd& values, TakeLabels la
     return take;
 }
 
-/// Atomic (temporary file + rename): a failure leaves any previous file untouched.
-void writeText(const fs::path& file, const std::string& text) { unwrap(io::writeFileAtomically(file, text)); }
-
 std::string spectraCsv(const Decomposition& d, bool useWelch)
 {
     std::ostringstream out;
@@ -146,6 +145,7 @@ std::string armaTakesCsv(const Decomposition& d, ArmaOrderSearch search, int max
     out << std::setprecision(8) << "function,emotion,take,channel,p,q,fpe,innovation_variance";
     for (int m = 1; m <= maxOrder; ++m) out << ",a" << m;
     for (int n = 0; n <= maxOrder; ++n) out << ",b" << n;
+    for (int n = 0; n <= maxOrder; ++n) out << ",b" << n << "_thesis";
     out << '\n';
     ArmaOrderOptions options;
     options.maxOrder = maxOrder;
@@ -161,6 +161,7 @@ std::string armaTakesCsv(const Decomposition& d, ArmaOrderSearch search, int max
                 << d.channels[ch].name() << ',' << m.p << ',' << m.q << ',' << m.fpe << ',' << m.innovationVariance;
             for (int i = 0; i < maxOrder; ++i) out << ',' << (i < m.p ? std::to_string(m.a(i)) : "");
             for (int i = 0; i <= maxOrder; ++i) out << ',' << (i <= m.q ? std::to_string(m.b(i)) : "");
+            for (int i = 0; i <= maxOrder; ++i) out << ',' << (i <= m.q ? std::to_string(m.bThesis(i)) : "");
             out << '\n';
         }
     }
@@ -173,6 +174,7 @@ std::string armaTableCsv(const Decomposition& d, int p, int q)
     out << std::setprecision(6) << std::fixed << "channel,function,emotion,takes";
     for (int m = 1; m <= p; ++m) out << ",a" << m;
     for (int n = 0; n <= q; ++n) out << ",b" << n;
+    for (int n = 0; n <= q; ++n) out << ",b" << n << "_thesis";
     out << ",innovation_variance,fpe\n";
     for (std::size_t ch = 0; ch < d.channels.size(); ++ch) {
         auto rows = armaCellTable(d, Eigen::Index(ch), p, q);
@@ -182,6 +184,7 @@ std::string armaTableCsv(const Decomposition& d, int p, int q)
             out << d.channels[ch].name() << ',' << row.function << ',' << row.emotion << ',' << row.takes;
             for (int m = 0; m < p; ++m) out << ',' << row.mean.a(m);
             for (int n = 0; n <= q; ++n) out << ',' << row.mean.b(n);
+            for (int n = 0; n <= q; ++n) out << ',' << row.mean.bThesis(n);
             out << ',' << row.mean.innovationVariance << ',' << row.mean.fpe << '\n';
         }
     }
@@ -199,15 +202,38 @@ nlohmann::json truthErrors(const Decomposition& d, const synth::DemoGroundTruth&
     auto rms = [](const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
         return std::sqrt((a - b).squaredNorm() / double(std::max<Eigen::Index>(1, a.size())));
     };
-    for (const auto& f : d.functions) {
+    // y as a pose (Euler angles, compared modulo 360); z as rotation coordinates about the
+    // function's chart on both sides (the truth's z is the difference of its cell motion and y).
+    auto truthTake = [&](const Eigen::MatrixXd& values) {
+        Take take;
+        take.values = values;
+        take.channels = d.channels;
+        return take;
+    };
+    for (std::size_t i = 0; i < d.functions.size(); ++i) {
+        const auto& f = d.functions[i];
         const auto* t = truth.function(f.function);
         if (!t || t->motion.rows() != f.values.rows() || t->motion.cols() != f.values.cols()) continue;
-        out["y"][f.function] = {{"relative_error_percent", percent(f.values, t->motion)}, {"rms", rms(f.values, t->motion)}};
+        Eigen::MatrixXd y = unwrap(functionComponentTake(d, f.function)).values;
+        for (Eigen::Index c = 0; c < y.cols(); ++c)
+            if (d.channels[std::size_t(c)].unit == "deg")
+                for (Eigen::Index r = 0; r < y.rows(); ++r) y(r, c) = t->motion(r, c) + std::remainder(y(r, c) - t->motion(r, c), 360.0);
+        out["y"][f.function] = {{"relative_error_percent", percent(y, t->motion)}, {"rms", rms(y, t->motion)}};
     }
     for (const auto& z : d.emotions) {
         const auto* t = truth.cell(z.function, z.emotion);
-        if (!t || t->emotionComponent.rows() != z.values.rows() || t->emotionComponent.cols() != z.values.cols()) continue;
-        out["z"][z.function + "/" + z.emotion] = {{"rms", rms(z.values, t->emotionComponent)}};
+        const auto* y = truth.function(z.function);
+        const int function = [&] {
+            for (std::size_t i = 0; i < d.functions.size(); ++i)
+                if (d.functions[i].function == z.function) return int(i);
+            return -1;
+        }();
+        if (!t || !y || function < 0 || t->motion.rows() != z.values.rows() || t->motion.cols() != z.values.cols() ||
+            y->motion.rows() != z.values.rows())
+            continue;
+        const RotationChart& chart = d.charts[std::size_t(function)];
+        const Eigen::MatrixXd trueZ = rotationCoordinates(truthTake(t->motion), chart) - rotationCoordinates(truthTake(y->motion), chart);
+        out["z"][z.function + "/" + z.emotion] = {{"rms", rms(z.values, trueZ)}};
     }
     return out;
 }
@@ -227,6 +253,7 @@ struct DecomposeArgs {
 void runDecompose(const DecomposeArgs& args)
 {
     if (args.armaTableOrder.size() != 2) throw CliError("--arma-table takes two orders: p q");
+    refuseOutputOverInputs(args.output, OutputKind::Folder, {args.corpus.path, args.truth});
     const Corpus corpus = loadCorpus(args.corpus);
     DecomposeSettings settings;
     settings.method = args.method == "km2o" ? Method::Km2o : Method::LeastSquares;
@@ -245,8 +272,12 @@ void runDecompose(const DecomposeArgs& args)
         outputs.emplace_back(name, io::formatTakeCsv(take));
     };
     aboutCorpus(args.corpus.path, [&] {
-        for (const auto& f : d.functions)
-            addTake(asTake(d, f.values, {f.function, "", 0, "y"}), "y_" + io::fileSafeLabel(f.function) + ".csv");
+        // y as a pose (Euler angles); z and eta are differences: rotation coordinates (deg).
+        for (const auto& f : d.functions) {
+            Take y = unwrap(functionComponentTake(d, f.function));
+            y.labels = {f.function, "", 0, "y"};
+            addTake(y, "y_" + io::fileSafeLabel(f.function) + ".csv");
+        }
         for (const auto& z : d.emotions)
             addTake(asTake(d, z.values, {z.function, z.emotion, 0, "z"}),
                     "z_" + io::fileSafeLabel(z.function) + "_" + io::fileSafeLabel(z.emotion) + ".csv");
@@ -292,12 +323,12 @@ void runDecompose(const DecomposeArgs& args)
     summary["channels"] = d.channels.size();
     summary["files"] = files;
     summary["output"] = out.string();
-    outputs.emplace_back("summary.json", summary.dump(2) + "\n");
+    outputs.emplace_back("summary.json", summary.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
 
-    std::error_code ec;
-    fs::create_directories(out, ec);
-    if (ec) throw CliError("cannot create " + out.string() + ": " + ec.message());
-    for (const auto& [name, content] : outputs) writeText(out / name, content);
+    // Built in a hidden folder and swapped in: the previous output stays whole until then.
+    io::StagedFolder staged = unwrap(io::StagedFolder::begin(out));
+    for (const auto& [name, content] : outputs) unwrap(staged.writeFile(name, content));
+    unwrap(staged.commit());
     if (args.json) {
         printJson(summary);
     } else {
@@ -322,6 +353,7 @@ struct EmotionArgs {
 void runEmotion(const EmotionArgs& args)
 {
     requireTakeOutput(args.output);
+    refuseOutputOverInputs(args.output, OutputKind::File, {args.corpus.path});
     const Corpus corpus = loadCorpus(args.corpus);
     DecomposeSettings settings;
     settings.method = args.method == "km2o" ? Method::Km2o : Method::LeastSquares;
@@ -343,6 +375,8 @@ struct ExperimentArgs {
     double noise = 0.0;
     int firstOffset = -1;
     std::string initialTimes = "full";
+    std::string noiseSharing = "per-cell";
+    int takes = 5;
     bool json = false;
 };
 
@@ -373,7 +407,15 @@ void runExperiment(const ExperimentArgs& args)
     if (args.noise > 0.0) options.noiseScale = args.noise;
     if (args.firstOffset >= 0) options.reading.firstWindowOffset = args.firstOffset;
     options.reading.initialTimes = args.initialTimes == "thesis" ? InitialTimeRange::Thesis : InitialTimeRange::Full;
+    options.noise = args.noiseSharing == "shared" ? NoiseSharing::SharedAcrossCells : NoiseSharing::PerCell;
+    options.takes = args.takes;
     const auto result = unwrap(runKm2oExperiment(options));
+    const auto printed = thesisTable44Printed(result.finalTime);
+    // Table 4.4 as printed beside each M (T = 1000 in units of 0.1 %, so also "read as %").
+    std::vector<double> asPrinted;
+    for (int m : result.correlationLengths)
+        asPrinted.push_back(m >= 3 && m <= 20 && !printed.empty() ? printed[std::size_t(m - 3)]
+                                                                  : std::numeric_limits<double>::quiet_NaN());
     if (args.json) {
         auto clean = [](const std::vector<double>& v) {
             nlohmann::json a = nlohmann::json::array();
@@ -384,19 +426,25 @@ void runExperiment(const ExperimentArgs& args)
                    {"M", result.correlationLengths},
                    {"P_percent", clean(result.errorPercent)},
                    {"thesis_P_percent", clean(result.thesisErrorPercent)},
+                   {"thesis_printed", clean(asPrinted)},
                    {"seeds", args.seeds},
+                   {"takes", options.takes},
+                   {"noise_sharing", args.noiseSharing},
                    {"first_window_offset", options.reading.firstWindowOffset},
                    {"initial_times", args.initialTimes}});
         return;
     }
-    std::cout << "KM2O exogenous-input identification of the eq. 4.39 ARX series, T = " << result.finalTime << ", "
-              << args.seeds << " seed(s); P = relative error (eq. 4.40) averaged over the six inputs\n";
-    std::cout << "   M    P [%]   thesis Table 4.4 [%]\n";
+    std::cout << "KM2O exogenous-input identification of the eq. 4.39 ARX series, T = " << result.finalTime << ", K = "
+              << options.takes << ", " << args.seeds << " seed(s), noise " << args.noiseSharing
+              << "; P = relative error (eq. 4.40) averaged over the six inputs\n";
+    const bool tenths = result.finalTime == 1000;
+    std::cout << "   M    P [%]   thesis Table 4.4 [%]" << (tenths ? "   (printed, read as %)" : "") << "\n";
     for (std::size_t i = 0; i < result.correlationLengths.size(); ++i) {
         std::cout << std::setw(4) << result.correlationLengths[i] << std::setw(9) << std::fixed << std::setprecision(3)
                   << result.errorPercent[i] << "   ";
         if (std::isfinite(result.thesisErrorPercent[i])) std::cout << std::setw(8) << result.thesisErrorPercent[i];
         else std::cout << "       -";
+        if (tenths && std::isfinite(asPrinted[i])) std::cout << std::setw(25) << asPrinted[i];
         std::cout << "\n";
     }
 }
@@ -456,6 +504,11 @@ void addDecompositionCommands(CommandSet& commands)
         ->check(CLI::Range(0, 100));
     exp->add_option("--initial-times", experimentArgs->initialTimes, "T0 range: full (0..T-M) or thesis (0..T-M-1)")
         ->check(CLI::IsMember({"full", "thesis"}));
+    exp->add_option("--noise-sharing", experimentArgs->noiseSharing,
+                    "per-cell (an independent w_k(t) per cell, default) or shared (one w_k(t) for all six cells: eq. "
+                    "4.39 puts no i, j on w)")
+        ->check(CLI::IsMember({"per-cell", "shared"}));
+    exp->add_option("--takes", experimentArgs->takes, "K, takes per cell (default 5, as the thesis)")->check(CLI::Range(2, 1000));
     exp->add_flag("--json", experimentArgs->json, "Print JSON");
     exp->callback([experimentArgs] { runExperiment(*experimentArgs); });
 }

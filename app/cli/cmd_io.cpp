@@ -1,12 +1,15 @@
 // Subcommands: info, convert, preprocess.
 #include "app/cli/commands.h"
+#include "app/cli/import_options.h"
 #include "app/cli/take_output.h"
+#include "app/cli/output_guard.h"
 
 #include "analysis/core/puppet_layout.h"
-#include "analysis/io/atomic_file.h"
 #include "analysis/io/bvh.h"
+#include "analysis/io/bvh_joint_map.h"
 #include "analysis/io/corpus_io.h"
 #include "analysis/io/take_reader.h"
+#include "analysis/io/text_format.h"
 #include "analysis/preprocess/preprocess.h"
 #include "analysis/synth/demo_corpus_io.h"
 
@@ -17,6 +20,7 @@
 #include <iostream>
 #include <limits>
 #include <memory>
+#include <optional>
 
 namespace bunraku::app::cli {
 namespace {
@@ -29,66 +33,22 @@ using analysis::Corpus;
 using analysis::Take;
 using nlohmann::json;
 
-/// Import options shared by info and convert.
-struct ImportArguments {
-    std::string joints;
-    std::string jointMapFile;
-    std::string upAxis = "auto";
-    std::string units = "cm";
-    bool allJoints = false;
-    double rateHz = 0.0;
-    std::string fastrakUnits = "cm";
-};
-
-void addImportOptions(CLI::App* command, ImportArguments& arguments)
-{
-    command->add_option("--joints", arguments.joints,
-                        "BVH joint map, e.g. head=Head,shoulder=Chest,arm=LowerArm_R,hand=Hand_R (parts not named keep "
-                        "the built-in defaults)");
-    command->add_option("--joint-map", arguments.jointMapFile,
-                        "BVH joint map as a JSON file {\"head\": ..., \"shoulder\": ..., \"arm\": ..., \"hand\": ...}");
-    command->add_option("--up-axis", arguments.upAxis, "BVH up axis: auto, y or z")
-        ->check(CLI::IsMember({"auto", "y", "z"}))
-        ->capture_default_str();
-    command->add_option("--units", arguments.units, "BVH length unit: cm, m, mm or in")
-        ->check(CLI::IsMember({"cm", "m", "mm", "in"}))
-        ->capture_default_str();
-    command->add_flag("--all-joints", arguments.allJoints, "BVH: keep every joint (6 channels each) instead of the 4 puppet parts");
-    command->add_option("--rate", arguments.rateHz, "Sample rate in Hz (CSV without time_s; FASTRAK, default 5)");
-    command->add_option("--fastrak-units", arguments.fastrakUnits, "FASTRAK position unit: cm or in")
-        ->check(CLI::IsMember({"cm", "in"}))
-        ->capture_default_str();
-}
-
-io::ImportOptions importOptions(const ImportArguments& arguments)
-{
-    io::ImportOptions options;
-    io::JointMap map;
-    if (!arguments.jointMapFile.empty()) map = unwrap(io::readJointMapJson(arguments.jointMapFile));
-    if (!arguments.joints.empty()) map = unwrap(io::parseJointMap(arguments.joints, map));
-    const bool anyJoint = std::any_of(map.joints.begin(), map.joints.end(), [](const std::string& j) { return !j.empty(); });
-    if (anyJoint) options.bvh.jointMap = map;
-    options.bvh.upAxis = arguments.upAxis == "y" ? io::BvhUpAxis::Y : arguments.upAxis == "z" ? io::BvhUpAxis::Z : io::BvhUpAxis::Auto;
-    options.bvh.unitScale = arguments.units == "m" ? 100.0 : arguments.units == "mm" ? 0.1 : arguments.units == "in" ? 2.54 : 1.0;
-    options.bvhLayout = arguments.allJoints ? io::BvhTakeLayout::AllJoints : io::BvhTakeLayout::PuppetParts;
-    if (arguments.rateHz != 0.0) {
-        if (!(arguments.rateHz > 0.0)) throw CliError("--rate must be a positive number of Hz");
-        options.csv.rateHz = arguments.rateHz;
-        options.fastrak.rateHz = arguments.rateHz;
-    }
-    options.fastrak.units = arguments.fastrakUnits == "in" ? io::FastrakUnits::Inches : io::FastrakUnits::Centimetres;
-    return options;
-}
-
-/// A corpus folder, or a one-take corpus made of a take file of any supported format.
+/// A corpus folder, or a one-take corpus made of a take file of any supported format. A BVH
+/// file is parsed once; when its puppet parts cannot be mapped and `requireTake` is false (info
+/// describes any valid BVH), the corpus stays empty and `mapError` says why.
 struct Loaded {
     Corpus corpus;
     bool isCorpus = false;
     std::string format;
     std::unique_ptr<io::BvhFile> bvh;
+    std::shared_ptr<const io::PartMap> map; ///< the BVH part map used
+    std::string mapError;
+    io::BvhUnitsGuess units;
+    double cmPerUnit = 1.0;
+    io::BvhUpAxis upAxis = io::BvhUpAxis::Y;
 };
 
-Loaded load(const std::string& pathText, const ImportArguments& arguments)
+Loaded load(const std::string& pathText, const ImportArguments& arguments, bool requireTake = true)
 {
     const fs::path path = pathText;
     std::error_code ec;
@@ -102,13 +62,51 @@ Loaded load(const std::string& pathText, const ImportArguments& arguments)
     }
     if (!fs::exists(path, ec)) throw CliError(path.string() + ": no such file or folder");
     const auto format = io::takeFileFormat(path);
-    Take take = unwrap(io::readTakeFile(path, importOptions(arguments)));
-    loaded.format = format == io::TakeFileFormat::Csv ? "csv" : format == io::TakeFileFormat::Bvh ? "bvh" : "fastrak";
-    if (format == io::TakeFileFormat::Bvh) loaded.bvh = std::make_unique<io::BvhFile>(unwrap(io::readBvh(path)));
+    const io::ImportOptions options = importOptions(arguments, pathText);
     loaded.corpus.name = path.stem().string();
+    if (format == io::TakeFileFormat::Bvh) {
+        loaded.format = "bvh";
+        loaded.bvh = std::make_unique<io::BvhFile>(unwrap(io::readBvh(path)));
+        loaded.units = io::guessBvhUnits(*loaded.bvh, options.bvh.upAxis);
+        loaded.cmPerUnit = io::bvhUnitScale(*loaded.bvh, options.bvh);
+        loaded.upAxis = io::resolveUpAxis(*loaded.bvh, options.bvh.upAxis);
+        if (options.bvhLayout == io::BvhTakeLayout::AllJoints) {
+            loaded.corpus.takes.push_back(unwrap(io::bvhToJointTake(*loaded.bvh, options.bvh)));
+        } else if (auto imported = io::importBvhPuppet(*loaded.bvh, options.bvh); imported.ok()) {
+            loaded.map = imported->map;
+            loaded.corpus.takes.push_back(std::move(imported->take));
+        } else if (requireTake) {
+            throw CliError(imported.error().message);
+        } else {
+            loaded.mapError = imported.error().message;
+        }
+        loaded.corpus.rateHz = io::bvhRateHz(loaded.bvh->motion.frameTime);
+        return loaded;
+    }
+    Take take = unwrap(io::readTakeFile(path, options));
+    loaded.format = format == io::TakeFileFormat::Csv ? "csv" : "fastrak";
     loaded.corpus.rateHz = take.rateHz;
     loaded.corpus.takes.push_back(std::move(take));
     return loaded;
+}
+
+/// The part map for reports: {"head": {"joint": ..., "found_by": ...}, ..., "side": ...}.
+json partMapJson(const io::PartMap& map)
+{
+    json out = json::object();
+    for (std::size_t p = 0; p < 4; ++p)
+        out[std::string(analysis::kPuppetParts[p])] = {{"joint", map.names.joints[p]}, {"found_by", io::mapMethodName(map.methods[p])}};
+    out["side"] = analysis::bodySideName(map.side);
+    return out;
+}
+
+/// "ZXY" for a joint whose rotation channels are Z, X, Y in that order.
+std::string rotationOrder(const io::BvhJoint& joint)
+{
+    std::string order;
+    for (auto c : joint.channels)
+        if (!io::isPositionChannel(c)) order += char('X' + io::channelAxis(c));
+    return order;
 }
 
 json takeJson(const Take& take)
@@ -130,10 +128,85 @@ struct InfoArguments {
     ImportArguments import;
 };
 
+/// The BVH file's own description: hierarchy, channel orders, frames, rate, units and axes.
+json bvhJson(const Loaded& loaded)
+{
+    const io::BvhFile& bvh = *loaded.bvh;
+    json joints = json::array();
+    for (const auto& joint : bvh.skeleton.joints) {
+        json channelNames = json::array();
+        for (auto c : joint.channels) channelNames.push_back(io::bvhChannelName(c));
+        joints.push_back({{"name", joint.name},
+                          {"parent", joint.parent >= 0 ? json(bvh.skeleton.joints[std::size_t(joint.parent)].name) : json()},
+                          {"end_site", joint.endSite},
+                          {"offset", {joint.offset.x(), joint.offset.y(), joint.offset.z()}},
+                          {"channels", channelNames},
+                          {"rotation_order", rotationOrder(joint)}});
+    }
+    json out{{"joints", joints},
+             {"joint_count", bvh.skeleton.jointCount()},
+             {"end_site_count", bvh.skeleton.endSiteCount()},
+             {"bvh_channels", bvh.skeleton.channelCount},
+             {"bvh_frames", bvh.motion.values.rows()},
+             {"frame_time_s", bvh.motion.frameTime},
+             {"up_axis", loaded.upAxis == io::BvhUpAxis::Z ? "z" : "y"},
+             {"units", {{"guess", loaded.units.unit},
+                        {"cm_per_unit_guessed", loaded.units.cmPerUnit},
+                        {"height", loaded.units.height},
+                        {"note", loaded.units.note},
+                        {"cm_per_unit_used", loaded.cmPerUnit}}}};
+    if (loaded.map) out["part_map"] = partMapJson(*loaded.map);
+    if (!loaded.mapError.empty()) out["part_map_error"] = loaded.mapError;
+    return out;
+}
+
+void printBvh(const Loaded& loaded)
+{
+    const io::BvhFile& bvh = *loaded.bvh;
+    const auto& skeleton = bvh.skeleton;
+    const double frames = double(bvh.motion.values.rows());
+    std::cout << "\nBVH: " << skeleton.jointCount() << " joints + " << skeleton.endSiteCount() << " End Sites, "
+              << skeleton.channelCount << " channels, " << bvh.motion.values.rows() << " frames, frame time " << bvh.motion.frameTime
+              << " s (" << io::bvhRateHz(bvh.motion.frameTime) << " Hz, " << std::max(0.0, frames - 1.0) * bvh.motion.frameTime
+              << " s)\n";
+    std::cout << "up axis: " << (loaded.upAxis == io::BvhUpAxis::Z ? "z" : "y") << ", units: " << loaded.units.unit << " guessed ("
+              << loaded.units.note << "), " << loaded.cmPerUnit << " cm per unit used\n";
+    if (loaded.map) std::cout << "part map: " << loaded.map->describe() << "\n";
+    else if (!loaded.mapError.empty()) std::cout << "part map: none (" << loaded.mapError << ")\n";
+    std::cout << "hierarchy (joint [channels]):\n";
+    std::vector<int> depth(skeleton.joints.size(), 0);
+    for (std::size_t j = 0; j < skeleton.joints.size(); ++j) {
+        const auto& joint = skeleton.joints[j];
+        if (joint.parent >= 0) depth[j] = depth[std::size_t(joint.parent)] + 1;
+        // Deep chains are indented up to 40 levels and then labelled with their depth.
+        const int shown = std::min(depth[j], 40);
+        std::cout << "  " << std::string(std::size_t(2 * shown), ' ') << (depth[j] > 40 ? "[depth " + std::to_string(depth[j]) + "] " : "")
+                  << (joint.endSite ? "(end) " : "") << joint.name;
+        if (!joint.channels.empty()) {
+            std::cout << "  [";
+            for (std::size_t k = 0; k < joint.channels.size(); ++k) std::cout << (k ? " " : "") << io::bvhChannelName(joint.channels[k]);
+            std::cout << "]";
+        }
+        std::cout << "\n";
+    }
+}
+
 void runInfo(const InfoArguments& arguments)
 {
-    const Loaded loaded = load(arguments.path, arguments.import);
+    const Loaded loaded = load(arguments.path, arguments.import, false);
     const Corpus& corpus = loaded.corpus;
+    if (corpus.takes.empty()) { // a BVH file whose puppet parts found no joints
+        if (arguments.json) {
+            json document{{"path", arguments.path}, {"format", loaded.format}, {"name", corpus.name}, {"takes", 0},
+                          {"rate_hz", corpus.rateHz}};
+            document.update(bvhJson(loaded));
+            printJson(document);
+            return;
+        }
+        std::cout << arguments.path << " (" << loaded.format << ")\n";
+        printBvh(loaded);
+        return;
+    }
     const Take& first = corpus.takes.front();
     Eigen::Index frames = 0;
     for (const Take& take : corpus.takes) frames = std::max(frames, take.frameCount());
@@ -171,22 +244,7 @@ void runInfo(const InfoArguments& arguments)
             document["neutral_emotion"] = corpus.neutralEmotion;
             document["convention"] = corpus.convention;
         }
-        if (loaded.bvh) {
-            json joints = json::array();
-            for (const auto& joint : loaded.bvh->skeleton.joints) {
-                json channelNames = json::array();
-                for (auto c : joint.channels) channelNames.push_back(io::bvhChannelName(c));
-                joints.push_back({{"name", joint.name},
-                                  {"parent", joint.parent >= 0 ? json(loaded.bvh->skeleton.joints[std::size_t(joint.parent)].name) : json()},
-                                  {"end_site", joint.endSite},
-                                  {"offset", {joint.offset.x(), joint.offset.y(), joint.offset.z()}},
-                                  {"channels", channelNames}});
-            }
-            document["joints"] = joints;
-            document["joint_count"] = loaded.bvh->skeleton.jointCount();
-            document["end_site_count"] = loaded.bvh->skeleton.endSiteCount();
-            document["frame_time_s"] = loaded.bvh->motion.frameTime;
-        }
+        if (loaded.bvh) document.update(bvhJson(loaded));
         printJson(document);
         return;
     }
@@ -199,7 +257,7 @@ void runInfo(const InfoArguments& arguments)
         std::cout << "\ntakes:\n";
         for (const Take& take : corpus.takes)
             std::cout << "  " << std::left << std::setw(28) << take.displayName() << std::right << std::setw(6) << take.frameCount()
-                      << " frames  " << take.labels.source << "\n";
+                      << " frames  " << take.labels.source << (take.skeleton ? "  (with its skeleton)" : "") << "\n";
     }
     std::cout << "\nchannels (min .. max):\n";
     for (Eigen::Index c = 0; c < channels; ++c) {
@@ -208,22 +266,8 @@ void runInfo(const InfoArguments& arguments)
                   << std::setw(12) << low[c] << " .. " << std::setw(12) << high[c] << " " << channel.unit << "\n";
     }
     std::cout.unsetf(std::ios::fixed);
-    if (loaded.bvh) {
-        const auto& skeleton = loaded.bvh->skeleton;
-        std::cout << "\nBVH joints: " << skeleton.jointCount() << " + " << skeleton.endSiteCount() << " End Sites, frame time "
-                  << loaded.bvh->motion.frameTime << " s\n";
-        for (const auto& joint : skeleton.joints) {
-            int depth = 0;
-            for (int p = joint.parent; p >= 0; p = skeleton.joints[std::size_t(p)].parent) ++depth;
-            std::cout << "  " << std::string(std::size_t(2 * depth), ' ') << (joint.endSite ? "(end) " : "") << joint.name;
-            if (!joint.channels.empty()) {
-                std::cout << "  [";
-                for (std::size_t k = 0; k < joint.channels.size(); ++k) std::cout << (k ? " " : "") << io::bvhChannelName(joint.channels[k]);
-                std::cout << "]";
-            }
-            std::cout << "\n";
-        }
-    }
+    std::cout << std::setprecision(6);
+    if (loaded.bvh) printBvh(loaded);
 }
 
 // ---- convert ----------------------------------------------------------------------------
@@ -237,6 +281,8 @@ struct ConvertArguments {
 
 void runConvert(const ConvertArguments& arguments)
 {
+    refuseOutputOverInputs(arguments.output, fs::is_directory(arguments.input) ? OutputKind::Folder : OutputKind::File,
+                           {arguments.input});
     const Loaded loaded = load(arguments.input, arguments.import);
     const fs::path output = arguments.output;
     std::string written;
@@ -253,15 +299,18 @@ void runConvert(const ConvertArguments& arguments)
     }
     const Take& first = loaded.corpus.takes.front();
     if (arguments.json) {
-        printJson({{"input", arguments.input},
-                   {"output", output.string()},
-                   {"input_format", loaded.format},
-                   {"output_format", written},
-                   {"takes", loaded.corpus.takes.size()},
-                   {"channels", first.channelCount()},
-                   {"frames", first.frameCount()},
-                   {"rate_hz", loaded.corpus.rateHz}});
+        json document{{"input", arguments.input},
+                      {"output", output.string()},
+                      {"input_format", loaded.format},
+                      {"output_format", written},
+                      {"takes", loaded.corpus.takes.size()},
+                      {"channels", first.channelCount()},
+                      {"frames", first.frameCount()},
+                      {"rate_hz", loaded.corpus.rateHz}};
+        if (loaded.map) document["part_map"] = partMapJson(*loaded.map);
+        printJson(document);
     } else {
+        if (loaded.map) std::cout << "part map: " << loaded.map->describe() << "\n";
         std::cout << "wrote " << output.string() << " (" << written << ": " << loaded.corpus.takes.size() << " take(s), "
                   << first.channelCount() << " channels, " << loaded.corpus.rateHz << " Hz)\n";
     }
@@ -274,6 +323,7 @@ struct PreprocessArguments {
     std::string output;
     bool noPad = false, noUnwrap = false, noAlignStart = false, noAlignPosition = false, noAlignHeading = false;
     std::string headingPart = "shoulder";
+    std::string position = "rigid";
     std::string method = "onset";
     int referenceTake = 0;
     int maxShift = 30;
@@ -281,58 +331,10 @@ struct PreprocessArguments {
     bool json = false;
 };
 
-/// A synthetic corpus's ground truth (DIR/truth) describes the preprocessed takes too (their
-/// cells and functions are unchanged), so it goes beside the output. It is staged in a
-/// temporary folder before the corpus is written (the output may replace the input folder) and
-/// renamed into place after; the stage is removed on any failure.
-class GroundTruthCopy {
-public:
-    GroundTruthCopy(const fs::path& input, const fs::path& output)
-    {
-        const fs::path source = synth::groundTruthFolder(input);
-        std::error_code ec;
-        if (!fs::is_regular_file(source / "truth.json", ec)) return;
-        const fs::path parent = fs::absolute(output, ec).lexically_normal().parent_path();
-        m_stage = parent / io::temporarySiblingName("truth", ".tmp-");
-        fs::create_directories(parent, ec);
-        if (!ec) fs::copy(source, m_stage, fs::copy_options::recursive, ec);
-        if (ec) fail(source.string() + ": cannot copy the ground truth: " + ec.message());
-    }
-    ~GroundTruthCopy()
-    {
-        std::error_code ignored;
-        if (!m_stage.empty()) fs::remove_all(m_stage, ignored);
-    }
-    GroundTruthCopy(const GroundTruthCopy&) = delete;
-    GroundTruthCopy& operator=(const GroundTruthCopy&) = delete;
-
-    /// Moves the staged copy into the written corpus; false when there was no ground truth.
-    bool place(const fs::path& output)
-    {
-        if (m_stage.empty()) return false;
-        std::error_code ec;
-        const fs::path target = synth::groundTruthFolder(output);
-        fs::rename(m_stage, target, ec);
-        if (ec) fail(target.string() + ": cannot place the ground truth: " + ec.message());
-        m_stage.clear();
-        return true;
-    }
-
-private:
-    [[noreturn]] void fail(const std::string& message)
-    {
-        std::error_code ignored;
-        fs::remove_all(m_stage, ignored);
-        m_stage.clear();
-        throw CliError(message);
-    }
-
-    fs::path m_stage;
-};
-
 void runPreprocess(const PreprocessArguments& arguments)
 {
     if (!io::isCorpusFolder(arguments.input)) throw CliError(arguments.input + ": not a corpus folder (no corpus.json)");
+    refuseOutputOverInputs(arguments.output, OutputKind::Folder, {arguments.input});
     const Corpus corpus = unwrap(io::readCorpus(arguments.input));
     pre::PreprocessOptions options;
     options.pad = !arguments.noPad;
@@ -340,15 +342,16 @@ void runPreprocess(const PreprocessArguments& arguments)
     options.alignStart = !arguments.noAlignStart;
     options.alignPosition = !arguments.noAlignPosition;
     options.alignHeading = !arguments.noAlignHeading;
+    pre::parsePositionAlignment(arguments.position, options.positionAlignment);
     options.headingPart = arguments.headingPart;
     options.alignMethod = arguments.method == "xcorr" ? pre::StartAlignMethod::CrossCorrelation : pre::StartAlignMethod::Onset;
     options.referenceTakeIndex = arguments.referenceTake;
     options.maxShiftFrames = arguments.maxShift;
     options.onsetFraction = arguments.onsetFraction;
     auto result = unwrap(pre::preprocessCorpus(corpus, options));
-    GroundTruthCopy truth(arguments.input, arguments.output);
-    unwrap(io::writeCorpus(result.corpus, arguments.output));
-    const bool truthCopied = truth.place(arguments.output);
+    // A synthetic corpus's ground truth (DIR/truth) describes the preprocessed takes too (their
+    // cells and functions are unchanged): it is copied into the output in the same staged write.
+    const bool truthCopied = unwrap(synth::writeCorpusKeepingTruth(result.corpus, arguments.output, arguments.input));
 
     const auto& report = result.report;
     Eigen::Index frames = 0;
@@ -376,6 +379,7 @@ void runPreprocess(const PreprocessArguments& arguments)
         printJson({{"input", arguments.input},
                    {"output", arguments.output},
                    {"steps", {{"pad", options.pad}, {"unwrap", options.unwrap}, {"align_start", options.alignStart}, {"align_position", options.alignPosition}, {"align_heading", options.alignHeading}}},
+                   {"position_alignment", arguments.position},
                    {"align_method", arguments.method},
                    {"takes", result.corpus.takes.size()},
                    {"channels", result.corpus.takes.front().channelCount()},
@@ -387,7 +391,7 @@ void runPreprocess(const PreprocessArguments& arguments)
     }
     std::cout << "preprocessed " << report.takes.size() << " takes into " << arguments.output << " (steps:"
               << (options.unwrap ? " unwrap" : "") << (options.pad ? " pad" : "")
-              << (options.alignStart ? " align-start(" + arguments.method + ")" : std::string()) << (options.alignPosition ? " align-position" : "")
+              << (options.alignStart ? " align-start(" + arguments.method + ")" : std::string()) << (options.alignPosition ? " align-position(" + arguments.position + ")" : std::string())
               << (options.alignHeading ? " align-heading(" + options.headingPart + ")" : std::string())
               << ")\n";
     std::cout << "  " << std::left << std::setw(28) << "take" << std::right << std::setw(8) << "padded" << std::setw(10) << "unwraps"
@@ -434,6 +438,10 @@ void addIoCommands(CommandSet& commands)
         preprocess->add_flag("--no-unwrap", arguments->noUnwrap, "Do not unwrap angles");
         preprocess->add_flag("--no-align-start", arguments->noAlignStart, "Do not align start times");
         preprocess->add_flag("--no-align-position", arguments->noAlignPosition, "Do not align start positions");
+        preprocess->add_option("--position", arguments->position,
+                               "Start-position alignment: rigid (one translation per take, keeping the geometry between "
+                               "the parts; thesis 2.2-4, default) or per-part (each part to the reference's start)")
+            ->check(CLI::IsMember({"rigid", "per-part"}));
         preprocess->add_flag("--no-align-heading", arguments->noAlignHeading,
                              "Do not align the whole-body heading (start yaw of the heading part)");
         preprocess->add_option("--heading-part", arguments->headingPart, "Part whose start yaw is the whole-body heading")

@@ -1,8 +1,10 @@
 // Subcommands: normalise, experiment noise, experiment truth (thesis chapter 3).
 #include "app/cli/commands.h"
 #include "app/cli/take_output.h"
+#include "app/cli/output_guard.h"
 
 #include "analysis/io/corpus_io.h"
+#include "analysis/io/staged_folder.h"
 #include "analysis/io/take_csv.h"
 #include "analysis/normalise/average_take.h"
 #include "analysis/normalise/noise_experiment.h"
@@ -15,7 +17,6 @@
 #include "analysis/synth/demo_corpus_io.h"
 
 #include <filesystem>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -35,6 +36,7 @@ struct MatchArguments {
     std::string path = "greedy";
     std::string weighting = "none";
     std::string level = "first-frame";
+    std::string timeScale = "auto";
     double approximationWeight = 0.0;
 };
 
@@ -94,6 +96,9 @@ an::NormaliseOptions normaliseOptions(const MatchArguments& arguments)
     options.match.path = arguments.path == "optimal" ? an::PathMethod::Optimal : an::PathMethod::Greedy;
     options.match.weighting = arguments.weighting == "standardise" ? an::ChannelWeighting::Standardise : an::ChannelWeighting::None;
     options.match.level = arguments.level == "none" ? an::LevelAlignment::None : an::LevelAlignment::FirstFrame;
+    options.match.timeScaling = arguments.timeScale == "global" ? an::TimeScaling::Global
+                                : arguments.timeScale == "none" ? an::TimeScaling::None
+                                                                : an::TimeScaling::Auto;
     return options;
 }
 
@@ -129,11 +134,11 @@ std::string takeFileName(const an::Take& take)
     return name;
 }
 
-void writeText(const std::filesystem::path& file, const std::string& text)
+/// The take's CSV for a staged output folder (validated like writeTakeCsv).
+std::string takeCsv(const an::Take& take, const std::string& name)
 {
-    std::ofstream out(file);
-    out << text;
-    if (!out) throw CliError("cannot write " + file.string());
+    if (auto valid = an::validateTake(take); !valid) throw CliError(name + ": " + valid.error().message);
+    return an::io::formatTakeCsv(take);
 }
 
 pl::NormaliseParameters normaliseParameters(const MatchArguments& arguments)
@@ -153,6 +158,7 @@ pl::NormaliseParameters normaliseParameters(const MatchArguments& arguments)
 
 void runNormalise(const NormaliseArguments& arguments)
 {
+    refuseOutputOverInputs(arguments.output, OutputKind::Folder, {arguments.corpus});
     an::Corpus corpus = unwrap(an::io::readCorpus(arguments.corpus));
     // Thesis 2.2 first (pad, unwrap, align start times and start positions) - the pipeline's
     // preprocess stage, as the workbench runs it - unless told not to (angles are unwrapped then too).
@@ -210,16 +216,17 @@ void runNormalise(const NormaliseArguments& arguments)
                   << "\n";
         return;
     }
+    // Every output is built in a hidden folder and swapped in at the end: a killed run leaves
+    // the previous output whole, never some files of each.
     const std::filesystem::path folder = arguments.output;
-    std::error_code error;
-    std::filesystem::create_directories(folder, error);
-    if (error) throw CliError("cannot create " + folder.string() + ": " + error.message());
+    an::io::StagedFolder staged = unwrap(an::io::StagedFolder::begin(folder));
+    const auto writeText = [&](const std::string& name, const std::string& text) { unwrap(staged.writeFile(name, text)); };
     std::vector<std::string> files;
-    unwrap(an::io::writeTakeCsv(reference, folder / "reference.csv"));
+    writeText("reference.csv", takeCsv(reference, (folder / "reference.csv").string()));
     files.push_back("reference.csv");
     for (std::size_t k = 0; k < normalised.size(); ++k) {
         const std::string stem = takeFileName(*cell[k]);
-        unwrap(an::io::writeTakeCsv(normalised[k].normalised, folder / (stem + "_normalised.csv")));
+        writeText(stem + "_normalised.csv", takeCsv(normalised[k].normalised, (folder / (stem + "_normalised.csv")).string()));
         std::ostringstream csv;
         csv << "t_ref";
         for (const auto& name : normalised[k].coupling.names) csv << "," << name;
@@ -229,7 +236,7 @@ void runNormalise(const NormaliseArguments& arguments)
             for (const auto& match : normalised[k].matches) csv << "," << match.correspondence[t];
             csv << "\n";
         }
-        writeText(folder / (stem + "_correspondence.csv"), csv.str());
+        writeText(stem + "_correspondence.csv", csv.str());
         files.push_back(stem + "_normalised.csv");
         files.push_back(stem + "_correspondence.csv");
     }
@@ -246,7 +253,7 @@ void runNormalise(const NormaliseArguments& arguments)
             variance << "\n";
         }
     }
-    writeText(folder / "variance.csv", variance.str());
+    writeText("variance.csv", variance.str());
     files.push_back("variance.csv");
 
     nlohmann::json takesJson = nlohmann::json::array();
@@ -272,7 +279,8 @@ void runNormalise(const NormaliseArguments& arguments)
                                  {"variance_normalised_total", table.totalAfter.sum()},
                                  {"output", folder.string()},
                                  {"files", files}};
-    writeText(folder / "summary.json", summary.dump(2) + "\n");
+    writeText("summary.json", summary.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
+    unwrap(staged.commit());
     if (arguments.json) {
         printJson(summary);
         return;
@@ -294,42 +302,81 @@ nlohmann::json methodsJson(const std::vector<an::MethodError>& methods)
         out.push_back({{"name", method.name},
                        {"mean_abs_error_frames", method.meanAbsErrorFrames},
                        {"max_abs_error_frames", method.maxAbsErrorFrames},
+                       {"shape_rms", method.shapeRms},
                        {"scales", method.scales}});
     return out;
 }
 
+/// "28..36" for consecutive scales, else the list.
+std::string scaleText(const std::vector<double>& scales)
+{
+    if (scales.empty()) return "-";
+    bool consecutive = true;
+    for (std::size_t i = 1; i < scales.size(); ++i) consecutive = consecutive && scales[i] == scales[i - 1] + 1.0;
+    std::ostringstream out;
+    if (consecutive) {
+        out << scales.front() << ".." << scales.back();
+    } else {
+        for (std::size_t i = 0; i < scales.size(); ++i) out << (i ? "," : "") << scales[i];
+    }
+    return out.str();
+}
+
+void printNoiseTable(const std::string& title, const an::NoiseExperimentResult& result)
+{
+    std::cout << title << "\n    method                     scales     mean |err|   max |err|   shape RMS\n";
+    for (const auto& method : result.methods)
+        std::cout << "    " << std::left << std::setw(27) << method.name << std::setw(9) << scaleText(method.scales) << std::right
+                  << std::fixed << std::setprecision(3) << std::setw(12) << method.meanAbsErrorFrames << std::setw(12)
+                  << method.maxAbsErrorFrames << std::setw(12) << method.shapeRms << "\n";
+}
+
 void runNoise(bool json)
 {
-    const an::NoiseExperimentOptions thesis;
-    const an::NoiseExperimentResult result = unwrap(an::runNoiseExperiment(thesis));
-    an::NoiseExperimentOptions constrained = thesis;
-    constrained.path = an::PathMethod::Optimal;
-    constrained.tau = 4;
-    const an::NoiseExperimentResult modern = unwrap(an::runNoiseExperiment(constrained));
+    // Thesis 3.4 with its own bands (ThesisNoiseBands), and the workbench's variant (scales
+    // 14..20 and 1..20 on the same signals), each as the thesis matched (single frames, no time
+    // constraint) and with windows and the optimal monotone path.
+    const an::NoiseExperimentOptions ours;
+    const an::NoiseExperimentOptions thesis = an::thesisBandOptions(ours);
+    auto constrainedOf = [](an::NoiseExperimentOptions options) {
+        options.path = an::PathMethod::Optimal;
+        options.tau = 4;
+        return options;
+    };
+    const an::NoiseExperimentResult thesisResult = unwrap(an::runNoiseExperiment(thesis));
+    const an::NoiseExperimentResult thesisConstrained = unwrap(an::runNoiseExperiment(constrainedOf(thesis)));
+    const an::NoiseExperimentResult result = unwrap(an::runNoiseExperiment(ours));
+    const an::NoiseExperimentResult modern = unwrap(an::runNoiseExperiment(constrainedOf(ours)));
+    const an::ThesisNoiseBands bands;
     if (json) {
-        printJson({{"methods", methodsJson(result.methods)},
+        printJson({{"thesis_bands",
+                    {{"bands",
+                      {{"below_noise_of_reference_frequency", {bands.lowestOfReference, bands.highestOfReference}},
+                       {"with_noise_band_of_noise_frequency_max", bands.highestOfNoise}}},
+                     {"methods", methodsJson(thesisResult.methods)},
+                     {"with_time_constraint", {{"path", "optimal"}, {"tau", 4}, {"methods", methodsJson(thesisConstrained.methods)}}}}},
+                   {"methods", methodsJson(result.methods)},
                    {"setup",
-                    {{"frames", thesis.frames},
-                     {"reference_frequency", thesis.referenceFrequency},
-                     {"sample_frequency", thesis.sampleFrequency},
-                     {"phase_shift_rad", thesis.phaseShiftRadians},
-                     {"noise_amplitude", thesis.noiseAmplitude},
-                     {"noise_frequency", thesis.noiseFrequency},
-                     {"tau", thesis.tau},
-                     {"tcmp", thesis.searchBand},
+                    {{"frames", ours.frames},
+                     {"reference_frequency", ours.referenceFrequency},
+                     {"sample_frequency", ours.sampleFrequency},
+                     {"phase_shift_rad", ours.phaseShiftRadians},
+                     {"noise_amplitude", ours.noiseAmplitude},
+                     {"noise_frequency", ours.noiseFrequency},
+                     {"tau", ours.tau},
+                     {"tcmp", ours.searchBand},
                      {"path", "independent (thesis 3.3/3.4 single-frame matching)"}}},
-                   {"with_time_constraint", {{"path", "optimal"}, {"tau", constrained.tau}, {"methods", methodsJson(modern.methods)}}}});
+                   {"with_time_constraint", {{"path", "optimal"}, {"tau", 4}, {"methods", methodsJson(modern.methods)}}}});
         return;
     }
-    std::cout << "thesis 3.4: sine 0.025 cycles/frame; sample 1.1x, phase -0.4 rad, + 0.4 sin at 4x as noise\n"
-              << "mean |error| vs the true warp, frames (single-frame matching, T_cmp 20):\n";
-    for (const auto& method : result.methods)
-        std::cout << "  " << std::left << std::setw(26) << method.name << std::right << std::fixed << std::setprecision(3)
-                  << method.meanAbsErrorFrames << "\n";
-    std::cout << "with windows (tau 4) and the optimal monotone path:\n";
-    for (const auto& method : modern.methods)
-        std::cout << "  " << std::left << std::setw(26) << method.name << std::right << std::fixed << std::setprecision(3)
-                  << method.meanAbsErrorFrames << "\n";
+    std::cout << "thesis 3.4: sine 0.025 cycles/frame, 200 frames; sample 1.1x, phase -0.4 rad, + 0.4 sin at 4x as noise\n"
+              << "error vs the true warp (frames) and RMS of the normalised noiseless sample vs the reference\n";
+    printNoiseTable("thesis bands (0.894-1.151 x the signal's frequency; with noise: up to 2 x the noise's), single frames, "
+                    "T_cmp 20:",
+                    thesisResult);
+    printNoiseTable("thesis bands, windows (tau 4) and the optimal monotone path:", thesisConstrained);
+    printNoiseTable("workbench bands (14..20 below the noise; 1..20 with it), single frames, T_cmp 20:", result);
+    printNoiseTable("workbench bands, windows (tau 4) and the optimal monotone path:", modern);
 }
 
 struct TruthArguments {
@@ -423,6 +470,12 @@ void addNormalisationCommands(CommandSet& commands)
         command->add_option("--reference", arguments->reference, "Reference take index in every cell (default: suggested)");
         command->add_flag("--json", arguments->json, "Print a machine-readable summary");
         addMatchOptions(command, arguments->match);
+        // The workbench and `normalise` use auto; the experiment compares the readings.
+        command->add_option("--time-scale", arguments->match.timeScale,
+                            "Takes of other lengths: auto (a global time scale first when the lengths differ by more "
+                            "than half of T_cmp), global (always) or none (the thesis: the band alone)")
+            ->check(CLI::IsMember({"auto", "global", "none"}))
+            ->capture_default_str();
         command->callback([arguments] { runTruth(*arguments); });
     }
 }

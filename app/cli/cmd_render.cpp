@@ -1,17 +1,26 @@
 // Subcommands: render (thesis 6: images of the puppet, motion axis and orbits, offscreen).
 #include "app/cli/commands.h"
+#include "app/cli/output_guard.h"
+
+#include "app/multimodal_export.h"
 
 #include "analysis/body/body_description.h"
+#include "analysis/io/atomic_file.h"
+#include "analysis/io/staged_folder.h"
 #include "analysis/io/take_reader.h"
 #include "analysis/synth/demo_corpus.h"
 #include "render/mesh_file.h"
 #include "render/offscreen_renderer.h"
 #include "render/take_scene.h"
 
+#include <QBuffer>
 #include <QGuiApplication>
 #include <QImage>
+#include <QSaveFile>
 #include <QStandardPaths>
 
+#include <atomic>
+#include <csignal>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -21,6 +30,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace bunraku::app::cli {
@@ -47,7 +57,20 @@ struct RenderArguments {
     std::vector<std::string> meshes;
     int samples = 4;
     bool json = false;
+    // --multimodal: the thesis's multimodal display (chapter 6), view and graphs in one picture
+    bool multimodal = false;
+    std::string graphs = "all";
+    std::string part;
+    std::string dof;
+    std::string ticks = "thesis";
+    double fps = 0.0;
+    bool overwrite = false;
 };
+
+/// Set by SIGINT / SIGTERM during a multimodal export: the export stops and removes what it wrote.
+std::atomic<bool> g_interrupted{false};
+
+extern "C" void interruptExport(int) { g_interrupted = true; }
 
 /// "demo:function/emotion/k" from the built-in synthetic corpus, or a take file.
 analysis::Take loadTake(const std::string& spec, std::optional<analysis::synth::DemoCorpus>& demo)
@@ -163,20 +186,149 @@ std::unique_ptr<QGuiApplication> makeGuiApplication()
     return std::make_unique<QGuiApplication>(argc, argv);
 }
 
-void saveImage(const QImage& image, const std::filesystem::path& file)
+/// The image as PNG bytes.
+QByteArray pngBytes(const QImage& image, const std::filesystem::path& file)
 {
-    if (image.isNull()) throw CliError("rendering produced no image");
-    if (!image.save(QString::fromStdString(file.string()), "PNG"))
-        throw CliError("could not write " + file.string());
+    if (image.isNull()) throw CliError(file.string() + ": rendering produced no image");
+    QByteArray bytes;
+    QBuffer buffer(&bytes);
+    if (!buffer.open(QIODevice::WriteOnly) || !image.save(&buffer, "PNG")) throw CliError(file.string() + ": cannot encode the PNG");
+    return bytes;
+}
+
+std::string_view view(const QByteArray& bytes) { return {bytes.constData(), std::size_t(bytes.size())}; }
+
+/// Encodes `folder`'s PNG sequence to `mp4`: ffmpeg writes into a private hidden folder beside
+/// it, and the finished file is moved over `mp4` only when ffmpeg succeeds.
+void encodeMp4(const std::filesystem::path& frames, double rate, const std::string& mp4)
+{
+    const std::filesystem::path target = std::filesystem::absolute(mp4);
+    const std::filesystem::path temporary = unwrap(analysis::io::makeTemporaryFolderBeside(target));
+    const std::filesystem::path encoded = temporary / target.filename();
+    const std::string command = "ffmpeg -n -loglevel error -framerate " + std::to_string(rate) + " -i '" +
+                                (frames / "frame_%05d.png").string() +
+                                "' -c:v libx264 -pix_fmt yuv420p -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -f mp4 '" + encoded.string() +
+                                "'";
+    const int status = std::system(command.c_str());
+    std::error_code ignored;
+    if (status != 0) {
+        std::filesystem::remove_all(temporary, ignored);
+        throw CliError(mp4 + ": ffmpeg failed to write it");
+    }
+    const auto moved = analysis::io::moveIntoPlace(encoded, target);
+    std::filesystem::remove_all(temporary, ignored);
+    unwrap(moved);
+}
+
+nlohmann::json rectJson(const QRect& rect) { return {rect.x(), rect.y(), rect.width(), rect.height()}; }
+
+/// --multimodal: one frame as a PNG, or a range as MP4 / PNG frames through the workbench's
+/// video export (atomic output; Ctrl+C cancels and removes what was written).
+void runMultimodal(const RenderArguments& args, const render::SceneContent& scene, render::OffscreenRenderer& offscreen,
+                   const render::Camera& camera, QSize size)
+{
+    MultimodalOptions options;
+    options.layout = args.graphs == "part"     ? widgets::GraphLayout::OnePart
+                     : args.graphs == "dof"    ? widgets::GraphLayout::OneDof
+                     : args.graphs == "single" ? widgets::GraphLayout::Single
+                                               : widgets::GraphLayout::AllChannels;
+    options.part = args.part;
+    options.dof = args.dof;
+    options.thesisTicks = args.ticks == "thesis";
+    options.size = size;
+    const auto takeA = std::make_shared<const analysis::Take>(scene.takes.front().take);
+    const auto takeB = scene.takes.size() > 1 ? std::make_shared<const analysis::Take>(scene.takes[1].take) : nullptr;
+    const MultimodalFrame frame = unwrap(MultimodalFrame::create(takeA, takeB, options));
+    const ViewImage view = [&offscreen, &camera](double seconds, QSize viewSize) -> analysis::Result<QImage> {
+        if (!offscreen.makeCurrent())
+            return analysis::makeError(analysis::ErrorCode::Io, "the offscreen OpenGL context could not be made current");
+        offscreen.renderer().setTime(seconds);
+        return offscreen.render(camera, viewSize);
+    };
+    nlohmann::json summary;
+    summary["size"] = {size.width(), size.height()};
+    summary["view"] = rectJson(frame.geometry().view);
+    summary["graphs"] = nlohmann::json::array();
+    for (std::size_t i = 0; i < frame.geometry().cells.size(); ++i) {
+        const auto& cell = frame.geometry().cells[i];
+        summary["graphs"].push_back({{"part", cell.part},
+                                     {"dof", cell.dof},
+                                     {"take", cell.takes == widgets::GraphTakes::OnlyB ? "B" : "A"},
+                                     {"rect", rectJson(frame.geometry().graphs[i])},
+                                     {"plot", rectJson(frame.geometry().plots[i])}});
+    }
+    summary["duration_s"] = frame.duration();
+    summary["camera"] = {{"angle_deg", camera.angleDeg}, {"elevation_deg", camera.elevationDeg}, {"distance_cm", camera.distance}};
+    summary["thesis_ticks"] = options.thesisTicks;
+    for (const auto& slot : scene.takes) summary["takes"].push_back(slot.take.displayName());
+
+    const auto endsWith = [&](const char* suffix) {
+        const std::string s(suffix);
+        return args.output.size() >= s.size() && args.output.compare(args.output.size() - s.size(), s.size(), s) == 0;
+    };
+    if (args.frames.empty() && endsWith(".png")) {
+        // one frame, written atomically
+        const double seconds = args.time ? *args.time : double(args.frame.value_or(0)) / takeA->rateHz;
+        const QImage image = unwrap(frame.render(view, seconds));
+        QSaveFile file(QString::fromStdString(args.output));
+        if (!file.open(QIODevice::WriteOnly) || !image.save(&file, "PNG") || !file.commit())
+            throw CliError("could not write " + args.output + ": " + file.errorString().toStdString());
+        summary["output"] = args.output;
+        summary["time_s"] = seconds;
+        summary["frame"] = offscreen.renderer().frame(0);
+        if (args.json) printJson(summary);
+        return;
+    }
+    VideoExportOptions video;
+    const bool mp4 = endsWith(".mp4");
+    video.format = mp4 ? VideoFormat::Mp4 : VideoFormat::PngSequence;
+    video.output = QString::fromStdString(args.output);
+    video.overwrite = args.overwrite;
+    video.fps = args.fps;
+    if (!args.frames.empty()) {
+        const auto range = parseFrameRange(args.frames);
+        video.firstFrame = int(range.first);
+        video.lastFrame = int(range.second);
+    }
+    std::signal(SIGINT, interruptExport);
+    std::signal(SIGTERM, interruptExport);
+    const bool terminal = ::isatty(STDERR_FILENO) == 1 && !args.json;
+    const VideoExportResult result = exportMultimodalVideo(frame, view, video, [terminal](int done, int total) {
+        if (terminal) std::fprintf(stderr, "\rmultimodal frames %d / %d", done, total);
+        if (terminal && done == total) std::fprintf(stderr, "\n");
+        return !g_interrupted.load();
+    });
+    std::signal(SIGINT, SIG_DFL);
+    std::signal(SIGTERM, SIG_DFL);
+    if (result.cancelled) throw CliError("interrupted: nothing was written to " + args.output);
+    if (!result.ok()) throw CliError(result.error.toStdString());
+    summary["output"] = args.output;
+    summary["format"] = mp4 ? "mp4" : "png";
+    summary["frames_written"] = result.frames;
+    if (args.json) printJson(summary);
+    else std::cout << "wrote " << result.frames << " multimodal frames to " << args.output << "\n";
 }
 
 void runRender(const RenderArguments& args)
 {
     if (args.output.empty()) throw CliError("-o is required: the PNG file (or the folder with --frames)");
+    std::vector<std::string> inputs{args.take, args.takeB, args.body};
+    for (const std::string& entry : args.meshes) inputs.push_back(entry.substr(entry.find('=') + 1));
+    refuseOutputOverInputs(args.output, args.frames.empty() ? OutputKind::File : OutputKind::Folder, inputs);
+    refuseOutputOverInputs(args.mp4, OutputKind::File, inputs, "--mp4");
     if (args.frame && args.time) throw CliError("give --frame or --time, not both");
     if (!args.frames.empty() && (args.frame || args.time))
         throw CliError("--frames renders a sequence: drop --frame / --time");
+    if (!args.mp4.empty() && args.multimodal)
+        throw CliError("--multimodal writes MP4 itself: give -o FILE.mp4 (or a folder for PNG frames), not --mp4");
     if (!args.mp4.empty() && args.frames.empty()) throw CliError("--mp4 needs --frames FIRST:LAST");
+    if (args.multimodal && !args.frames.empty() && (args.frame || args.time))
+        throw CliError("--frames renders a sequence: drop --frame / --time");
+    if (args.multimodal && args.output.size() >= 4 && args.output.substr(args.output.size() - 4) == ".mp4" &&
+        QStandardPaths::findExecutable(QStringLiteral("ffmpeg")).isEmpty())
+        throw CliError("an MP4 output needs ffmpeg on PATH, which was not found: install Debian's ffmpeg "
+                       "(apt-get install ffmpeg) or give a folder for PNG frames");
+    if (!(args.fps >= 0.0) || args.fps > 1000.0) throw CliError("--fps: expected 0 (the take's rate) .. 1000");
     if (!args.mp4.empty() && QStandardPaths::findExecutable(QStringLiteral("ffmpeg")).isEmpty())
         throw CliError("--mp4 needs ffmpeg on PATH, which was not found: install Debian's ffmpeg "
                        "(apt-get install ffmpeg) or drop --mp4 and encode the PNG frames yourself");
@@ -195,6 +347,7 @@ void runRender(const RenderArguments& args)
 
     render::TakeSceneOptions sceneOptions;
     sceneOptions.computeAxes = visibility.axis;
+    sceneOptions.fitToSkeleton = args.body.empty() && args.meshes.empty(); // a body or meshes given are drawn as given
     render::SceneContent scene = unwrap(render::makeTakeScene(body, std::move(takes), sceneOptions));
     for (const std::string& entry : args.meshes) {
         const auto equals = entry.find('=');
@@ -228,6 +381,11 @@ void runRender(const RenderArguments& args)
     else if (args.preset == "bottom") camera = camera.withPreset(render::CameraPreset::Bottom);
     else if (!args.preset.empty()) throw CliError("--preset: expected top or bottom");
 
+    if (args.multimodal) {
+        runMultimodal(args, scene, *offscreen, camera, size);
+        return;
+    }
+
     nlohmann::json summary;
     summary["size"] = {size.width(), size.height()};
     summary["camera"] = {{"angle_deg", camera.angleDeg}, {"elevation_deg", camera.elevationDeg},
@@ -240,32 +398,28 @@ void runRender(const RenderArguments& args)
         offscreen->makeCurrent();
         if (args.time) offscreen->renderer().setTime(*args.time);
         else offscreen->renderer().setFrame(args.frame.value_or(0));
-        saveImage(offscreen->render(camera, size), args.output);
+        unwrap(analysis::io::writeFileAtomically(args.output, view(pngBytes(offscreen->render(camera, size), args.output))));
         summary["output"] = args.output;
         summary["frame"] = offscreen->renderer().frame(0);
     } else {
+        // The frames are built in a hidden folder beside the output and swapped in when all are
+        // written (and encoded): a killed run leaves the previous sequence whole.
         const std::filesystem::path folder = args.output;
-        std::error_code error;
-        std::filesystem::create_directories(folder, error);
-        if (error) throw CliError("could not create " + folder.string() + ": " + error.message());
+        analysis::io::StagedFolder staged = unwrap(analysis::io::StagedFolder::begin(folder));
         for (long f = range->first; f <= range->second; ++f) {
             offscreen->makeCurrent();
             offscreen->renderer().setFrame(f);
             char name[32];
             std::snprintf(name, sizeof name, "frame_%05ld.png", f - range->first);
-            saveImage(offscreen->render(camera, size), folder / name);
+            unwrap(staged.writeFile(name, view(pngBytes(offscreen->render(camera, size), folder / name))));
         }
         summary["output"] = folder.string();
         summary["frames"] = {range->first, range->second};
         if (!args.mp4.empty()) {
-            const double rate = scene.takes.front().take.rateHz;
-            const std::string command = "ffmpeg -y -loglevel error -framerate " + std::to_string(rate) + " -i '" +
-                                        (folder / "frame_%05d.png").string() +
-                                        "' -c:v libx264 -pix_fmt yuv420p -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' '" +
-                                        args.mp4 + "'";
-            if (std::system(command.c_str()) != 0) throw CliError("ffmpeg failed to write " + args.mp4);
+            encodeMp4(staged.path(), scene.takes.front().take.rateHz, args.mp4);
             summary["mp4"] = args.mp4;
         }
+        unwrap(staged.commit());
     }
     if (args.json) printJson(summary);
 }
@@ -300,6 +454,20 @@ void addRenderCommands(CommandSet& commands)
     render->add_option("--body", args->body, "Body description JSON (default: the shipped puppet)");
     render->add_option("--mesh", args->meshes, "PART=FILE: a mesh file (glTF, OBJ...) replacing a body part");
     render->add_option("--samples", args->samples, "Multisampling, 0..16")->capture_default_str();
+    render->add_flag("--multimodal", args->multimodal,
+                     "The thesis's multimodal display: the 3D view and the graphs with a moving time cursor in one picture "
+                     "(-o FILE.png: one frame; -o FILE.mp4 or -o FOLDER: the whole take or --frames as MP4 or PNG frames)");
+    render->add_option("--graphs", args->graphs,
+                       "--multimodal graphs: all (24, two takes 48), part (6/12), dof (4/8) or single (1/2)")
+        ->check(CLI::IsMember({"all", "part", "dof", "single"}))
+        ->capture_default_str();
+    render->add_option("--part", args->part, "--multimodal: the part of the part and single layouts (default: the first)");
+    render->add_option("--dof", args->dof, "--multimodal: the DOF of the dof and single layouts (default: the first)");
+    render->add_option("--ticks", args->ticks, "--multimodal graph ticks: thesis (values every 10, time every 2 s) or auto")
+        ->check(CLI::IsMember({"thesis", "auto"}))
+        ->capture_default_str();
+    render->add_option("--fps", args->fps, "--multimodal video: frames per second (default: the take's rate)");
+    render->add_flag("--overwrite", args->overwrite, "--multimodal PNG frames: replace the frame_*.png of an earlier export");
     render->add_flag("--json", args->json, "Print a JSON summary");
     render->callback([args] { runRender(*args); });
 }

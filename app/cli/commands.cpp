@@ -5,10 +5,12 @@ namespace bunraku::app::cli {
 void addAllCommands(CommandSet& commands)
 {
     addIoCommands(commands);
+    addCorpusCommands(commands);
     addDemoCommands(commands);
     addNormalisationCommands(commands);
     addDecompositionCommands(commands);
     addMotionAxisCommands(commands);
+    addApproximationCommands(commands);
     addAnalyseCommands(commands);
     addRenderCommands(commands);
     addHelpCommands(commands);

@@ -6,6 +6,8 @@ namespace bunraku::app::cli {
 
 /// info, convert, preprocess (cmd_io.cpp)
 void addIoCommands(CommandSet& commands);
+/// corpus (cmd_corpus.cpp)
+void addCorpusCommands(CommandSet& commands);
 /// demo (cmd_demo.cpp)
 void addDemoCommands(CommandSet& commands);
 /// normalise, experiment noise|truth (cmd_normalise.cpp)
@@ -14,6 +16,8 @@ void addNormalisationCommands(CommandSet& commands);
 void addDecompositionCommands(CommandSet& commands);
 /// axis, phase, gains, design, experiment design (cmd_axis.cpp)
 void addMotionAxisCommands(CommandSet& commands);
+/// experiment approximation (cmd_approximation.cpp)
+void addApproximationCommands(CommandSet& commands);
 /// analyse (cmd_analyse.cpp)
 void addAnalyseCommands(CommandSet& commands);
 /// render (cmd_render.cpp)

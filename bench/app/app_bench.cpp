@@ -7,10 +7,10 @@
 // - the 3D view alone: a moving frame, a still (multisampled) frame, a replaced scene;
 // - the drag step and the playback frame with a Bandai take's 22-joint skeleton shown as take B
 //   beside the puppet (issue 12 point 5), against the same take B shown as a puppet.
+#include "app/analysis_controller.h"
 #include "app/design_controller.h"
 #include "app/file_controller.h"
 #include "app/main_window.h"
-#include "app/recomputer.h"
 #include "app/viewport_panel.h"
 
 #include "widgets/graph_grid.h"
@@ -44,9 +44,7 @@ std::unique_ptr<app::MainWindow> g_window;
 /// and reruns, so it would load the CPU for the whole measurement.
 void waitIdle(app::MainWindow& main)
 {
-    const auto recomputers = main.findChildren<app::Recomputer*>();
-    (void)QTest::qWaitFor([&] { return std::none_of(recomputers.begin(), recomputers.end(), [](auto* r) { return r->busy(); }); },
-                          120000);
+    (void)QTest::qWaitFor([&] { return !main.analysis().scheduler().busy(); }, 120000);
     QTest::qWait(200);
 }
 

@@ -1,13 +1,17 @@
 // Motion axis and design speed (issue 5 targets): axis of 106 frames < 1 ms, re-synthesis after
-// one control-point move < 2 ms, axis of 100,000 frames < 200 ms. Results: docs/PERFORMANCE.md.
+// one control-point move < 2 ms (also with a full 22-joint skeleton, issue 12), axis of 100,000
+// frames < 200 ms. Results: docs/PERFORMANCE.md.
 #include "analysis/axis/axis_channels.h"
 #include "analysis/axis/inertia_axis.h"
 #include "analysis/core/puppet_layout.h"
 #include "analysis/design/motion_design.h"
+#include "analysis/io/take_reader.h"
+#include "analysis/skeleton/take_resample.h"
 
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <filesystem>
 
 namespace {
 
@@ -69,6 +73,32 @@ void redesignAfterDrag(benchmark::State& state)
     }
 }
 BENCHMARK(redesignAfterDrag)->Unit(benchmark::kMillisecond);
+
+/// The same drag on a take with its full skeleton (issue 12: < 2 ms): a Bandai wave (22 joints
+/// + 5 End Sites) resampled to a 106-frame cell; the designed take carries every joint.
+void redesignFullSkeletonAfterDrag(benchmark::State& state)
+{
+    const std::filesystem::path file = std::filesystem::path(BUNRAKU_SHARED_DIR) / "data/bandai/wave-right-hand_normal_001.bvh";
+    auto wave = io::readTakeFile(file);
+    if (!wave) {
+        state.SkipWithError(("needs the shared Bandai data: " + file.string()).c_str());
+        return;
+    }
+    const Take take = resampleTake(*wave, evenlySpacedFrames(wave->frameCount(), 106));
+    const DesignBasis basis = prepareDesign(model(), take).value();
+    const GainSet gains = extractGains(basis.coordinates, basis.coordinates * 1.1, {0, 40, 70, 105},
+                                       {"x", "y", "z", "rx", "ry", "rz"}).value();
+    WarpCurve warp = identityWarp(106, 8);
+    double offset = 0.0;
+    for (auto _ : state) {
+        offset = offset > 3.0 ? -3.0 : offset + 0.5;
+        warp = moveControlPoint(warp, 6, {warp.points[6].output, 48.0 + offset});
+        DesignedMotion designed = designMotion(basis, warp, gains);
+        benchmark::DoNotOptimize(designed);
+    }
+    state.counters["joints"] = double(take.skeleton->jointSlots());
+}
+BENCHMARK(redesignFullSkeletonAfterDrag)->Unit(benchmark::kMillisecond);
 
 /// The one-off cost the basis saves on every drag: axis + relative motion of the functional take.
 void prepareDesignBasis(benchmark::State& state)

@@ -4,6 +4,7 @@
 #include "analysis/normalise/take_normalisation.h"
 #include "analysis/synth/demo_corpus.h"
 #include "analysis/wavelet/cwt.h"
+#include "bench/normalise/kernels_in_use.h"
 #include "bench/normalise/long_takes.h"
 
 #include <benchmark/benchmark.h>
@@ -138,4 +139,13 @@ BENCHMARK(BM_Cwt100k)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 
 } // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv)
+{
+    // Printed with the run's context: which kernels ran (AVX-512, AVX2 or plain).
+    benchmark::AddCustomContext("kernels", bunraku::bench::kernelsInUse());
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    return 0;
+}

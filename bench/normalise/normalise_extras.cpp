@@ -2,7 +2,8 @@
 //   bench_normalise_extras memory N   peak RSS of normalising one N-frame x 24-channel pair
 //                                     (T_cmp 240, scales 1..16, method 2, optimal path)
 //   bench_normalise_extras pywt       our CWT of 100,000 samples at scales 1..16 against Debian
-//                                     python3-pywt's, measured in the same run, as ratios
+//                                     python3-pywt's, measured in the same run, as ratios of
+//                                     wall and of CPU time
 //   bench_normalise_extras digest     a hash of every correspondence and the summed costs of the
 //                                     30 demo-corpus normalisations and of a 30,000-frame pair,
 //                                     greedy and optimal: two builds that print the same digest
@@ -10,6 +11,7 @@
 #include "analysis/normalise/take_normalisation.h"
 #include "analysis/synth/demo_corpus.h"
 #include "analysis/wavelet/cwt.h"
+#include "bench/normalise/kernels_in_use.h"
 #include "bench/normalise/long_takes.h"
 
 #include <algorithm>
@@ -61,6 +63,7 @@ int memory(long frames)
         std::fprintf(stderr, "%s\n", result.error().message.c_str());
         return 1;
     }
+    std::printf("kernels: %s\n", bunraku::bench::kernelsInUse().c_str());
     std::printf("frames %ld: wall %.3f s, cpu %.3f s, peak RSS %ld kB (inputs alone %ld kB)\n", frames, wall, cpu,
                 statusKilobytes("VmHWM"), before);
     return 0;
@@ -114,16 +117,32 @@ int digest()
     return 0;
 }
 
-double medianSeconds(const std::function<void()>& work, int repeats)
+double threadSeconds()
 {
-    std::vector<double> times;
+    timespec now{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+    return double(now.tv_sec) + 1e-9 * double(now.tv_nsec);
+}
+
+struct Timing {
+    double wall = 0.0;
+    double cpu = 0.0;
+};
+
+// Medians of wall and CPU (this thread) time over the repeats.
+Timing medianTimes(const std::function<void()>& work, int repeats)
+{
+    std::vector<double> walls, cpus;
     for (int i = 0; i < repeats; ++i) {
         const auto start = std::chrono::steady_clock::now();
+        const double cpu = threadSeconds();
         work();
-        times.push_back(seconds(start));
+        cpus.push_back(threadSeconds() - cpu);
+        walls.push_back(seconds(start));
     }
-    std::sort(times.begin(), times.end());
-    return times[times.size() / 2];
+    std::sort(walls.begin(), walls.end());
+    std::sort(cpus.begin(), cpus.end());
+    return {walls[walls.size() / 2], cpus[cpus.size() / 2]};
 }
 
 int pywt()
@@ -132,35 +151,41 @@ int pywt()
     std::normal_distribution<double> normal;
     Eigen::VectorXd signal(100000);
     for (auto& v : signal) v = normal(random);
-    std::map<std::string, double> ours;
+    std::map<std::string, Timing> ours;
     for (const std::string name : {"sym3", "mexh"}) {
         CwtOptions options;
         options.wavelet = *waveletByName(name);
         for (auto method : {CwtMethod::Direct, CwtMethod::Fft}) {
             options.method = method;
             const CwtFilterBank bank = *makeCwtFilterBank(integerScales(16), options);
-            ours[name + (method == CwtMethod::Direct ? "-direct" : "-fft")] =
-                medianSeconds([&] { auto r = cwt(signal, bank); (void)r; }, 7);
+            ours[name + (method == CwtMethod::Direct ? "-direct" : "-fft")] = medianTimes([&] { auto r = cwt(signal, bank); (void)r; }, 7);
         }
     }
     const std::string script = std::string(BUNRAKU_SOURCE_DIR) + "/scripts/bench_pywt_cwt.py";
     FILE* pipe = popen(("/usr/bin/python3 " + script + " 100000 7").c_str(), "r");
     if (!pipe) return 1;
-    std::map<std::string, double> theirs;
+    std::map<std::string, Timing> theirs;
     char name[64];
-    double value = 0;
-    while (std::fscanf(pipe, "%63s %lf", name, &value) == 2) theirs[name] = value;
+    Timing value;
+    while (std::fscanf(pipe, "%63s %lf %lf", name, &value.wall, &value.cpu) == 3) theirs[name] = value;
     if (pclose(pipe) != 0 || theirs.empty()) {
         std::fprintf(stderr, "/usr/bin/python3 %s failed (python3-pywt missing?)\n", script.c_str());
         return 1;
     }
-    std::printf("CWT of 100,000 samples, scales 1..16, medians of 7 (seconds)\n");
-    for (const auto& [key, time] : ours) std::printf("  ours %-12s %.4f\n", key.c_str(), time);
-    for (const auto& [key, time] : theirs) std::printf("  pywt %-12s %.4f\n", key.c_str(), time);
-    const double bestMexh = std::min(theirs["mexh-conv"], theirs["mexh-fft"]);
-    std::printf("ratio pywt/ours: sym3 legacy %.2f (vs our direct), mexh %.2f (pywt's best vs our best)\n",
-                theirs["sym3-legacy"] / ours["sym3-direct"],
-                bestMexh / std::min(ours["mexh-direct"], ours["mexh-fft"]));
+    std::printf("kernels: %s\n", bunraku::bench::kernelsInUse().c_str());
+    std::printf("CWT of 100,000 samples, scales 1..16, medians of 7 (seconds): wall, CPU\n");
+    for (const auto& [key, time] : ours) std::printf("  ours %-12s %.4f %.4f\n", key.c_str(), time.wall, time.cpu);
+    for (const auto& [key, time] : theirs) std::printf("  pywt %-12s %.4f %.4f\n", key.c_str(), time.wall, time.cpu);
+    // sym3: pywt's legacy steps against our direct transform; mexh: pywt's best method against ours.
+    auto ratios = [&](double Timing::*field) {
+        const double mexhTheirs = std::min(theirs["mexh-conv"].*field, theirs["mexh-fft"].*field);
+        const double mexhOurs = std::min(ours["mexh-direct"].*field, ours["mexh-fft"].*field);
+        return std::pair{theirs["sym3-legacy"].*field / (ours["sym3-direct"].*field), mexhTheirs / mexhOurs};
+    };
+    const auto [sym3Wall, mexhWall] = ratios(&Timing::wall);
+    const auto [sym3Cpu, mexhCpu] = ratios(&Timing::cpu);
+    std::printf("ratio pywt/ours, wall: sym3 legacy %.2f (vs our direct), mexh %.2f (pywt's best vs our best)\n", sym3Wall, mexhWall);
+    std::printf("ratio pywt/ours, CPU:  sym3 legacy %.2f (vs our direct), mexh %.2f (pywt's best vs our best)\n", sym3Cpu, mexhCpu);
     return 0;
 }
 

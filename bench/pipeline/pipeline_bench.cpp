@@ -2,6 +2,7 @@
 // and the chain again after one parameter change with a warm cache - the counters say which
 // stages ran per iteration (1 = recomputed, 0 = taken from the cache).
 #include "analysis/pipeline/chain.h"
+#include "analysis/pipeline/stage_digest.h"
 #include "analysis/synth/demo_corpus.h"
 
 #include <benchmark/benchmark.h>
@@ -31,15 +32,47 @@ void BM_WholeChain(benchmark::State& state)
     ChainOptions options;
     options.fluctuations = state.range(0) != 0;
     int M = 0;
+    std::string digest;
     for (auto _ : state) {
         auto chain = runChain(demo(), {}, nullptr, options);
-        if (!chain) state.SkipWithError(chain.error().message.c_str());
+        if (!chain) {
+            state.SkipWithError(chain.error().message.c_str());
+            break;
+        }
         M = chain->decomposed->km2o->correlationLength;
+        if (digest.empty()) digest = chainDigest(*chain).text();
         benchmark::DoNotOptimize(chain);
     }
     state.counters["M_chosen"] = M;
+    // The stage results' digests (stage_digest.h): equal before and after a change to how a
+    // stage computes means bit-identical results.
+    state.SetLabel(digest);
 }
 BENCHMARK(BM_WholeChain)->ArgName("with_arma")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+/// One stage alone from its (cached) inputs: where the whole chain's time goes.
+void BM_Stage(benchmark::State& state)
+{
+    static const ChainResult inputs = std::move(runChain(demo(), {}, nullptr)).value();
+    const ChainParameters parameters;
+    const auto stage = Stage(state.range(0));
+    for (auto _ : state) {
+        switch (stage) {
+        case Stage::Preprocess: benchmark::DoNotOptimize(runPreprocess(*demo().corpus, parameters.preprocess)); break;
+        case Stage::Normalise: benchmark::DoNotOptimize(runNormalise(inputs.preprocessed->corpus, parameters.normalise)); break;
+        case Stage::Decompose: benchmark::DoNotOptimize(runDecompose(inputs.normalised->normalised, parameters.decompose)); break;
+        case Stage::Fluctuations:
+            benchmark::DoNotOptimize(runFluctuations(inputs.decomposed->components, parameters.fluctuations));
+            break;
+        case Stage::Axes:
+            benchmark::DoNotOptimize(runAxes(*inputs.normalised, demo().corpus->neutralEmotion, parameters.axis));
+            break;
+        case Stage::Import: break;
+        }
+    }
+    state.SetLabel(stageName(stage));
+}
+BENCHMARK(BM_Stage)->ArgName("stage")->DenseRange(1, 5)->Unit(benchmark::kMillisecond);
 
 /// One parameter changes between two values every iteration; a cache of one result per stage
 /// keeps what the change does not touch.

@@ -5,12 +5,14 @@
 #include "app/emotion_panel.h"
 #include "app/normalise_panel.h"
 
+#include "analysis/core/angle_channels.h"
+
 #include <catch2/catch.hpp>
 
 #include <QComboBox>
 #include <QSlider>
 #include <QSpinBox>
-#include <QTableWidget>
+#include <QTreeWidget>
 
 using namespace bunraku;
 using app::TakeSlot;
@@ -33,7 +35,7 @@ TEST_CASE("changing tau recomputes the normalised take in the background, undo r
     REQUIRE(idle(*window));
     const auto first = panel->normalisedTake();
     REQUIRE(first);
-    REQUIRE(panel->varianceTable()->rowCount() == 5); // the cell's 5 takes
+    REQUIRE(panel->varianceTree()->topLevelItemCount() == 5); // the cell's 5 takes
     const Eigen::MatrixXd before = first->values;
     const int starts = window->analysis().scheduler().starts(app::AnalysisController::kNormaliseSlot);
 
@@ -73,9 +75,19 @@ TEST_CASE("the emotion weight slider re-synthesises y + a z live as one undo ste
 
     slider->setValue(0);
     const Eigen::MatrixXd atZero = panel->weightedTake()->values;
-    // x(a) = y + a z is linear in a: x(2) - x(1) = x(1) - x(0) = z, and z is not zero.
-    REQUIRE(((atTwo - atOne) - (atOne - atZero)).cwiseAbs().maxCoeff() < 1e-9);
-    REQUIRE((atOne - atZero).cwiseAbs().maxCoeff() > 0.1);
+    // x(a) = y + a z is linear in a in the decomposition's coordinates (angles as rotation
+    // coordinates about the function's chart): x(2) - x(1) = x(1) - x(0) = z, and z is not zero.
+    const auto& decomposition = window->analysis().decomposed()->components;
+    std::size_t function = 0;
+    while (decomposition.functions[function].function != panel->weightedTake()->labels.function) ++function;
+    auto coordinates = [&](const Eigen::MatrixXd& values) {
+        analysis::Take take = *panel->weightedTake();
+        take.values = values;
+        return analysis::rotationCoordinates(take, decomposition.charts[function]);
+    };
+    const Eigen::MatrixXd zero = coordinates(atZero), one = coordinates(atOne), two = coordinates(atTwo);
+    REQUIRE(((two - one) - (one - zero)).cwiseAbs().maxCoeff() < 1e-9);
+    REQUIRE((one - zero).cwiseAbs().maxCoeff() > 0.1);
 
     document.undoStack()->undo(); // back to a = 2
     document.undoStack()->undo(); // back to a = 1

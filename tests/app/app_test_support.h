@@ -2,9 +2,12 @@
 /// Shared set-up of the app tests: settings and autosaves go to a scratch folder, never to the
 /// user's; windows open without dialogs and with the default layout.
 
+#include "app/analysis_controller.h"
 #include "app/file_controller.h"
 #include "app/export_controller.h"
 #include "app/main_window.h"
+#include "app/stage_scheduler.h"
+#include "app/viewport_panel.h"
 
 #include "tests/support/test_paths.h"
 
@@ -45,6 +48,18 @@ inline std::unique_ptr<app::MainWindow> demoWindow()
     window->show();
     if (!QTest::qWaitForWindowExposed(window.get())) return nullptr;
     return window;
+}
+
+/// Waits until the window's background computations are done and the layout has settled: the
+/// status bar's progress bar comes and goes with them, resizing the views. Exports run the
+/// event loop, so a test comparing an export with the view's size waits for this first.
+inline bool waitUntilIdle(app::MainWindow& window, int timeoutMs = 60000)
+{
+    const auto idle = [&window] { return !window.analysis().scheduler().busy(); };
+    if (!QTest::qWaitFor(idle, timeoutMs)) return false;
+    QCoreApplication::sendPostedEvents(); // the layout requests the finished work posted
+    QCoreApplication::processEvents();
+    return idle();
 }
 
 } // namespace bunraku::test

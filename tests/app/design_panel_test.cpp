@@ -7,6 +7,7 @@
 #include "app/commands.h"
 
 #include "widgets/gain_table.h"
+#include "widgets/scale_error_plot.h"
 #include "widgets/scrub_bar.h"
 #include "widgets/timeline_widget.h"
 #include "widgets/warp_curve_editor.h"
@@ -422,7 +423,10 @@ TEST_CASE("on the warped designed take the ticks sit at the inverse-warped bound
 
     // Dragging a tick: the boundary moves to the functional frame the designed time shows.
     const QPoint from(bar->xOfTime(bar->boundaries()[0]), bar->height() / 2);
-    const QPoint to = from + QPoint(10, 0);
+    // To where the designed time shows three functional frames later (a fixed number of pixels
+    // may stay within one frame where the warp is slow, depending on the bar's width).
+    const QPoint to(bar->xOfTime(analysis::inverseWarp(curve, double(boundaries[1]) + 3.0) / rate), from.y());
+    REQUIRE(to.x() > from.x());
     dragIn(bar, from, to);
     const double shown = analysis::evaluateWarp(curve, bar->timeAtX(to.x()) * rate);
     const double low = double(boundaries[0] + 1);
@@ -488,4 +492,18 @@ TEST_CASE("dragging a boundary keeps phrases 2 frames long, and missing extracte
     const QString status = window->designPanel()->statusText();
     INFO(status.toStdString());
     REQUIRE(status.contains(QStringLiteral("No extracted gains")));
+}
+
+TEST_CASE("the Design dock plots the extracted cell's approximation error per scale (Fig. 5.16)", "[app][design]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    REQUIRE(waitForDesign(*window));
+    auto* plot = window->designPanel()->scaleErrorPlot();
+    REQUIRE(plot);
+    const auto error = window->design().approximationError();
+    REQUIRE(error.scales.size() == 16);
+    REQUIRE(plot->curveCount() == 7); // six axis DOF and the mean
+    for (int c : {1, 8, 16}) CHECK(plot->value(6, c) == Approx(error.meanRelativeError(c - 1)));
+    CHECK(plot->value(6, 16) < plot->value(6, 1));
 }

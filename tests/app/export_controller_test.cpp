@@ -9,6 +9,8 @@
 #include "analysis/io/bvh.h"
 #include "analysis/io/take_csv.h"
 #include "tests/support/peer.h"
+
+#include <catch2/catch.hpp>
 #include "widgets/graph_panel.h"
 #include "widgets/viewport_widget.h"
 
@@ -29,7 +31,7 @@ namespace {
 bool showBandaiTakes(app::MainWindow& window)
 {
     const auto normal = test::bandaiDir() / "bye_normal_001.bvh", angry = test::bandaiDir() / "bye_angry_001.bvh";
-    if (!test::peerPresent(std::filesystem::exists(normal) && std::filesystem::exists(angry), "Bandai files not found in " + test::bandaiDir().string()))
+    if (!test::requirePeer(std::filesystem::exists(normal) && std::filesystem::exists(angry), "Bandai files not found in " + test::bandaiDir().string(), "the shared data beside the repository (../shared/data/bandai)"))
         return false;
     REQUIRE(window.files().importTakeFile(QString::fromStdString(normal.string())));
     REQUIRE(window.files().importTakeFile(QString::fromStdString(angry.string())));

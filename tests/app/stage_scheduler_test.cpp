@@ -1,16 +1,21 @@
-// The scheduler and the analysis controller with a manual executor: jobs run when the test says,
+// The scheduler, the analysis controller and the 3D view with a manual executor: jobs run when the test says,
 // on the test's thread, and results arrive through the event loop - no wall-clock windows.
 #include "app/analysis_controller.h"
 #include "app/commands.h"
 #include "app/document.h"
 #include "app/stage_scheduler.h"
+#include "app/viewport_panel.h"
 
+#include "analysis/axis/axis_channels.h"
+#include "analysis/axis/inertia_axis.h"
+#include "analysis/body/body_description.h"
 #include "analysis/synth/demo_corpus.h"
 
 #include <catch2/catch.hpp>
 
 #include <QCoreApplication>
 
+#include <algorithm>
 #include <deque>
 
 using namespace bunraku;
@@ -164,4 +169,149 @@ TEST_CASE("a changed tau recomputes normalisation and what depends on it, nothin
     REQUIRE(analysis.normalised() != stale);
     CHECK(analysis.isCurrent(AnalysisController::kNormaliseSlot));
     CHECK(scheduler.key(AnalysisController::kNormaliseSlot) == analysis.keys().normalise);
+}
+
+TEST_CASE("slots asking for one key share one job and its result", "[app][scheduler]")
+{
+    auto executor = std::make_shared<ManualExecutor>();
+    StageScheduler scheduler(nullptr, executor);
+    std::vector<bool> stopped;
+    auto watching = [&](int value) {
+        return [&stopped, value](const analysis::RunControl& control) -> analysis::Result<StageValue> {
+            stopped.push_back(control.cancelled());
+            return StageValue(std::make_shared<const int>(value));
+        };
+    };
+    std::vector<int> finished;
+    QObject::connect(&scheduler, &StageScheduler::finished, [&](int slot) { finished.push_back(slot); });
+    scheduler.request(1, StageKey{7}, watching(7));
+    scheduler.request(2, StageKey{7}, watching(70)); // the same key while slot 1 computes it: no second job
+    CHECK(executor->pending() == 1);
+    CHECK(scheduler.state(2) == SlotState::Running);
+    scheduler.request(1, StageKey{8}, watching(8)); // slot 1 moves on; slot 2 still waits for key 7
+    executor->drain();
+    CHECK(stopped == std::vector<bool>{false, false}); // the shared job was not cancelled
+    REQUIRE(scheduler.result<int>(2));
+    CHECK(*scheduler.result<int>(2) == 7);
+    CHECK(*scheduler.result<int>(1) == 8);
+    CHECK(scheduler.starts(1) == 2);
+    CHECK(scheduler.starts(2) == 0);
+
+    scheduler.request(3, StageKey{8}, watching(80)); // computed by slot 1: from the cache
+    CHECK(executor->pending() == 0);
+    CHECK(scheduler.result<int>(3) == scheduler.result<int>(1));
+    QCoreApplication::processEvents();
+    CHECK(std::count(finished.begin(), finished.end(), 3) == 1);
+
+    scheduler.request(1, StageKey{9}, watching(9));
+    scheduler.request(2, StageKey{9}, watching(90));
+    scheduler.clear(1);
+    scheduler.clear(2); // nobody waits for key 9 any more: its job stops
+    executor->drain();
+    CHECK(stopped.back());
+    CHECK(scheduler.result<int>(2) == nullptr);
+}
+
+TEST_CASE("the 3D view draws each shown take's motion axis from the scheduler, once per key, never a stale one",
+          "[app][scheduler][viewport]")
+{
+    namespace pl = analysis::pipeline;
+    auto executor = std::make_shared<ManualExecutor>();
+    Document document;
+    AnalysisController analysis(document, nullptr, executor);
+    ViewportPanel panel(document, analysis);
+    document.setCorpus(analysis::synth::generateDemoCorpus().corpus, QStringLiteral("demo"));
+    executor->drain();
+    auto& scheduler = analysis.scheduler();
+    const int startsA = scheduler.starts(AnalysisController::kTakeAxisSlot);
+    const int startsB = scheduler.starts(AnalysisController::kTakeAxisBSlot);
+    document.selectTake(TakeSlot::A, Document::corpusTakeId(1));
+    document.selectTake(TakeSlot::B, Document::corpusTakeId(7));
+    const auto takeA = document.selectedTake(TakeSlot::A);
+    const auto takeB = document.selectedTake(TakeSlot::B);
+    // The takes show at once, their axes once computed.
+    REQUIRE(panel.drawnAxes().size() == 2);
+    CHECK(panel.drawnAxes()[0] == nullptr);
+    CHECK(panel.drawnAxes()[1] == nullptr);
+    executor->drain();
+    REQUIRE(panel.drawnAxes().size() == 2);
+    REQUIRE(panel.drawnAxes()[0]);
+    REQUIRE(panel.drawnAxes()[1]);
+    // The motion axis of the analysis functions on the default body (thesis 5.2.1).
+    const analysis::AxisModel model = analysis::makeAxisModel(analysis::defaultBodyDescription());
+    auto truthA = analysis::computeMotionAxis(model, *takeA);
+    auto truthB = analysis::computeMotionAxis(model, *takeB);
+    REQUIRE(truthA.ok());
+    REQUIRE(truthB.ok());
+    CHECK(panel.drawnAxes()[0]->coordinates.values == analysis::axisTake(*truthA).values);
+    CHECK(panel.drawnAxes()[1]->coordinates.values == analysis::axisTake(*truthB).values);
+    REQUIRE(panel.drawnAxes()[1]->world_T_axis.size() == truthB->world_T_axis.size());
+    CHECK(panel.drawnAxes()[1]->world_T_axis.back().translation == truthB->world_T_axis.back().translation);
+    // Take A's axis is the graphable "axis" take: the same computation.
+    REQUIRE(document.take(QStringLiteral("live/axis")));
+    CHECK(document.take(QStringLiteral("live/axis"))->values == analysis::axisTake(*truthA).values);
+    CHECK(scheduler.starts(AnalysisController::kTakeAxisSlot) == startsA + 1);
+    CHECK(scheduler.starts(AnalysisController::kTakeAxisBSlot) == startsB + 1);
+
+    // B shows A's take: its axis is reused, nothing is computed.
+    document.selectTake(TakeSlot::B, Document::corpusTakeId(1));
+    CHECK(executor->pending() == 0);
+    QCoreApplication::processEvents();
+    CHECK(panel.drawnAxes()[1] == panel.drawnAxes()[0]);
+    CHECK(scheduler.starts(AnalysisController::kTakeAxisBSlot) == startsB + 1);
+
+    // A changes twice before its first job runs: that job is cancelled and nothing of it drawn.
+    document.selectTake(TakeSlot::A, Document::corpusTakeId(3));
+    document.selectTake(TakeSlot::A, Document::corpusTakeId(4));
+    REQUIRE(executor->pending() == 2);
+    executor->runNext(); // take 3's axis, no longer wanted
+    CHECK(panel.drawnAxes()[0] == nullptr);
+    executor->runNext();
+    REQUIRE(panel.drawnAxes()[0]);
+    auto truth4 = pl::runTakeAxis(*document.selectedTake(TakeSlot::A), {});
+    REQUIRE(truth4.ok());
+    CHECK(panel.drawnAxes()[0]->coordinates.values == truth4->coordinates.values);
+    CHECK(panel.drawnAxes()[0]->coordinates.labels.source == "axis of " + document.selectedTake(TakeSlot::A)->displayName());
+    // Back to take 1: computed before, so drawn again without a job.
+    document.selectTake(TakeSlot::A, Document::corpusTakeId(1));
+    CHECK(executor->pending() == 0);
+    QCoreApplication::processEvents();
+    REQUIRE(panel.drawnAxes()[0]);
+    CHECK(panel.drawnAxes()[0]->coordinates.values == analysis::axisTake(*truthA).values);
+    CHECK(scheduler.starts(AnalysisController::kTakeAxisSlot) == startsA + 3);
+
+    // Other axis parameters: the old axes are not drawn while the new ones are computed.
+    changeStageParameters(document, [](AnalysisParameters& p) { p.axis.massSpacing = 2.0; }, QStringLiteral("spacing"));
+    QCoreApplication::processEvents();
+    CHECK(panel.drawnAxes()[0] == nullptr);
+    CHECK(panel.drawnAxes()[1] == nullptr);
+    executor->drain();
+    REQUIRE(panel.drawnAxes()[0]);
+    pl::AxisParameters coarse;
+    coarse.massSpacing = 2.0;
+    auto truthCoarse = pl::runTakeAxis(*document.selectedTake(TakeSlot::A), coarse);
+    REQUIRE(truthCoarse.ok());
+    CHECK(panel.drawnAxes()[0]->coordinates.values == truthCoarse->coordinates.values);
+    CHECK(panel.drawnAxes()[0] == panel.drawnAxes()[1]); // A and B show one take: one job for both
+    CHECK(scheduler.starts(AnalysisController::kTakeAxisSlot) + scheduler.starts(AnalysisController::kTakeAxisBSlot) ==
+          startsA + 4 + startsB + 1);
+}
+
+TEST_CASE("destroying the scheduler does not wait for a job that ignores cancellation", "[app][scheduler]")
+{
+    auto executor = std::make_shared<ManualExecutor>();
+    bool ran = false;
+    bool stopRequested = false;
+    auto scheduler = std::make_unique<StageScheduler>(nullptr, executor);
+    scheduler->request(1, StageKey{7}, [&](const analysis::RunControl& control) -> analysis::Result<StageValue> {
+        stopRequested = control.cancelled(); // a long step that never checks would run on regardless
+        ran = true;
+        return StageValue(std::make_shared<const int>(1));
+    });
+    REQUIRE(executor->pending() == 1);
+    scheduler.reset(); // the window closing while its job is under way
+    CHECK_FALSE(ran);  // the destructor returned without running or waiting for the job
+    executor->runNext(); // the job ends after its scheduler is gone: told to stop, its result dropped
+    CHECK(ran);
+    CHECK(stopRequested);
 }

@@ -1,5 +1,6 @@
 // Video export of the 3D view never loses the user's files: earlier frames and videos survive
 // refused, failed and cancelled exports; errors name the take frame and the cause.
+#include "tests/support/peer.h"
 #include "tests/app/video_export_support.h"
 
 using namespace bunraku;
@@ -29,7 +30,7 @@ TEST_CASE("a PNG export never deletes or mixes with the frames of an earlier exp
         REQUIRE_FALSE(result.cancelled);
         INFO(result.error.toStdString());
         REQUIRE(result.error.contains(QStringLiteral("already holds 10 frames")));
-        REQUIRE(allEntries(folder).size() == 10);
+        REQUIRE(allEntries(folder).size() == 11); // with the manifest of the earlier export
         REQUIRE(oldFramesIntact(folder, 10));
     }
     SECTION("cancelled after 3 frames with overwrite, the old frames stay and nothing new remains")
@@ -38,8 +39,9 @@ TEST_CASE("a PNG export never deletes or mixes with the frames of an earlier exp
         options.lastFrame = 12;
         const auto result = window->exportViewVideo(options, [](int done, int) { return done < 3; });
         REQUIRE(result.cancelled);
-        REQUIRE(allEntries(folder).size() == 10); // no staging folder either
+        REQUIRE(allEntries(folder).size() == 11); // no staging folder either
         REQUIRE(oldFramesIntact(folder, 10));
+        REQUIRE(allEntries(folder.parent_path()).filter(QStringLiteral(".video-png-old-frames.bunraku-tmp")).isEmpty());
     }
     SECTION("a shorter export with overwrite leaves exactly its own frames")
     {
@@ -48,10 +50,36 @@ TEST_CASE("a PNG export never deletes or mixes with the frames of an earlier exp
         INFO(result.error.toStdString());
         REQUIRE(result.ok());
         REQUIRE(result.frames == 3);
-        REQUIRE(allEntries(folder) == QStringList{"frame_00000.png", "frame_00001.png", "frame_00002.png"});
-        for (const QString& name : allEntries(folder))
+        REQUIRE(allEntries(folder) == QStringList{".bunraku-files.json", "frame_00000.png", "frame_00001.png", "frame_00002.png"});
+        for (const QString& name : app::existingFrames(options.output))
             REQUIRE(QImage(QDir(options.output).filePath(name)).size() == QSize(64, 48)); // new images, not the old text
     }
+}
+
+TEST_CASE("a PNG export never replaces a folder holding the user's files, even when allowed to replace frames",
+          "[app][video]")
+{
+    auto window = exportWindow(0.0);
+    REQUIRE(window);
+    const auto folder = test::scratchDir("video-png-user-files");
+    writeOldFrames(folder, 3);
+    {
+        QFile notes(QString::fromStdString((folder / "notes.txt").string()));
+        REQUIRE(notes.open(QIODevice::WriteOnly));
+        notes.write("my notes");
+    }
+    VideoExportOptions options;
+    options.format = VideoFormat::PngSequence;
+    options.size = QSize(32, 24);
+    options.lastFrame = 4;
+    options.overwrite = true;
+    options.output = QString::fromStdString(folder.string());
+    const auto result = window->exportViewVideo(options, [](int, int) { return true; });
+    REQUIRE_FALSE(result.ok());
+    INFO(result.error.toStdString());
+    REQUIRE(result.error.contains(QStringLiteral("notes.txt")));
+    REQUIRE(oldFramesIntact(folder, 3));
+    REQUIRE(allEntries(folder).size() == 5);
 }
 
 TEST_CASE("a failed PNG export names the take frame and removes only what it wrote", "[app][video]")
@@ -76,7 +104,7 @@ TEST_CASE("a failed PNG export names the take frame and removes only what it wro
     REQUIRE(result.error.contains(QStringLiteral("take A frame 7"))); // the third planned frame
     REQUIRE(result.error.contains(QStringLiteral("1.400 s")));
     REQUIRE(result.error.contains(QStringLiteral("the view went away")));
-    REQUIRE(allEntries(folder).size() == 2);
+    REQUIRE(allEntries(folder).size() == 3);
     REQUIRE(oldFramesIntact(folder, 2));
 }
 
@@ -105,10 +133,7 @@ TEST_CASE("hiding the 3D view during an export at its size stops with the cause"
 
 TEST_CASE("a cancelled MP4 export leaves an existing MP4 of the same name untouched", "[app][video]")
 {
-    if (!ffmpegInstalled()) {
-        WARN("ffmpeg/ffprobe not on PATH (apt-get install ffmpeg): MP4 cancel over an existing file not tested");
-        return;
-    }
+    if (!test::requirePeer(ffmpegInstalled(), "ffmpeg and ffprobe on PATH (MP4 cancel)", "apt-get install ffmpeg")) return;
     auto window = exportWindow(0.0);
     REQUIRE(window);
     const auto folder = test::scratchDir("video-mp4-existing");
@@ -155,7 +180,7 @@ TEST_CASE("exporting the whole take gives take A's frames even when take B is lo
     INFO(result.error.toStdString());
     REQUIRE(result.ok());
     REQUIRE(result.frames == 12);
-    REQUIRE(fileCount(folder) == 12);
+    REQUIRE(fileCount(folder) == 13); // and the manifest
 
     VideoExportOptions beyond = options; // a frame of B past A's end is refused, naming A's range
     beyond.output = QString::fromStdString((folder / "beyond").string());

@@ -11,6 +11,8 @@
 
 #include "widgets/viewport_widget.h"
 
+#include "analysis/io/staged_folder.h"
+
 #include <catch2/catch.hpp>
 
 #include <QAction>
@@ -24,6 +26,7 @@
 #include <QProcess>
 #include <QProgressDialog>
 #include <QMessageBox>
+#include <QThread>
 #include <QTimer>
 #include <QUndoCommand>
 #include <QUndoStack>
@@ -74,14 +77,17 @@ inline QStringList allEntries(const std::filesystem::path& folder)
     return QDir(QString::fromStdString(folder.string())).entryList(QDir::AllEntries | QDir::Hidden | QDir::NoDotAndDotDot);
 }
 
-/// `count` files frame_00000.png ... in `folder` that an earlier export left, each with its own text.
+/// `count` files frame_00000.png ... in `folder` that an earlier export left (with the manifest
+/// of what it wrote, as every folder output has), each with its own text.
 inline void writeOldFrames(const std::filesystem::path& folder, int count)
 {
-    for (int i = 0; i < count; ++i) {
-        QFile file(QDir(QString::fromStdString(folder.string())).filePath(QStringLiteral("frame_%1.png").arg(i, 5, 10, QLatin1Char('0'))));
-        REQUIRE(file.open(QIODevice::WriteOnly));
-        file.write(QByteArray("old frame ") + QByteArray::number(i));
-    }
+    auto staged = analysis::io::StagedFolder::begin(folder);
+    REQUIRE(staged.ok());
+    for (int i = 0; i < count; ++i)
+        REQUIRE(staged->writeFile(QStringLiteral("frame_%1.png").arg(i, 5, 10, QLatin1Char('0')).toStdString(),
+                                  "old frame " + std::to_string(i))
+                    .ok());
+    REQUIRE(staged->commit().ok());
 }
 
 /// True when the files of writeOldFrames(folder, count) are all there, unchanged.

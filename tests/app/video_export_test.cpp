@@ -1,5 +1,6 @@
 // Video export of the 3D view from the real main window: MP4 frames and size checked by ffprobe,
 // PNG sequences, cancel, missing or failing ffmpeg, and the dialog's remembered choices.
+#include "tests/support/peer.h"
 #include "tests/app/video_export_support.h"
 
 using namespace bunraku;
@@ -26,10 +27,7 @@ TEST_CASE("the planned export frames cover the range at the take's or a chosen r
 
 TEST_CASE("an MP4 of the 3D view has the frames and size asked for, and the time is restored", "[app][video]")
 {
-    if (!ffmpegInstalled()) {
-        WARN("ffmpeg/ffprobe not on PATH (apt-get install ffmpeg): MP4 export not tested");
-        return;
-    }
+    if (!test::requirePeer(ffmpegInstalled(), "ffmpeg and ffprobe on PATH (MP4 export)", "apt-get install ffmpeg")) return;
     auto window = exportWindow(1.0);
     REQUIRE(window);
     const auto folder = test::scratchDir("video-mp4");
@@ -59,6 +57,7 @@ TEST_CASE("an MP4 of the 3D view has the frames and size asked for, and the time
         options.lastFrame = 2;
         options.fps = 2.0 * take->rateHz; // two video frames per take frame
         options.output = QString::fromStdString((folder / "view.mp4").string());
+        REQUIRE(test::waitUntilIdle(*window)); // the view keeps its size during the export
         const auto result = window->exportViewVideo(options, [](int, int) { return true; });
         INFO(result.error.toStdString());
         REQUIRE(result.ok());
@@ -89,7 +88,7 @@ TEST_CASE("a PNG sequence of the 3D view has one image per planned frame", "[app
     INFO(result.error.toStdString());
     REQUIRE(result.ok());
     REQUIRE(result.frames == 5);
-    REQUIRE(fileCount(folder) == 5);
+    REQUIRE(fileCount(folder) == 6); // and the manifest of the files written
     const QImage first(QString::fromStdString((folder / "frame_00000.png").string()));
     const QImage last(QString::fromStdString((folder / "frame_00004.png").string()));
     REQUIRE(first.size() == QSize(64, 48));
@@ -114,10 +113,7 @@ TEST_CASE("cancelling a video export leaves no file behind", "[app][video]")
         REQUIRE(result.cancelled);
         REQUIRE(fileCount(folder / "frames") == 0);
     }
-    if (!ffmpegInstalled()) {
-        WARN("ffmpeg not on PATH (apt-get install ffmpeg): MP4 cancel not tested");
-        return;
-    }
+    if (!test::requirePeer(ffmpegInstalled(), "ffmpeg and ffprobe on PATH (MP4 cancel)", "apt-get install ffmpeg")) return;
     SECTION("an MP4 through the callback")
     {
         options.output = QString::fromStdString((folder / "cancelled.mp4").string());
@@ -271,7 +267,7 @@ TEST_CASE("File > Export 3D View Video exports what the dialog was given", "[app
     });
     action->trigger();
     REQUIRE(answered);
-    REQUIRE(fileCount(folder) == 3);
+    REQUIRE(fileCount(folder) == 4); // and the manifest
     REQUIRE(QImage(QString::fromStdString((folder / "frame_00002.png").string())).size() == QSize(48, 32));
 }
 

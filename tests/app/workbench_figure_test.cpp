@@ -34,7 +34,7 @@ int runWorkbench(const std::string& arguments, const std::filesystem::path& erro
 TEST_CASE("bunraku-workbench --figure shows a Bandai take's skeleton in the window's screenshot", "[app][skeleton]")
 {
     const auto source = bunraku::test::bandaiDir() / "bye_angry_001.bvh";
-    if (!bunraku::test::peerPresent(std::filesystem::exists(source), "Bandai file " + source.string() + " not found")) return;
+    if (!bunraku::test::requirePeer(std::filesystem::exists(source), "Bandai file " + source.string() + " not found", "the shared data beside the repository (../shared/data/bandai)")) return;
     const auto dir = bunraku::test::scratchDir("workbench_figure");
     for (const std::string figure : {"puppet", "skeleton"}) {
         const auto png = dir / (figure + ".png");

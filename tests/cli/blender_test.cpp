@@ -112,8 +112,8 @@ std::shared_ptr<const SkeletalMotion> bandaiMotion(const fs::path& path)
 TEST_CASE("blender imports a bandai take exported by the command line as BVH and glTF on its 22-joint skeleton", "[cli][blender]")
 {
     const fs::path source = bunraku::test::bandaiDir() / "bye_angry_001.bvh";
-    if (!bunraku::test::peerPresent(fs::exists(source), "Bandai file " + source.string() + " not found")) return;
-    if (!bunraku::test::peerPresent(haveBlender(), "blender not found (apt-get install blender, scripts/install-deps.sh)")) return;
+    if (!bunraku::test::requirePeer(fs::exists(source), "Bandai file " + source.string() + " not found", "the shared data beside the repository (../shared/data/bandai)")) return;
+    if (!bunraku::test::requirePeer(haveBlender(), "blender (Debian's Blender 3.4)", "apt-get install blender (scripts/install-deps.sh)")) return;
     const auto motion = bandaiMotion(source);
     REQUIRE(motion->skeleton->jointCount() == 22);
     const fs::path dir = bunraku::test::scratchDir("blender_bandai");
@@ -130,8 +130,8 @@ TEST_CASE("blender imports a bandai take exported by the command line as BVH and
 TEST_CASE("blender imports a derived take on the source skeleton", "[cli][blender]")
 {
     const fs::path source = bunraku::test::bandaiDir() / "bye_normal_001.bvh";
-    if (!bunraku::test::peerPresent(fs::exists(source), "Bandai file " + source.string() + " not found")) return;
-    if (!bunraku::test::peerPresent(haveBlender(), "blender not found (apt-get install blender, scripts/install-deps.sh)")) return;
+    if (!bunraku::test::requirePeer(fs::exists(source), "Bandai file " + source.string() + " not found", "the shared data beside the repository (../shared/data/bandai)")) return;
+    if (!bunraku::test::requirePeer(haveBlender(), "blender (Debian's Blender 3.4)", "apt-get install blender (scripts/install-deps.sh)")) return;
     auto file = io::readBvh(source);
     REQUIRE(file.ok());
     auto take = io::bvhToPuppetTake(*file);
@@ -169,7 +169,7 @@ TEST_CASE("blender imports a derived take on the source skeleton", "[cli][blende
 
 TEST_CASE("blender imports a designed demo take as glTF: the puppet's parts as bones with its mesh", "[cli][blender]")
 {
-    if (!bunraku::test::peerPresent(haveBlender(), "blender not found (apt-get install blender, scripts/install-deps.sh)")) return;
+    if (!bunraku::test::requirePeer(haveBlender(), "blender (Debian's Blender 3.4)", "apt-get install blender (scripts/install-deps.sh)")) return;
     const fs::path dir = bunraku::test::scratchDir("blender_puppet");
     REQUIRE(runBunraku({"demo", "-o", (dir / "demo").string(), "--seed", "3"}).exitCode == 0);
     fs::path takeFile;

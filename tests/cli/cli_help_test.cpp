@@ -66,7 +66,7 @@ TEST_CASE("bunraku help with an unknown subcommand names the ones there are", "[
 
     const auto nested = runBunraku({"help", "experiment", "nope"});
     CHECK(nested.exitCode == 1);
-    CHECK(nested.err.find("'bunraku experiment' has no subcommand 'nope' (expected one of: noise, truth, km2o, design)")
+    CHECK(nested.err.find("'bunraku experiment' has no subcommand 'nope' (expected one of: noise, truth, km2o, design, approximation)")
           != std::string::npos);
     CHECK(runBunraku({"help", "demo", "extra"}).exitCode == 1);
 }

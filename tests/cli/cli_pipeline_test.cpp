@@ -1,5 +1,6 @@
 // The command line end to end: BVH conversion round trips, demo -> preprocess -> decompose ->
 // emotion, and the atomic replacement of output files.
+#include "tests/support/shared_data.h"
 #include "tests/cli/cli_files.h"
 #include "tests/cli/cli_runner.h"
 #include "tests/support/test_paths.h"
@@ -8,6 +9,8 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <cstdlib>
+#include <sstream>
 
 using bunraku::test::readNumericCsv;
 using bunraku::test::runBunraku;
@@ -48,10 +51,7 @@ json runJson(const std::vector<std::string>& arguments)
 TEST_CASE("bunraku convert takes a bandai BVH to CSV and back to BVH without changing the take", "[cli]")
 {
     const auto source = bunraku::test::bandaiDir() / "bye_normal_001.bvh";
-    if (!std::filesystem::exists(source)) {
-        WARN("skipped: " << source << " is absent (shared Bandai data not installed)");
-        return;
-    }
+    if (!bunraku::test::requireBandaiData(std::filesystem::exists(source))) return;
     const auto dir = bunraku::test::scratchDir("cli-convert");
     const auto info = runJson({"info", source.string(), "--json"});
     CHECK(info.at("format") == "bvh");
@@ -127,10 +127,70 @@ TEST_CASE("bunraku emotion with weight 0 gives y and with weight 1 gives y + z",
     const auto y = readNumericCsv(out / "y_serving-tea.csv");
     const auto z = readNumericCsv(out / "z_serving-tea_hostile.csv");
     CHECK(largestDifference(readNumericCsv(zero), y) == 0.0);
+    // Positions add as numbers; orientations add as rotation coordinates (z's angle columns are
+    // the rotation vector in degrees), so the weighted angles are not y's plus z's.
     auto sum = y;
+    const auto weighted = readNumericCsv(one);
     for (std::size_t r = 0; r < sum.rows.size(); ++r)
-        for (std::size_t c = 1; c < sum.rows[r].size(); ++c) sum.rows[r][c] += z.rows[r][c];
-    CHECK(largestDifference(readNumericCsv(one), sum) < 1e-9);
+        for (std::size_t c = 1; c < sum.rows[r].size(); ++c) {
+            const std::string& name = y.header[c];
+            const bool angle = name.ends_with(".yaw") || name.ends_with(".pitch") || name.ends_with(".roll");
+            if (angle) sum.rows[r][c] = weighted.rows[r][c];
+            else sum.rows[r][c] += z.rows[r][c];
+        }
+    CHECK(largestDifference(weighted, sum) < 1e-9);
+}
+
+TEST_CASE("phase, gains and design run on a 138-frame reference and a 90-frame sample", "[cli]")
+{
+    const auto happy = bunraku::test::bandaiDir() / "bye_happy_001.bvh";
+    const auto angry = bunraku::test::bandaiDir() / "bye_angry_001.bvh";
+    if (!std::filesystem::exists(happy) || !std::filesystem::exists(angry)) {
+        const char* ci = std::getenv("CI");
+        if (ci && std::string(ci) == "true") FAIL("Bandai test data missing under CI: " << happy);
+        WARN("skipped: " << happy << " or " << angry << " is absent (shared Bandai data not installed)");
+        return;
+    }
+    const auto dir = bunraku::test::scratchDir("cli-lengths");
+    runJson({"convert", happy.string(), "-o", (dir / "happy.csv").string(), "--json"});
+    runJson({"convert", angry.string(), "-o", (dir / "angry.csv").string(), "--json"});
+    // The first 138 frames of the happy wave, and the angry one hurried from 110 into 90 frames
+    // (the nearest frame at 109/89 of the time), as CSV takes at 30 Hz.
+    auto rewrite = [&](const std::filesystem::path& in, const std::filesystem::path& out, int frames, double step) {
+        const auto csv = readNumericCsv(in);
+        std::ostringstream text;
+        text.precision(17);
+        for (std::size_t c = 0; c < csv.header.size(); ++c) text << (c ? "," : "") << csv.header[c];
+        text << "\n";
+        for (int t = 0; t < frames; ++t) {
+            const auto& row = csv.rows[std::size_t(std::lround(step * t))];
+            text << double(t) / 30.0;
+            for (std::size_t c = 1; c < row.size(); ++c) text << "," << row[c];
+            text << "\n";
+        }
+        bunraku::test::writeText(out, text.str());
+    };
+    const auto reference = dir / "bye_reference_138.csv", sample = dir / "bye_angry_90.csv";
+    rewrite(dir / "happy.csv", reference, 138, 1.0);
+    rewrite(dir / "angry.csv", sample, 90, 109.0 / 89.0);
+    CHECK(runJson({"info", reference.string(), "--json"}).at("frames") == 138);
+    CHECK(runJson({"info", sample.string(), "--json"}).at("frames") == 90);
+
+    const auto warp = dir / "warp.csv", gains = dir / "gains.json", designed = dir / "designed.csv";
+    const auto bandOnly = runBunraku({"phase", "--reference", reference.string(), "--sample", sample.string(), "-o",
+                                      (dir / "none.csv").string(), "--time-scale", "none"});
+    CHECK(bandOnly.exitCode != 0); // the thesis's band alone has no path
+    CHECK(bandOnly.err.find("138") != std::string::npos);
+    const auto phase = runJson({"phase", "--reference", reference.string(), "--sample", sample.string(), "-o", warp.string(), "--json"});
+    CHECK(phase.at("correspondence").size() == 138);
+    CHECK(phase.at("control_points").back().at(0).get<double>() == Approx(89.0));
+    CHECK(phase.at("control_points").back().at(1).get<double>() > 100.0);
+    runJson({"gains", "--reference", reference.string(), "--sample", sample.string(), "--warp", warp.string(), "-o",
+             gains.string(), "--json"});
+    const auto design = runJson({"design", reference.string(), "--warp", warp.string(), "--gains", gains.string(), "-o",
+                                 designed.string(), "--json"});
+    CHECK(design.at("frames") == 90);
+    CHECK(readNumericCsv(designed).rows.size() == 90);
 }
 
 TEST_CASE("decompose replaces its output files instead of rewriting them in place", "[cli]")
@@ -138,29 +198,33 @@ TEST_CASE("decompose replaces its output files instead of rewriting them in plac
     const auto dir = bunraku::test::scratchDir("cli-atomic");
     const auto demo = dir / "demo", out = dir / "ls";
     runJson({"demo", "-o", demo.string(), "--json"});
-    // An older summary.json shared with another name (a hard link): an atomic write (temporary
-    // file + rename) leaves the other name's content alone; writing in place would change it.
-    std::filesystem::create_directories(out);
-    const auto keep = bunraku::test::writeText(dir / "kept.json", "{\"old\": true}\n");
-    std::filesystem::create_hard_link(keep, out / "summary.json");
-    std::filesystem::create_hard_link(keep, out / "arma_table.csv");
     runJson({"decompose", demo.string(), "--pad", "--method", "ls", "-o", out.string(), "--json"});
-    CHECK(bunraku::test::readTextFile(keep) == "{\"old\": true}\n");
-    CHECK(json::parse(bunraku::test::readTextFile(out / "summary.json")).at("method") == "ls");
-    for (const auto& entry : std::filesystem::directory_iterator(out))
-        CHECK(entry.path().filename().string().rfind(".", 0) != 0); // no temporary files left
+    // The earlier summary.json shared with another name (a hard link): replacing the output
+    // (built beside it and swapped in) leaves the other name's content alone; writing in place
+    // would change it.
+    const std::string old = bunraku::test::readTextFile(out / "summary.json");
+    std::filesystem::create_hard_link(out / "summary.json", dir / "kept.json");
+    runJson({"decompose", demo.string(), "--pad", "--method", "km2o", "-o", out.string(), "--json"});
+    CHECK(bunraku::test::readTextFile(dir / "kept.json") == old);
+    CHECK(json::parse(bunraku::test::readTextFile(dir / "kept.json")).at("method") == "ls");
+    CHECK(json::parse(bunraku::test::readTextFile(out / "summary.json")).at("method") == "km2o");
+    for (const auto& entry : std::filesystem::directory_iterator(dir))
+        CHECK(entry.path().filename().string().rfind(".", 0) != 0); // no temporary folders left
+    for (const auto& entry : std::filesystem::directory_iterator(out)) // only the manifest is hidden
+        CHECK((entry.path().filename().string().rfind(".", 0) != 0 || entry.path().filename() == ".bunraku-files.json"));
 }
 
-TEST_CASE("preprocessing a demo corpus in place keeps its ground truth and leaves no temporary folders", "[cli]")
+TEST_CASE("preprocessing a demo corpus keeps its ground truth and leaves no temporary folders", "[cli]")
 {
-    const auto dir = bunraku::test::scratchDir("cli-preprocess-in-place");
-    const auto demo = dir / "demo";
+    const auto dir = bunraku::test::scratchDir("cli-preprocess-truth");
+    const auto demo = dir / "demo", preprocessed = dir / "preprocessed";
     runJson({"demo", "-o", demo.string(), "--json"});
-    const auto report = runJson({"preprocess", demo.string(), "-o", demo.string(), "--json"});
+    const auto report = runJson({"preprocess", demo.string(), "-o", preprocessed.string(), "--json"});
     CHECK(report.at("truth_copied") == true);
-    CHECK(std::filesystem::is_regular_file(demo / "truth" / "truth.json"));
+    CHECK(std::filesystem::is_regular_file(preprocessed / "truth" / "truth.json"));
+    CHECK(bunraku::test::readTextFile(preprocessed / "truth" / "truth.json") == bunraku::test::readTextFile(demo / "truth" / "truth.json"));
     for (const auto& entry : std::filesystem::directory_iterator(dir))
         CHECK(entry.path().filename().string().rfind(".", 0) != 0);
-    const auto summary = runJson({"decompose", demo.string(), "--method", "ls", "-o", (dir / "ls").string(), "--json"});
+    const auto summary = runJson({"decompose", preprocessed.string(), "--method", "ls", "-o", (dir / "ls").string(), "--json"});
     CHECK(summary.contains("truth"));
 }

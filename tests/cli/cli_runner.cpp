@@ -2,6 +2,7 @@
 #include "tests/support/test_paths.h"
 
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -21,7 +22,15 @@ std::string slurp(const std::filesystem::path& path)
 
 } // namespace
 
-CliRun runBunraku(const std::vector<std::string>& arguments)
+std::string bunrakuPath()
+{
+    const char* other = std::getenv("BUNRAKU_CLI_UNDER_TEST");
+    return other != nullptr && *other ? other : BUNRAKU_CLI;
+}
+
+CliRun runBunraku(const std::vector<std::string>& arguments) { return runBunrakuWith("", arguments); }
+
+CliRun runBunrakuWith(const std::string& prefix, const std::vector<std::string>& arguments, int timeoutSeconds)
 {
     static int counter = 0;
     const auto dir = std::filesystem::path(BUNRAKU_BINARY_DIR) / "test-scratch" / "cli-output";
@@ -31,7 +40,9 @@ CliRun runBunraku(const std::vector<std::string>& arguments)
     const auto outPath = dir / ("out-" + stem + ".txt");
     const auto errPath = dir / ("err-" + stem + ".txt");
     ++counter;
-    std::string command = "'" BUNRAKU_CLI "'";
+    // BUNRAKU_CLI_UNDER_TEST runs the cases against another build (an older one shows which
+    // cases it fails); `timeout` turns a hang (a reader blocked on a FIFO) into a failure.
+    std::string command = "timeout -k 5 " + std::to_string(timeoutSeconds) + " " + prefix + " '" + bunrakuPath() + "'";
     for (const auto& a : arguments) {
         if (a.find('\'') != std::string::npos) throw std::invalid_argument("quote in argument: " + a);
         command += " '" + a + "'";

@@ -39,7 +39,7 @@ TEST_CASE("every subcommand answers --help", "[cli]")
     const std::vector<std::vector<std::string>> commands = {
         {"demo"}, {"info"}, {"convert"}, {"preprocess"}, {"normalise"}, {"decompose"}, {"emotion"},
         {"axis"}, {"phase"}, {"gains"}, {"design"}, {"render"}, {"experiment", "noise"},
-        {"experiment", "truth"}, {"experiment", "km2o"}, {"experiment", "design"}};
+        {"experiment", "truth"}, {"experiment", "km2o"}, {"experiment", "design"}, {"experiment", "approximation"}};
     for (auto command : commands) {
         command.push_back("--help");
         const auto run = runBunraku(command);

@@ -1,4 +1,5 @@
 #include "tests/package/installed_run.h"
+#include "tests/support/peer.h"
 
 #include <catch2/catch.hpp>
 
@@ -72,9 +73,8 @@ bool hasTool(const std::string& tool) { return std::system(("command -v " + tool
 
 void failOrSkip(const std::string& why)
 {
-    const char* ci = std::getenv("CI");
-    if (ci != nullptr && std::string(ci) == "true") FAIL(why << " (CI=true: a missing peer fails)");
-    std::printf("skipped: %s\n", why.c_str());
+    // The one peer rule (tests/support/peer.h): fails under CI=true, else says why it is skipped.
+    bunraku::test::requirePeer(false, why, "scripts/install-deps.sh installs it");
     std::fflush(stdout);
     std::_Exit(77);
 }

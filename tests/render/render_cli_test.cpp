@@ -1,6 +1,7 @@
 // `bunraku render` end to end: the built command line writes PNGs of the demo corpus, and bad
 // input fails with one line and a non-zero exit. Skips (with a warning) when the command line
 // has not been built in this build tree.
+#include "tests/support/peer.h"
 #include "render/take_scene.h"
 #include "analysis/core/puppet_layout.h"
 #include "tests/support/test_paths.h"
@@ -60,10 +61,9 @@ int distinctColours(const QImage& image)
 
 TEST_CASE("bunraku render writes a PNG of a demo take and a frame sequence", "[render][cli]")
 {
-    if (!std::filesystem::exists(cliPath())) {
-        WARN("skipped: " << cliPath() << " is not built");
+    if (!test::requirePeer(std::filesystem::exists(cliPath()), "the bunraku executable (" + cliPath().string() + ")",
+                           "build the target bunraku"))
         return;
-    }
     const auto dir = test::scratchDir("render_cli");
     const auto [code, errors] = runCli("render demo:greeting/friendly/2 --take-b demo:greeting/hostile/2 --frame 30 "
                                        "--camera 90 --size 320x200 --show puppet,axis,orbits,grid -o " +
@@ -86,10 +86,9 @@ TEST_CASE("bunraku render writes a PNG of a demo take and a frame sequence", "[r
 
 TEST_CASE("bunraku render rejects bad input with a one-line error", "[render][cli]")
 {
-    if (!std::filesystem::exists(cliPath())) {
-        WARN("skipped: " << cliPath() << " is not built");
+    if (!test::requirePeer(std::filesystem::exists(cliPath()), "the bunraku executable (" + cliPath().string() + ")",
+                           "build the target bunraku"))
         return;
-    }
     const auto dir = test::scratchDir("render_cli_errors");
     const std::string out = " -o " + quoted(dir / "x.png");
     const std::string demo = "render demo:greeting/none/1";
@@ -106,10 +105,9 @@ TEST_CASE("bunraku render rejects bad input with a one-line error", "[render][cl
 
 TEST_CASE("bunraku render --mp4 without ffmpeg on PATH says how to get it and writes nothing", "[render][cli]")
 {
-    if (!std::filesystem::exists(cliPath())) {
-        WARN("skipped: " << cliPath() << " is not built");
+    if (!test::requirePeer(std::filesystem::exists(cliPath()), "the bunraku executable (" + cliPath().string() + ")",
+                           "build the target bunraku"))
         return;
-    }
     const auto dir = test::scratchDir("render_cli_mp4");
     // An empty PATH: ffmpeg cannot be found whether or not the machine has it.
     const auto [code, errors] = runCli("--help > /dev/null; PATH= " + quoted(cliPath()) +
@@ -152,13 +150,9 @@ TEST_CASE("a take scene carries the motion axis of every take, one pose per fram
 TEST_CASE("bunraku render --figure draws a Bandai take's 22-joint skeleton, the puppet, or both", "[render][cli][skeleton]")
 {
     const auto source = test::bandaiDir() / "bye_angry_001.bvh";
-    if (!std::filesystem::exists(source)) {
-        const std::string what = "Bandai file " + source.string() + " not found";
-        const char* ci = std::getenv("CI");
-        if (ci != nullptr && std::string(ci) == "true") FAIL("missing under CI=true: " << what);
-        std::printf("SKIPPED: %s\n", what.c_str());
+    if (!test::requirePeer(std::filesystem::exists(source), "Bandai file " + source.string(),
+                           "the shared data beside the repository (../shared/data/bandai)"))
         return;
-    }
     const auto dir = test::scratchDir("render_cli_figure");
     std::map<std::string, QImage> images;
     for (const std::string figure : {"puppet", "skeleton", "both"}) {

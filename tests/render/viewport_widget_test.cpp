@@ -97,9 +97,13 @@ TEST_CASE("a viewport without a chosen camera frames each new scene", "[widgets]
     REQUIRE(QTest::qWaitForWindowExposed(&viewport));
     (void)viewport.grabFramebuffer(); // paints: uploads the scene
     REQUIRE(viewport.renderer() != nullptr);
-    const render::Camera framing = viewport.renderer()->framingCamera();
+    // Reset Camera's view of the figures over the whole take (render/framing.h).
+    render::BoundsQuery figures;
+    figures.figuresOnly = true;
+    const render::Camera framing = render::resetCamera(viewport.renderer()->displayedBounds(viewport.camera(), figures), QSize(320, 240));
     CHECK(viewport.camera().target.z == Approx(framing.target.z));
-    CHECK(viewport.camera().target.z == Approx(viewport.renderer()->floorHeight() + 45.0f));
+    CHECK(viewport.camera().distance == Approx(framing.distance));
+    CHECK(viewport.camera().angleDeg == Approx(340.0f));
     // The framed puppet is on screen: its shoulder projects inside the image.
     const auto world_T_shoulder = viewport.renderer()->displayedPartTransforms(0, viewport.camera())[1];
     const auto shoulder = viewport.camera().project(glm::vec3(world_T_shoulder[3]), QSize(320, 240));
@@ -163,7 +167,9 @@ TEST_CASE("a window holding the viewport stays raster and its screenshot shows t
 
 TEST_CASE("quick successive frames skip multisampling and the still frame is redrawn with it", "[widgets][viewport]")
 {
+    widgets::ManualClock clock; // time moves only when the test says so
     widgets::ViewportWidget viewport(nullptr, 4);
+    viewport.setClock(&clock);
     viewport.resize(320, 240);
     viewport.setScene(oneTake());
     viewport.setCamera(frontCamera());
@@ -183,9 +189,18 @@ TEST_CASE("quick successive frames skip multisampling and the still frame is red
     viewport.repaint();
     CHECK(viewport.renderedFrameCount() == drawn + 1);
     // Once the view is still, the same frame is redrawn with multisampling.
-    REQUIRE(QTest::qWaitFor([&] { return viewport.shownSamples() == 4; }, 5000));
-    CHECK(viewport.renderedFrameCount() >= drawn + 2);
+    clock.advance(widgets::ViewportWidget::kSettleMs - 1);
+    CHECK(viewport.shownSamples() == 0);
+    clock.advance(1);
+    CHECK(viewport.shownSamples() == 4);
+    CHECK(viewport.renderedFrameCount() == drawn + 2);
     CHECK(viewport.renderer()->frame(0) == 2);
+    // A change after a still moment is drawn at full quality at once.
+    clock.advance(widgets::ViewportWidget::kSettleMs);
+    viewport.setTime(0.0);
+    viewport.repaint();
+    CHECK(viewport.shownSamples() == 4);
+    CHECK(viewport.renderer()->frame(0) == 0);
     // Screenshots and frame export always use the view's multisampling.
     viewport.setTime(0.2);
     (void)viewport.grabFramebuffer();

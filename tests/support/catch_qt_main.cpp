@@ -1,7 +1,10 @@
 // Catch2 main for Qt tests: a QApplication exists while tests run, but not while ctest lists
-// the cases at build time (no display is needed to list them).
+// the cases at build time (no display is needed to list them). The skip summary follows the run
+// (tests/support/peer.h).
 #define CATCH_CONFIG_RUNNER
 #include <catch2/catch.hpp>
+
+#include "tests/support/peer.h"
 
 #include <QApplication>
 
@@ -13,5 +16,7 @@ int main(int argc, char** argv)
     if (config.listTests || config.listTestNamesOnly || config.listTags || config.listReporters)
         return session.run();
     QApplication app(argc, argv);
-    return session.run();
+    const int failed = session.run();
+    bunraku::test::printSkipSummary();
+    return failed;
 }

@@ -111,10 +111,10 @@ TEST_CASE("body description parse errors name the source, the JSON path and the 
     CHECK(body.error().message.find(expectation) != std::string::npos);
 }
 
-TEST_CASE("a missing body description file is an Io error naming the file")
+TEST_CASE("a missing body description file is a NotFound error naming the file")
 {
     const auto body = loadBodyDescription(bunraku::test::scratchDir("body-missing") / "nope.json");
     REQUIRE_FALSE(body.ok());
-    CHECK(body.error().code == ErrorCode::Io);
+    CHECK(body.error().code == ErrorCode::NotFound);
     CHECK(body.error().message.find("nope.json") != std::string::npos);
 }

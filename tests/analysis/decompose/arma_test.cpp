@@ -1,3 +1,4 @@
+#include "tests/support/peer.h"
 #include "analysis/decompose/arma.h"
 #include "tests/support/test_paths.h"
 
@@ -81,10 +82,9 @@ TEST_CASE("ARMA estimates agree with statsmodels on the same series")
     for (const auto& c : cases) {
         const Eigen::VectorXd x = armaSeries(2000, c.a1, c.a2, c.c1, c.c2, 1.3, 17);
         const auto reference = statsmodelsArma(x, c.p, c.q);
-        if (reference.empty()) {
-            WARN("skipped: /usr/bin/python3 with statsmodels is not available");
+        if (!bunraku::test::requirePeer(!reference.empty(), "python3-statsmodels (/usr/bin/python3 with statsmodels) for the peer comparison",
+                                        "apt-get install python3-statsmodels"))
             return;
-        }
         REQUIRE(reference.size() == std::size_t(c.p + c.q + 1));
         auto model = fitArma(x, c.p, c.q);
         REQUIRE(model.ok());

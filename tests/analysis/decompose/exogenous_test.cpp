@@ -1,11 +1,13 @@
 #include "analysis/decompose/exogenous.h"
 #include "analysis/decompose/km2o_decomposition.h"
 #include "analysis/decompose/km2o_experiment.h"
+#include "tests/analysis/decompose/exogenous_reference.h"
 #include "tests/analysis/decompose/test_corpus.h"
 
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cstring>
 
 using namespace bunraku::analysis;
 
@@ -135,4 +137,92 @@ TEST_CASE("the KM2O corpus decomposition rejects M above M_max and single-take c
     auto single = decomposeKm2o(known.corpus, options);
     REQUIRE_FALSE(single.ok());
     CHECK(single.error().message.find("K >= 2") != std::string::npos);
+}
+
+namespace {
+
+/// Equal shapes and equal bits (NaN where the other has the same NaN).
+template <class A, class B> bool sameBits(const A& a, const B& b)
+{
+    using Scalar = typename A::Scalar;
+    return a.rows() == b.rows() && a.cols() == b.cols() &&
+           (a.size() == 0 || std::memcmp(a.derived().data(), b.derived().data(), std::size_t(a.size()) * sizeof(Scalar)) == 0);
+}
+
+void requireSameEstimate(const ExogenousEstimate& fast, const ExogenousEstimate& peer)
+{
+    CHECK(fast.correlationLength == peer.correlationLength);
+    CHECK(sameBits(fast.functionInput, peer.functionInput));
+    CHECK(sameBits(fast.emotionInputs, peer.emotionInputs));
+    CHECK(sameBits(fast.functionComponent, peer.functionComponent));
+    CHECK(sameBits(fast.emotionComponents, peer.emotionComponents));
+    CHECK(sameBits(fast.cellMeans, peer.cellMeans));
+    CHECK(sameBits(fast.estimateCount, peer.estimateCount));
+    REQUIRE(fast.langevin.size() == peer.langevin.size());
+    for (std::size_t j = 0; j < fast.langevin.size(); ++j) {
+        CHECK(sameBits(fast.langevin[j].gammaPlus, peer.langevin[j].gammaPlus));
+        CHECK(sameBits(fast.langevin[j].gammaMinus, peer.langevin[j].gammaMinus));
+        CHECK(sameBits(fast.langevin[j].varianceForward, peer.langevin[j].varianceForward));
+        CHECK(sameBits(fast.langevin[j].varianceBackward, peer.langevin[j].varianceBackward));
+        CHECK(sameBits(fast.langevin[j].partialForward, peer.langevin[j].partialForward));
+    }
+}
+
+} // namespace
+
+TEST_CASE("cells prepared once give every M's estimate bit for bit as the per-window computation", "[km2o][exogenous]")
+{
+    ArxSimulationOptions simOptions;
+    simOptions.finalTime = 105; // the demo corpus's 106 frames: M_max = 29
+    simOptions.seed = 5;
+    const ArxSimulation sim = simulateArx(simOptions);
+    std::vector<Eigen::MatrixXd> cells = sim.cells[0];
+    SECTION("noisy cells") {}
+    SECTION("a noise-free cell (flat KM2O data for every M)")
+    {
+        for (Eigen::Index k = 1; k < cells[2].cols(); ++k) cells[2].col(k) = cells[2].col(0);
+    }
+    auto prepared = ExogenousCells::prepare(cells, 29);
+    REQUIRE(prepared.ok());
+    for (auto range : {InitialTimeRange::Full, InitialTimeRange::Thesis})
+        for (int first : {0, 1, 2})
+            for (auto average : {WindowAverage::Uniform, WindowAverage::VarianceWeighted})
+                for (int m : {0, 1, 2, 7, 29}) {
+                    ExogenousOptions options{m, first, range, average};
+                    INFO("M = " << m << ", first offset " << first << ", thesis range " << (range == InitialTimeRange::Thesis)
+                                << ", variance-weighted " << (average == WindowAverage::VarianceWeighted));
+                    auto peer = bunraku::test::reference::referenceExogenousEstimate(cells, options);
+                    auto fast = prepared->estimate(options);
+                    auto direct = estimateExogenousInputs(cells, options);
+                    REQUIRE(peer.ok() == fast.ok());
+                    REQUIRE(direct.ok() == fast.ok());
+                    if (!peer.ok()) {
+                        CHECK(fast.error().message == peer.error().message);
+                        continue;
+                    }
+                    requireSameEstimate(*fast, *peer);
+                    requireSameEstimate(*direct, *peer);
+                }
+    ExogenousOptions beyond;
+    beyond.correlationLength = 30;
+    CHECK_THAT(prepared->estimate(beyond).error().message, Catch::Contains("M_max = 29"));
+}
+
+TEST_CASE("KM2O with M chosen by P gives the components of that M given, bit for bit", "[km2o]")
+{
+    const auto known = bunraku::test::knownComponentsCorpus(106, 5, 2, 0.3);
+    auto chosen = decomposeKm2o(known.corpus);
+    REQUIRE(chosen.ok());
+    Km2oDecompositionOptions given;
+    given.correlationLength = chosen->correlationLength;
+    auto direct = decomposeKm2o(known.corpus, given);
+    REQUIRE(direct.ok());
+    CHECK(sameBits(direct->cellErrorPercent, chosen->cellErrorPercent));
+    CHECK(direct->meanCellErrorPercent == chosen->meanCellErrorPercent);
+    for (std::size_t i = 0; i < chosen->components.functions.size(); ++i)
+        CHECK(sameBits(direct->components.functions[i].values, chosen->components.functions[i].values));
+    for (std::size_t c = 0; c < chosen->components.emotions.size(); ++c)
+        CHECK(sameBits(direct->components.emotions[c].values, chosen->components.emotions[c].values));
+    for (std::size_t k = 0; k < chosen->components.fluctuations.size(); ++k)
+        CHECK(sameBits(direct->components.fluctuations[k].values, chosen->components.fluctuations[k].values));
 }

@@ -1,5 +1,6 @@
 // Forward kinematics and import checked on the real Bandai Namco BVH files
 // (../shared/data/bandai, read in place, never copied).
+#include "tests/support/shared_data.h"
 #include "analysis/core/puppet_layout.h"
 #include "analysis/io/bvh_import.h"
 #include "tests/support/test_paths.h"
@@ -37,10 +38,7 @@ TEST_CASE("bandai files parse with 22 joints, 5 end sites and 30 fps")
                                          "wave-right-hand_exhausted_003.bvh"};
     for (const auto& name : names) {
         auto file = loadBandai(name);
-        if (!file) {
-            WARN("Bandai test data not found in " << bunraku::test::bandaiDir() << "; skipping");
-            return;
-        }
+        if (!bunraku::test::requireBandaiData(file.has_value())) return;
         INFO(name);
         CHECK(file->skeleton.jointCount() == 22);
         CHECK(file->skeleton.endSiteCount() == 5);
@@ -56,10 +54,7 @@ TEST_CASE("bandai files parse with 22 joints, 5 end sites and 30 fps")
 TEST_CASE("bandai bone lengths stay constant over every frame and equal the offsets")
 {
     auto file = loadBandai("bye_happy_001.bvh");
-    if (!file) {
-        WARN("Bandai test data not found in " << bunraku::test::bandaiDir() << "; skipping");
-        return;
-    }
+    if (!bunraku::test::requireBandaiData(file.has_value())) return;
     const auto& joints = file->skeleton.joints;
     const auto first = bvhWorldPoses(*file, 0);
     for (Eigen::Index f = 0; f < file->motion.values.rows(); f += 3) {
@@ -79,10 +74,7 @@ TEST_CASE("bandai bone lengths stay constant over every frame and equal the offs
 TEST_CASE("bandai puppet takes have plausible heights and continuous angles")
 {
     auto file = loadBandai("bye_happy_001.bvh");
-    if (!file) {
-        WARN("Bandai test data not found in " << bunraku::test::bandaiDir() << "; skipping");
-        return;
-    }
+    if (!bunraku::test::requireBandaiData(file.has_value())) return;
     auto take = bvhToPuppetTake(*file);
     REQUIRE(take.ok());
     CHECK(hasPuppetLayout(*take));
@@ -116,10 +108,7 @@ TEST_CASE("in the wave files the right hand moves the most")
 {
     for (const std::string name : {"wave-right-hand_normal_001.bvh", "wave-right-hand_active_002.bvh", "bye_angry_001.bvh"}) {
         auto file = loadBandai(name);
-        if (!file) {
-            WARN("Bandai test data not found in " << bunraku::test::bandaiDir() << "; skipping");
-            return;
-        }
+        if (!bunraku::test::requireBandaiData(file.has_value())) return;
         INFO(name);
         auto take = bvhToPuppetTake(*file);
         REQUIRE(take.ok());
@@ -138,10 +127,7 @@ TEST_CASE("in the wave files the right hand moves the most")
 TEST_CASE("a bandai take keeps its whole skeleton, posed as the file's forward kinematics")
 {
     auto file = loadBandai("wave-right-hand_active_001.bvh");
-    if (!file) {
-        WARN("Bandai test data not found in " << bunraku::test::bandaiDir() << "; skipping");
-        return;
-    }
+    if (!bunraku::test::requireBandaiData(file.has_value())) return;
     auto take = bvhToPuppetTake(*file);
     REQUIRE(take.ok());
     REQUIRE(take->skeleton);

@@ -1,3 +1,4 @@
+#include "tests/support/shared_data.h"
 #include "analysis/core/pose.h"
 #include "analysis/core/puppet_layout.h"
 #include "analysis/io/bvh_export.h"
@@ -78,10 +79,7 @@ TEST_CASE("a take exported to BVH re-imports to the same world poses")
 TEST_CASE("a bandai take exported as a puppet BVH keeps its world poses")
 {
     const auto path = bunraku::test::bandaiDir() / "bye_normal_001.bvh";
-    if (!std::filesystem::exists(path)) {
-        WARN("Bandai test data not found in " << bunraku::test::bandaiDir() << "; skipping");
-        return;
-    }
+    if (!bunraku::test::requireBandaiData(std::filesystem::exists(path))) return;
     auto take = readTakeFile(path);
     REQUIRE(take.ok());
     const auto dir = bunraku::test::scratchDir("bvh_export_bandai");

@@ -20,7 +20,7 @@ namespace {
 std::optional<BvhFile> loadBandai(const std::string& name)
 {
     const auto path = bunraku::test::bandaiDir() / name;
-    if (!bunraku::test::peerPresent(std::filesystem::exists(path), "Bandai file " + path.string() + " not found")) return std::nullopt;
+    if (!bunraku::test::requirePeer(std::filesystem::exists(path), "Bandai file " + path.string() + " not found", "the shared data beside the repository (../shared/data/bandai)")) return std::nullopt;
     auto file = readBvh(path);
     REQUIRE(file.ok());
     return std::move(file).value();

@@ -1,5 +1,6 @@
 #include "analysis/core/puppet_layout.h"
 #include "analysis/io/corpus_io.h"
+#include "analysis/io/staged_folder.h"
 #include "tests/analysis/io/io_test_support.h"
 
 #include <catch2/catch.hpp>
@@ -87,7 +88,8 @@ TEST_CASE("rewriting a corpus replaces it and leaves no temporary folders")
     CHECK(entries == 1);
     int files = 0;
     for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir / "c")) ++files;
-    CHECK(files == 3);
+    CHECK(files == 4); // corpus.json, 2 takes and the manifest of the files written
+    CHECK(std::filesystem::is_regular_file(dir / "c" / kWrittenFilesManifest));
 }
 
 TEST_CASE("a failed corpus write leaves the previous corpus untouched")

@@ -104,7 +104,7 @@ TEST_CASE("glTF axes: workbench forward, left and up become +Z, +X and +Y")
 TEST_CASE("a bandai take as glTF: 22 joints in a skin, one animation with the take's times, positions in metres")
 {
     const auto path = bunraku::test::bandaiDir() / "bye_angry_001.bvh";
-    if (!bunraku::test::peerPresent(std::filesystem::exists(path), "Bandai file " + path.string() + " not found")) return;
+    if (!bunraku::test::requirePeer(std::filesystem::exists(path), "Bandai file " + path.string() + " not found", "the shared data beside the repository (../shared/data/bandai)")) return;
     auto file = readBvh(path);
     REQUIRE(file.ok());
     auto take = bvhToPuppetTake(*file);

@@ -1,5 +1,6 @@
 #include "analysis/normalise/correspondence_path.h"
 #include "analysis/normalise/feature_matching.h"
+#include "analysis/wavelet/simd_level.h"
 
 #include <catch2/catch.hpp>
 
@@ -121,7 +122,7 @@ TEST_CASE("the smooth warp is monotone and passes through the centre of every ru
     CHECK(warp[9] == Approx(9.0));
 }
 
-TEST_CASE("the streamed matcher equals the paths through the full window-cost band", "[path]")
+TEST_CASE("the matcher at every kernel level equals the paths through the full window-cost band", "[path][simd]")
 {
     // Window costs written out from their definition (thesis eq. 3.21; window indices beyond the
     // ends replicate the edge frame), then both paths; the streamed matcher (running window
@@ -144,31 +145,42 @@ TEST_CASE("the streamed matcher equals the paths through the full window-cost ba
             return sum;
         });
         for (auto path : {PathMethod::Greedy, PathMethod::Optimal}) {
-            auto streamed = matchFeatures(reference, sample, {tau, searchBand, path});
-            REQUIRE(streamed.ok());
-            const Eigen::VectorXi expected = path == PathMethod::Greedy ? greedyPath(band) : optimalPath(band);
-            INFO("trial " << trial << (path == PathMethod::Greedy ? " greedy" : " optimal"));
-            CHECK(streamed->correspondence == expected);
-            CHECK(streamed->cost == Approx(pathCost(band, expected)).epsilon(1e-9));
+            Eigen::VectorXi expected;
+            {
+                ScopedSimdLevel plain(SimdLevel::Plain);
+                expected = path == PathMethod::Greedy ? greedyPath(band) : optimalPath(band);
+            }
+            for (SimdLevel level : runnableSimdLevels()) {
+                ScopedSimdLevel scope(level);
+                auto streamed = matchFeatures(reference, sample, {tau, searchBand, path});
+                REQUIRE(streamed.ok());
+                INFO("trial " << trial << (path == PathMethod::Greedy ? " greedy" : " optimal") << ", kernels " << simdLevelName(level));
+                CHECK(streamed->correspondence == expected);
+                CHECK(streamed->cost == Approx(pathCost(band, expected)).epsilon(1e-9));
+                CHECK((path == PathMethod::Greedy ? greedyPath(band) : optimalPath(band)) == expected);
+            }
         }
     }
 }
 
-TEST_CASE("the tiled matcher gives a plain dynamic programme's path and cost on random features", "[path]")
+TEST_CASE("every kernel level gives a plain dynamic programme's path and cost on random features", "[path][simd]")
 {
     // Reference: window costs from the definition and an O(frames x band^2) dynamic programme
     // with explicit back-pointers (ties to the earliest sample frame), independent of
-    // PathBuilder. Sizes span several 64-frame tiles with a partial last one, feature counts
-    // that are not multiples of 4, bands wider than 64 columns (several words of drop bits).
+    // PathBuilder. Sizes span several 96-frame restarts of the window sums and, in the last
+    // trial, two 480-frame tiles of feature copies; feature counts that are not multiples of 4,
+    // up to a coupling set's 32; bands narrower than a vector and wider than 64 columns a
+    // quarter (several words of drop bits per quarter of the interleaved rows). Every kernel
+    // level this CPU runs.
     std::mt19937 random(17);
     std::normal_distribution<double> normal;
     const double infinity = std::numeric_limits<double>::infinity();
-    for (int trial = 0; trial < 8; ++trial) {
-        const Eigen::Index referenceFrames = 90 + trial * 47;
+    for (int trial = 0; trial < 9; ++trial) {
+        const Eigen::Index referenceFrames = trial < 8 ? 90 + trial * 47 : 530;
         const Eigen::Index sampleFrames = referenceFrames + (trial % 3) * 9 - 4;
-        const int tau = trial % 6;
-        const int searchBand = 5 + trial * 9;
-        const Eigen::Index features = 1 + trial * 5;
+        const int tau = trial < 8 ? trial % 6 : 4;
+        const int searchBand = trial < 8 ? 5 + trial * 9 : 140;
+        const Eigen::Index features = trial < 8 ? 1 + trial * 5 : 32;
         FeatureMatrix reference(referenceFrames, features), sample(sampleFrames, features);
         for (Eigen::Index i = 0; i < reference.size(); ++i) reference.data()[i] = normal(random);
         for (Eigen::Index i = 0; i < sample.size(); ++i) sample.data()[i] = normal(random);
@@ -217,14 +229,18 @@ TEST_CASE("the tiled matcher gives a plain dynamic programme's path and cost on 
         }
         INFO("trial " << trial << ": " << referenceFrames << " x " << sampleFrames << " frames, " << features
                       << " features, tau " << tau << ", T_cmp " << searchBand);
-        auto optimal = matchFeatures(reference, sample, {tau, searchBand, PathMethod::Optimal});
-        REQUIRE(optimal.ok());
-        CHECK(optimal->correspondence == expected);
-        CHECK(optimal->cost == Approx(total(referenceFrames - 1, expected[referenceFrames - 1])).epsilon(1e-9));
-        auto scanned = matchFeatures(reference, sample, {tau, searchBand, PathMethod::Greedy});
-        REQUIRE(scanned.ok());
-        CHECK(scanned->correspondence == greedy);
-        CHECK(scanned->cost == Approx(greedyCost).epsilon(1e-9));
+        for (SimdLevel level : runnableSimdLevels()) {
+            ScopedSimdLevel scope(level);
+            INFO("kernels " << simdLevelName(level));
+            auto optimal = matchFeatures(reference, sample, {tau, searchBand, PathMethod::Optimal});
+            REQUIRE(optimal.ok());
+            CHECK(optimal->correspondence == expected);
+            CHECK(optimal->cost == Approx(total(referenceFrames - 1, expected[referenceFrames - 1])).epsilon(1e-9));
+            auto scanned = matchFeatures(reference, sample, {tau, searchBand, PathMethod::Greedy});
+            REQUIRE(scanned.ok());
+            CHECK(scanned->correspondence == greedy);
+            CHECK(scanned->cost == Approx(greedyCost).epsilon(1e-9));
+        }
     }
 }
 

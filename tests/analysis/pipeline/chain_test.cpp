@@ -56,6 +56,33 @@ TEST_CASE("a parameter changes the keys of its stage and those below it, nothing
     CHECK(corpusKey(changed) != demo().key);
 }
 
+TEST_CASE("a take's motion axis is keyed by its content and the axis parameters it depends on", "[pipeline][keys]")
+{
+    const Take& take = demo().corpus->takes[4];
+    const AxisParameters base;
+    const StageKey key = takeAxisKey(takeKey(take), base);
+    AxisParameters other = base;
+    other.tau = 7; // phase matching only: not the axis
+    CHECK(takeAxisKey(takeKey(take), other) == key);
+    other.massSpacing = 2.0;
+    CHECK(takeAxisKey(takeKey(take), other) != key);
+    other = base;
+    other.frontBack = FrontBackAxis::Principal;
+    CHECK(takeAxisKey(takeKey(take), other) != key);
+    Take changed = take;
+    changed.values(3, 1) += 1e-9;
+    CHECK(takeAxisKey(takeKey(changed), base) != key);
+
+    auto axis = runTakeAxis(take, base);
+    REQUIRE(axis.ok());
+    CHECK(axis->world_T_axis.size() == std::size_t(take.frameCount()));
+    CHECK(axis->coordinates.channelCount() == 6);
+    CHECK(axis->coordinates.labels.source == "axis of " + take.displayName());
+    AxisParameters invalid = base;
+    invalid.massSpacing = 0.01;
+    CHECK_THAT(runTakeAxis(take, invalid).error().message, Catch::Contains("massSpacing"));
+}
+
 TEST_CASE("the whole chain on the demo corpus follows the thesis and reruns only what a change invalidates", "[pipeline][chain]")
 {
     StageCache cache;
@@ -140,4 +167,36 @@ TEST_CASE("a cancelled chain stops with Cancelled", "[pipeline][chain]")
     auto chain = runChain(demo(), {}, nullptr, options);
     REQUIRE_FALSE(chain.ok());
     CHECK(chain.error().code == ErrorCode::Cancelled);
+}
+
+TEST_CASE("the axis stage's per-scale approximation error has the shape of Fig. 5.16", "[pipeline][approximation]")
+{
+    const ChainParameters parameters;
+    auto preprocessed = preprocessStage(demo(), parameters.preprocess, nullptr);
+    REQUIRE(preprocessed.ok());
+    auto normalised = normaliseStage(chainKeys(demo().key, parameters).preprocess, **preprocessed, parameters.normalise, nullptr);
+    REQUIRE(normalised.ok());
+    auto axes = axisStage(chainKeys(demo().key, parameters).normalise, **normalised, "none", parameters.axis, nullptr);
+    REQUIRE(axes.ok());
+    REQUIRE((*axes)->cells.size() == 4);
+    for (const CellAxis& cell : (*axes)->cells) {
+        INFO(cell.function << "/" << cell.emotion);
+        const ApproximationError& error = cell.approximation;
+        REQUIRE(error.scales.size() == 16);
+        REQUIRE(error.relativeError.rows() == 16);
+        REQUIRE(error.relativeError.cols() == 6);
+        CHECK(error.relativeError.allFinite());
+        // falling with the largest scale (thesis: "the approximations grow alike as the scale grows")
+        for (Eigen::Index c = 1; c < 16; ++c) CHECK(error.meanRelativeError[c] <= error.meanRelativeError[c - 1] + 1e-12);
+        CHECK(error.meanRelativeError[15] < error.meanRelativeError[0]);
+        // ... but not to nothing: the emotional axis differs in its slow parts (the amplitude
+        // component), so some DOF stay far apart at scale 16 - why 5.4.2 turns to Fourier series
+        CHECK(error.relativeError.row(15).maxCoeff() > 0.1);
+        // scale 1's approximation is nearly the signal: its error is the relative difference of the axes
+        const Eigen::MatrixXd& functional = (*axes)->function(cell.function)->basis->coordinates;
+        const Eigen::MatrixXd& emotional = cell.extracted.emotionalOnFunctionalTime;
+        for (Eigen::Index q = 0; q < 6; ++q)
+            CHECK(error.relativeError(0, q) ==
+                  Approx((emotional.col(q) - functional.col(q)).norm() / functional.col(q).norm()).epsilon(0.1));
+    }
 }

@@ -115,7 +115,8 @@ TEST_CASE("reading a damaged ground truth names the file and line", "[synth]")
         std::filesystem::remove(folder / "truth.json");
         const auto back = readGroundTruth(folder);
         REQUIRE_FALSE(back.ok());
-        CHECK(back.error().code == ErrorCode::Io);
+        CHECK(back.error().code == ErrorCode::NotFound);
+        CHECK(back.error().message.find("truth.json") != std::string::npos);
     }
     SECTION("a manifest of another format")
     {

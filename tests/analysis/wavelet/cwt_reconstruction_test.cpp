@@ -87,3 +87,23 @@ TEST_CASE("reconstruction rejects unsorted scales", "[cwt][approximation]")
     REQUIRE_FALSE(result.ok());
     CHECK(result.error().message.find("increasing") != std::string::npos);
 }
+
+TEST_CASE("the scales' separate terms sum to the reconstruction; nested integer scales share them")
+{
+    Eigen::VectorXd x(106);
+    for (Eigen::Index t = 0; t < x.size(); ++t) x[t] = std::sin(0.69 * double(t)) + 0.5 * std::cos(0.17 * double(t)) + 3.0;
+    std::vector<double> scales;
+    for (int c = 1; c <= 16; ++c) scales.push_back(c);
+    auto parts = cwtScaleContributions(x, scales);
+    REQUIRE(parts.ok());
+    REQUIRE(parts->rows() == 106);
+    REQUIRE(parts->cols() == 16);
+    auto whole = cwtReconstruction(x, scales);
+    REQUIRE(whole.ok());
+    CHECK((parts->rowwise().sum() - *whole).cwiseAbs().maxCoeff() < 1e-12);
+    // scales 1..5: every share is 1, so the approximation is x minus the first 5 terms
+    auto approximation = cwtApproximation(x, {1, 2, 3, 4, 5});
+    REQUIRE(approximation.ok());
+    CHECK((x - parts->leftCols(5).rowwise().sum() - *approximation).cwiseAbs().maxCoeff() < 1e-12);
+    CHECK(cwtScaleContributions(x, {2, 1}).error().code == ErrorCode::InvalidArgument);
+}

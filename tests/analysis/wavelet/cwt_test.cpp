@@ -1,3 +1,4 @@
+#include "tests/support/peer.h"
 #include "analysis/wavelet/cwt.h"
 
 #include "tests/analysis/wavelet/pywt_peer.h"
@@ -133,10 +134,9 @@ TEST_CASE("cwt coefficients match pywt on several signals and wavelets", "[cwt][
         "    c = np.array(rows)\n"
         "print(' '.join(repr(float(v)) for v in c.ravel()))";
     const auto theirs = bunraku::test::runPywt("cwt-" + name + std::to_string(kind), script);
-    if (!theirs) {
-        WARN("/usr/bin/python3 with pywt is missing: peer comparison skipped");
+    if (!bunraku::test::requirePeer(theirs.has_value(), "python3-pywt (/usr/bin/python3 with pywt) for the peer comparison",
+                                    "apt-get install python3-pywt"))
         return;
-    }
     CwtOptions options;
     options.wavelet = *waveletByName(name);
     const auto ours = cwt(toEigen(signal), scales, options);

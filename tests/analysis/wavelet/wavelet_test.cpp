@@ -1,3 +1,4 @@
+#include "tests/support/peer.h"
 #include "analysis/wavelet/wavelet.h"
 
 #include "tests/analysis/wavelet/pywt_peer.h"
@@ -65,10 +66,9 @@ TEST_CASE("sampled and integrated wavelets match pywt's wavefun and integrate_wa
         "psi, x = f[-2], f[-1]\n"
         "ip, ix = pywt.integrate_wavelet('" + name + "', precision=10)\n"
         "print(len(psi)); print(' '.join(repr(float(v)) for v in np.concatenate([x, psi, ip])))");
-    if (!theirs) {
-        WARN("/usr/bin/python3 with pywt is missing: peer comparison skipped");
+    if (!bunraku::test::requirePeer(theirs.has_value(), "python3-pywt (/usr/bin/python3 with pywt) for the peer comparison",
+                                    "apt-get install python3-pywt"))
         return;
-    }
     INFO(name);
     const auto count = std::size_t((*theirs)[0]);
     REQUIRE(Eigen::Index(count) == ours.psi.size());
@@ -83,10 +83,9 @@ TEST_CASE("centre frequencies match pywt and sym3's is 0.8", "[wavelet][peer]")
     CHECK(scaleToFrequency(sym3Wavelet(), 8.0, 0.2) == Approx(0.8 / 8.0 / 0.2));
     const auto theirs = bunraku::test::runPywt(
         "centfrq", "print(' '.join(repr(pywt.central_frequency(n)) for n in ['sym3','db2','sym6','mexh','morl']))");
-    if (!theirs) {
-        WARN("/usr/bin/python3 with pywt is missing: peer comparison skipped");
+    if (!bunraku::test::requirePeer(theirs.has_value(), "python3-pywt (/usr/bin/python3 with pywt) for the peer comparison",
+                                    "apt-get install python3-pywt"))
         return;
-    }
     const std::vector<std::string> names{"sym3", "db2", "sym6", "mexh", "morl"};
     for (std::size_t i = 0; i < names.size(); ++i) {
         INFO(names[i]);

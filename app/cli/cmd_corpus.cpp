@@ -1,0 +1,103 @@
+// Subcommand: corpus (a corpus folder from take files, labels parsed from their names).
+#include "app/cli/commands.h"
+#include "app/cli/import_options.h"
+
+#include "analysis/io/corpus_builder.h"
+#include "analysis/io/corpus_io.h"
+
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+
+namespace bunraku::app::cli {
+namespace {
+
+namespace fs = std::filesystem;
+namespace io = analysis::io;
+using nlohmann::json;
+
+struct CorpusArguments {
+    std::vector<std::string> inputs;
+    std::string output;
+    std::string pattern = io::kDefaultLabelPattern;
+    std::string neutral;
+    std::string name;
+    double resampleHz = 0.0;
+    bool json = false;
+    ImportArguments import;
+};
+
+void runCorpus(const CorpusArguments& arguments)
+{
+    std::vector<fs::path> inputs(arguments.inputs.begin(), arguments.inputs.end());
+    const auto files = unwrap(io::collectTakeFiles(inputs));
+    const auto sources = unwrap(io::labelTakeFiles(files, arguments.pattern));
+    io::CorpusBuildOptions options;
+    options.import = importOptions(arguments.import);
+    options.neutralEmotion = arguments.neutral;
+    options.rateHz = arguments.resampleHz;
+    options.name = arguments.name.empty() ? fs::absolute(arguments.output).lexically_normal().filename().string() : arguments.name;
+    if (arguments.resampleHz < 0.0) throw CliError("--resample must be a positive number of Hz");
+    io::CorpusBuild build = unwrap(io::buildCorpus(sources, options));
+    unwrap(io::writeCorpus(build.corpus, arguments.output));
+
+    const auto& corpus = build.corpus;
+    if (arguments.json) {
+        json takes = json::array();
+        for (const auto& f : build.files)
+            takes.push_back({{"file", f.file.string()},
+                             {"function", f.labels.function},
+                             {"emotion", f.labels.emotion},
+                             {"take", f.labels.takeIndex},
+                             {"frames", f.frames},
+                             {"rate_hz", f.rateHz},
+                             {"frames_in_corpus", f.framesInCorpus},
+                             {"resampled", f.resampled},
+                             {"part_map", f.partMap}});
+        printJson({{"output", arguments.output},
+                   {"name", corpus.name},
+                   {"pattern", arguments.pattern},
+                   {"rate_hz", corpus.rateHz},
+                   {"functions", corpus.functions()},
+                   {"emotions", corpus.emotions()},
+                   {"neutral_emotion", corpus.neutralEmotion},
+                   {"takes", takes},
+                   {"notes", build.notes}});
+        return;
+    }
+    std::cout << "corpus '" << corpus.name << "': " << corpus.takes.size() << " takes, " << corpus.functions().size() << " function(s), "
+              << corpus.emotions().size() << " emotion(s), " << corpus.rateHz << " Hz -> " << arguments.output << "\n";
+    std::cout << "  " << std::left << std::setw(40) << "file" << std::setw(20) << "function" << std::setw(12) << "emotion" << std::right
+              << std::setw(5) << "take" << std::setw(8) << "frames" << std::setw(8) << "Hz" << "  part map\n";
+    for (const auto& f : build.files)
+        std::cout << "  " << std::left << std::setw(40) << f.file.filename().string() << std::setw(20) << f.labels.function << std::setw(12)
+                  << f.labels.emotion << std::right << std::setw(5) << f.labels.takeIndex << std::setw(8) << f.frames << std::setw(8)
+                  << f.rateHz << "  " << (f.partMap.empty() ? std::string("-") : f.partMap) << (f.resampled ? "  (resampled)" : "")
+                  << "\n";
+    for (const auto& note : build.notes) std::cout << "note: " << note << "\n";
+}
+
+} // namespace
+
+void addCorpusCommands(CommandSet& commands)
+{
+    auto arguments = std::make_shared<CorpusArguments>();
+    CLI::App* command = commands.root.add_subcommand(
+        "corpus", "Make a corpus folder from take files (BVH, CSV, FASTRAK) or folders of them: labels from the file names, each "
+                  "file's part map reported, takes resampled to one rate when their rates differ");
+    command->add_option("INPUTS", arguments->inputs, "Take files and/or folders of take files")->required();
+    command->add_option("-o,--output", arguments->output, "Corpus folder to write")->required();
+    command->add_option("--pattern", arguments->pattern,
+                        "File-name pattern: {function}, {emotion}, {take} (digits), {any}; other characters literal, e.g. "
+                        "'{any}_{function}_{emotion}_{take}' for dataset-2_wave-right-hand_active_003.bvh")
+        ->capture_default_str();
+    command->add_option("--neutral", arguments->neutral, "The emotion label meaning 'no emotion' (default: neutral, normal or none)");
+    command->add_option("--name", arguments->name, "The corpus's name (default: the output folder's name)");
+    command->add_option("--resample", arguments->resampleHz, "Rate of the corpus in Hz (default: the rate most files have)");
+    command->add_flag("--json", arguments->json, "Print a machine-readable summary");
+    addImportOptions(command, arguments->import);
+    command->callback([arguments] { runCorpus(*arguments); });
+}
+
+} // namespace bunraku::app::cli

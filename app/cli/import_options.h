@@ -1,0 +1,31 @@
+#pragma once
+/// Import options shared by the commands that read take files (info, convert, corpus): the BVH
+/// part map (--joints, --joint-map, --side), axes and units (--up-axis, --units), the layout
+/// (--all-joints) and the rates of CSV and FASTRAK files.
+#include "app/cli/cli.h"
+
+#include "analysis/io/take_reader.h"
+
+#include <optional>
+#include <string>
+
+namespace bunraku::app::cli {
+
+struct ImportArguments {
+    std::string joints;
+    std::string jointMapFile;
+    std::string side = "right";
+    std::string upAxis = "auto";
+    std::string units = "auto";
+    bool allJoints = false;
+    std::optional<double> rateHz; ///< --rate, when given
+    std::string fastrakUnits = "cm";
+};
+
+/// Registers the options on `command`; `withLayout` adds --all-joints.
+void addImportOptions(CLI::App* command, ImportArguments& arguments, bool withLayout = true);
+/// The library options the arguments stand for (CliError on a bad joint map or rate; `path`,
+/// the file they are for, names it in the error).
+analysis::io::ImportOptions importOptions(const ImportArguments& arguments, const std::string& path = {});
+
+} // namespace bunraku::app::cli

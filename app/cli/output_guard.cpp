@@ -1,0 +1,58 @@
+#include "app/cli/output_guard.h"
+
+#include "app/cli/cli.h"
+
+#include <filesystem>
+#include <system_error>
+
+namespace bunraku::app::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// The path with links in its existing part resolved, "." and ".." removed.
+fs::path resolved(const fs::path& path)
+{
+    std::error_code ec;
+    fs::path out = fs::weakly_canonical(fs::absolute(path, ec), ec);
+    if (ec) out = fs::absolute(path, ec).lexically_normal();
+    if (out.filename().empty() && out.has_parent_path() && out != out.root_path()) out = out.parent_path();
+    return out;
+}
+
+/// True when `inner` is `outer` or lies inside it.
+bool within(const fs::path& inner, const fs::path& outer)
+{
+    auto a = outer.begin(), b = inner.begin();
+    for (; a != outer.end(); ++a, ++b)
+        if (b == inner.end() || *a != *b) return false;
+    return true;
+}
+
+bool sameFile(const fs::path& a, const fs::path& b)
+{
+    std::error_code ec;
+    if (fs::exists(a, ec) && fs::exists(b, ec) && fs::equivalent(a, b, ec)) return true; // hard links too
+    return resolved(a) == resolved(b);
+}
+
+} // namespace
+
+void refuseOutputOverInputs(const std::string& output, OutputKind kind, const std::vector<std::string>& inputs,
+                            const std::string& option)
+{
+    if (output.empty()) return;
+    const fs::path out = resolved(output);
+    for (const std::string& input : inputs) {
+        if (input.empty() || input.rfind("demo:", 0) == 0) continue;
+        const fs::path in = resolved(input);
+        if (sameFile(output, input))
+            throw CliError(output + ": " + option + " is the input " + input +
+                           ", which writing would destroy: choose another output");
+        if (kind == OutputKind::Folder && within(in, out))
+            throw CliError(output + ": " + option + " is a folder holding the input " + input +
+                           ", which replacing it would destroy: choose another output folder");
+    }
+}
+
+} // namespace bunraku::app::cli

@@ -1,0 +1,105 @@
+#include "app/file_dialogs.h"
+
+#include "app/document.h"
+
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QRegularExpression>
+#include <QSettings>
+
+namespace bunraku::app {
+
+namespace {
+
+const QString kLastFolderKey = QStringLiteral("folders/last");
+
+FileChooser& chooser()
+{
+    static FileChooser instance;
+    return instance;
+}
+
+bool existingFolder(const QString& folder) { return !folder.isEmpty() && QFileInfo(folder).isDir(); }
+
+} // namespace
+
+QString purposeKey(FilePurpose purpose)
+{
+    switch (purpose) {
+    case FilePurpose::Corpus: return QStringLiteral("folders/corpus");
+    case FilePurpose::Project: return QStringLiteral("folders/project");
+    case FilePurpose::ImportTake: return QStringLiteral("folders/import");
+    case FilePurpose::ExportTake: return QStringLiteral("folders/exportTake");
+    case FilePurpose::Screenshot: return QStringLiteral("folders/screenshot");
+    case FilePurpose::Report: return QStringLiteral("folders/report");
+    case FilePurpose::Video: return QStringLiteral("folders/video");
+    case FilePurpose::VideoFrames: return QStringLiteral("folders/videoFrames");
+    }
+    return kLastFolderKey;
+}
+
+QString rememberedFolder(FilePurpose purpose, const QString& projectFile)
+{
+    const QSettings settings;
+    for (const QString& key : {purposeKey(purpose), kLastFolderKey}) {
+        const QString folder = settings.value(key).toString();
+        if (existingFolder(folder)) return folder;
+    }
+    if (!projectFile.isEmpty() && existingFolder(QFileInfo(projectFile).absolutePath())) return QFileInfo(projectFile).absolutePath();
+    return QDir::homePath();
+}
+
+void rememberFolder(FilePurpose purpose, const QString& path)
+{
+    if (path.isEmpty()) return;
+    const QString folder = QFileInfo(path).absolutePath(); // a file's folder, or a folder's parent
+    QSettings settings;
+    settings.setValue(purposeKey(purpose), folder);
+    settings.setValue(kLastFolderKey, folder);
+}
+
+QString suggestedFileName(const Document& document, const QString& suffix, NameParts parts)
+{
+    const QString source = document.corpusSource();
+    QString name = source == QStringLiteral("demo") ? QStringLiteral("demo") : QFileInfo(source).fileName();
+    const QString take = document.takeLabel(document.selectedId(TakeSlot::A));
+    if (!take.isEmpty() && parts == NameParts::CorpusAndTakeA) name += QLatin1Char('-') + take;
+    // Letters, digits, '.', '_' and '-' only; runs of anything else become one '-'.
+    static const QRegularExpression unsafe(QStringLiteral("[^A-Za-z0-9._-]+"));
+    name.replace(unsafe, QStringLiteral("-"));
+    while (name.startsWith(QLatin1Char('-')) || name.startsWith(QLatin1Char('.'))) name.remove(0, 1);
+    while (name.endsWith(QLatin1Char('-'))) name.chop(1);
+    if (name.size() > 120) name.truncate(120);
+    if (name.isEmpty()) name = QStringLiteral("bunraku");
+    return name + suffix;
+}
+
+void setFileChooser(FileChooser replacement) { chooser() = std::move(replacement); }
+
+QString chooseSaveFile(QWidget* parent, FilePurpose purpose, const QString& title, const QString& suggestedName,
+                       const QString& filter, const QString& projectFile)
+{
+    const QString start = QDir(rememberedFolder(purpose, projectFile)).filePath(suggestedName);
+    const QString file = chooser() ? chooser()(purpose, start) : QFileDialog::getSaveFileName(parent, title, start, filter);
+    rememberFolder(purpose, file);
+    return file;
+}
+
+QString chooseOpenFile(QWidget* parent, FilePurpose purpose, const QString& title, const QString& filter, const QString& projectFile)
+{
+    const QString start = rememberedFolder(purpose, projectFile);
+    const QString file = chooser() ? chooser()(purpose, start) : QFileDialog::getOpenFileName(parent, title, start, filter);
+    rememberFolder(purpose, file);
+    return file;
+}
+
+QString chooseFolder(QWidget* parent, FilePurpose purpose, const QString& title, const QString& projectFile)
+{
+    const QString start = rememberedFolder(purpose, projectFile);
+    const QString folder = chooser() ? chooser()(purpose, start) : QFileDialog::getExistingDirectory(parent, title, start);
+    rememberFolder(purpose, folder);
+    return folder;
+}
+
+} // namespace bunraku::app

@@ -1,0 +1,51 @@
+#pragma once
+/// The workbench's file dialogs: each purpose (open a corpus, save a project, a screenshot, the
+/// report, a video...) opens in the folder last chosen for it - else the folder last chosen for
+/// anything, else the open project's folder, else the home folder (never a folder such as
+/// ~/Videos the person never went to) - and save dialogs suggest a name made of what is shown
+/// ("demo-greeting-none-2.png"). Folders are kept in QSettings ("folders/<purpose>").
+///
+/// Tests (and scripted runs) replace the dialogs with setFileChooser: it receives the purpose
+/// and the path the dialog would have started at, and returns the chosen path ("" = cancel).
+
+#include <QString>
+
+#include <functional>
+
+class QWidget;
+
+namespace bunraku::app {
+
+class Document;
+
+enum class FilePurpose { Corpus, Project, ImportTake, ExportTake, Screenshot, Report, Video, VideoFrames };
+
+/// The settings key of a purpose's folder: "folders/screenshot".
+QString purposeKey(FilePurpose purpose);
+/// The folder a dialog for `purpose` starts in (see the file comment); `projectFile` is the open
+/// project, if any.
+QString rememberedFolder(FilePurpose purpose, const QString& projectFile = {});
+/// Remembers the folder holding `path` (a file, or a chosen folder: its parent, where its
+/// siblings are) for `purpose` and as the last folder of all.
+void rememberFolder(FilePurpose purpose, const QString& path);
+
+/// What a suggested name is made of.
+enum class NameParts { CorpusAndTakeA, Corpus };
+/// A file name (without folder) for what the document shows: the corpus ("demo" or the corpus
+/// folder's name) and take A's label, made safe for file systems, then `suffix` (".png").
+QString suggestedFileName(const Document& document, const QString& suffix, NameParts parts = NameParts::CorpusAndTakeA);
+
+/// Replaces the dialogs (null restores them).
+using FileChooser = std::function<QString(FilePurpose purpose, const QString& start)>;
+void setFileChooser(FileChooser chooser);
+
+/// A save dialog starting at rememberedFolder/`suggestedName`; remembers the chosen folder.
+QString chooseSaveFile(QWidget* parent, FilePurpose purpose, const QString& title, const QString& suggestedName,
+                       const QString& filter, const QString& projectFile = {});
+/// An open dialog starting in rememberedFolder; remembers the chosen folder.
+QString chooseOpenFile(QWidget* parent, FilePurpose purpose, const QString& title, const QString& filter,
+                       const QString& projectFile = {});
+/// A folder dialog starting in rememberedFolder; remembers the chosen folder's parent.
+QString chooseFolder(QWidget* parent, FilePurpose purpose, const QString& title, const QString& projectFile = {});
+
+} // namespace bunraku::app

@@ -1,0 +1,345 @@
+#include "app/new_corpus_dialog.h"
+
+#include "app/joint_map_dialog.h"
+
+#include "analysis/io/bvh_joint_map.h"
+
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QDoubleSpinBox>
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMimeData>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+#include <map>
+#include <set>
+
+namespace bunraku::app {
+namespace {
+
+namespace io = analysis::io;
+
+constexpr int kEditedRole = Qt::UserRole + 1; ///< set on cells the user changed: relabelling keeps them
+
+std::filesystem::path toPath(const QString& file) { return std::filesystem::path(file.toStdString()); }
+
+} // namespace
+
+NewCorpusDialog::NewCorpusDialog(QWidget* parent) : QDialog(parent)
+{
+    setWindowTitle(tr("New Corpus from Files"));
+    setAcceptDrops(true);
+    auto* addFiles = new QPushButton(tr("Add Files..."), this);
+    auto* addFolder = new QPushButton(tr("Add Folder..."), this);
+    auto* clear = new QPushButton(tr("Clear"), this);
+    connect(addFiles, &QPushButton::clicked, this, [this] {
+        addInputs(QFileDialog::getOpenFileNames(this, tr("Take files"), {}, tr("Takes (*.bvh *.csv *.txt *.fastrak *.fst)")));
+    });
+    connect(addFolder, &QPushButton::clicked, this, [this] {
+        const QString folder = QFileDialog::getExistingDirectory(this, tr("Folder of take files"));
+        if (!folder.isEmpty()) addInputs({folder});
+    });
+    connect(clear, &QPushButton::clicked, this, [this] {
+        m_files.clear();
+        m_starts.clear();
+        m_table->setRowCount(0);
+        validate();
+    });
+
+    m_pattern = new QLineEdit(QString::fromLatin1(io::kDefaultLabelPattern), this);
+    m_pattern->setToolTip(tr("How the file names read: {function}, {emotion}, {take} (digits) and {any}; other characters as "
+                             "written. E.g. {any}_{function}_{emotion}_{take} for dataset-2_wave-right-hand_active_003.bvh"));
+    connect(m_pattern, &QLineEdit::textChanged, this, &NewCorpusDialog::relabel);
+
+    m_table = new QTableWidget(0, ColumnCount, this);
+    m_table->setHorizontalHeaderLabels({tr("File"), tr("Function"), tr("Emotion"), tr("Take"), tr("Part map")});
+    m_table->horizontalHeader()->setSectionResizeMode(MapColumn, QHeaderView::Stretch);
+    m_table->setWordWrap(false);
+    m_table->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_table->setMinimumSize(720, 260);
+    connect(m_table, &QTableWidget::itemChanged, this, [this](QTableWidgetItem* item) {
+        if (m_filling) return;
+        item->setData(kEditedRole, true);
+        validate();
+    });
+
+    m_joints = new QLineEdit(this);
+    m_joints->setPlaceholderText(tr("automatic (names, then the skeleton's shape)"));
+    m_joints->setToolTip(tr("One part map for every BVH file: head=...,shoulder=...,arm=...,hand=... (parts not named are automatic)"));
+    connect(m_joints, &QLineEdit::textChanged, this, &NewCorpusDialog::remap);
+    auto* chooseMap = new QPushButton(tr("Joint Map..."), this);
+    connect(chooseMap, &QPushButton::clicked, this, &NewCorpusDialog::chooseJointMap);
+    m_side = new QComboBox(this);
+    m_side->addItems({tr("Right arm and hand"), tr("Left arm and hand")});
+    connect(m_side, &QComboBox::currentIndexChanged, this, &NewCorpusDialog::remap);
+    m_neutral = new QComboBox(this);
+    m_neutral->setToolTip(tr("The emotion meaning 'no emotion'; automatic: neutral, normal or none when present, else the first"));
+    connect(m_neutral, &QComboBox::currentIndexChanged, this, &NewCorpusDialog::validate);
+    m_rate = new QDoubleSpinBox(this);
+    m_rate->setRange(0.0, 1000000.0);
+    m_rate->setDecimals(3);
+    m_rate->setSpecialValueText(tr("automatic (the rate most files have)"));
+    m_rate->setSuffix(tr(" Hz"));
+    m_output = new QLineEdit(this);
+    connect(m_output, &QLineEdit::textChanged, this, &NewCorpusDialog::validate);
+    auto* browse = new QPushButton(tr("Browse..."), this);
+    connect(browse, &QPushButton::clicked, this, [this] {
+        const QString folder = QFileDialog::getSaveFileName(this, tr("Corpus folder to create"), m_output->text());
+        if (!folder.isEmpty()) m_output->setText(folder);
+    });
+
+    auto* inputs = new QHBoxLayout;
+    inputs->addWidget(addFiles);
+    inputs->addWidget(addFolder);
+    inputs->addWidget(clear);
+    inputs->addStretch(1);
+    inputs->addWidget(new QLabel(tr("or drop files and folders here"), this));
+    auto* joints = new QHBoxLayout;
+    joints->addWidget(m_joints, 1);
+    joints->addWidget(chooseMap);
+    auto* output = new QHBoxLayout;
+    output->addWidget(m_output, 1);
+    output->addWidget(browse);
+    auto* form = new QFormLayout;
+    form->addRow(tr("File names"), m_pattern);
+    form->addRow(tr("Part map"), joints);
+    form->addRow(tr("Side"), m_side);
+    form->addRow(tr("Neutral emotion"), m_neutral);
+    form->addRow(tr("Rate"), m_rate);
+    form->addRow(tr("Corpus folder"), output);
+    m_message = new QLabel(this);
+    m_message->setWordWrap(true);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Cancel, this);
+    m_create = buttons->addButton(tr("Create Corpus"), QDialogButtonBox::AcceptRole);
+    connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(inputs);
+    layout->addWidget(m_table, 1);
+    layout->addLayout(form);
+    layout->addWidget(m_message);
+    layout->addWidget(buttons);
+    validate();
+}
+
+void NewCorpusDialog::addInputs(const QStringList& paths)
+{
+    std::vector<std::filesystem::path> inputs;
+    for (const QString& path : paths) inputs.push_back(toPath(path));
+    if (inputs.empty()) return;
+    auto files = io::collectTakeFiles(inputs);
+    if (!files) {
+        m_message->setText(QString::fromStdString(files.error().message));
+        return;
+    }
+    std::set<std::filesystem::path> known(m_files.begin(), m_files.end());
+    m_filling = true;
+    for (const auto& file : *files) {
+        if (!known.insert(file).second) continue;
+        m_files.push_back(file);
+        const int row = m_table->rowCount();
+        m_table->insertRow(row);
+        auto* name = new QTableWidgetItem(QString::fromStdString(file.filename().string()));
+        name->setFlags(name->flags() & ~Qt::ItemIsEditable);
+        name->setToolTip(QString::fromStdString(file.string()));
+        m_table->setItem(row, FileColumn, name);
+        for (int column : {FunctionColumn, EmotionColumn, TakeColumn}) m_table->setItem(row, column, new QTableWidgetItem);
+        auto* map = new QTableWidgetItem;
+        map->setFlags(map->flags() & ~Qt::ItemIsEditable);
+        m_table->setItem(row, MapColumn, map);
+    }
+    m_filling = false;
+    if (m_output->text().isEmpty() && !m_files.empty())
+        m_output->setText(QString::fromStdString((std::filesystem::absolute(m_files.front()).lexically_normal().parent_path() / "corpus").string()));
+    relabel();
+    remap();
+    for (int column : {FileColumn, FunctionColumn, EmotionColumn, TakeColumn}) m_table->resizeColumnToContents(column);
+}
+
+void NewCorpusDialog::setPattern(const QString& pattern) { m_pattern->setText(pattern); }
+void NewCorpusDialog::setOutputFolder(const QString& folder) { m_output->setText(folder); }
+QString NewCorpusDialog::outputFolder() const { return m_output->text(); }
+
+void NewCorpusDialog::relabel()
+{
+    const std::string pattern = m_pattern->text().toStdString();
+    const bool valid = io::checkLabelPattern(pattern).ok();
+    m_filling = true;
+    std::map<std::pair<QString, QString>, int> next;
+    std::vector<int> unnumbered;
+    for (int row = 0; row < m_table->rowCount(); ++row) {
+        const auto labels = valid ? io::parseTakeLabels(m_files[std::size_t(row)].stem().string(), pattern) : std::nullopt;
+        const QString values[3] = {labels ? QString::fromStdString(labels->function) : QString(),
+                                   labels ? QString::fromStdString(labels->emotion.empty() ? std::string("none") : labels->emotion) : QString(),
+                                   labels && labels->takeIndex > 0 ? QString::number(labels->takeIndex) : QString()};
+        for (int k = 0; k < 3; ++k) {
+            QTableWidgetItem* item = m_table->item(row, FunctionColumn + k);
+            if (!item->data(kEditedRole).toBool()) item->setText(values[k]);
+        }
+        const QString function = m_table->item(row, FunctionColumn)->text();
+        const QString emotion = m_table->item(row, EmotionColumn)->text();
+        bool numbered = false;
+        const int take = m_table->item(row, TakeColumn)->text().toInt(&numbered);
+        if (numbered) next[{function, emotion}] = std::max(next[{function, emotion}], take);
+        else if (labels && !m_table->item(row, TakeColumn)->data(kEditedRole).toBool()) unnumbered.push_back(row);
+    }
+    // Takes without an index in the name: 1, 2, ... in file order within their cell.
+    for (int row : unnumbered) {
+        const auto key = std::make_pair(m_table->item(row, FunctionColumn)->text(), m_table->item(row, EmotionColumn)->text());
+        m_table->item(row, TakeColumn)->setText(QString::number(++next[key]));
+    }
+    m_filling = false;
+    validate();
+}
+
+void NewCorpusDialog::remap()
+{
+    std::optional<io::JointMap> given;
+    if (!m_joints->text().trimmed().isEmpty()) {
+        auto parsed = io::parseJointMap(m_joints->text().toStdString());
+        if (parsed) given = parsed.value();
+    }
+    io::PartMapOptions options;
+    options.side = m_side->currentIndex() == 1 ? analysis::BodySide::Left : analysis::BodySide::Right;
+    m_filling = true;
+    for (int row = 0; row < m_table->rowCount(); ++row) {
+        const auto& file = m_files[std::size_t(row)];
+        QTableWidgetItem* item = m_table->item(row, MapColumn);
+        if (io::takeFileFormat(file) != io::TakeFileFormat::Bvh) {
+            item->setText(tr("(not a BVH file: its parts as they are)"));
+            item->setData(Qt::UserRole, QString());
+            continue;
+        }
+        auto& start = m_starts[file];
+        if (!start.first && start.second.isEmpty()) {
+            auto read = io::readBvhStart(file, 1);
+            if (read) start.first = std::move(read).value();
+            else start.second = QString::fromStdString(read.error().message);
+        }
+        auto map = start.first ? io::mapPuppetParts(*start.first, given, options) : analysis::Result<io::PartMap>(analysis::Error{});
+        const QString error = start.first ? (map ? QString() : QString::fromStdString(map.error().message)) : start.second;
+        item->setText(error.isEmpty() ? QString::fromStdString(map->describe()) : error);
+        item->setForeground(error.isEmpty() ? palette().text() : QBrush(QColor(0xb0, 0x00, 0x20)));
+        item->setData(Qt::UserRole, error); // non-empty: this file cannot be mapped
+    }
+    m_filling = false;
+    validate();
+}
+
+void NewCorpusDialog::chooseJointMap()
+{
+    for (const auto& file : m_files) {
+        if (io::takeFileFormat(file) != io::TakeFileFormat::Bvh) continue;
+        auto start = io::readBvhStart(file, 1);
+        if (!start) {
+            m_message->setText(QString::fromStdString(start.error().message));
+            return;
+        }
+        JointMapDialog dialog(*start, QString::fromStdString(file.filename().string()), this);
+        if (dialog.exec() != QDialog::Accepted) return;
+        m_side->setCurrentIndex(dialog.side() == analysis::BodySide::Left ? 1 : 0);
+        m_joints->setText(dialog.jointMapText());
+        return;
+    }
+    m_message->setText(tr("No BVH file to map."));
+}
+
+void NewCorpusDialog::validate()
+{
+    m_problem.clear();
+    const auto fail = [this](const QString& problem) {
+        if (m_problem.isEmpty()) m_problem = problem;
+    };
+    if (m_files.empty()) fail(tr("Add take files or a folder of them."));
+    if (auto pattern = io::checkLabelPattern(m_pattern->text().toStdString()); !pattern) fail(QString::fromStdString(pattern.error().message));
+    if (!m_joints->text().trimmed().isEmpty())
+        if (auto map = io::parseJointMap(m_joints->text().toStdString()); !map) fail(QString::fromStdString(map.error().message));
+    std::map<std::tuple<QString, QString, int>, QString> seen;
+    QStringList emotions;
+    for (int row = 0; row < m_table->rowCount(); ++row) {
+        const QString file = m_table->item(row, FileColumn)->text();
+        const QString function = m_table->item(row, FunctionColumn)->text().trimmed();
+        const QString emotion = m_table->item(row, EmotionColumn)->text().trimmed();
+        bool number = false;
+        const int take = m_table->item(row, TakeColumn)->text().toInt(&number);
+        if (function.isEmpty() || emotion.isEmpty())
+            fail(tr("%1: the name does not match the pattern; type its function and emotion in the table.").arg(file));
+        else if (!number || take < 1)
+            fail(tr("%1: the take must be a whole number from 1.").arg(file));
+        else if (const auto [it, added] = seen.emplace(std::make_tuple(function, emotion, take), file); !added)
+            fail(tr("%1 and %2 both have the labels %3/%4/%5.").arg(it->second, file, function, emotion).arg(take));
+        if (!emotion.isEmpty() && !emotions.contains(emotion)) emotions << emotion;
+        if (const QString mapError = m_table->item(row, MapColumn)->data(Qt::UserRole).toString(); !mapError.isEmpty()) fail(mapError);
+    }
+    if (m_output->text().trimmed().isEmpty()) {
+        fail(tr("Choose the corpus folder to create."));
+    } else {
+        // The nearest existing folder above the output must be writable (shared data often is not).
+        QFileInfo parent(QFileInfo(m_output->text().trimmed()).absolutePath());
+        while (!parent.exists() && !parent.isRoot()) parent = QFileInfo(parent.absolutePath());
+        if (!parent.isWritable()) fail(tr("%1 cannot be written: choose another corpus folder.").arg(parent.absoluteFilePath()));
+    }
+    // The neutral emotion: automatic or one of the table's emotions.
+    const QString chosen = m_neutral->currentIndex() > 0 ? m_neutral->currentText() : QString();
+    const bool blocked = m_neutral->blockSignals(true);
+    m_neutral->clear();
+    m_neutral->addItem(tr("(automatic)"));
+    m_neutral->addItems(emotions);
+    m_neutral->setCurrentIndex(std::max(0, m_neutral->findText(chosen)));
+    m_neutral->blockSignals(blocked);
+    m_message->setText(m_problem.isEmpty() ? tr("%n take(s) ready.", nullptr, m_table->rowCount()) : m_problem);
+    m_message->setStyleSheet(m_problem.isEmpty() ? QString() : QStringLiteral("color: #b00020"));
+    m_create->setEnabled(m_problem.isEmpty());
+}
+
+std::vector<io::CorpusSource> NewCorpusDialog::sources() const
+{
+    std::vector<io::CorpusSource> sources;
+    for (int row = 0; row < m_table->rowCount(); ++row) {
+        analysis::TakeLabels labels;
+        labels.function = m_table->item(row, FunctionColumn)->text().trimmed().toStdString();
+        labels.emotion = m_table->item(row, EmotionColumn)->text().trimmed().toStdString();
+        labels.takeIndex = m_table->item(row, TakeColumn)->text().toInt();
+        sources.push_back({m_files[std::size_t(row)], labels});
+    }
+    return sources;
+}
+
+io::CorpusBuildOptions NewCorpusDialog::buildOptions() const
+{
+    io::CorpusBuildOptions options;
+    options.import.bvh.guessUnits = true;
+    options.import.bvh.side = m_side->currentIndex() == 1 ? analysis::BodySide::Left : analysis::BodySide::Right;
+    if (!m_joints->text().trimmed().isEmpty())
+        if (auto map = io::parseJointMap(m_joints->text().toStdString())) options.import.bvh.jointMap = map.value();
+    options.neutralEmotion = m_neutral->currentIndex() > 0 ? m_neutral->currentText().toStdString() : std::string();
+    options.rateHz = m_rate->value();
+    options.name = QFileInfo(m_output->text()).fileName().toStdString();
+    return options;
+}
+
+void NewCorpusDialog::dragEnterEvent(QDragEnterEvent* event)
+{
+    if (event->mimeData()->hasUrls()) event->acceptProposedAction();
+}
+
+void NewCorpusDialog::dropEvent(QDropEvent* event)
+{
+    QStringList paths;
+    for (const QUrl& url : event->mimeData()->urls())
+        if (url.isLocalFile()) paths << url.toLocalFile();
+    addInputs(paths);
+    event->acceptProposedAction();
+}
+
+} // namespace bunraku::app

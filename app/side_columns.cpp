@@ -1,0 +1,91 @@
+#include "app/side_columns.h"
+
+#include <QDockWidget>
+#include <QEvent>
+#include <QMainWindow>
+#include <QStyle>
+#include <QTimer>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <vector>
+
+namespace bunraku::app {
+
+namespace {
+
+std::vector<QDockWidget*> docksIn(QMainWindow& window, Qt::DockWidgetArea area)
+{
+    std::vector<QDockWidget*> docks;
+    for (QDockWidget* dock : window.findChildren<QDockWidget*>(QString(), Qt::FindDirectChildrenOnly))
+        if (dock->isVisible() && !dock->isFloating() && window.dockWidgetArea(dock) == area) docks.push_back(dock);
+    return docks;
+}
+
+} // namespace
+
+SideColumns::SideColumns(QMainWindow* window) : QObject(window), m_window(window)
+{
+    window->installEventFilter(this);
+    for (QDockWidget* dock : window->findChildren<QDockWidget*>(QString(), Qt::FindDirectChildrenOnly)) dock->installEventFilter(this);
+}
+
+bool SideColumns::eventFilter(QObject* watched, QEvent* event)
+{
+    if (!m_window || event->type() != QEvent::Resize) return false;
+    if (watched == m_window) {
+        // After the layout has placed the docks for the new size: give the left column its width back.
+        if (m_window->size() != m_windowSize) QTimer::singleShot(0, this, &SideColumns::keepLeftWidth);
+        return false;
+    }
+    // A left dock resized while the window kept its size: the person (or a layout reset) chose it.
+    auto* dock = qobject_cast<QDockWidget*>(watched);
+    if (dock && m_window->size() == m_windowSize && !dock->isFloating() && m_window->dockWidgetArea(dock) == Qt::LeftDockWidgetArea)
+        m_leftWidth = dock->width();
+    return false;
+}
+
+int SideColumns::preferredLeftWidth(int width) { return std::clamp(width / 4, 260, 420); }
+
+void SideColumns::reset()
+{
+    m_leftWidth = 0;
+    m_adopt = false;
+    m_windowSize = QSize();
+    QTimer::singleShot(0, this, &SideColumns::keepLeftWidth);
+}
+
+void SideColumns::keepLeftWidth()
+{
+    if (!m_window) return;
+    const bool first = !m_windowSize.isValid();
+    m_windowSize = m_window->size();
+    const auto left = docksIn(*m_window, Qt::LeftDockWidgetArea);
+    if (left.empty()) return;
+    if (first || m_leftWidth <= 0) {
+        m_leftWidth = m_adopt ? left.front()->width() : preferredLeftWidth(m_window->width());
+        m_adopt = false;
+    }
+    // The right area's columns (docks side by side; stacked or tabbed docks share a column)
+    // share the rest of the window in proportion to their widths. Every dock gets a width and
+    // the widths fill the window: QMainWindow has no extra space to hand to the first column.
+    std::map<int, std::vector<QDockWidget*>> columns; // by left edge
+    for (QDockWidget* dock : docksIn(*m_window, Qt::RightDockWidgetArea)) columns[dock->geometry().x()].push_back(dock);
+    const int separator = m_window->style()->pixelMetric(QStyle::PM_DockWidgetSeparatorExtent, nullptr, m_window);
+    const int available = m_window->width() - m_leftWidth - separator * int(columns.size());
+    int total = 0;
+    for (const auto& [x, column] : columns) total += std::max(1, column.front()->width());
+    QList<QDockWidget*> docks(left.begin(), left.end());
+    QList<int> widths(docks.size(), m_leftWidth);
+    for (const auto& [x, column] : columns) {
+        const int width = total > 0 ? int(std::lround(double(available) * std::max(1, column.front()->width()) / total)) : 0;
+        for (QDockWidget* dock : column) {
+            docks << dock;
+            widths << std::max(1, width);
+        }
+    }
+    m_window->resizeDocks(docks, widths, Qt::Horizontal);
+}
+
+} // namespace bunraku::app

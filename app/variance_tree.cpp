@@ -1,0 +1,154 @@
+#include "app/variance_tree.h"
+
+#include <QBrush>
+#include <QCoreApplication>
+#include <QHeaderView>
+#include <QLocale>
+#include <QTreeWidget>
+
+#include <algorithm>
+#include <map>
+
+namespace bunraku::app {
+
+namespace {
+
+constexpr int kWorseRole = Qt::UserRole + 7;
+const QColor kWorseText(0xb0, 0x00, 0x20);
+const QColor kWorseBackground(0xfd, 0xe7, 0xea);
+
+QString tr(const char* text) { return QCoreApplication::translate("VarianceTree", text); }
+
+std::string familyOf(const std::string& unit)
+{
+    if (unit == "cm" || unit == "mm" || unit == "m") return "position";
+    if (unit == "deg" || unit == "rad") return "rotation";
+    return unit.empty() ? "unitless" : unit;
+}
+
+QString familyName(const VarianceRow& row)
+{
+    return row.family == "position" ? tr("position") : row.family == "rotation" ? tr("rotation") : QString::fromStdString(row.family);
+}
+
+/// "pos. cm²": short enough for a narrow dock (the tool tip says it in full).
+QString familyText(const VarianceRow& row)
+{
+    const QString name = row.family == "position" ? tr("pos.") : row.family == "rotation" ? tr("rot.") : QString::fromStdString(row.family);
+    return row.unit.empty() ? name : QStringLiteral("%1 %2").arg(name, QString::fromStdString(row.unit));
+}
+
+/// "-66 %" / "▲ +12 %" (worse) / "–" when there was nothing to change.
+QString changeText(const VarianceRow& row)
+{
+    if (!(row.before > 0.0)) return row.after > 0.0 ? QStringLiteral("\u25b2") : QStringLiteral("\u2013");
+    const double percent = 100.0 * (row.after - row.before) / row.before;
+    const QString number = QLocale().toString(percent, 'f', 0);
+    return row.worse() ? QStringLiteral("\u25b2 +%1 %").arg(number) : QStringLiteral("%1 %").arg(number);
+}
+
+void mark(QTreeWidgetItem* item)
+{
+    item->setData(0, kWorseRole, true);
+    for (int column = 0; column < item->columnCount(); ++column) {
+        item->setForeground(column, kWorseText);
+        item->setBackground(column, kWorseBackground);
+    }
+    QFont font = item->font(0);
+    font.setBold(true);
+    item->setFont(0, font);
+}
+
+} // namespace
+
+QString varianceText(double value) { return QLocale().toString(value, 'f', 1); }
+
+std::vector<VarianceRow> varianceRows(const analysis::VarianceTable& table, const std::vector<analysis::Channel>& channels)
+{
+    std::vector<VarianceRow> rows;
+    const Eigen::Index count = std::min<Eigen::Index>(table.before.cols(), Eigen::Index(channels.size()));
+    // Families and parts in order of first appearance among the channels.
+    std::vector<std::string> families;
+    std::vector<std::string> parts;
+    for (Eigen::Index c = 0; c < count; ++c) {
+        const std::string family = familyOf(channels[std::size_t(c)].unit);
+        if (std::find(families.begin(), families.end(), family) == families.end()) families.push_back(family);
+        if (std::find(parts.begin(), parts.end(), channels[std::size_t(c)].part) == parts.end())
+            parts.push_back(channels[std::size_t(c)].part);
+    }
+    for (Eigen::Index k = 0; k < table.before.rows(); ++k) {
+        for (const std::string& family : families) {
+            VarianceRow total{table.takeNames.at(std::size_t(k)), family, {}, {}, 0.0, 0.0};
+            std::vector<VarianceRow> perPart;
+            for (const std::string& part : parts) {
+                VarianceRow row{total.take, family, {}, part, 0.0, 0.0};
+                bool any = false;
+                for (Eigen::Index c = 0; c < count; ++c) {
+                    const analysis::Channel& channel = channels[std::size_t(c)];
+                    if (channel.part != part || familyOf(channel.unit) != family) continue;
+                    row.unit = channel.unit.empty() ? std::string() : channel.unit + "\u00b2";
+                    row.before += table.before(k, c);
+                    row.after += table.after(k, c);
+                    any = true;
+                }
+                if (!any) continue;
+                total.unit = row.unit;
+                total.before += row.before;
+                total.after += row.after;
+                perPart.push_back(row);
+            }
+            rows.push_back(total);
+            rows.insert(rows.end(), perPart.begin(), perPart.end());
+        }
+    }
+    return rows;
+}
+
+void fillVarianceTree(QTreeWidget* tree, const analysis::VarianceTable& table, const std::vector<analysis::Channel>& channels,
+                      const std::vector<QString>& takeLabels)
+{
+    tree->clear();
+    tree->setColumnCount(4);
+    tree->setHeaderLabels({tr("Take / DOF family / part"), tr("Before"), tr("After"), tr("Change")});
+    const QString worseTip = tr("After normalisation this is further from the reference than before");
+    std::map<std::string, QTreeWidgetItem*> takes;
+    QTreeWidgetItem* family = nullptr;
+    for (const VarianceRow& row : varianceRows(table, channels)) {
+        QTreeWidgetItem*& take = takes[row.take];
+        if (!take) {
+            const auto index = std::size_t(std::find(table.takeNames.begin(), table.takeNames.end(), row.take) - table.takeNames.begin());
+            take = new QTreeWidgetItem(tree, {index < takeLabels.size() ? takeLabels[index] : QString::fromStdString(row.take)});
+            take->setToolTip(0, QString::fromStdString(row.take));
+        }
+        QTreeWidgetItem* item = row.part.empty() ? new QTreeWidgetItem(take) : new QTreeWidgetItem(family);
+        if (row.part.empty()) family = item;
+        item->setText(0, row.part.empty() ? familyText(row) : QString::fromStdString(row.part));
+        item->setText(1, varianceText(row.before));
+        item->setText(2, varianceText(row.after));
+        item->setText(3, changeText(row));
+        for (int column = 1; column < 4; ++column) item->setTextAlignment(column, Qt::AlignRight | Qt::AlignVCenter);
+        const QString unit = QString::fromStdString(row.unit);
+        item->setToolTip(0, tr("%1: squared difference to the reference (%2), summed over frames and the %3 channels%4")
+                                .arg(QString::fromStdString(row.take), QString::fromStdString(row.unit), familyName(row),
+                                     row.part.empty() ? tr(" of every part") : tr(" of ") + QString::fromStdString(row.part)));
+        for (int column = 1; column < 3; ++column) item->setToolTip(column, unit);
+        if (row.worse()) {
+            mark(item);
+            item->setToolTip(3, worseTip);
+            if (!isMarkedWorse(take)) mark(take);
+        }
+    }
+    for (auto& [name, take] : takes) {
+        take->setExpanded(true);
+        if (isMarkedWorse(take)) take->setToolTip(0, tr("%1: worse than before in at least one DOF family or part")
+                                                         .arg(QString::fromStdString(name)));
+    }
+    tree->setIndentation(12);
+    tree->header()->setStretchLastSection(false);
+    tree->header()->setSectionResizeMode(0, QHeaderView::Stretch);
+    for (int column = 1; column < 4; ++column) tree->header()->setSectionResizeMode(column, QHeaderView::ResizeToContents);
+}
+
+bool isMarkedWorse(const QTreeWidgetItem* item) { return item && item->data(0, kWorseRole).toBool(); }
+
+} // namespace bunraku::app

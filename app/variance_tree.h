@@ -1,0 +1,50 @@
+#pragma once
+/// The Normalisation panel's variance table (thesis 3.8, Tables 3.4/3.5) as a tree that never
+/// adds centimetres to degrees: per take, one row per DOF family (position in cm^2, rotation in
+/// deg^2: the channels' units, squared) with the sum over parts, and under it one row per part.
+/// Columns: Before, After (the squared difference to the reference summed over frames and the
+/// row's channels) and Change. Every number has the same notation (fixed, one decimal, grouped
+/// digits). A row whose normalised take is further from the reference than the raw take is
+/// marked (red, "worse"), and so is its take's row.
+
+#include "analysis/core/take.h"
+#include "analysis/normalise/variance_evaluation.h"
+
+#include <QString>
+
+#include <string>
+#include <vector>
+
+class QTreeWidget;
+class QTreeWidgetItem;
+
+namespace bunraku::app {
+
+/// One row of the tree: a DOF family of a take, or a part within it.
+struct VarianceRow {
+    std::string take;   ///< VarianceTable::takeNames
+    std::string family; ///< "position", "rotation", or the unit when it is neither
+    std::string unit;   ///< the channels' unit, squared: "cm²", "deg²"
+    std::string part;   ///< empty: the family's sum over parts
+    double before = 0.0;
+    double after = 0.0;
+    bool worse() const { return after > before; }
+};
+
+/// Every row of `table` (takes x channels, `channels` its columns in order): per take, per
+/// family (in order of first appearance), the family's sum, then each part's.
+std::vector<VarianceRow> varianceRows(const analysis::VarianceTable& table, const std::vector<analysis::Channel>& channels);
+
+/// The notation of every number of the tree: "13,812.4".
+QString varianceText(double value);
+
+/// Fills `tree` (columns: Take / family / part, Before, After, Change) with `table`; takes and
+/// families expanded, parts collapsed. `takeLabels` (one per take, e.g. "take 2"; empty: the
+/// table's take names) is what the take rows show. Families read "pos. cm²" and "rot. deg²".
+void fillVarianceTree(QTreeWidget* tree, const analysis::VarianceTable& table, const std::vector<analysis::Channel>& channels,
+                      const std::vector<QString>& takeLabels = {});
+
+/// Whether `item` is marked worse than before.
+bool isMarkedWorse(const QTreeWidgetItem* item);
+
+} // namespace bunraku::app

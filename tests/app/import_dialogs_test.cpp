@@ -1,0 +1,243 @@
+// The joint dialog (automatic map preset, one joint per part, a preview of the mapped puppet)
+// and File > New Corpus from Files (labels parsed and corrected in a table, files dropped, the
+// corpus made and opened), driven as a user would under Xvfb.
+#include "tests/app/app_test_support.h"
+
+#include "app/joint_map_dialog.h"
+#include "app/new_corpus_dialog.h"
+
+#include "analysis/core/skeleton.h"
+#include "analysis/io/bvh.h"
+#include "analysis/io/corpus_io.h"
+#include "tests/analysis/io/io_test_support.h"
+#include "tests/support/bandai_files.h"
+#include "tests/support/bvh_fixtures.h"
+
+#include <catch2/catch.hpp>
+
+#include <QApplication>
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QLineEdit>
+#include <QMimeData>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QTimer>
+
+using namespace bunraku;
+namespace fs = std::filesystem;
+
+namespace {
+
+analysis::io::BvhFile fixtureFile(const std::string& id)
+{
+    for (const auto& family : test::bvhFamilies())
+        if (family.id == id) {
+            auto file = analysis::io::parseBvh(test::fixtureBvh(family), id + ".bvh");
+            REQUIRE(file.ok());
+            return std::move(file).value();
+        }
+    FAIL("no fixture family " << id);
+    return {};
+}
+
+QPushButton* okButton(QDialog& dialog)
+{
+    auto* buttons = dialog.findChild<QDialogButtonBox*>();
+    REQUIRE(buttons);
+    return buttons->button(QDialogButtonBox::Ok);
+}
+
+/// Pixels of the image that are not the renderer's light background.
+int drawnPixels(const QImage& image)
+{
+    int count = 0;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) {
+            const QRgb p = image.pixel(x, y);
+            if (qRed(p) < 200 || qGreen(p) < 200) ++count;
+        }
+    return count;
+}
+
+std::vector<fs::path> writeFixtures(const fs::path& dir, const std::vector<std::string>& names)
+{
+    const auto families = test::bvhFamilies();
+    fs::create_directories(dir);
+    std::vector<fs::path> files;
+    for (const auto& name : names) files.push_back(test::writeText(dir / name, test::fixtureBvh(families[3])));
+    return files;
+}
+
+} // namespace
+
+TEST_CASE("the joint dialog presets the automatic map, refuses one joint for two parts and previews the puppet", "[app][import]")
+{
+    test::isolateSettings();
+    app::JointMapDialog dialog(fixtureFile("classic"), QStringLiteral("classic.bvh"));
+    CHECK(dialog.partBox(0)->currentText() == QStringLiteral("Head"));
+    CHECK(dialog.partBox(1)->currentText() == QStringLiteral("Chest2"));
+    CHECK(dialog.partBox(2)->currentText() == QStringLiteral("RightElbow"));
+    CHECK(dialog.partBox(3)->currentText() == QStringLiteral("RightWrist"));
+    CHECK(dialog.problem().isEmpty());
+    CHECK(okButton(dialog)->isEnabled());
+    REQUIRE_FALSE(dialog.preview().isNull());
+    const int full = drawnPixels(dialog.preview());
+    CHECK(full > 500);
+
+    // The left side: the left arm and hand.
+    dialog.sideBox()->setCurrentIndex(1);
+    CHECK(dialog.partBox(2)->currentText() == QStringLiteral("LeftElbow"));
+    CHECK(dialog.side() == analysis::BodySide::Left);
+
+    // One joint for two parts: refused, OK disabled, no preview.
+    dialog.partBox(0)->setCurrentText(QStringLiteral("Chest2"));
+    CHECK_FALSE(okButton(dialog)->isEnabled());
+    CHECK(dialog.problem().contains(QStringLiteral("Chest2 drives both the head and the shoulder")));
+    CHECK(dialog.preview().isNull());
+    dialog.partBox(0)->setCurrentText(QStringLiteral("Neck"));
+    CHECK(okButton(dialog)->isEnabled());
+    CHECK(dialog.jointMapText() == QStringLiteral("head=Neck,shoulder=Chest2,arm=LeftElbow,hand=LeftWrist"));
+}
+
+TEST_CASE("the joint dialog presets nothing for a skeleton the automatic map cannot read", "[app][import]")
+{
+    test::isolateSettings();
+    auto file = analysis::io::parseBvh("HIERARCHY\nROOT Hips\n{\nOFFSET 0 0 0\nCHANNELS 3 Xposition Yposition Zposition\nJOINT b\n{\n"
+                                       "OFFSET 0 1 0\nCHANNELS 0\n}\n}\nMOTION\nFrames: 1\nFrame Time: 0.1\n0 0 0\n",
+                                       "stick.bvh");
+    REQUIRE(file.ok());
+    app::JointMapDialog dialog(*file, QStringLiteral("stick.bvh"));
+    for (int part = 0; part < 4; ++part) CHECK(dialog.partBox(part)->currentIndex() == 0); // "(choose a joint)", not Hips
+    CHECK_FALSE(okButton(dialog)->isEnabled());
+    CHECK(dialog.problem().contains(QStringLiteral("Choose a joint for the head")));
+}
+
+TEST_CASE("a BVH file of any common skeleton imports without a map and keeps its skeleton", "[app][import]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    const auto dir = test::scratchDir("app_import_mixamo");
+    const auto file = writeFixtures(dir, {"mixamo.bvh"}).front();
+    REQUIRE(window->files().importTakeFile(QString::fromStdString(file.string())));
+    const auto& derived = window->document().derivedTakes();
+    const auto imported = std::find_if(derived.begin(), derived.end(), [](const auto& d) { return !d.sourcePath.isEmpty(); });
+    REQUIRE(imported != derived.end());
+    REQUIRE(imported->take->skeleton);
+    CHECK(imported->take->skeleton->skeleton->binding("arm")->joint ==
+          imported->take->skeleton->skeleton->find("mixamorig:RightForeArm"));
+}
+
+TEST_CASE("new corpus from files: labels from the names, corrected in the table, made and opened", "[app][import]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    const auto dir = test::scratchDir("app_new_corpus");
+    writeFixtures(dir / "in", {"dataset-2_wave_happy_001.bvh", "dataset-2_wave_happy_002.bvh", "dataset-2_wave_sad_001.bvh"});
+    app::NewCorpusDialog dialog;
+    dialog.addInputs({QString::fromStdString((dir / "in").string())});
+    QTableWidget* table = dialog.table();
+    REQUIRE(table->rowCount() == 3);
+    // The default pattern reads these names wrongly; a pattern that does not match them at all
+    // leaves the labels to type, and Create is disabled.
+    CHECK(table->item(0, app::NewCorpusDialog::FunctionColumn)->text() == QStringLiteral("dataset-2"));
+    dialog.setPattern(QStringLiteral("{function}.{emotion}"));
+    CHECK(dialog.problem().contains(QStringLiteral("does not match the pattern")));
+    dialog.setPattern(QStringLiteral("{any}_{function}_{emotion}_{take}"));
+    CHECK(dialog.problem().isEmpty());
+    CHECK(table->item(0, app::NewCorpusDialog::FunctionColumn)->text() == QStringLiteral("wave"));
+    CHECK(table->item(2, app::NewCorpusDialog::EmotionColumn)->text() == QStringLiteral("sad"));
+    CHECK(table->item(1, app::NewCorpusDialog::TakeColumn)->text() == QStringLiteral("2"));
+    CHECK(table->item(0, app::NewCorpusDialog::MapColumn)->text().startsWith(QStringLiteral("head=mixamorig:Head (name)")));
+    // A correction typed by the user: the third take is "calm", and stays so when the pattern changes.
+    table->item(2, app::NewCorpusDialog::EmotionColumn)->setText(QStringLiteral("calm"));
+    dialog.setPattern(QStringLiteral("dataset-2_{function}_{emotion}_{take}"));
+    CHECK(table->item(2, app::NewCorpusDialog::EmotionColumn)->text() == QStringLiteral("calm"));
+    // Two files with the same labels are refused.
+    table->item(1, app::NewCorpusDialog::TakeColumn)->setText(QStringLiteral("1"));
+    CHECK(dialog.problem().contains(QStringLiteral("both have the labels wave/happy/1")));
+    table->item(1, app::NewCorpusDialog::TakeColumn)->setText(QStringLiteral("2"));
+    dialog.neutralBox()->setCurrentText(QStringLiteral("calm"));
+    const QString output = QString::fromStdString((dir / "made").string());
+    dialog.setOutputFolder(output);
+    REQUIRE(dialog.problem().isEmpty());
+    const auto sources = dialog.sources();
+    REQUIRE(sources.size() == 3);
+    CHECK(sources[2].labels == analysis::TakeLabels{"wave", "calm", 1, ""});
+
+    REQUIRE(window->files().createCorpusFromFiles(sources, dialog.buildOptions(), output));
+    const auto& corpus = window->document().corpus();
+    CHECK(window->document().corpusSource() == QFileInfo(output).absoluteFilePath());
+    REQUIRE(corpus.takes.size() == 3);
+    CHECK(corpus.neutralEmotion == "calm");
+    CHECK(corpus.name == "made");
+    for (const auto& take : corpus.takes) CHECK(take.skeleton);
+    CHECK(analysis::io::isCorpusFolder(dir / "made"));
+}
+
+TEST_CASE("files and folders dropped on the new-corpus dialog join its table", "[app][import]")
+{
+    test::isolateSettings();
+    const auto dir = test::scratchDir("app_new_corpus_drop");
+    const auto files = writeFixtures(dir, {"walk_happy_1.bvh", "walk_sad_1.bvh"});
+    app::NewCorpusDialog dialog;
+    dialog.show();
+    REQUIRE(QTest::qWaitForWindowExposed(&dialog));
+    QMimeData mime;
+    mime.setUrls({QUrl::fromLocalFile(QString::fromStdString(files[0].string())), QUrl::fromLocalFile(QString::fromStdString(files[1].string()))});
+    QDragEnterEvent enter(QPoint(10, 10), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(&dialog, &enter);
+    CHECK(enter.isAccepted());
+    QDropEvent drop(QPointF(10, 10), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(&dialog, &drop);
+    REQUIRE(dialog.table()->rowCount() == 2);
+    CHECK(dialog.table()->item(1, app::NewCorpusDialog::EmotionColumn)->text() == QStringLiteral("sad"));
+    CHECK(dialog.problem().isEmpty()); // the output folder defaults to "corpus" beside the files
+    CHECK(dialog.outputFolder() == QString::fromStdString((dir / "corpus").string()));
+}
+
+TEST_CASE("new corpus from the bandai files in the workbench", "[app][import]")
+{
+    const auto files = test::bandaiFilesOrSkip();
+    if (files.empty()) return;
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    app::NewCorpusDialog dialog;
+    dialog.addInputs({QString::fromStdString(test::bandaiDir().string())});
+    REQUIRE(dialog.table()->rowCount() == int(files.size()));
+    const QString output = QString::fromStdString((test::scratchDir("app_new_corpus_bandai") / "bandai").string());
+    dialog.setOutputFolder(output);
+    REQUIRE(dialog.problem().isEmpty());
+    REQUIRE(window->files().createCorpusFromFiles(dialog.sources(), dialog.buildOptions(), output));
+    const auto& corpus = window->document().corpus();
+    CHECK(corpus.takes.size() == files.size());
+    CHECK(corpus.neutralEmotion == "normal");
+    CHECK(corpus.rateHz == 30.0);
+}
+
+TEST_CASE("File > Import Take of a BVH file takes the map chosen in the joint dialog", "[app][import]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    const auto dir = test::scratchDir("app_import_dialog");
+    const auto file = writeFixtures(dir, {"mixamo.bvh"}).front();
+    window->files().setDialogsEnabled(true);
+    bool shown = false;
+    // When the dialog opens: the left side, then OK, as a user would.
+    QTimer::singleShot(0, [&] {
+        auto* dialog = qobject_cast<app::JointMapDialog*>(QApplication::activeModalWidget());
+        if (dialog == nullptr) return;
+        shown = true;
+        dialog->sideBox()->setCurrentIndex(1);
+        QTest::mouseClick(okButton(*dialog), Qt::LeftButton);
+    });
+    const bool imported = window->files().importTakeFile(QString::fromStdString(file.string()));
+    window->files().setDialogsEnabled(false);
+    REQUIRE(shown);
+    REQUIRE(imported);
+    const auto take = window->document().selectedTake(app::TakeSlot::A);
+    REQUIRE(take->skeleton);
+    const auto& skeleton = *take->skeleton->skeleton;
+    CHECK(skeleton.binding("arm")->joint == skeleton.find("mixamorig:LeftForeArm"));
+    CHECK(skeleton.binding("hand")->joint == skeleton.find("mixamorig:LeftHand"));
+}
