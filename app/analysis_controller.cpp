@@ -313,7 +313,9 @@ pl::Shared<pl::TakeAxis> AnalysisController::takeAxis(TakeSlot slot, const TakeP
 analysis::Result<std::string> AnalysisController::reportHtml() const
 {
     if (!m_corpus.corpus) return analysis::makeError(analysis::ErrorCode::InvalidArgument, "no corpus is open");
-    auto chain = pl::runChain(m_corpus, m_document.parameters(), m_stageCache.get());
+    pl::ChainOptions chainOptions;
+    chainOptions.threads = m_scheduler->threads();
+    auto chain = pl::runChain(m_corpus, m_document.parameters(), m_stageCache.get(), chainOptions);
     if (!chain) return chain.error();
     analysis::report::ReportOptions options;
     options.title = "Bunraku motion analysis: " + (m_corpus.corpus->name.empty() ? std::string("corpus") : m_corpus.corpus->name);

@@ -1,5 +1,7 @@
 #include "app/stage_scheduler.h"
 
+#include "analysis/core/parallel.h"
+
 #include <QMetaObject>
 #include <QPointer>
 #include <QRunnable>
@@ -20,8 +22,14 @@ StageScheduler::StageScheduler(QObject* parent, std::shared_ptr<Executor> execut
     : QObject(parent),
       m_executor(executor ? std::move(executor) : std::make_shared<ThreadPoolExecutor>()),
       m_cache(cache ? std::move(cache) : std::make_shared<analysis::pipeline::StageCache>(32)),
-      m_alive(std::make_shared<std::atomic<bool>>(true))
+      m_alive(std::make_shared<std::atomic<bool>>(true)),
+      m_threads(analysis::resolveThreads(0))
 {
+}
+
+void StageScheduler::setThreads(int threads)
+{
+    m_threads = analysis::resolveThreads(threads);
 }
 
 StageScheduler::~StageScheduler()
@@ -95,7 +103,7 @@ void StageScheduler::request(int slotId, StageKey key, StageWork work)
     QPointer<StageScheduler> self(this);
     auto alive = m_alive;
     auto stop = slot.stop;
-    m_executor->run([self, alive, stop, job, key, work = std::move(work)] {
+    m_executor->run([self, alive, stop, job, key, threads = m_threads, work = std::move(work)] {
         analysis::RunControl control{stop->get_token(), [self, alive, job](double fraction) {
                                          if (!*alive) return;
                                          QMetaObject::invokeMethod(
@@ -109,7 +117,8 @@ void StageScheduler::request(int slotId, StageKey key, StageWork work)
                                                  }
                                              },
                                              Qt::QueuedConnection);
-                                     }};
+                                     },
+                                     threads};
         analysis::Result<StageValue> result = analysis::makeError(analysis::ErrorCode::Cancelled, "not run");
         try {
             result = work(control);

@@ -73,6 +73,10 @@ public:
     QString error(int slot) const;
     double progress(int slot) const;
     bool busy() const;
+    /// Threads each job may use where its stage splits into cells or channels
+    /// (analysis::RunControl::threads); default one per hardware thread, as `bunraku analyse`.
+    void setThreads(int threads);
+    int threads() const { return m_threads; }
     /// Jobs started per slot (tests: a slot that was not restarted; a slot that waited for
     /// another's job or took a cached result started none).
     int starts(int slot) const;
@@ -105,6 +109,7 @@ private:
     quint64 m_nextJob = 0;
     /// Shared with running jobs: false once this scheduler is gone (their results are dropped).
     std::shared_ptr<std::atomic<bool>> m_alive;
+    int m_threads = 1;
 };
 
 } // namespace bunraku::app

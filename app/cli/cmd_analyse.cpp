@@ -3,6 +3,7 @@
 #include "app/cli/commands.h"
 #include "app/cli/output_guard.h"
 
+#include "analysis/core/parallel.h"
 #include "analysis/io/atomic_file.h"
 
 #include "analysis/pipeline/chain.h"
@@ -29,6 +30,7 @@ struct AnalyseArguments {
     std::string output;
     std::string parameters;
     bool json = false;
+    int threads = 0;
 };
 
 /// One line per stage on a terminal, redrawn in place: "[#####.....] Normalisation (3)  40 %".
@@ -67,6 +69,7 @@ void runAnalyse(const AnalyseArguments& arguments)
     const bool terminal = ::isatty(STDERR_FILENO) == 1;
     ProgressBar bar;
     pl::ChainOptions options;
+    options.threads = analysis::resolveThreads(arguments.threads);
     const auto started = std::chrono::steady_clock::now();
     options.progress = [&](pl::Stage stage, double fraction) {
         if (arguments.json) {
@@ -91,6 +94,8 @@ void runAnalyse(const AnalyseArguments& arguments)
                            {"report", (std::filesystem::path(arguments.output) / "report.html").string()},
                            {"files", files.size()},
                            {"cells", chain->normalised->cells.size()},
+                           {"takes", corpus.corpus->takes.size()},
+                           {"threads", options.threads},
                            {"seconds", seconds}};
     if (chain->decomposed->km2o) {
         summary["M"] = chain->decomposed->km2o->correlationLength;
@@ -120,6 +125,11 @@ void addAnalyseCommands(CommandSet& commands)
     command->add_option("--parameters", arguments->parameters,
                         "JSON file of the chain's parameters (docs/FORMATS.md), or a project file; default the thesis's")
         ->type_name("FILE");
+    command->add_option("--threads", arguments->threads,
+                        "Threads for the stages that split into cells and channels, 0 = one per hardware thread; the results are "
+                        "the same for any count")
+        ->check(CLI::Range(0, analysis::kMaxThreads))
+        ->capture_default_str();
     command->add_flag("--json", arguments->json, "Progress and the summary as JSON lines on standard output");
     command->callback([arguments] { runAnalyse(*arguments); });
 }

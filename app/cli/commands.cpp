@@ -12,6 +12,7 @@ void addAllCommands(CommandSet& commands)
     addMotionAxisCommands(commands);
     addApproximationCommands(commands);
     addAnalyseCommands(commands);
+    addSummaryCommands(commands);
     addRenderCommands(commands);
     addHelpCommands(commands);
 }

@@ -20,6 +20,8 @@ void addMotionAxisCommands(CommandSet& commands);
 void addApproximationCommands(CommandSet& commands);
 /// analyse (cmd_analyse.cpp)
 void addAnalyseCommands(CommandSet& commands);
+/// summary (cmd_summary.cpp)
+void addSummaryCommands(CommandSet& commands);
 /// render (cmd_render.cpp)
 void addRenderCommands(CommandSet& commands);
 /// help (cmd_help.cpp)

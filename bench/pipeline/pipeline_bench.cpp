@@ -50,6 +50,57 @@ void BM_WholeChain(benchmark::State& state)
 }
 BENCHMARK(BM_WholeChain)->ArgName("with_arma")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
+/// The whole chain with its cells and channels split over `threads` threads (ChainOptions::threads,
+/// `bunraku analyse --threads`): wall-clock time, since the calling thread's CPU time leaves out
+/// the others'. The label is the stage digests, the same for every thread count.
+void BM_WholeChainThreads(benchmark::State& state)
+{
+    ChainOptions options;
+    options.threads = int(state.range(0));
+    std::string digest;
+    for (auto _ : state) {
+        auto chain = runChain(demo(), {}, nullptr, options);
+        if (!chain) {
+            state.SkipWithError(chain.error().message.c_str());
+            break;
+        }
+        if (digest.empty()) digest = chainDigest(*chain).text();
+        benchmark::DoNotOptimize(chain);
+    }
+    state.SetLabel(digest);
+}
+BENCHMARK(BM_WholeChainThreads)->ArgName("threads")->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
+
+/// One threaded stage alone from its cached inputs, on 1 and 2 threads (wall-clock).
+void BM_StageThreads(benchmark::State& state)
+{
+    static const ChainResult inputs = std::move(runChain(demo(), {}, nullptr)).value();
+    const ChainParameters parameters;
+    const auto stage = Stage(state.range(0));
+    RunControl control;
+    control.threads = int(state.range(1));
+    for (auto _ : state) {
+        switch (stage) {
+        case Stage::Normalise:
+            benchmark::DoNotOptimize(runNormalise(inputs.preprocessed->corpus, parameters.normalise, control));
+            break;
+        case Stage::Fluctuations:
+            benchmark::DoNotOptimize(runFluctuations(inputs.decomposed->components, parameters.fluctuations, control));
+            break;
+        case Stage::Axes:
+            benchmark::DoNotOptimize(runAxes(*inputs.normalised, demo().corpus->neutralEmotion, parameters.axis, control));
+            break;
+        default: break;
+        }
+    }
+    state.SetLabel(stageName(stage));
+}
+BENCHMARK(BM_StageThreads)
+    ->ArgNames({"stage", "threads"})
+    ->ArgsProduct({{int(Stage::Normalise), int(Stage::Fluctuations), int(Stage::Axes)}, {1, 2}})
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
+
 /// One stage alone from its (cached) inputs: where the whole chain's time goes.
 void BM_Stage(benchmark::State& state)
 {

@@ -1,10 +1,12 @@
 // The workbench and the command line compute the same bits: the GUI's stage results against the
-// data files `bunraku analyse` writes for the same corpus and parameters, per stage.
+// data files `bunraku analyse` writes for the same corpus and parameters, per stage; the CLI on
+// one thread, the workbench on one per hardware thread (its default).
 #include "tests/app/app_test_support.h"
 
 #include "app/analysis_controller.h"
 #include "app/design_controller.h"
 
+#include "analysis/core/parallel.h"
 #include "analysis/decompose/emotion_weight.h"
 #include "analysis/io/take_csv.h"
 #include "analysis/io/text_format.h"
@@ -44,7 +46,8 @@ TEST_CASE("the workbench's stage results equal bunraku analyse's data files bit 
     const auto dir = test::scratchDir("peer-analyse");
     QProcess cli;
     cli.start(QStringLiteral(BUNRAKU_CLI), {QStringLiteral("analyse"), QStringLiteral("demo"), QStringLiteral("-o"),
-                                            QString::fromStdString((dir / "out").string()), QStringLiteral("--json")});
+                                            QString::fromStdString((dir / "out").string()), QStringLiteral("--json"),
+                                            QStringLiteral("--threads"), QStringLiteral("1")});
     REQUIRE(cli.waitForFinished(120000));
     INFO(cli.readAllStandardError().toStdString());
     REQUIRE(cli.exitCode() == 0);
@@ -53,6 +56,7 @@ TEST_CASE("the workbench's stage results equal bunraku analyse's data files bit 
     auto window = test::demoWindow();
     REQUIRE(window);
     auto& analysis = window->analysis();
+    CHECK(analysis.scheduler().threads() == bunraku::analysis::resolveThreads(0));
     REQUIRE(QTest::qWaitFor([&] { return !analysis.scheduler().busy() && analysis.axes() && analysis.decomposed(); }, 120000));
 
     SECTION("preprocess (2.2): the same takes - the GUI no longer normalises raw takes")
