@@ -40,6 +40,9 @@ int runCli(int argc, char** argv)
     app.set_version_flag("--version", versionText("bunraku"));
     app.set_help_all_flag("--help-all", "Print the help of every subcommand and exit");
     app.require_subcommand(1);
+    app.footer("Exit status: 0 done; 1 bad input (a file or value the command cannot use); 2 bad command line (unknown "
+               "option, missing argument); 3 a file could not be read or written. Errors are one line on standard error; "
+               "progress goes to standard error only when it is a terminal; --json summaries go to standard output.");
     CLI::App* experiment = app.add_subcommand("experiment", "Reproduce the thesis's experiments");
     experiment->require_subcommand(1);
     CommandSet commands{app, *experiment};
@@ -54,21 +57,21 @@ int runCli(int argc, char** argv)
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
         std::cerr << "bunraku: error: " << e.what() << "\n";
-        return e.get_exit_code() == 0 ? 2 : e.get_exit_code();
+        return kExitUsage;
     } catch (const CliError& e) {
         std::cerr << "bunraku: error: " << e.what() << "\n";
-        return 1;
+        return e.exitCode;
     } catch (const std::bad_alloc&) {
         std::cerr << "bunraku: error: " << outOfMemoryMessage(argc, argv) << "\n";
-        return 1;
+        return kExitBadInput;
     } catch (const std::length_error&) {
         std::cerr << "bunraku: error: " << outOfMemoryMessage(argc, argv) << "\n";
-        return 1;
+        return kExitBadInput;
     } catch (const std::exception& e) {
         std::cerr << "bunraku: error: " << e.what() << "\n";
-        return 1;
+        return kExitBadInput;
     }
-    return 0;
+    return kExitOk;
 }
 
 } // namespace bunraku::app::cli

@@ -1,6 +1,7 @@
 #pragma once
 /// Shared plumbing of the `bunraku` command line: every subcommand registers itself on the root
-/// (or on `experiment`), reports bad input by throwing CliError (printed as one line, exit 1)
+/// (or on `experiment`), reports bad input by throwing CliError (printed as one line, exit 1, or 3
+/// for an I/O error)
 /// and prints machine-readable summaries with printJson when --json is given.
 
 #include "analysis/core/result.h"
@@ -14,10 +15,21 @@
 
 namespace bunraku::app::cli {
 
-/// Bad input or a failed operation: the message is printed as "bunraku: error: <message>".
+/// The exit codes of every subcommand (documented in `bunraku --help` and the man page).
+inline constexpr int kExitOk = 0;       ///< done
+inline constexpr int kExitBadInput = 1; ///< bad input: a file or value the command cannot use
+inline constexpr int kExitUsage = 2;    ///< bad command line: unknown option, missing argument
+inline constexpr int kExitIo = 3;       ///< a file could not be read or written (disk, permission)
+
+/// Bad input or a failed operation: the message is printed as "bunraku: error: <message>" and
+/// the process exits with `exitCode`.
 struct CliError : std::runtime_error {
-    using std::runtime_error::runtime_error;
+    explicit CliError(const std::string& message, int code = kExitBadInput) : std::runtime_error(message), exitCode(code) {}
+    int exitCode;
 };
+
+/// kExitIo for an I/O error, kExitBadInput for the others.
+inline int exitCodeOf(const analysis::Error& error) { return error.code == analysis::ErrorCode::Io ? kExitIo : kExitBadInput; }
 
 /// Where commands attach: the root app and the `experiment` group.
 struct CommandSet {
@@ -29,12 +41,12 @@ struct CommandSet {
 template <class T>
 T unwrap(analysis::Result<T> result)
 {
-    if (!result.ok()) throw CliError(result.error().message);
+    if (!result.ok()) throw CliError(result.error().message, exitCodeOf(result.error()));
     return std::move(result).value();
 }
 inline void unwrap(const analysis::Status& status)
 {
-    if (!status.ok()) throw CliError(status.error().message);
+    if (!status.ok()) throw CliError(status.error().message, exitCodeOf(status.error()));
 }
 
 /// Pretty-prints JSON on standard output, one document per call.

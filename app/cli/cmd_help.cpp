@@ -41,8 +41,9 @@ void addHelpCommands(CommandSet& commands)
             for (const CLI::App* sub : subcommands)
                 if (sub->check_name(name)) next = sub;
             if (next == nullptr) {
-                if (subcommands.empty()) throw CliError("'" + usage + "' has no subcommands (asked for '" + name + "')");
-                throw CliError("'" + usage + "' has no subcommand '" + name + "' (expected one of: " + namesOf(subcommands) + ")");
+                if (subcommands.empty()) throw CliError("'" + usage + "' has no subcommands (asked for '" + name + "')", kExitUsage);
+                throw CliError("'" + usage + "' has no subcommand '" + name + "' (expected one of: " + namesOf(subcommands) + ")",
+                               kExitUsage);
             }
             usage += " " + name;
             target = next;

@@ -115,7 +115,7 @@ std::string indexHtml(const std::vector<Row>& rows, const fs::path& indexFolder)
 
 void runSummary(const SummaryArguments& arguments)
 {
-    if (arguments.table.empty() && arguments.index.empty()) throw CliError("nothing to write: give --table FILE and/or --index FILE");
+    if (arguments.table.empty() && arguments.index.empty()) throw CliError("nothing to write: give --table FILE and/or --index FILE", kExitUsage);
     std::vector<std::string> inputs;
     for (const auto& folder : arguments.analyses) inputs.push_back((fs::path(folder) / "summary.json").string());
     refuseOutputOverInputs(arguments.table, OutputKind::File, inputs, "--table");

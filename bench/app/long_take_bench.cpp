@@ -14,7 +14,7 @@
 #include "app/file_controller.h"
 #include "app/main_window.h"
 #include "app/playback_controller.h"
-#include "app/recomputer.h"
+#include "app/stage_scheduler.h"
 #include "app/viewport_panel.h"
 
 #include "widgets/graph_grid.h"
@@ -41,9 +41,7 @@ bool g_opened = false;
 
 bool idle(app::MainWindow& main)
 {
-    const auto recomputers = main.findChildren<app::Recomputer*>();
-    return !main.analysis().scheduler().busy() &&
-           std::none_of(recomputers.begin(), recomputers.end(), [](auto* r) { return r->busy(); });
+    return !main.analysis().scheduler().busy();
 }
 
 app::MainWindow& window()

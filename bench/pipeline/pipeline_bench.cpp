@@ -51,8 +51,9 @@ void BM_WholeChain(benchmark::State& state)
 BENCHMARK(BM_WholeChain)->ArgName("with_arma")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 /// The whole chain with its cells and channels split over `threads` threads (ChainOptions::threads,
-/// `bunraku analyse --threads`): wall-clock time, since the calling thread's CPU time leaves out
-/// the others'. The label is the stage digests, the same for every thread count.
+/// `bunraku analyse --threads`): wall-clock time (the speed-up) and the CPU time of every thread
+/// of the process (the cost of splitting). The label is the stage digests, the same for every
+/// thread count.
 void BM_WholeChainThreads(benchmark::State& state)
 {
     ChainOptions options;
@@ -69,9 +70,9 @@ void BM_WholeChainThreads(benchmark::State& state)
     }
     state.SetLabel(digest);
 }
-BENCHMARK(BM_WholeChainThreads)->ArgName("threads")->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_WholeChainThreads)->ArgName("threads")->Arg(1)->Arg(2)->MeasureProcessCPUTime()->UseRealTime()->Unit(benchmark::kMillisecond);
 
-/// One threaded stage alone from its cached inputs, on 1 and 2 threads (wall-clock).
+/// One threaded stage alone from its cached inputs, on 1 and 2 threads (wall-clock and process CPU).
 void BM_StageThreads(benchmark::State& state)
 {
     static const ChainResult inputs = std::move(runChain(demo(), {}, nullptr)).value();
@@ -98,6 +99,7 @@ void BM_StageThreads(benchmark::State& state)
 BENCHMARK(BM_StageThreads)
     ->ArgNames({"stage", "threads"})
     ->ArgsProduct({{int(Stage::Normalise), int(Stage::Fluctuations), int(Stage::Axes)}, {1, 2}})
+    ->MeasureProcessCPUTime()
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
 

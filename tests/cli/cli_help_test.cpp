@@ -1,11 +1,14 @@
 // `bunraku help SUBCOMMAND` and `bunraku --version`, run as a user would.
+#include "tests/cli/cli_files.h"
 #include "tests/cli/cli_runner.h"
+#include "tests/support/test_paths.h"
 
 #include "app/build_info.h"
 
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <filesystem>
 #include <regex>
 #include <set>
 
@@ -58,17 +61,17 @@ TEST_CASE("bunraku help SUBCOMMAND prints what SUBCOMMAND --help prints, for eve
 TEST_CASE("bunraku help with an unknown subcommand names the ones there are", "[cli][help]")
 {
     const auto run = runBunraku({"help", "normalize"});
-    CHECK(run.exitCode == 1);
+    CHECK(run.exitCode == 2); // a usage error
     CHECK(run.out.empty());
     CHECK(std::count(run.err.begin(), run.err.end(), '\n') == 1);
     CHECK(run.err.rfind("bunraku: error: 'bunraku' has no subcommand 'normalize' (expected one of: ", 0) == 0);
     CHECK(run.err.find("normalise") != std::string::npos);
 
     const auto nested = runBunraku({"help", "experiment", "nope"});
-    CHECK(nested.exitCode == 1);
+    CHECK(nested.exitCode == 2);
     CHECK(nested.err.find("'bunraku experiment' has no subcommand 'nope' (expected one of: noise, truth, km2o, design, approximation)")
           != std::string::npos);
-    CHECK(runBunraku({"help", "demo", "extra"}).exitCode == 1);
+    CHECK(runBunraku({"help", "demo", "extra"}).exitCode == 2);
 }
 
 TEST_CASE("bunraku --version names the version, the commit and the licence", "[cli][help]")
@@ -78,4 +81,29 @@ TEST_CASE("bunraku --version names the version, the commit and the licence", "[c
     CHECK(run.out.rfind("bunraku " BUNRAKU_TEST_PROJECT_VERSION "\ncommit " + std::string(bunraku::app::buildCommit()), 0) == 0);
     CHECK(std::regex_search(run.out, std::regex("\ncommit [0-9a-f]{12}(-dirty)? \\(\\d{4}-\\d{2}-\\d{2}\\)\n")));
     CHECK(run.out.find("License GPL-3.0-or-later") != std::string::npos);
+}
+
+TEST_CASE("exit codes: 0 done, 1 bad input, 2 usage, 3 I/O, as bunraku --help says", "[cli][help]")
+{
+    const auto help = runBunraku({"--help"});
+    CHECK(help.exitCode == 0);
+    CHECK(help.out.find("Exit status: 0 done; 1 bad input") != std::string::npos);
+    CHECK(help.out.find("2 bad command line") != std::string::npos);
+    CHECK(help.out.find("3 a file could not be read or written") != std::string::npos);
+
+    const auto dir = bunraku::test::scratchDir("cli_exit_codes");
+    CHECK(runBunraku({"analyse"}).exitCode == 2);                                  // CORPUS and -o missing
+    CHECK(runBunraku({"analyse", "demo", "-o", (dir / "a").string(), "--threads", "-1"}).exitCode == 2); // out of range
+    CHECK(runBunraku({"frobnicate"}).exitCode == 2);
+    // Bad input: a corpus folder without corpus.json.
+    std::filesystem::create_directories(dir / "empty");
+    const auto bad = runBunraku({"analyse", (dir / "empty").string(), "-o", (dir / "b").string()});
+    CHECK(bad.exitCode == 1);
+    CHECK(bad.err.rfind("bunraku: error: ", 0) == 0);
+    // I/O: the output's parent is a file, so nothing can be written there.
+    bunraku::test::writeText(dir / "file", "x");
+    const auto io = runBunraku({"demo", "-o", (dir / "file" / "demo").string()});
+    INFO(io.err);
+    CHECK(io.exitCode == 3);
+    CHECK(io.err.rfind("bunraku: error: ", 0) == 0);
 }
