@@ -6,9 +6,9 @@
 #
 # It builds nothing but calls scripts/build.sh when bunraku or bunraku-workbench is missing.
 # Every image is written to a temporary file in docs/ and renamed over the old one once
-# complete; the corpora, projects and takes it needs are made in a temporary folder that is
+# complete; the corpora, projects and takes it needs are made in /tmp/bunraku-screenshots,
 # removed at the end. The workbench runs with its own empty settings (XDG_* folders in the
-# temporary folder), so your saved layout, recent files and autosaves are neither used nor
+# scratch folder), so your saved layout, recent files and autosaves are neither used nor
 # touched. Running it twice gives the same images.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -36,11 +36,20 @@ fi
 
 bunraku="$build/bin/bunraku"
 workbench="$build/bin/bunraku-workbench"
-work="$(mktemp -d "${TMPDIR:-/tmp}/bunraku-screenshots.XXXXXX")"
+# A fixed scratch folder: the status bar in the pictures names the corpus it opened, and the
+# same name gives the same pictures. It is removed only when this script made it (its marker).
+work=/tmp/bunraku-screenshots
+marker="$work/.made-by-screenshots.sh"
+if [ -e "$work" ] && [ ! -f "$marker" ]; then
+  echo "screenshots.sh: $work exists and was not made by this script; move it away first" >&2
+  exit 1
+fi
+rm -rf "$work"
+mkdir -p "$work" && touch "$marker"
 pending=""
 cleanup() {
   [ -n "$pending" ] && rm -f "$pending"
-  rm -rf "$work"
+  [ -f "$marker" ] && rm -rf "$work"
 }
 trap cleanup EXIT
 export XDG_CONFIG_HOME="$work/config" XDG_DATA_HOME="$work/data" XDG_CACHE_HOME="$work/cache" XDG_RUNTIME_DIR="$work/runtime"
@@ -70,7 +79,7 @@ shot() {
 project() {
   printf '{"format": "bunraku-project", "version": 2, "corpus": "%s", "takeA": "%s", "takeB": "%s", "time_s": 2.0%s}\n' \
     "$work/waves" "$2" "$3" "$4" >"$work/$1.bunraku.json"
-  echo "$work/$1.bunraku.json"
+  echo "$1.bunraku.json"
 }
 
 # Inputs: the tutorial's corpus of the 15 waves, the guide's designed bye, the tutorial's designed wave.
@@ -89,6 +98,7 @@ project() {
 # The CLI's warp curve as the project's design.warp ([[output, source], ...]).
 warp_json="$(awk -F, 'NR > 1 { printf "%s[%s, %s]", (n++ ? ", " : ""), $1, $2 }' "$work/warp.csv")"
 
+cd "$work"
 # The user guide and the README: the demo corpus at a laptop's size.
 shot screenshot.png "$workbench" --window-size 1366x768 --screenshot @OUT@
 shot screenshot-normalisation.png "$workbench" --window-size 1366x768 --raise Normalisation --screenshot @OUT@
