@@ -3,11 +3,14 @@
 // figure per take: the skeleton drawn, a click on a bone selecting its part's graphs.
 #include "app_test_support.h"
 
+#include "app/design_controller.h"
 #include "app/export_controller.h"
 #include "app/viewport_panel.h"
 #include "analysis/core/skeleton.h"
 #include "analysis/io/bvh.h"
 #include "analysis/io/take_csv.h"
+#include "analysis/io/corpus_builder.h"
+#include "analysis/io/corpus_io.h"
 #include "tests/support/peer.h"
 
 #include <catch2/catch.hpp>
@@ -19,6 +22,7 @@
 #include <QSignalSpy>
 #include <QTest>
 
+#include <algorithm>
 #include <fstream>
 #include <iterator>
 
@@ -134,4 +138,40 @@ TEST_CASE("the 3D view draws take A's skeleton and a click on its hand bone show
     CHECK(bones.at(0).at(1).toString() == QStringLiteral("Hand_R"));
     CHECK(bones.at(0).at(2).toString() == QStringLiteral("hand"));
     CHECK(window->graphPanel()->selectedPart() == QStringLiteral("hand"));
+}
+
+TEST_CASE("a timing designed on a corpus of Bandai waves exports on the performer's 22-joint skeleton", "[app][export][design]")
+{
+    // File > New Corpus from Files (the same builder), the Design dock's designed take shown as
+    // A, File > Export Take A as BVH.
+    std::vector<std::filesystem::path> files;
+    for (const char* style : {"normal", "active"})
+        for (int k = 1; k <= 3; ++k) files.push_back(test::bandaiDir() / ("wave-right-hand_" + std::string(style) + "_00" + std::to_string(k) + ".bvh"));
+    const bool present = std::all_of(files.begin(), files.end(), [](const auto& f) { return std::filesystem::exists(f); });
+    if (!test::requirePeer(present, "Bandai waves in " + test::bandaiDir().string(), "the shared data beside the repository (../shared/data/bandai)"))
+        return;
+    auto sources = analysis::io::labelTakeFiles(files, "{function}_{emotion}_{take}");
+    REQUIRE(sources.ok());
+    analysis::io::CorpusBuildOptions options;
+    options.import.bvh.guessUnits = true;
+    options.name = "waves";
+    auto built = analysis::io::buildCorpus(*sources, options);
+    REQUIRE(built.ok());
+    const auto dir = test::scratchDir("export_designed_waves");
+    REQUIRE(analysis::io::writeCorpus(built->corpus, dir / "corpus").ok());
+
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    REQUIRE(window->files().openCorpusFolder(QString::fromStdString((dir / "corpus").string())));
+    REQUIRE(QTest::qWaitFor([&] { return window->design().ready() && !window->analysis().scheduler().busy(); }, 120000));
+    const auto designed = window->design().designedTake();
+    REQUIRE(designed);
+    REQUIRE(designed->skeleton); // the functional take's whole skeleton, at the designed timing
+    window->document().selectTake(TakeSlot::A, QStringLiteral("live/designed"));
+    REQUIRE(window->exports().exportTake(TakeSlot::A, QString::fromStdString((dir / "designed.bvh").string())));
+    auto file = analysis::io::readBvh(dir / "designed.bvh");
+    REQUIRE(file.ok());
+    CHECK(file->skeleton.jointCount() == 22);
+    CHECK(file->motion.values.rows() == designed->frameCount());
+    CHECK(file->skeleton.joints[std::size_t(file->skeleton.find("Hand_R"))].name == "Hand_R");
 }

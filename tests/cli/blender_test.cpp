@@ -195,3 +195,40 @@ TEST_CASE("blender imports a designed demo take as glTF: the puppet's parts as b
         CHECK(worstDistance(blender, f, expected, 0.01) < 0.1);
     }
 }
+
+TEST_CASE("blender imports a designed Bandai take on the performer's 22-joint skeleton", "[cli][blender][design]")
+{
+    // The whole edit of the thesis's chapter 5 from the command line: the angry take's timing
+    // (phase) and per-phrase gains applied to the normal take, exported as BVH and glTF.
+    const fs::path normal = bunraku::test::bandaiDir() / "bye_normal_001.bvh";
+    const fs::path angry = bunraku::test::bandaiDir() / "bye_angry_001.bvh";
+    if (!bunraku::test::requirePeer(fs::exists(normal) && fs::exists(angry), "Bandai files in " + bunraku::test::bandaiDir().string(),
+                                    "the shared data beside the repository (../shared/data/bandai)"))
+        return;
+    if (!bunraku::test::requirePeer(haveBlender(), "blender (Debian's Blender 3.4)", "apt-get install blender (scripts/install-deps.sh)")) return;
+    const fs::path dir = bunraku::test::scratchDir("blender_designed");
+    const std::string warp = (dir / "warp.csv").string();
+    const std::string gains = (dir / "gains.json").string();
+    REQUIRE(runBunraku({"phase", "--reference", normal.string(), "--sample", angry.string(), "-o", warp}).exitCode == 0);
+    REQUIRE(runBunraku({"gains", "--reference", normal.string(), "--sample", angry.string(), "--warp", warp, "-o", gains}).exitCode == 0);
+    for (const std::string kind : {"bvh", "glb"}) {
+        const auto run = runBunraku({"design", normal.string(), "--warp", warp, "--gains", gains, "-o", (dir / ("designed." + kind)).string()});
+        INFO(run.err);
+        REQUIRE(run.exitCode == 0);
+    }
+    const auto source = bandaiMotion(normal);
+    const auto designed = bandaiMotion(dir / "designed.bvh");
+    REQUIRE(designed->skeleton->jointCount() == 22);
+    CHECK(designed->frameCount() == bandaiMotion(angry)->frameCount()); // the emotional take's timing
+    // Not the source replayed: the designed timing moves the joints.
+    double moved = 0.0;
+    for (Eigen::Index f : sampledFrames(designed->frameCount())) {
+        const auto ours = jointPositions(*designed, f);
+        const auto theirs = jointPositions(*source, std::min(f, source->frameCount() - 1));
+        for (const auto& [name, p] : ours) moved = std::max(moved, (p - theirs.at(name)).norm());
+    }
+    CHECK(moved > 1.0);
+    // Blender reads both files as the designed motion (the glTF against the BVH's joints).
+    checkSkeletonInBlender(dir / "designed.bvh", "bvh", *designed);
+    checkSkeletonInBlender(dir / "designed.glb", "glb", *designed);
+}
