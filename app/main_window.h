@@ -34,6 +34,7 @@ class NormalisePanel;
 class ExportController;
 class FileController;
 class MultimodalExportController;
+class ViewVideoController;
 class PlaybackController;
 class SideColumns;
 class ViewportPanel;
@@ -77,17 +78,9 @@ public:
 
     /// Grabs `widget` (the whole window when null) into an image file (PNG by extension).
     bool saveScreenshot(const QString& file, QWidget* widget = nullptr);
-    /// Writes every frame of take A (take A's frame count, whatever take B's length) as seen in
-    /// the 3D view to `folder`/frame_00000.png ... (exportViewVideo with a PNG sequence at the
-    /// view's size). Returns the frames written; 0 when `folder` already holds frame_*.png.
+    /// File > Export 3D View Video's exports (view_video_controller.h): every frame of take A as
+    /// PNGs at the view's size, and a frame range as MP4 or PNGs at any size.
     int exportViewFrames(const QString& folder);
-    /// Exports the 3D view over a frame range of take A (frames at take A's rate, both takes
-    /// shown; lastFrame -1 = take A's last frame) as an MP4 or a PNG sequence, without asking
-    /// anything (a folder holding frames is refused unless options.overwrite). At the view's size the view
-    /// itself is grabbed (what you see); at another size, or with the view hidden, an offscreen
-    /// renderer draws the same takes, camera and toggles. `progress` (done, total) returns false
-    /// to cancel; without it a QProgressDialog with Cancel ("videoExportProgress") shows. The
-    /// document's time and playback are restored afterwards; on cancel or error nothing is left.
     VideoExportResult exportViewVideo(const VideoExportOptions& options, const ExportProgress& progress = {});
 
 protected:
@@ -112,7 +105,6 @@ private:
     void chooseReport();
     void showStageStatus();
     /// File > Export 3D View Video...: the dialog, the export, then a message on error.
-    void chooseViewVideo();
     /// Help > Keyboard Shortcuts.
     void showShortcuts();
     QVariantMap viewState() const;
@@ -133,6 +125,7 @@ private:
     NormalisePanel* m_normalisePanel = nullptr;
     EmotionPanel* m_emotionPanel = nullptr;
     MultimodalExportController* m_multimodal = nullptr;
+    ViewVideoController* m_viewVideo = nullptr;
     std::vector<QDockWidget*> m_docks;
     QByteArray m_defaultState;
     QMenu* m_viewMenu = nullptr;
