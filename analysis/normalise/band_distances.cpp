@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cstddef>
 
-#if defined(__GNUC__) && defined(__x86_64__)
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) // GCC target pragmas (clang: plain kernels)
 #define BUNRAKU_BAND_SIMD 1
 #include <immintrin.h>
 #endif

@@ -6,7 +6,7 @@
 #include <memory>
 #include <vector>
 
-#if defined(__GNUC__) && defined(__x86_64__)
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) // GCC target pragmas (clang: plain kernels)
 #define BUNRAKU_CWT_SIMD 1
 #include <immintrin.h>
 #endif

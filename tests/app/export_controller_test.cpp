@@ -13,6 +13,8 @@
 #include "analysis/io/corpus_io.h"
 #include "tests/support/peer.h"
 
+#include "tests/support/test_paths.h"
+
 #include <catch2/catch.hpp>
 #include "widgets/graph_panel.h"
 #include "widgets/viewport_widget.h"
@@ -48,12 +50,6 @@ bool showBandaiTakes(app::MainWindow& window)
     return true;
 }
 
-std::string readBytes(const std::filesystem::path& file)
-{
-    std::ifstream in(file, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 } // namespace
 
 TEST_CASE("File > Export Take A and B write BVH on the take's skeleton, glTF and CSV", "[app][export]")
@@ -71,7 +67,7 @@ TEST_CASE("File > Export Take A and B write BVH on the take's skeleton, glTF and
     const auto dir = test::scratchDir("export_controller");
     // A corpus take has no skeleton: BVH in the part layout, glTF as the puppet.
     REQUIRE(window->exports().exportTake(TakeSlot::A, QString::fromStdString((dir / "demo.glb").string())));
-    CHECK(readBytes(dir / "demo.glb").substr(0, 4) == "glTF");
+    CHECK(bunraku::test::fileBytes(dir / "demo.glb").substr(0, 4) == "glTF");
     // A file that cannot be written is refused with its name, and nothing appears.
     CHECK_FALSE(window->exports().exportTake(TakeSlot::A, QString::fromStdString((dir / "take.fbx").string())));
     CHECK(window->exports().lastError().contains(QStringLiteral("take.fbx")));
@@ -93,7 +89,7 @@ TEST_CASE("File > Export Take A and B write BVH on the take's skeleton, glTF and
     CHECK(a->motion.values.rows() == takeA->frameCount());
     CHECK(b->motion.values.rows() == takeB->frameCount());
     CHECK(a->skeleton.joints[std::size_t(a->skeleton.find("Hand_R"))].name == "Hand_R");
-    CHECK(readBytes(dir / "b.glb").find("\"LowerArm_R\"") != std::string::npos); // the joints' names in the glTF's JSON
+    CHECK(bunraku::test::fileBytes(dir / "b.glb").find("\"LowerArm_R\"") != std::string::npos); // the joints' names in the glTF's JSON
     auto csv = analysis::io::readTakeCsv(dir / "a.csv");
     REQUIRE(csv.ok());
     CHECK((csv->values - takeA->values).cwiseAbs().maxCoeff() < 1e-6);

@@ -2,6 +2,8 @@
 /// Paths the tests read from: the source tree, the shared test data (../shared/data) and a
 /// scratch folder per test under the build tree.
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 namespace bunraku::test {
@@ -17,6 +19,13 @@ inline std::filesystem::path scratchDir(const std::string& name)
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     return dir;
+}
+
+/// A file's bytes as they are on disk (empty when it cannot be read).
+inline std::string fileBytes(const std::filesystem::path& file)
+{
+    std::ifstream in(file, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
 } // namespace bunraku::test

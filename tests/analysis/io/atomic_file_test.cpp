@@ -6,6 +6,8 @@
 #include "analysis/io/take_reader.h"
 #include "tests/analysis/io/io_test_support.h"
 
+#include "tests/support/test_paths.h"
+
 #include <catch2/catch.hpp>
 
 #include <csignal>
@@ -22,12 +24,6 @@ using Catch::Matchers::Contains;
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string slurp(const fs::path& file)
-{
-    std::ifstream in(file, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-}
 
 /// Names in `folder` other than `keep`.
 std::vector<std::string> othersIn(const fs::path& folder, const std::string& keep)
@@ -57,7 +53,7 @@ TEST_CASE("a write replaces the file whole and keeps its permissions", "[io][ato
     REQUIRE(writeFileAtomically(file, "first").ok());
     ::chmod(file.c_str(), 0640);
     REQUIRE(writeFileAtomically(file, "second, longer").ok());
-    CHECK(slurp(file) == "second, longer");
+    CHECK(bunraku::test::fileBytes(file) == "second, longer");
     struct stat info {};
     REQUIRE(::stat(file.c_str(), &info) == 0);
     CHECK((info.st_mode & 0777) == 0640);
@@ -88,7 +84,7 @@ TEST_CASE("a write that fails on a full disk leaves the old file whole and no te
     REQUIRE(::waitpid(child, &status, 0) == child);
     CHECK(WIFEXITED(status));
     CHECK(WEXITSTATUS(status) == 0); // refused, naming the file and the cause
-    CHECK(slurp(file) == old);
+    CHECK(bunraku::test::fileBytes(file) == old);
     CHECK(othersIn(dir, "g.json").empty());
 }
 

@@ -8,6 +8,8 @@
 #include "tests/support/bandai_files.h"
 #include "tests/support/bvh_fixtures.h"
 
+#include "tests/support/test_paths.h"
+
 #include <catch2/catch.hpp>
 
 #include <fstream>
@@ -19,14 +21,6 @@ using Catch::Matchers::Contains;
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string readText(const fs::path& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    return buffer.str();
-}
 
 /// The largest difference between two skeletal motions: structure must be equal, numbers within `tolerance`.
 void requireSameSkeleton(const SkeletalMotion& a, const SkeletalMotion& b, double tolerance)
@@ -263,7 +257,7 @@ TEST_CASE("bad skeleton files in a corpus are errors naming the file and what wa
         return dir;
     };
     const auto edit = [](const fs::path& path, const std::string& from, const std::string& to) {
-        std::string text = readText(path);
+        std::string text = bunraku::test::fileBytes(path);
         const auto at = text.find(from);
         REQUIRE(at != std::string::npos);
         text.replace(at, from.size(), to);
@@ -273,7 +267,7 @@ TEST_CASE("bad skeleton files in a corpus are errors naming the file and what wa
         const auto dir = fresh("quaternion");
         // A rotation that is not a unit quaternion: frame 0's first rotation column doubled.
         const fs::path motion = dir / "wave_none_1.motion.csv";
-        std::string text = readText(motion);
+        std::string text = bunraku::test::fileBytes(motion);
         const std::string header = text.substr(0, text.find('\n'));
         const std::size_t column = std::size_t(std::count(header.begin(), header.begin() + std::ptrdiff_t(header.find(".qw")), ','));
         std::size_t start = header.size() + 1;

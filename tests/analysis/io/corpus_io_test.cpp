@@ -3,6 +3,8 @@
 #include "analysis/io/staged_folder.h"
 #include "tests/analysis/io/io_test_support.h"
 
+#include "tests/support/test_paths.h"
+
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
@@ -35,12 +37,6 @@ Corpus smallCorpus()
     return corpus;
 }
 
-std::string slurp(const std::filesystem::path& file)
-{
-    std::ifstream in(file);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
 } // namespace
 
 TEST_CASE("a corpus written and read back is identical")
@@ -63,7 +59,7 @@ TEST_CASE("a corpus written and read back is identical")
         CHECK(back->takes[i].channels == original.takes[i].channels);
         CHECK(back->takes[i].values == original.takes[i].values);
     }
-    const auto manifest = nlohmann::json::parse(slurp(dir / "corpus" / "corpus.json"));
+    const auto manifest = nlohmann::json::parse(bunraku::test::fileBytes(dir / "corpus" / "corpus.json"));
     CHECK(manifest["format"] == kCorpusFormatName);
     CHECK(manifest["version"] == kCorpusFormatVersion);
     CHECK(manifest["channels"].size() == 24);
@@ -110,7 +106,7 @@ TEST_CASE("a failed corpus write leaves the previous corpus untouched")
     std::filesystem::create_directories(dir / "other");
     bunraku::test::writeText(dir / "other" / "notes.txt", "keep me");
     CHECK_FALSE(writeCorpus(original, dir / "other").ok());
-    CHECK(slurp(dir / "other" / "notes.txt") == "keep me");
+    CHECK(bunraku::test::fileBytes(dir / "other" / "notes.txt") == "keep me");
     // a path under a regular file cannot be created
     bunraku::test::writeText(dir / "plain", "x");
     CHECK_FALSE(writeCorpus(original, dir / "plain" / "c").ok());
@@ -121,7 +117,7 @@ TEST_CASE("corpus reader errors name the file and what was expected")
     const auto dir = bunraku::test::scratchDir("corpus_errors");
     REQUIRE(writeCorpus(smallCorpus(), dir / "c").ok());
     const auto manifestPath = dir / "c" / "corpus.json";
-    const auto manifest = nlohmann::json::parse(slurp(manifestPath));
+    const auto manifest = nlohmann::json::parse(bunraku::test::fileBytes(manifestPath));
 
     SECTION("invalid JSON names the line")
     {
@@ -198,7 +194,7 @@ TEST_CASE("corpus manifests with absurd numbers are errors, not crashes")
     const auto dir = bunraku::test::scratchDir("corpus_absurd");
     REQUIRE(writeCorpus(smallCorpus(), dir / "c").ok());
     const auto manifestPath = dir / "c" / "corpus.json";
-    const auto manifest = nlohmann::json::parse(slurp(manifestPath));
+    const auto manifest = nlohmann::json::parse(bunraku::test::fileBytes(manifestPath));
     for (const char* key : {"take", "frames"}) {
         for (double value : {1e300, -5.0, 2.5}) {
             auto changed = manifest;

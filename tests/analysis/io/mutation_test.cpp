@@ -5,6 +5,8 @@
 #include "analysis/io/take_csv.h"
 #include "tests/analysis/io/io_test_support.h"
 
+#include "tests/support/test_paths.h"
+
 #include <catch2/catch.hpp>
 
 #include <fstream>
@@ -15,12 +17,6 @@ using namespace bunraku::analysis::io;
 using Catch::Matchers::Contains;
 
 namespace {
-
-std::string slurp(const std::filesystem::path& file)
-{
-    std::ifstream in(file, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-}
 
 /// `text` with a few characters replaced, deleted or duplicated.
 std::string mutate(const std::string& text, std::mt19937& rng)
@@ -45,9 +41,9 @@ std::string mutate(const std::string& text, std::mt19937& rng)
 TEST_CASE("damaged csv, bvh and fastrak files are read or rejected with their name")
 {
     std::mt19937 rng(7);
-    const std::string csv = slurp(bunraku::test::ioDataDir() / "semicolon_crlf.csv");
-    const std::string bvh = slurp(bunraku::test::ioDataDir() / "two_joint_chain.bvh");
-    const std::string fastrak = slurp(bunraku::test::ioDataDir() / "fastrak_sample.txt");
+    const std::string csv = bunraku::test::fileBytes(bunraku::test::ioDataDir() / "semicolon_crlf.csv");
+    const std::string bvh = bunraku::test::fileBytes(bunraku::test::ioDataDir() / "two_joint_chain.bvh");
+    const std::string fastrak = bunraku::test::fileBytes(bunraku::test::ioDataDir() / "fastrak_sample.txt");
     REQUIRE_FALSE(csv.empty());
     REQUIRE_FALSE(bvh.empty());
     REQUIRE_FALSE(fastrak.empty());

@@ -8,6 +8,8 @@
 #include "analysis/io/take_csv.h"
 #include "tests/analysis/io/io_test_support.h"
 
+#include "tests/support/test_paths.h"
+
 #include <catch2/catch.hpp>
 
 #include <fstream>
@@ -18,12 +20,6 @@ using Catch::Matchers::Contains;
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string slurp(const fs::path& file)
-{
-    std::ifstream in(file, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-}
 
 Corpus twoTakeCorpus()
 {
@@ -59,7 +55,7 @@ TEST_CASE("a corpus.json number JSON cannot hold is an error naming the file, no
 {
     const auto dir = bunraku::test::scratchDir("limits-corpus-1e400");
     REQUIRE(writeCorpus(twoTakeCorpus(), dir / "c").ok());
-    std::string manifest = slurp(dir / "c" / "corpus.json");
+    std::string manifest = bunraku::test::fileBytes(dir / "c" / "corpus.json");
     const auto at = manifest.find("\"rate_hz\": 5.0");
     REQUIRE(at != std::string::npos);
     manifest.replace(at, 14, "\"rate_hz\": 1e400");

@@ -7,6 +7,8 @@
 #include "analysis/io/staged_folder.h"
 #include "tests/analysis/io/io_test_support.h"
 
+#include "tests/support/test_paths.h"
+
 #include <catch2/catch.hpp>
 
 #include <fstream>
@@ -20,12 +22,6 @@ using Catch::Matchers::Contains;
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string slurp(const fs::path& file)
-{
-    std::ifstream in(file, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-}
 
 Corpus oneTakeCorpus(double value)
 {
@@ -61,8 +57,8 @@ TEST_CASE("a staged folder appears whole with its manifest, and replaces what it
         CHECK_FALSE(fs::exists(dir / "out")); // nothing in place before the commit
         REQUIRE(staged->commit().ok());
     }
-    CHECK(slurp(dir / "out" / "a.csv") == "one");
-    CHECK(slurp(dir / "out" / "sub" / "b.csv") == "two");
+    CHECK(bunraku::test::fileBytes(dir / "out" / "a.csv") == "one");
+    CHECK(bunraku::test::fileBytes(dir / "out" / "sub" / "b.csv") == "two");
     CHECK(foreignFiles(dir / "out").empty());
     CHECK(entries(dir) == std::vector<std::string>{"out"});
 
@@ -95,8 +91,8 @@ TEST_CASE("a folder holding files this program did not write is refused, naming 
     REQUIRE_FALSE(status.ok());
     CHECK_THAT(status.error().message, Contains("corpus") && Contains("notes.txt") && Contains("sub/photo.jpg") &&
                                            Contains("did not write"));
-    CHECK(slurp(dir / "corpus" / "notes.txt") == "my notes");
-    CHECK(slurp(dir / "corpus" / "sub" / "photo.jpg") == "a photo");
+    CHECK(bunraku::test::fileBytes(dir / "corpus" / "notes.txt") == "my notes");
+    CHECK(bunraku::test::fileBytes(dir / "corpus" / "sub" / "photo.jpg") == "a photo");
     CHECK(readCorpus(dir / "corpus")->takes.front().values(0, 0) == 1.0);
     CHECK(entries(dir) == std::vector<std::string>{"corpus"}); // no staging folder left
 
@@ -104,7 +100,7 @@ TEST_CASE("a folder holding files this program did not write is refused, naming 
     fs::remove(dir / "corpus" / "notes.txt");
     fs::remove_all(dir / "corpus" / "sub");
     REQUIRE(writeCorpus(oneTakeCorpus(3.0), dir / "corpus").ok());
-    std::string edited = slurp(dir / "corpus" / "greeting_none_1.csv");
+    std::string edited = bunraku::test::fileBytes(dir / "corpus" / "greeting_none_1.csv");
     edited.back() = '4';
     bunraku::test::writeText(dir / "corpus" / "greeting_none_1.csv", edited);
     CHECK_THAT(writeCorpus(oneTakeCorpus(5.0), dir / "corpus").error().message, Contains("greeting_none_1.csv"));
