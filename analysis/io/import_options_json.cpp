@@ -68,6 +68,28 @@ Status checkEnums(const nlohmann::json& json, const std::string& where)
     return okStatus();
 }
 
+/// Every number of the options is a rate, a scale, a tolerance, a station, a take or a frame
+/// number: none needs more than 2^31 in magnitude, and nlohmann-json converts a larger floating
+/// value to an int field with undefined behaviour - refuse it first, naming where it is.
+Status checkNumbers(const nlohmann::json& json, const std::string& where, const std::string& path = {})
+{
+    if (json.is_number()) {
+        const double value = json.get<double>();
+        if (!std::isfinite(value) || std::fabs(value) > 2147483647.0)
+            return parseError(where, 0, "import options: " + (path.empty() ? std::string("/") : path) + ": " + json.dump().substr(0, 40) +
+                                            " is out of range");
+        return okStatus();
+    }
+    if (json.is_array()) {
+        for (std::size_t i = 0; i < json.size(); ++i)
+            if (auto ok = checkNumbers(json[i], where, path + "/" + std::to_string(i)); !ok) return ok;
+    } else if (json.is_object()) {
+        for (const auto& [key, value] : json.items())
+            if (auto ok = checkNumbers(value, where, path + "/" + key); !ok) return ok;
+    }
+    return okStatus();
+}
+
 } // namespace
 
 nlohmann::json importOptionsToJson(const ImportOptions& options) { return options; }
@@ -76,6 +98,7 @@ Result<ImportOptions> importOptionsFromJson(const nlohmann::json& json, const st
 {
     if (!json.is_object()) return parseError(where, 0, "expected the import options as a JSON object");
     if (auto enums = checkEnums(json, where); !enums) return enums.error();
+    if (auto numbers = checkNumbers(json, where); !numbers) return numbers.error();
     ImportOptions options;
     try {
         options = json.get<ImportOptions>();
