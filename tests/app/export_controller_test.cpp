@@ -12,6 +12,7 @@
 #include "analysis/io/corpus_builder.h"
 #include "analysis/io/corpus_io.h"
 #include "tests/support/peer.h"
+#include "tests/support/shared_data.h"
 
 #include "tests/support/test_paths.h"
 
@@ -37,7 +38,7 @@ namespace {
 bool showBandaiTakes(app::MainWindow& window)
 {
     const auto normal = test::bandaiDir() / "bye_normal_001.bvh", angry = test::bandaiDir() / "bye_angry_001.bvh";
-    if (!test::requirePeer(std::filesystem::exists(normal) && std::filesystem::exists(angry), "Bandai files not found in " + test::bandaiDir().string(), "the shared data beside the repository (../shared/data/bandai)"))
+    if (!test::requireBandaiData(std::filesystem::exists(normal) && std::filesystem::exists(angry)))
         return false;
     REQUIRE(window.files().importTakeFile(QString::fromStdString(normal.string())));
     REQUIRE(window.files().importTakeFile(QString::fromStdString(angry.string())));
@@ -144,7 +145,7 @@ TEST_CASE("a timing designed on a corpus of Bandai waves exports on the performe
     for (const char* style : {"normal", "active"})
         for (int k = 1; k <= 3; ++k) files.push_back(test::bandaiDir() / ("wave-right-hand_" + std::string(style) + "_00" + std::to_string(k) + ".bvh"));
     const bool present = std::all_of(files.begin(), files.end(), [](const auto& f) { return std::filesystem::exists(f); });
-    if (!test::requirePeer(present, "Bandai waves in " + test::bandaiDir().string(), "the shared data beside the repository (../shared/data/bandai)"))
+    if (!test::requireBandaiData(present))
         return;
     auto sources = analysis::io::labelTakeFiles(files, "{function}_{emotion}_{take}");
     REQUIRE(sources.ok());

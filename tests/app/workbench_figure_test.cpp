@@ -1,6 +1,7 @@
 // bunraku-workbench --figure: the 3D view's figure for takes A and B from the command line (the
 // guide's screenshots are made this way).
 #include "tests/support/peer.h"
+#include "tests/support/shared_data.h"
 #include "tests/support/test_paths.h"
 
 #include <catch2/catch.hpp>
@@ -34,7 +35,7 @@ int runWorkbench(const std::string& arguments, const std::filesystem::path& erro
 TEST_CASE("bunraku-workbench --figure shows a Bandai take's skeleton in the window's screenshot", "[app][skeleton]")
 {
     const auto source = bunraku::test::bandaiDir() / "bye_angry_001.bvh";
-    if (!bunraku::test::requirePeer(std::filesystem::exists(source), "Bandai file " + source.string() + " not found", "the shared data beside the repository (../shared/data/bandai)")) return;
+    if (!bunraku::test::requireBandaiData(std::filesystem::exists(source))) return;
     const auto dir = bunraku::test::scratchDir("workbench_figure");
     for (const std::string figure : {"puppet", "skeleton"}) {
         const auto png = dir / (figure + ".png");

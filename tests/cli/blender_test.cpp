@@ -4,6 +4,7 @@
 // Blender the cases fail under CI=true and are reported as skipped otherwise.
 #include "tests/cli/cli_runner.h"
 #include "tests/support/peer.h"
+#include "tests/support/shared_data.h"
 #include "tests/support/test_paths.h"
 
 #include "analysis/body/body_description.h"
@@ -28,7 +29,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-bool haveBlender() { return std::system("command -v blender >/dev/null 2>&1") == 0; }
+/// Debian's Blender 3.4, the real client the exports are checked against (a missing one fails
+/// under CI=true, tests/support/peer.h).
+bool requireBlender()
+{
+    return bunraku::test::requirePeer(std::system("command -v blender >/dev/null 2>&1") == 0, "blender (Debian's Blender 3.4)",
+                                      "apt-get install blender (scripts/install-deps.sh)");
+}
 
 /// What Blender made of a file (blender_import.py's JSON).
 json blenderImport(const std::string& kind, const fs::path& file, const std::vector<Eigen::Index>& frames)
@@ -112,8 +119,8 @@ std::shared_ptr<const SkeletalMotion> bandaiMotion(const fs::path& path)
 TEST_CASE("blender imports a bandai take exported by the command line as BVH and glTF on its 22-joint skeleton", "[cli][blender]")
 {
     const fs::path source = bunraku::test::bandaiDir() / "bye_angry_001.bvh";
-    if (!bunraku::test::requirePeer(fs::exists(source), "Bandai file " + source.string() + " not found", "the shared data beside the repository (../shared/data/bandai)")) return;
-    if (!bunraku::test::requirePeer(haveBlender(), "blender (Debian's Blender 3.4)", "apt-get install blender (scripts/install-deps.sh)")) return;
+    if (!bunraku::test::requireBandaiData(fs::exists(source))) return;
+    if (!requireBlender()) return;
     const auto motion = bandaiMotion(source);
     REQUIRE(motion->skeleton->jointCount() == 22);
     const fs::path dir = bunraku::test::scratchDir("blender_bandai");
@@ -130,8 +137,8 @@ TEST_CASE("blender imports a bandai take exported by the command line as BVH and
 TEST_CASE("blender imports a derived take on the source skeleton", "[cli][blender]")
 {
     const fs::path source = bunraku::test::bandaiDir() / "bye_normal_001.bvh";
-    if (!bunraku::test::requirePeer(fs::exists(source), "Bandai file " + source.string() + " not found", "the shared data beside the repository (../shared/data/bandai)")) return;
-    if (!bunraku::test::requirePeer(haveBlender(), "blender (Debian's Blender 3.4)", "apt-get install blender (scripts/install-deps.sh)")) return;
+    if (!bunraku::test::requireBandaiData(fs::exists(source))) return;
+    if (!requireBlender()) return;
     auto file = io::readBvh(source);
     REQUIRE(file.ok());
     auto take = io::bvhToPuppetTake(*file);
@@ -169,7 +176,7 @@ TEST_CASE("blender imports a derived take on the source skeleton", "[cli][blende
 
 TEST_CASE("blender imports a designed demo take as glTF: the puppet's parts as bones with its mesh", "[cli][blender]")
 {
-    if (!bunraku::test::requirePeer(haveBlender(), "blender (Debian's Blender 3.4)", "apt-get install blender (scripts/install-deps.sh)")) return;
+    if (!requireBlender()) return;
     const fs::path dir = bunraku::test::scratchDir("blender_puppet");
     REQUIRE(runBunraku({"demo", "-o", (dir / "demo").string(), "--seed", "3"}).exitCode == 0);
     fs::path takeFile;
@@ -202,10 +209,9 @@ TEST_CASE("blender imports a designed Bandai take on the performer's 22-joint sk
     // (phase) and per-phrase gains applied to the normal take, exported as BVH and glTF.
     const fs::path normal = bunraku::test::bandaiDir() / "bye_normal_001.bvh";
     const fs::path angry = bunraku::test::bandaiDir() / "bye_angry_001.bvh";
-    if (!bunraku::test::requirePeer(fs::exists(normal) && fs::exists(angry), "Bandai files in " + bunraku::test::bandaiDir().string(),
-                                    "the shared data beside the repository (../shared/data/bandai)"))
+    if (!bunraku::test::requireBandaiData(fs::exists(normal) && fs::exists(angry)))
         return;
-    if (!bunraku::test::requirePeer(haveBlender(), "blender (Debian's Blender 3.4)", "apt-get install blender (scripts/install-deps.sh)")) return;
+    if (!requireBlender()) return;
     const fs::path dir = bunraku::test::scratchDir("blender_designed");
     const std::string warp = (dir / "warp.csv").string();
     const std::string gains = (dir / "gains.json").string();

@@ -2,6 +2,7 @@
 // input fails with one line and a non-zero exit. Skips (with a warning) when the command line
 // has not been built in this build tree.
 #include "tests/support/peer.h"
+#include "tests/support/shared_data.h"
 #include "render/take_scene.h"
 #include "analysis/core/puppet_layout.h"
 #include "tests/support/test_paths.h"
@@ -150,8 +151,7 @@ TEST_CASE("a take scene carries the motion axis of every take, one pose per fram
 TEST_CASE("bunraku render --figure draws a Bandai take's 22-joint skeleton, the puppet, or both", "[render][cli][skeleton]")
 {
     const auto source = test::bandaiDir() / "bye_angry_001.bvh";
-    if (!test::requirePeer(std::filesystem::exists(source), "Bandai file " + source.string(),
-                           "the shared data beside the repository (../shared/data/bandai)"))
+    if (!test::requireBandaiData(std::filesystem::exists(source)))
         return;
     const auto dir = test::scratchDir("render_cli_figure");
     std::map<std::string, QImage> images;

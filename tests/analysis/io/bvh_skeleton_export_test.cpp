@@ -5,6 +5,7 @@
 #include "analysis/io/bvh_skeleton_export.h"
 #include "analysis/io/take_reader.h"
 #include "tests/support/peer.h"
+#include "tests/support/shared_data.h"
 #include "tests/support/test_paths.h"
 
 #include <catch2/catch.hpp>
@@ -20,7 +21,7 @@ namespace {
 std::optional<BvhFile> loadBandai(const std::string& name)
 {
     const auto path = bunraku::test::bandaiDir() / name;
-    if (!bunraku::test::requirePeer(std::filesystem::exists(path), "Bandai file " + path.string() + " not found", "the shared data beside the repository (../shared/data/bandai)")) return std::nullopt;
+    if (!bunraku::test::requireBandaiData(std::filesystem::exists(path))) return std::nullopt;
     auto file = readBvh(path);
     REQUIRE(file.ok());
     return std::move(file).value();

@@ -2,6 +2,7 @@
 #include "analysis/io/bvh_import.h"
 #include "analysis/io/gltf_export.h"
 #include "tests/support/peer.h"
+#include "tests/support/shared_data.h"
 #include "tests/support/test_paths.h"
 
 #include <catch2/catch.hpp>
@@ -104,7 +105,7 @@ TEST_CASE("glTF axes: workbench forward, left and up become +Z, +X and +Y")
 TEST_CASE("a bandai take as glTF: 22 joints in a skin, one animation with the take's times, positions in metres")
 {
     const auto path = bunraku::test::bandaiDir() / "bye_angry_001.bvh";
-    if (!bunraku::test::requirePeer(std::filesystem::exists(path), "Bandai file " + path.string() + " not found", "the shared data beside the repository (../shared/data/bandai)")) return;
+    if (!bunraku::test::requireBandaiData(std::filesystem::exists(path))) return;
     auto file = readBvh(path);
     REQUIRE(file.ok());
     auto take = bvhToPuppetTake(*file);
