@@ -31,7 +31,7 @@ bandai="$(cd "$bandai" && pwd)"
 if [ -z "${BUNRAKU_SCREENSHOTS_XVFB:-}" ]; then
   command -v xvfb-run >/dev/null || { echo "screenshots.sh: xvfb-run is missing (apt-get install xvfb)" >&2; exit 1; }
   export BUNRAKU_SCREENSHOTS_XVFB=1
-  exec xvfb-run -a -s "-screen 0 1920x1080x24" bash "$0" "$build"
+  exec xvfb-run -a -s "-screen 0 1920x1080x24 -noreset" bash "$0" "$build"
 fi
 
 bunraku="$build/bin/bunraku"

@@ -10,7 +10,9 @@ bash "$root/scripts/install-deps.sh"
 
 echo "== Release build and all tests"
 bash "$root/scripts/build.sh" "$root/build" -DCMAKE_BUILD_TYPE=Release
-(cd "$root/build" && xvfb-run -a -s "-screen 0 1920x1080x24" \
+# -noreset: by default Xvfb resets when its last client leaves, and a test that connects during
+# the reset gets "could not connect to display" (a CI failure of this kind, 2026-11-24).
+(cd "$root/build" && xvfb-run -a -s "-screen 0 1920x1080x24 -noreset" \
    ctest --output-on-failure --parallel "$jobs" --timeout 900)
 
 echo "== Analysis layer under ASan + UBSan (no Qt)"
