@@ -5,6 +5,7 @@
 #include "app/file_dialogs.h"
 #include "app/joint_map_dialog.h"
 #include "app/new_corpus_dialog.h"
+#include "app/progress_task.h"
 #include "app/recovery_dialog.h"
 
 #include "analysis/io/bvh.h"
@@ -16,10 +17,6 @@
 #include "render/take_export.h"
 
 #include <QAction>
-#include <QEventLoop>
-#include <QFutureWatcher>
-#include <QProgressDialog>
-#include <QtConcurrent/QtConcurrentRun>
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -28,10 +25,8 @@
 #include <QSettings>
 #include <QStandardPaths>
 
-#include <atomic>
 #include <algorithm>
 #include <filesystem>
-#include <stop_token>
 
 namespace bunraku::app {
 namespace {
@@ -176,50 +171,62 @@ bool FileController::importTakeFile(const QString& file, const QString& jointMap
 {
     analysis::io::ImportOptions options;
     options.bvh.guessUnits = true;
-    const QString title = tr("Cannot import %1").arg(QFileInfo(file).fileName());
+    const QString name = QFileInfo(file).fileName();
+    const QString title = tr("Cannot import %1").arg(name);
     const auto format = analysis::io::takeFileFormat(toPath(file));
-    analysis::Result<analysis::Take> take = analysis::makeError(analysis::ErrorCode::InvalidArgument, "");
-    QString mapNote;
-    if (format == analysis::io::TakeFileFormat::Bvh) {
-        // Parsed once; the part map comes from the automatic map, the given text or the dialog.
-        auto bvh = analysis::io::readBvh(toPath(file));
+    const bool bvh = format == analysis::io::TakeFileFormat::Bvh;
+    if (bvh && !jointMap.isEmpty()) {
+        auto map = analysis::io::parseJointMap(jointMap.toStdString());
+        if (!map) {
+            report(title, map.error());
+            return false;
+        }
+        options.bvh.jointMap = map.value();
+    } else if (bvh && m_dialogs) {
+        // The dialog needs the hierarchy and the first pose only: a long take is read after it.
+        auto start = analysis::io::readBvhStart(toPath(file));
+        if (!start) {
+            report(title, start.error());
+            return false;
+        }
+        JointMapDialog dialog(*start, name, m_window);
+        if (dialog.exec() != QDialog::Accepted) return false;
+        options.bvh.jointMap = dialog.jointMap();
+        options.bvh.side = dialog.side();
+    }
+    // Read and imported off the GUI thread behind a progress dialog that can cancel it.
+    analysis::Result<analysis::Take> take = analysis::makeError(analysis::ErrorCode::Cancelled, "not run");
+    std::string partMap;
+    runProgressTask(m_dialogs ? m_window : nullptr, tr("Reading %1...").arg(name), [&](const analysis::RunControl& control) {
         if (!bvh) {
-            report(title, bvh.error());
-            return false;
+            take = analysis::io::readTakeFile(toPath(file), options);
+            return;
         }
-        if (!jointMap.isEmpty()) {
-            auto map = analysis::io::parseJointMap(jointMap.toStdString());
-            if (!map) {
-                report(title, map.error());
-                return false;
-            }
-            options.bvh.jointMap = map.value();
-        } else if (m_dialogs) {
-            analysis::io::BvhFile start{bvh->skeleton, {bvh->motion.values.topRows(std::min<Eigen::Index>(1, bvh->motion.values.rows())),
-                                                        bvh->motion.frameTime},
-                                        bvh->source};
-            JointMapDialog dialog(start, QFileInfo(file).fileName(), m_window);
-            if (dialog.exec() != QDialog::Accepted) return false;
-            options.bvh.jointMap = dialog.jointMap();
-            options.bvh.side = dialog.side();
+        auto parsed = analysis::io::readBvh(toPath(file), control.step(0.0, 0.5));
+        if (!parsed) {
+            take = parsed.error();
+            return;
         }
-        auto imported = analysis::io::importBvhPuppet(*bvh, options.bvh);
+        auto imported = analysis::io::importBvhPuppet(*parsed, options.bvh, control.step(0.5, 1.0));
         if (!imported) {
-            report(title, imported.error());
-            return false;
+            take = imported.error();
+            return;
         }
-        mapNote = tr(" (part map: %1)").arg(QString::fromStdString(imported->map->describe()));
+        partMap = imported->map->describe();
         take = std::move(imported->take);
-    } else {
-        take = analysis::io::readTakeFile(toPath(file), options);
+    }, m_progressOptions);
+    if (!take && take.error().code == analysis::ErrorCode::Cancelled) {
+        emit statusMessage(tr("Import of %1 cancelled; nothing was changed").arg(name));
+        return false;
     }
     if (!take) {
         report(title, take.error());
         return false;
     }
+    const QString mapNote = partMap.empty() ? QString() : tr(" (part map: %1)").arg(QString::fromStdString(partMap));
     const QString absolute = QFileInfo(file).absoluteFilePath();
     auto pointer = std::make_shared<const analysis::Take>(std::move(take).value());
-    m_document.undoStack()->push(new ImportTake(&m_document, std::move(pointer), QFileInfo(file).fileName(), absolute,
+    m_document.undoStack()->push(new ImportTake(&m_document, std::move(pointer), name, absolute,
                                                 std::make_shared<const analysis::io::ImportOptions>(options)));
     addRecent(absolute);
     emit statusMessage(tr("Imported %1%2").arg(absolute, mapNote));
@@ -229,34 +236,16 @@ bool FileController::importTakeFile(const QString& file, const QString& jointMap
 bool FileController::createCorpusFromFiles(const std::vector<analysis::io::CorpusSource>& sources,
                                            const analysis::io::CorpusBuildOptions& options, const QString& folder)
 {
-    const auto work = [sources, options, folder](const analysis::RunControl& control) -> analysis::Result<analysis::io::CorpusBuild> {
-        auto build = analysis::io::buildCorpus(sources, options, control);
-        if (!build) return build;
-        if (auto written = analysis::io::writeCorpus(build->corpus, toPath(folder)); !written) return written.error();
-        return build;
-    };
     analysis::Result<analysis::io::CorpusBuild> result = analysis::makeError(analysis::ErrorCode::Cancelled, "not run");
-    if (!m_dialogs) {
-        result = work({});
-    } else {
-        QProgressDialog progress(tr("Reading %n take file(s)...", nullptr, int(sources.size())), tr("Cancel"), 0, 1000, m_window);
-        progress.setWindowModality(Qt::WindowModal);
-        progress.setMinimumDuration(300);
-        std::stop_source stop;
-        std::atomic<double> done{0.0};
-        QFutureWatcher<analysis::Result<analysis::io::CorpusBuild>> watcher;
-        QEventLoop loop;
-        connect(&watcher, &QFutureWatcherBase::finished, &loop, &QEventLoop::quit);
-        connect(&progress, &QProgressDialog::canceled, this, [&stop] { stop.request_stop(); });
-        QTimer poll;
-        connect(&poll, &QTimer::timeout, &progress, [&] { progress.setValue(int(1000.0 * done.load())); });
-        poll.start(100);
-        watcher.setFuture(QtConcurrent::run([&]() {
-            analysis::RunControl control{stop.get_token(), [&done](double fraction) { done.store(fraction); }};
-            return work(control);
-        }));
-        loop.exec();
-        result = watcher.result();
+    runProgressTask(m_dialogs ? m_window : nullptr, tr("Reading %n take file(s)...", nullptr, int(sources.size())),
+                    [&](const analysis::RunControl& control) {
+                        result = analysis::io::buildCorpus(sources, options, control);
+                        if (!result) return;
+                        if (auto written = analysis::io::writeCorpus(result->corpus, toPath(folder)); !written) result = written.error();
+                    }, m_progressOptions);
+    if (!result && result.error().code == analysis::ErrorCode::Cancelled) {
+        emit statusMessage(tr("Making the corpus %1 cancelled; nothing was written").arg(folder));
+        return false;
     }
     if (!result) {
         report(tr("Cannot make the corpus"), result.error());

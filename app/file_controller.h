@@ -7,6 +7,7 @@
 
 #include "app/autosave_session.h"
 #include "app/document.h"
+#include "app/progress_task.h"
 #include "app/project_file.h"
 
 #include "analysis/core/result.h"
@@ -50,7 +51,10 @@ public:
     /// folder or a project), asks to save unsaved changes first (nothing opens on Cancel).
     /// Returns how many were opened.
     int openDroppedPaths(const QStringList& paths);
-    /// Imports a take; `jointMap` ("head=Head,...", may be empty) applies to BVH files.
+    /// Imports a take; `jointMap` ("head=Head,...", may be empty) applies to BVH files (with
+    /// dialogs and no map, the joint map dialog asks first, from the file's first pose). With
+    /// dialogs the file is read and imported off the GUI thread behind a progress dialog that
+    /// can cancel it; a cancelled import changes nothing.
     bool importTakeFile(const QString& file, const QString& jointMap = {});
     /// Builds a corpus from take files (analysis/io/corpus_builder.h, as `bunraku corpus`),
     /// writes it to `folder` and opens it. With dialogs the work runs off the GUI thread behind a
@@ -75,6 +79,9 @@ public:
     /// What the unsaved-changes question answers when dialogs are off; empty: no question is
     /// asked (the default). Tests set Save, Discard or Cancel to drive the real prompts.
     void setUnsavedAnswerForTesting(std::function<int()> answer) { m_unsavedAnswer = std::move(answer); }
+    /// How long work waits before its progress dialog shows, and an observer of its progress on
+    /// the worker thread (tests hold the work there to press Cancel at a known point).
+    void setProgressOptionsForTesting(ProgressTaskOptions options) { m_progressOptions = std::move(options); }
     QString projectPath() const { return m_projectPath; }
     /// The live take ("live/...") an opened project showed in `slot` and that is still being
     /// recomputed: it is shown as soon as it is published. Empty when none is awaited.
@@ -121,6 +128,7 @@ private:
     QTimer m_autosaveTimer;
     std::unique_ptr<AutosaveSession> m_autosave;
     std::function<int()> m_unsavedAnswer;
+    ProgressTaskOptions m_progressOptions;
     std::function<QVariantMap()> m_saveView;
     std::function<void(const QVariantMap&)> m_restoreView;
     QAction* m_openCorpus = nullptr;

@@ -20,6 +20,13 @@ struct RunControl {
     {
         if (progress) progress(fraction);
     }
+    /// The same stop and threads for one step of the work, its fractions mapped to [from, to] of
+    /// this control's (the returned control refers to this one: use it while this one lives).
+    RunControl step(double from, double to) const
+    {
+        if (!progress) return RunControl{stop, {}, threads};
+        return RunControl{stop, [this, from, to](double fraction) { report(from + (to - from) * fraction); }, threads};
+    }
 };
 
 } // namespace bunraku::analysis

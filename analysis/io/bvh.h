@@ -5,6 +5,7 @@
 
 #include "analysis/core/pose.h"
 #include "analysis/core/result.h"
+#include "analysis/core/run_control.h"
 
 #include <Eigen/Core>
 
@@ -68,10 +69,11 @@ inline constexpr std::uintmax_t kMaxBvhFileBytes = std::uintmax_t(2) << 30;
 /// scientific notation. Errors: "source:line: what was expected"; NaN/Inf are rejected.
 /// Linear in the size of the text, whatever the hierarchy's shape (40,000 sibling joints or a
 /// 10,000-deep chain), and the motion matrix is only allocated once the bytes left in the
-/// text can hold the rows `Frames` claims.
-Result<BvhFile> parseBvh(const std::string& text, const std::string& sourceName);
+/// text can hold the rows `Frames` claims. The control is told the fraction of motion rows read
+/// and stops the parse (a Cancelled error) every few thousand rows when asked.
+Result<BvhFile> parseBvh(const std::string& text, const std::string& sourceName, const RunControl& control = {});
 /// Reads a regular file of at most kMaxBvhFileBytes (a pipe or device is refused) and parses it.
-Result<BvhFile> readBvh(const std::filesystem::path& file);
+Result<BvhFile> readBvh(const std::filesystem::path& file, const RunControl& control = {});
 /// The hierarchy and only the first `frames` motion rows (fewer when the file has fewer; what
 /// follows them is not read): enough to map the parts or preview the first pose of a big file.
 Result<BvhFile> readBvhStart(const std::filesystem::path& file, Eigen::Index frames = 1);

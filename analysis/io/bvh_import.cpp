@@ -211,7 +211,7 @@ double bvhUnitScale(const BvhFile& file, const BvhImportOptions& options)
 }
 
 Result<std::shared_ptr<const SkeletalMotion>> bvhToSkeletalMotion(const BvhFile& file, const BvhImportOptions& options,
-                                                                  const std::array<int, 4>* joints)
+                                                                  const std::array<int, 4>* joints, const RunControl& control)
 {
     if (auto ok = checkOptions(file, options); !ok) return ok.error();
     const BvhUpAxis upAxis = resolveUpAxis(file, options.upAxis);
@@ -276,6 +276,8 @@ Result<std::shared_ptr<const SkeletalMotion>> bvhToSkeletalMotion(const BvhFile&
     };
     std::vector<ChannelUse> uses;
     for (std::size_t j = 0; j < slots; ++j) {
+        if (control.cancelled()) return makeError(ErrorCode::Cancelled, file.source + ": import stopped at joint " + file.skeleton.joints[j].name);
+        control.report(double(j) / double(slots));
         const BvhJoint& joint = file.skeleton.joints[j];
         uses.clear();
         for (std::size_t k = 0; k < joint.channels.size(); ++k)
@@ -318,15 +320,17 @@ Result<std::shared_ptr<const SkeletalMotion>> bvhToSkeletalMotion(const BvhFile&
     return std::shared_ptr<const SkeletalMotion>(std::move(motion));
 }
 
-Result<BvhPuppetImport> importBvhPuppet(const BvhFile& file, const BvhImportOptions& options)
+Result<BvhPuppetImport> importBvhPuppet(const BvhFile& file, const BvhImportOptions& options, const RunControl& control)
 {
     if (auto ok = checkOptions(file, options); !ok) return ok.error();
     std::optional<JointMap> given = options.jointMap;
     if (!given && isWorkbenchExport(file)) given = JointMap{{"head", "shoulder", "arm", "hand"}};
     auto map = mapPuppetParts(file, given, PartMapOptions{options.side}, options);
     if (!map) return map.error();
-    auto motion = bvhToSkeletalMotion(file, options, &map->joints);
+    // The joints' rotations are most of the work: 90 % of the progress, the part channels the rest.
+    auto motion = bvhToSkeletalMotion(file, options, &map->joints, control.step(0.0, 0.9));
     if (!motion) return motion.error();
+    if (control.cancelled()) return makeError(ErrorCode::Cancelled, file.source + ": import stopped");
     TakeLabels labels = options.labels;
     if (labels.source.empty()) labels.source = file.source;
     auto take = puppetTakeFromSkeleton(*motion, bvhRateHz(file.motion.frameTime), labels);

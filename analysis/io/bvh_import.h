@@ -85,9 +85,10 @@ double bvhRateHz(double frameTime);
 /// offsets and local poses re-expressed as C * file_T_joint * C^-1 with scaled translations,
 /// the source's channels and axes kept for writing it back. When `joints` is given the puppet
 /// parts are bound to those joints with the anatomical calibration of
-/// analysis/core/skeleton_calibration.h (reference frame and side from `options`).
+/// analysis/core/skeleton_calibration.h (reference frame and side from `options`). The control
+/// is told the fraction of joints converted and stops the import between two joints.
 Result<std::shared_ptr<const SkeletalMotion>> bvhToSkeletalMotion(const BvhFile& file, const BvhImportOptions& options = {},
-                                                                  const std::array<int, 4>* joints = nullptr);
+                                                                  const std::array<int, 4>* joints = nullptr, const RunControl& control = {});
 
 struct PartMap; // bvh_joint_map.h
 
@@ -98,8 +99,8 @@ struct BvhPuppetImport {
     double cmPerUnit = 1.0;             ///< the unit scale used
     BvhUpAxis upAxis = BvhUpAxis::Y;    ///< the up axis used
 };
-/// bvhToPuppetTake with the decisions it made, for reports.
-Result<BvhPuppetImport> importBvhPuppet(const BvhFile& file, const BvhImportOptions& options = {});
+/// bvhToPuppetTake with the decisions it made, for reports; progress and stop as bvhToSkeletalMotion.
+Result<BvhPuppetImport> importBvhPuppet(const BvhFile& file, const BvhImportOptions& options = {}, const RunControl& control = {});
 
 /// The 24-channel puppet take (head.x ... hand.roll), angles continuous, rate 1/Frame Time:
 /// each part the calibrated frame of its joint (skeleton_calibration.h), the joints chosen by

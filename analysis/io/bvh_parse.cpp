@@ -208,11 +208,17 @@ public:
     }
 
     /// Reads values.rows() rows; `whole`: the text must end after them (else the rest is not read).
-    std::optional<Error> scan(Eigen::MatrixXd& values, bool whole = true)
+    /// Every kRowsPerReport rows the control is asked whether to stop and told the rows' fraction.
+    std::optional<Error> scan(Eigen::MatrixXd& values, bool whole, const RunControl& control)
     {
+        constexpr Eigen::Index kRowsPerReport = 4096;
         const Eigen::Index frames = values.rows();
         const Eigen::Index width = values.cols();
         for (Eigen::Index row = 0; row < frames; ++row) {
+            if (row % kRowsPerReport == 0 && row > 0) {
+                if (control.cancelled()) return makeError(ErrorCode::Cancelled, m_source + ": reading stopped at frame " + std::to_string(row));
+                control.report(double(row) / double(frames));
+            }
             skipBlankLines();
             if (m_p == m_end)
                 return parseError(m_source, lastLine(), "expected " + std::to_string(frames) + " motion rows (Frames), found " +
@@ -308,7 +314,7 @@ private:
 namespace {
 
 /// parseBvh, reading at most `rowLimit` motion rows when given.
-Result<BvhFile> parse(std::string_view text, const std::string& sourceName, std::optional<long> rowLimit)
+Result<BvhFile> parse(std::string_view text, const std::string& sourceName, std::optional<long> rowLimit, const RunControl& control)
 {
     LineReader reader(text);
     detail::TextLine line;
@@ -379,7 +385,7 @@ Result<BvhFile> parse(std::string_view text, const std::string& sourceName, std:
     const long rows = rowLimit ? std::min(frames, *rowLimit) : frames;
     file.motion.values.resize(Eigen::Index(rows), Eigen::Index(width));
     MotionScanner scanner(text, reader.offset(), timeLine.number + 1, sourceName);
-    if (auto error = scanner.scan(file.motion.values, !rowLimit)) return *error;
+    if (auto error = scanner.scan(file.motion.values, !rowLimit, control)) return *error;
     return file;
 }
 
@@ -417,20 +423,24 @@ Result<FileBytes> readBvhBytes(const std::filesystem::path& path)
 
 } // namespace
 
-Result<BvhFile> parseBvh(const std::string& text, const std::string& sourceName) { return parse(text, sourceName, std::nullopt); }
+Result<BvhFile> parseBvh(const std::string& text, const std::string& sourceName, const RunControl& control)
+{
+    return parse(text, sourceName, std::nullopt, control);
+}
 
-Result<BvhFile> readBvh(const std::filesystem::path& path)
+Result<BvhFile> readBvh(const std::filesystem::path& path, const RunControl& control)
 {
     auto bytes = readBvhBytes(path);
     if (!bytes) return bytes.error();
-    return parse(bytes->view(), path.string(), std::nullopt);
+    if (control.cancelled()) return makeError(ErrorCode::Cancelled, path.string() + ": reading stopped");
+    return parse(bytes->view(), path.string(), std::nullopt, control);
 }
 
 Result<BvhFile> readBvhStart(const std::filesystem::path& path, Eigen::Index frames)
 {
     auto bytes = readBvhBytes(path);
     if (!bytes) return bytes.error();
-    return parse(bytes->view(), path.string(), long(std::max<Eigen::Index>(frames, 0)));
+    return parse(bytes->view(), path.string(), long(std::max<Eigen::Index>(frames, 0)), {});
 }
 
 } // namespace bunraku::analysis::io

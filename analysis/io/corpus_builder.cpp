@@ -214,9 +214,11 @@ Result<CorpusBuild> buildCorpus(const std::vector<CorpusSource>& sources, const 
         report.labels = source.labels;
         Result<Take> take = makeError(ErrorCode::InvalidArgument, "");
         if (takeFileFormat(source.file) == TakeFileFormat::Bvh && options.import.bvhLayout == BvhTakeLayout::PuppetParts) {
-            auto bvh = readBvh(source.file);
+            // Half of a file's share of the progress for reading it, half for its import.
+            const double share = 0.9 / double(sources.size());
+            auto bvh = readBvh(source.file, control.step(share * double(i), share * (double(i) + 0.5)));
             if (!bvh) return bvh.error();
-            auto imported = importBvhPuppet(*bvh, options.import.bvh);
+            auto imported = importBvhPuppet(*bvh, options.import.bvh, control.step(share * (double(i) + 0.5), share * double(i + 1)));
             if (!imported) return imported.error();
             report.partMap = imported->map->describe();
             take = std::move(imported->take);

@@ -1,0 +1,149 @@
+// File > Import Take of a long BVH file: read and imported off the GUI thread behind a progress
+// dialog whose Cancel changes nothing. The work is held at a known point through the controller's
+// progress observer (no wall-clock window): the test presses Cancel while the file is half read.
+#include "tests/app/app_test_support.h"
+
+#include "app/joint_map_dialog.h"
+
+#include "analysis/synth/long_take.h"
+
+#include <catch2/catch.hpp>
+
+#include <QApplication>
+#include <QDialogButtonBox>
+#include <QProgressDialog>
+#include <QPushButton>
+#include <QSemaphore>
+#include <QTimer>
+
+#include <atomic>
+#include <vector>
+
+using namespace bunraku;
+
+namespace {
+
+constexpr Eigen::Index kFrames = 20000; // 4 progress reports while parsing, one per joint (and End Site) while importing
+
+std::filesystem::path longTakeFile(const std::string& name)
+{
+    analysis::synth::LongTakeOptions options;
+    options.frames = kFrames;
+    auto file = analysis::synth::writeLongTake(options, test::scratchDir(name));
+    REQUIRE(file.ok());
+    return file.value();
+}
+
+/// Accepts the joint map dialog (the automatic map) whenever it is the active modal widget.
+void acceptJointDialogWhenShown(bool& shown)
+{
+    QTimer::singleShot(0, [&shown] {
+        auto* dialog = qobject_cast<app::JointMapDialog*>(QApplication::activeModalWidget());
+        if (dialog == nullptr) return;
+        shown = true;
+        QTest::mouseClick(dialog->findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok), Qt::LeftButton);
+    });
+}
+
+} // namespace
+
+TEST_CASE("File > Import Take reads a long BVH off the GUI thread, and Cancel half way changes nothing", "[app][import][progress]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    REQUIRE(test::waitUntilIdle(*window));
+    const auto file = longTakeFile("app_import_cancel");
+    const QString shownBefore = window->document().selectedId(app::TakeSlot::A);
+    const auto takesBefore = window->document().derivedTakes().size();
+    const int undoBefore = window->document().undoStack()->count();
+
+    QSemaphore reached, proceed;
+    std::atomic<double> heldAt{-1.0};
+    std::atomic<bool> first{true};
+    app::ProgressTaskOptions options;
+    options.showAfterMs = 0;
+    options.observe = [&](double fraction) {
+        if (fraction <= 0.0 || !first.exchange(false)) return;
+        heldAt.store(fraction);
+        reached.release();
+        proceed.acquire(); // the worker waits here until the GUI thread has pressed Cancel
+    };
+    window->files().setProgressOptionsForTesting(options);
+    window->files().setDialogsEnabled(true);
+    QString lastStatus;
+    QObject::connect(&window->files(), &app::FileController::statusMessage, [&](const QString& text) { lastStatus = text; });
+
+    bool jointDialog = false, dialogVisible = false, pressed = false;
+    QString labelWhenHeld;
+    acceptJointDialogWhenShown(jointDialog);
+    QTimer poll;
+    QObject::connect(&poll, &QTimer::timeout, [&] {
+        if (!reached.tryAcquire()) return;
+        // The GUI thread runs this while the worker is held in the middle of the file.
+        poll.stop();
+        auto* progress = window->findChild<QProgressDialog*>();
+        dialogVisible = progress != nullptr && progress->isVisible();
+        if (progress != nullptr) {
+            labelWhenHeld = progress->labelText();
+            for (auto* button : progress->findChildren<QPushButton*>())
+                if (button->text() == QStringLiteral("Cancel")) {
+                    QTest::mouseClick(button, Qt::LeftButton);
+                    pressed = true;
+                }
+        }
+        proceed.release();
+    });
+    poll.start(5);
+    const bool imported = window->files().importTakeFile(QString::fromStdString(file.string()));
+    poll.stop();
+    proceed.release(); // never leave the worker held, whatever happened
+    window->files().setDialogsEnabled(false);
+
+    CHECK(jointDialog);
+    CHECK(dialogVisible);
+    CHECK(pressed);
+    CHECK(heldAt.load() > 0.0);
+    CHECK(heldAt.load() < 0.5); // held while the file was being parsed (the first half)
+    CHECK(labelWhenHeld.contains(QString::fromStdString(analysis::synth::longTakeFileName())));
+    CHECK_FALSE(imported);
+    CHECK(window->files().lastError().isEmpty());
+    CHECK(lastStatus.contains(QStringLiteral("cancelled")));
+    CHECK(window->document().selectedId(app::TakeSlot::A) == shownBefore);
+    CHECK(window->document().derivedTakes().size() == takesBefore);
+    CHECK(window->document().undoStack()->count() == undoBefore);
+    CHECK(window->findChild<QProgressDialog*>() == nullptr);
+}
+
+TEST_CASE("File > Import Take of a long BVH reports its progress to the end and imports every frame", "[app][import][progress]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    const auto file = longTakeFile("app_import_progress");
+    std::vector<double> fractions;
+    QMutex guard;
+    app::ProgressTaskOptions options;
+    options.observe = [&](double fraction) {
+        QMutexLocker lock(&guard);
+        fractions.push_back(fraction);
+    };
+    window->files().setProgressOptionsForTesting(options);
+    window->files().setDialogsEnabled(true);
+    bool jointDialog = false;
+    acceptJointDialogWhenShown(jointDialog);
+    const bool imported = window->files().importTakeFile(QString::fromStdString(file.string()));
+    window->files().setDialogsEnabled(false);
+
+    CHECK(jointDialog);
+    REQUIRE(imported);
+    const auto take = window->document().selectedTake(app::TakeSlot::A);
+    REQUIRE(take);
+    CHECK(take->frameCount() == kFrames);
+    REQUIRE(take->skeleton);
+    CHECK(take->skeleton->skeleton->joints.size() >= std::size_t(analysis::synth::kLongTakeJoints));
+    // Reading: rows 4096 ... 16384 of 20000 (0.5 x 0.2 ... 0.82); importing: 22 joints.
+    REQUIRE(fractions.size() >= 4 + std::size_t(analysis::synth::kLongTakeJoints));
+    for (std::size_t i = 1; i < fractions.size(); ++i) CHECK(fractions[i] >= fractions[i - 1]);
+    CHECK(fractions.front() == Approx(0.5 * 4096.0 / double(kFrames)));
+    CHECK(fractions.back() > 0.9);
+    CHECK(fractions.back() <= 1.0);
+}
