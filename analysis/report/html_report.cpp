@@ -307,7 +307,9 @@ void km2oSection(Html& html, const ChainResult& chain)
         html << "<tr><td>" + escapeXml(name) + "</td>";
         for (std::size_t c = 0; c < d.emotions.size(); ++c) {
             const auto& z = d.emotions[c];
-            html << dataCell("km2o_errors.csv", name, "P_" + z.function + "/" + z.emotion, km2o->cellErrorPercent(Eigen::Index(ch), Eigen::Index(c)));
+            const double cellP = km2o->cellErrorPercent(Eigen::Index(ch), Eigen::Index(c));
+            // NaN: a cell of a function KM2O could not estimate (least squares, no P).
+            html << (std::isfinite(cellP) ? dataCell("km2o_errors.csv", name, "P_" + z.function + "/" + z.emotion, cellP) : "<td>&mdash;</td>");
             html << thesisCell(thesisCellErrorPercent(name, thesisFunctionIndex(z.function), thesisEmotionIndex(z.emotion)));
         }
         html << "</tr>";
