@@ -23,6 +23,15 @@ using namespace bunraku;
 
 namespace {
 
+/// The imported takes among the derived ones (live results are published beside them).
+std::vector<const app::DerivedTake*> importedTakes(const app::Document& document)
+{
+    std::vector<const app::DerivedTake*> out;
+    for (const auto& derived : document.derivedTakes())
+        if (derived.id.startsWith(QStringLiteral("imported/"))) out.push_back(&derived);
+    return out;
+}
+
 constexpr Eigen::Index kFrames = 20000; // 4 progress reports while parsing, one per joint (and End Site) while importing
 
 std::filesystem::path longTakeFile(const std::string& name)
@@ -54,7 +63,7 @@ TEST_CASE("File > Import Take reads a long BVH off the GUI thread, and Cancel ha
     REQUIRE(test::waitUntilIdle(*window));
     const auto file = longTakeFile("app_import_cancel");
     const QString shownBefore = window->document().selectedId(app::TakeSlot::A);
-    const auto takesBefore = window->document().derivedTakes().size();
+    const auto takesBefore = importedTakes(window->document()).size();
     const int undoBefore = window->document().undoStack()->count();
 
     QSemaphore reached, proceed;
@@ -109,7 +118,7 @@ TEST_CASE("File > Import Take reads a long BVH off the GUI thread, and Cancel ha
     CHECK(window->files().lastError().isEmpty());
     CHECK(lastStatus.contains(QStringLiteral("cancelled")));
     CHECK(window->document().selectedId(app::TakeSlot::A) == shownBefore);
-    CHECK(window->document().derivedTakes().size() == takesBefore);
+    CHECK(importedTakes(window->document()).size() == takesBefore);
     CHECK(window->document().undoStack()->count() == undoBefore);
     CHECK(window->findChild<QProgressDialog*>() == nullptr);
 }
@@ -146,4 +155,61 @@ TEST_CASE("File > Import Take of a long BVH reports its progress to the end and 
     CHECK(fractions.front() == Approx(0.5 * 4096.0 / double(kFrames)));
     CHECK(fractions.back() > 0.9);
     CHECK(fractions.back() <= 1.0);
+}
+
+TEST_CASE("a project holding a long imported take reopens behind the progress dialog, and Cancel changes nothing", "[app][import][progress]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    const auto file = longTakeFile("app_project_cancel");
+    REQUIRE(window->files().importTakeFile(QString::fromStdString(file.string())));
+    const auto project = test::scratchDir("app_project_cancel_file") / "long.bunraku.json";
+    REQUIRE(window->files().saveProject(QString::fromStdString(project.string())));
+    REQUIRE(window->files().openDemoCorpus());
+    REQUIRE(importedTakes(window->document()).empty());
+    const QString shownBefore = window->document().selectedId(app::TakeSlot::A);
+
+    QSemaphore reached, proceed;
+    std::atomic<bool> first{true};
+    app::ProgressTaskOptions options;
+    options.showAfterMs = 0;
+    options.observe = [&](double fraction) {
+        if (fraction <= 0.0 || !first.exchange(false)) return;
+        reached.release();
+        proceed.acquire();
+    };
+    window->files().setProgressOptionsForTesting(options);
+    window->files().setDialogsEnabled(true);
+    bool pressed = false;
+    QTimer poll;
+    QObject::connect(&poll, &QTimer::timeout, [&] {
+        if (!reached.tryAcquire()) return;
+        poll.stop();
+        if (auto* progress = window->findChild<QProgressDialog*>(); progress != nullptr && progress->isVisible())
+            for (auto* button : progress->findChildren<QPushButton*>())
+                if (button->text() == QStringLiteral("Cancel")) {
+                    QTest::mouseClick(button, Qt::LeftButton);
+                    pressed = true;
+                }
+        proceed.release();
+    });
+    poll.start(5);
+    const bool opened = window->files().openProject(QString::fromStdString(project.string()));
+    poll.stop();
+    proceed.release();
+    window->files().setDialogsEnabled(false);
+
+    CHECK(pressed);
+    CHECK_FALSE(opened);
+    CHECK(window->files().lastError().isEmpty());
+    CHECK(importedTakes(window->document()).empty());
+    CHECK(window->document().selectedId(app::TakeSlot::A) == shownBefore);
+    CHECK(window->files().projectPath().isEmpty());
+
+    // Not cancelled, the same project brings the take back.
+    window->files().setProgressOptionsForTesting({});
+    REQUIRE(window->files().openProject(QString::fromStdString(project.string())));
+    const auto imported = importedTakes(window->document());
+    REQUIRE(imported.size() == 1);
+    CHECK(imported.front()->take->frameCount() == kFrames);
 }
