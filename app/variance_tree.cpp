@@ -41,7 +41,7 @@ QString familyText(const VarianceRow& row)
 /// "-66 %" / "▲ +12 %" (worse) / "–" when there was nothing to change.
 QString changeText(const VarianceRow& row)
 {
-    if (!(row.before > VarianceRow::kNegligible)) return row.worse() ? QStringLiteral("\u25b2") : QStringLiteral("\u2013");
+    if (!(row.before > 0.0)) return row.worse() ? QStringLiteral("\u25b2") : QStringLiteral("\u2013");
     const double percent = 100.0 * (row.after - row.before) / row.before;
     const QString number = QLocale().toString(percent, 'f', 0);
     return row.worse() ? QStringLiteral("\u25b2 +%1 %").arg(number) : QStringLiteral("%1 %").arg(number);

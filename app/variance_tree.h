@@ -28,10 +28,9 @@ struct VarianceRow {
     std::string part;   ///< empty: the family's sum over parts
     double before = 0.0;
     double after = 0.0;
-    /// Sums below this (cm² or deg² over all frames) are rounding, not difference: the reference
-    /// take against itself gives 0 before and about 1e-25 after its rotation coordinates' round trip.
-    static constexpr double kNegligible = 1e-9;
-    bool worse() const { return after > before && after > kNegligible; }
+    /// The reference take against itself gives exactly 0 before and after (normaliseTake keeps
+    /// a take's own numbers when every frame maps to itself).
+    bool worse() const { return after > before; }
 };
 
 /// Every row of `table` (takes x channels, `channels` its columns in order): per take, per
