@@ -54,6 +54,69 @@ void acceptJointDialogWhenShown(bool& shown)
     });
 }
 
+/// Holds the work at its first progress report, presses the progress dialog's Cancel from the
+/// GUI thread (which runs while the worker waits), then lets the work go on to see it.
+class CancelAtFirstProgress {
+public:
+    explicit CancelAtFirstProgress(QWidget* window) : m_window(window)
+    {
+        QObject::connect(&m_poll, &QTimer::timeout, [this] { pressCancelWhenHeld(); });
+    }
+    ~CancelAtFirstProgress() { release(); }
+
+    app::ProgressTaskOptions options()
+    {
+        app::ProgressTaskOptions options;
+        options.showAfterMs = 0;
+        options.observe = [this](double fraction) {
+            if (fraction <= 0.0 || !m_first.exchange(false)) return;
+            m_heldAt.store(fraction);
+            m_reached.release();
+            m_proceed.acquire(); // the worker waits here until the GUI thread has pressed Cancel
+        };
+        return options;
+    }
+    void start() { m_poll.start(5); }
+    /// After the work returned: never leave the worker held, whatever happened.
+    void release()
+    {
+        m_poll.stop();
+        if (!m_released) m_proceed.release();
+        m_released = true;
+    }
+
+    bool pressed = false;
+    bool dialogVisible = false;
+    QString label;
+    double heldAt() const { return m_heldAt.load(); }
+
+private:
+    void pressCancelWhenHeld()
+    {
+        if (!m_reached.tryAcquire()) return;
+        m_poll.stop();
+        auto* progress = m_window->findChild<QProgressDialog*>();
+        dialogVisible = progress != nullptr && progress->isVisible();
+        if (progress != nullptr) {
+            label = progress->labelText();
+            for (auto* button : progress->findChildren<QPushButton*>())
+                if (button->text() == QStringLiteral("Cancel")) {
+                    QTest::mouseClick(button, Qt::LeftButton);
+                    pressed = true;
+                }
+        }
+        m_proceed.release();
+        m_released = true;
+    }
+
+    QWidget* m_window;
+    QTimer m_poll;
+    QSemaphore m_reached, m_proceed;
+    std::atomic<bool> m_first{true};
+    std::atomic<double> m_heldAt{-1.0};
+    bool m_released = false;
+};
+
 } // namespace
 
 TEST_CASE("File > Import Take reads a long BVH off the GUI thread, and Cancel half way changes nothing", "[app][import][progress]")
@@ -66,54 +129,24 @@ TEST_CASE("File > Import Take reads a long BVH off the GUI thread, and Cancel ha
     const auto takesBefore = importedTakes(window->document()).size();
     const int undoBefore = window->document().undoStack()->count();
 
-    QSemaphore reached, proceed;
-    std::atomic<double> heldAt{-1.0};
-    std::atomic<bool> first{true};
-    app::ProgressTaskOptions options;
-    options.showAfterMs = 0;
-    options.observe = [&](double fraction) {
-        if (fraction <= 0.0 || !first.exchange(false)) return;
-        heldAt.store(fraction);
-        reached.release();
-        proceed.acquire(); // the worker waits here until the GUI thread has pressed Cancel
-    };
-    window->files().setProgressOptionsForTesting(options);
+    CancelAtFirstProgress cancel(window.get());
+    window->files().setProgressOptionsForTesting(cancel.options());
     window->files().setDialogsEnabled(true);
     QString lastStatus;
     QObject::connect(&window->files(), &app::FileController::statusMessage, [&](const QString& text) { lastStatus = text; });
-
-    bool jointDialog = false, dialogVisible = false, pressed = false;
-    QString labelWhenHeld;
+    bool jointDialog = false;
     acceptJointDialogWhenShown(jointDialog);
-    QTimer poll;
-    QObject::connect(&poll, &QTimer::timeout, [&] {
-        if (!reached.tryAcquire()) return;
-        // The GUI thread runs this while the worker is held in the middle of the file.
-        poll.stop();
-        auto* progress = window->findChild<QProgressDialog*>();
-        dialogVisible = progress != nullptr && progress->isVisible();
-        if (progress != nullptr) {
-            labelWhenHeld = progress->labelText();
-            for (auto* button : progress->findChildren<QPushButton*>())
-                if (button->text() == QStringLiteral("Cancel")) {
-                    QTest::mouseClick(button, Qt::LeftButton);
-                    pressed = true;
-                }
-        }
-        proceed.release();
-    });
-    poll.start(5);
+    cancel.start();
     const bool imported = window->files().importTakeFile(QString::fromStdString(file.string()));
-    poll.stop();
-    proceed.release(); // never leave the worker held, whatever happened
+    cancel.release();
     window->files().setDialogsEnabled(false);
 
     CHECK(jointDialog);
-    CHECK(dialogVisible);
-    CHECK(pressed);
-    CHECK(heldAt.load() > 0.0);
-    CHECK(heldAt.load() < 0.5); // held while the file was being parsed (the first half)
-    CHECK(labelWhenHeld.contains(QString::fromStdString(analysis::synth::longTakeFileName())));
+    CHECK(cancel.dialogVisible);
+    CHECK(cancel.pressed);
+    CHECK(cancel.heldAt() > 0.0);
+    CHECK(cancel.heldAt() < 0.5); // held while the file was being parsed (the first half)
+    CHECK(cancel.label.contains(QString::fromStdString(analysis::synth::longTakeFileName())));
     CHECK_FALSE(imported);
     CHECK(window->files().lastError().isEmpty());
     CHECK(lastStatus.contains(QStringLiteral("cancelled")));
@@ -169,37 +202,16 @@ TEST_CASE("a project holding a long imported take reopens behind the progress di
     REQUIRE(importedTakes(window->document()).empty());
     const QString shownBefore = window->document().selectedId(app::TakeSlot::A);
 
-    QSemaphore reached, proceed;
-    std::atomic<bool> first{true};
-    app::ProgressTaskOptions options;
-    options.showAfterMs = 0;
-    options.observe = [&](double fraction) {
-        if (fraction <= 0.0 || !first.exchange(false)) return;
-        reached.release();
-        proceed.acquire();
-    };
-    window->files().setProgressOptionsForTesting(options);
+    CancelAtFirstProgress cancel(window.get());
+    window->files().setProgressOptionsForTesting(cancel.options());
     window->files().setDialogsEnabled(true);
-    bool pressed = false;
-    QTimer poll;
-    QObject::connect(&poll, &QTimer::timeout, [&] {
-        if (!reached.tryAcquire()) return;
-        poll.stop();
-        if (auto* progress = window->findChild<QProgressDialog*>(); progress != nullptr && progress->isVisible())
-            for (auto* button : progress->findChildren<QPushButton*>())
-                if (button->text() == QStringLiteral("Cancel")) {
-                    QTest::mouseClick(button, Qt::LeftButton);
-                    pressed = true;
-                }
-        proceed.release();
-    });
-    poll.start(5);
+    cancel.start();
     const bool opened = window->files().openProject(QString::fromStdString(project.string()));
-    poll.stop();
-    proceed.release();
+    cancel.release();
     window->files().setDialogsEnabled(false);
 
-    CHECK(pressed);
+    CHECK(cancel.pressed);
+    CHECK(cancel.dialogVisible);
     CHECK_FALSE(opened);
     CHECK(window->files().lastError().isEmpty());
     CHECK(importedTakes(window->document()).empty());
