@@ -76,6 +76,9 @@ fi
 # --- The cached base root ------------------------------------------------------------------------
 cache="${BUNRAKU_CLEAN_ROOT_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/bunraku-clean-root}"
 mkdir -p "$cache/apt-archives/partial" "$cache/roots"
+# One run at a time per cache (the tarball and apt's download folder are shared).
+exec 9>"$cache/lock"
+flock 9
 started=$SECONDS
 key="$(printf '%s\n%s\n' "$(mmdebstrap --version)" "$mirrors" | sha256sum | cut -c1-12)"
 tarball="$cache/bookworm-minbase-$key.tar"
