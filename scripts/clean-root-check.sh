@@ -42,7 +42,13 @@ fi
 [ -f "$deb" ] || { echo "clean-root-check: $deb: no such package" >&2; exit 1; }
 deb="$(realpath "$deb")"
 bandai="$(realpath -m "${BUNRAKU_BANDAI_DIR:-$repo/../shared/data/bandai}")"
-[ "$(id -u)" -eq 0 ] || cannot_run "needs root (chroot and mounts); run it with sudo"
+if [ "$(id -u)" -ne 0 ]; then
+  # Where apt-get runs through sudo (scripts/install-deps.sh), so does this: chroot and mounts.
+  if command -v sudo >/dev/null && sudo -n true 2>/dev/null; then
+    exec sudo -n --preserve-env "$self" "$deb"
+  fi
+  cannot_run "needs root (chroot and mounts); run it with sudo"
+fi
 for tool in mmdebstrap unshare chroot Xvfb xvfb-run; do
   command -v "$tool" >/dev/null || cannot_run "$tool is not installed (scripts/install-deps.sh installs it)"
 done
