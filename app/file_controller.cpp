@@ -131,7 +131,14 @@ bool FileController::openDemoCorpus()
 
 bool FileController::openCorpusFolder(const QString& folder)
 {
-    auto corpus = analysis::io::readCorpus(toPath(folder));
+    analysis::Result<analysis::Corpus> corpus = analysis::makeError(analysis::ErrorCode::Cancelled, "not run");
+    runProgressTask(m_dialogs ? m_window : nullptr, tr("Reading the corpus %1...").arg(QFileInfo(folder).fileName()),
+                    [&](const analysis::RunControl& control) { corpus = analysis::io::readCorpus(toPath(folder), control); },
+                    m_progressOptions);
+    if (!corpus && corpus.error().code == analysis::ErrorCode::Cancelled) {
+        emit statusMessage(tr("Opening %1 cancelled; nothing was changed").arg(folder));
+        return false;
+    }
     if (!corpus) {
         report(tr("Cannot open the corpus"), corpus.error());
         return false;
@@ -325,11 +332,31 @@ void FileController::showPendingLiveTakes()
 
 bool FileController::applyStateNow(const ProjectState& state)
 {
+    // The project's imported takes are read first, off the GUI thread behind a progress dialog
+    // (an hour-long take among them): Cancel leaves the document as it was.
+    std::vector<analysis::Result<analysis::Take>> takes;
+    bool cancelled = false;
+    if (!state.imported.empty())
+        runProgressTask(m_dialogs ? m_window : nullptr, tr("Reading the project's %n imported take(s)...", nullptr, int(state.imported.size())),
+                        [&](const analysis::RunControl& control) {
+                            const double share = 1.0 / double(state.imported.size());
+                            for (qsizetype i = 0; i < state.imported.size() && !cancelled; ++i) {
+                                // The options the take was imported with: the same joint map, axes, units and rate.
+                                const auto& recipe = state.imported[i];
+                                takes.push_back(analysis::io::readTakeFile(toPath(recipe.path), recipe.options,
+                                                                           control.step(share * double(i), share * double(i + 1))));
+                                cancelled = control.cancelled();
+                            }
+                        }, m_progressOptions);
+    if (cancelled) {
+        emit statusMessage(tr("Opening the project cancelled; nothing was changed"));
+        return false;
+    }
     const bool opened = state.corpus == QStringLiteral("demo") ? openDemoCorpus() : openCorpusFolder(state.corpus);
     if (!opened) return false;
-    for (const auto& recipe : state.imported) {
-        // The options the take was imported with: the same joint map, axes, units and rate.
-        auto take = analysis::io::readTakeFile(toPath(recipe.path), recipe.options);
+    for (qsizetype i = 0; i < state.imported.size(); ++i) {
+        const auto& recipe = state.imported[i];
+        auto& take = takes[std::size_t(i)];
         if (!take) {
             report(tr("Cannot re-import a take of the project"), take.error());
             continue;

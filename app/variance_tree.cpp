@@ -19,13 +19,6 @@ const QColor kWorseBackground(0xfd, 0xe7, 0xea);
 
 QString tr(const char* text) { return QCoreApplication::translate("VarianceTree", text); }
 
-std::string familyOf(const std::string& unit)
-{
-    if (unit == "cm" || unit == "mm" || unit == "m") return "position";
-    if (unit == "deg" || unit == "rad") return "rotation";
-    return unit.empty() ? "unitless" : unit;
-}
-
 QString familyName(const VarianceRow& row)
 {
     return row.family == "position" ? tr("position") : row.family == "rotation" ? tr("rotation") : QString::fromStdString(row.family);
@@ -41,7 +34,7 @@ QString familyText(const VarianceRow& row)
 /// "-66 %" / "▲ +12 %" (worse) / "–" when there was nothing to change.
 QString changeText(const VarianceRow& row)
 {
-    if (!(row.before > VarianceRow::kNegligible)) return row.worse() ? QStringLiteral("\u25b2") : QStringLiteral("\u2013");
+    if (!(row.before > 0.0)) return row.worse() ? QStringLiteral("\u25b2") : QStringLiteral("\u2013");
     const double percent = 100.0 * (row.after - row.before) / row.before;
     const QString number = QLocale().toString(percent, 'f', 0);
     return row.worse() ? QStringLiteral("\u25b2 +%1 %").arg(number) : QStringLiteral("%1 %").arg(number);
@@ -62,47 +55,6 @@ void mark(QTreeWidgetItem* item)
 } // namespace
 
 QString varianceText(double value) { return QLocale().toString(value, 'f', 1); }
-
-std::vector<VarianceRow> varianceRows(const analysis::VarianceTable& table, const std::vector<analysis::Channel>& channels)
-{
-    std::vector<VarianceRow> rows;
-    const Eigen::Index count = std::min<Eigen::Index>(table.before.cols(), Eigen::Index(channels.size()));
-    // Families and parts in order of first appearance among the channels.
-    std::vector<std::string> families;
-    std::vector<std::string> parts;
-    for (Eigen::Index c = 0; c < count; ++c) {
-        const std::string family = familyOf(channels[std::size_t(c)].unit);
-        if (std::find(families.begin(), families.end(), family) == families.end()) families.push_back(family);
-        if (std::find(parts.begin(), parts.end(), channels[std::size_t(c)].part) == parts.end())
-            parts.push_back(channels[std::size_t(c)].part);
-    }
-    for (Eigen::Index k = 0; k < table.before.rows(); ++k) {
-        for (const std::string& family : families) {
-            VarianceRow total{table.takeNames.at(std::size_t(k)), family, {}, {}, 0.0, 0.0};
-            std::vector<VarianceRow> perPart;
-            for (const std::string& part : parts) {
-                VarianceRow row{total.take, family, {}, part, 0.0, 0.0};
-                bool any = false;
-                for (Eigen::Index c = 0; c < count; ++c) {
-                    const analysis::Channel& channel = channels[std::size_t(c)];
-                    if (channel.part != part || familyOf(channel.unit) != family) continue;
-                    row.unit = channel.unit.empty() ? std::string() : channel.unit + "\u00b2";
-                    row.before += table.before(k, c);
-                    row.after += table.after(k, c);
-                    any = true;
-                }
-                if (!any) continue;
-                total.unit = row.unit;
-                total.before += row.before;
-                total.after += row.after;
-                perPart.push_back(row);
-            }
-            rows.push_back(total);
-            rows.insert(rows.end(), perPart.begin(), perPart.end());
-        }
-    }
-    return rows;
-}
 
 void fillVarianceTree(QTreeWidget* tree, const analysis::VarianceTable& table, const std::vector<analysis::Channel>& channels,
                       const std::vector<QString>& takeLabels)

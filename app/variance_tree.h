@@ -9,6 +9,7 @@
 
 #include "analysis/core/take.h"
 #include "analysis/normalise/variance_evaluation.h"
+#include "analysis/normalise/variance_families.h"
 
 #include <QString>
 
@@ -20,23 +21,9 @@ class QTreeWidgetItem;
 
 namespace bunraku::app {
 
-/// One row of the tree: a DOF family of a take, or a part within it.
-struct VarianceRow {
-    std::string take;   ///< VarianceTable::takeNames
-    std::string family; ///< "position", "rotation", or the unit when it is neither
-    std::string unit;   ///< the channels' unit, squared: "cm²", "deg²"
-    std::string part;   ///< empty: the family's sum over parts
-    double before = 0.0;
-    double after = 0.0;
-    /// Sums below this (cm² or deg² over all frames) are rounding, not difference: the reference
-    /// take against itself gives 0 before and about 1e-25 after its rotation coordinates' round trip.
-    static constexpr double kNegligible = 1e-9;
-    bool worse() const { return after > before && after > kNegligible; }
-};
-
-/// Every row of `table` (takes x channels, `channels` its columns in order): per take, per
-/// family (in order of first appearance), the family's sum, then each part's.
-std::vector<VarianceRow> varianceRows(const analysis::VarianceTable& table, const std::vector<analysis::Channel>& channels);
+/// The tree's rows are analysis::varianceRows (analysis/normalise/variance_families.h).
+using analysis::VarianceRow;
+using analysis::varianceRows;
 
 /// The notation of every number of the tree: "13,812.4".
 QString varianceText(double value);

@@ -14,6 +14,8 @@ packages=(
   fonts-dejavu-core ffmpeg chromium
   librsvg2-bin help2man file dpkg-dev
   lintian desktop-file-utils appstream shared-mime-info man-db strace
+  # a clean Debian root to install the package into with apt (scripts/clean-root-check.sh)
+  mmdebstrap
   # Blender 3.4: the real client the BVH and glTF exports are checked against (tests/cli)
   blender
   clang-14 libfuzzer-14-dev

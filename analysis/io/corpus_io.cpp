@@ -225,7 +225,7 @@ Result<CorpusManifest> parseCorpusManifest(const std::string& text, const std::s
     return result;
 }
 
-Result<Corpus> readCorpus(const fs::path& folder)
+Result<Corpus> readCorpus(const fs::path& folder, const RunControl& control)
 {
     std::error_code ec;
     if (!fs::is_directory(folder, ec)) return makeError(ErrorCode::NotFound, folder.string() + ": no such corpus folder");
@@ -243,6 +243,8 @@ Result<Corpus> readCorpus(const fs::path& folder)
     corpus.neutralEmotion = manifest->neutralEmotion;
     const std::vector<Channel>& channels = manifest->channels;
     for (std::size_t i = 0; i < manifest->takes.size(); ++i) {
+        if (control.cancelled()) return makeError(ErrorCode::Cancelled, folder.string() + ": reading stopped");
+        control.report(double(i) / double(manifest->takes.size()));
         const CorpusManifest::Entry& entry = manifest->takes[i];
         const std::string where = "takes[" + std::to_string(i) + "]";
         const fs::path relative(entry.file);

@@ -5,6 +5,7 @@
 
 #include "analysis/core/corpus.h"
 #include "analysis/core/result.h"
+#include "analysis/core/run_control.h"
 #include "analysis/io/take_csv.h"
 
 #include <filesystem>
@@ -47,8 +48,9 @@ Result<CorpusManifest> parseCorpusManifest(const std::string& text, const std::s
 
 /// Reads corpus.json and every take CSV it lists. Checks the format name/version, that each
 /// CSV's channels match the manifest's, its frame count matches `frames` and its time column
-/// the corpus rate, then validateCorpus.
-Result<Corpus> readCorpus(const std::filesystem::path& folder);
+/// the corpus rate, then validateCorpus. `control` is told the fraction of takes read and stops
+/// the reading between two takes (Cancelled).
+Result<Corpus> readCorpus(const std::filesystem::path& folder, const RunControl& control = {});
 
 /// Writes the corpus (validated first) into `folder`, creating it when needed. The whole folder
 /// is built in a hidden sibling and swapped in (staged_folder.h): on failure or a kill the

@@ -18,14 +18,17 @@ TakeFileFormat takeFileFormat(const std::filesystem::path& file)
     return TakeFileFormat::Unknown;
 }
 
-Result<Take> readTakeFile(const std::filesystem::path& file, const ImportOptions& options)
+Result<Take> readTakeFile(const std::filesystem::path& file, const ImportOptions& options, const RunControl& control)
 {
     switch (takeFileFormat(file)) {
     case TakeFileFormat::Csv: return readTakeCsv(file, options.csv);
     case TakeFileFormat::Bvh: {
-        auto bvh = readBvh(file);
+        auto bvh = readBvh(file, control.step(0.0, 0.5));
         if (!bvh) return bvh.error();
-        return options.bvhLayout == BvhTakeLayout::AllJoints ? bvhToJointTake(*bvh, options.bvh) : bvhToPuppetTake(*bvh, options.bvh);
+        if (options.bvhLayout == BvhTakeLayout::AllJoints) return bvhToJointTake(*bvh, options.bvh);
+        auto imported = importBvhPuppet(*bvh, options.bvh, control.step(0.5, 1.0));
+        if (!imported) return imported.error();
+        return std::move(imported->take);
     }
     case TakeFileFormat::Fastrak: return readFastrak(file, options.fastrak);
     case TakeFileFormat::Unknown: break;

@@ -24,8 +24,9 @@ struct ImportOptions {
     FastrakOptions fastrak;
 };
 
-/// Reads a take of any supported format; Unsupported error for unknown extensions.
-Result<Take> readTakeFile(const std::filesystem::path& file, const ImportOptions& options = {});
+/// Reads a take of any supported format; Unsupported error for unknown extensions. A BVH file's
+/// reading and import report their progress to `control` and stop when it asks (Cancelled).
+Result<Take> readTakeFile(const std::filesystem::path& file, const ImportOptions& options = {}, const RunControl& control = {});
 /// Writes a take as .csv or .bvh by extension (atomic). A take with a skeleton goes to BVH on
 /// that skeleton (bvh_skeleton_export.h), one without in the part layout (bvh_export.h).
 Status writeTakeFile(const Take& take, const std::filesystem::path& file);

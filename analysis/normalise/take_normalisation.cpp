@@ -100,6 +100,20 @@ Result<Prepared> prepare(const Take& reference, const NormaliseOptions& options,
     return prepared;
 }
 
+/// The largest difference (deg or cm) between a value and its round trip through rotation
+/// coordinates that is rounding; a branch change or any resampling is far larger.
+constexpr double kRoundTripTolerance = 1e-9;
+
+/// Whether every channel shows sample frame f at reference frame f, over as many frames.
+bool isIdentity(const Eigen::MatrixXi& correspondence, Eigen::Index sampleFrames)
+{
+    if (correspondence.rows() != sampleFrames) return false;
+    for (Eigen::Index c = 0; c < correspondence.cols(); ++c)
+        for (Eigen::Index f = 0; f < correspondence.rows(); ++f)
+            if (correspondence(f, c) != f) return false;
+    return true;
+}
+
 // The feature columns of one coupling set's channels.
 std::vector<Eigen::Index> setColumns(const std::vector<Eigen::Index>& set, Eigen::Index perChannel)
 {
@@ -175,6 +189,14 @@ Result<TakeNormalisation> normalisePrepared(const Take& reference, const Take& s
     const Eigen::Index first = std::clamp<Eigen::Index>(Eigen::Index(std::lround(result.bodyTime[0])), 0, sampleFrames - 1);
     result.normalised.values =
         eulerFromRotationCoordinates(aligned, result.coordinates, prepared.chart, Eigen::RowVectorXd(values->row(first)));
+    if (isIdentity(result.correspondence, sampleFrames) &&
+        (result.normalised.values - *values).cwiseAbs().maxCoeff() <= kRoundTripTolerance) {
+        // Every frame kept (the reference against itself): the sample's own numbers, not their
+        // round trip through rotation coordinates (about 1e-13 deg off), so its variance is 0.
+        result.normalised.values = *values;
+        result.normalised.skeleton = sample.skeleton;
+        return result;
+    }
     if (sample.skeleton) result.normalised.skeleton = resampleSkeletalMotion(*sample.skeleton, result.bodyTime);
     return result;
 }

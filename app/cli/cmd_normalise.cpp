@@ -11,6 +11,7 @@
 #include "analysis/normalise/take_normalisation.h"
 #include "analysis/normalise/truth_experiment.h"
 #include "analysis/normalise/variance_evaluation.h"
+#include "analysis/normalise/variance_families.h"
 #include "analysis/pipeline/stages.h"
 #include "analysis/preprocess/preprocess.h"
 #include "analysis/synth/demo_corpus.h"
@@ -256,12 +257,20 @@ void runNormalise(const NormaliseArguments& arguments)
     writeText("variance.csv", variance.str());
     files.push_back("variance.csv");
 
+    // Per DOF family (cm² apart from deg²), as the Normalisation panel shows them; the thesis's
+    // total over all channels (Tables 3.4/3.5) beside.
+    const std::vector<an::VarianceRow> rows = an::varianceRows(table, cell.front()->channels);
     nlohmann::json takesJson = nlohmann::json::array();
     for (std::size_t k = 0; k < normalised.size(); ++k) {
+        nlohmann::json families = nlohmann::json::array();
+        for (const an::VarianceRow& row : rows)
+            if (row.take == table.takeNames[k] && row.part.empty())
+                families.push_back({{"family", row.family}, {"unit", row.unit}, {"raw", row.before}, {"normalised", row.after}});
         takesJson.push_back({{"take", cell[k]->labels.takeIndex},
                              {"cost", normalised[k].cost},
                              {"variance_raw", table.totalBefore[Eigen::Index(k)]},
                              {"variance_normalised", table.totalAfter[Eigen::Index(k)]},
+                             {"families", families},
                              {"outlier", bool(suggestion.outlier[k])}});
     }
     const nlohmann::json summary{{"function", arguments.function},
@@ -287,11 +296,28 @@ void runNormalise(const NormaliseArguments& arguments)
     }
     std::cout << "normalised " << normalised.size() << " takes of " << arguments.function << "/" << arguments.emotion
               << " to " << referenceName << " (" << options.coupling << ", " << arguments.match.path << ")\n"
-              << "take   variance raw   normalised\n";
-    for (std::size_t k = 0; k < normalised.size(); ++k)
-        std::cout << std::setw(4) << cell[k]->labels.takeIndex << std::setw(15) << std::setprecision(6)
-                  << table.totalBefore[Eigen::Index(k)] << std::setw(13) << table.totalAfter[Eigen::Index(k)]
-                  << (suggestion.outlier[k] ? "  (outlier)" : "") << "\n";
+              << "take  " << std::left << std::setw(27) << "variance to the reference" << std::right << std::setw(11) << "raw"
+              << std::setw(13) << "normalised" << std::setw(8) << "change" << "\n";
+    std::vector<int> worse;
+    for (std::size_t k = 0; k < normalised.size(); ++k) {
+        for (const an::VarianceRow& row : rows) {
+            if (row.take != table.takeNames[k] || !row.part.empty()) continue;
+            std::ostringstream change;
+            if (row.before > 0.0) change << std::showpos << std::fixed << std::setprecision(0) << 100.0 * (row.after - row.before) / row.before << " %";
+            else change << "-";
+            std::cout << std::setw(4) << cell[k]->labels.takeIndex << "  " << std::left << std::setw(27) << (row.family + " " + row.unit)
+                      << std::right << std::fixed << std::setprecision(1) << std::setw(11) << row.before << std::setw(13) << row.after
+                      << std::setw(8) << change.str() << (row.worse() ? "  worse" : "") << (suggestion.outlier[k] ? "  (outlier)" : "") << "\n";
+            if (row.worse() && (worse.empty() || worse.back() != cell[k]->labels.takeIndex)) worse.push_back(cell[k]->labels.takeIndex);
+        }
+    }
+    std::cout.unsetf(std::ios::fixed);
+    if (!worse.empty()) {
+        std::cout << "take(s)";
+        for (int take : worse) std::cout << " " << take;
+        std::cout << ": normalised further from the reference than raw in some family"
+                  << (arguments.match.path == "greedy" ? " (--path optimal finds the least-cost correspondence)" : "") << "\n";
+    }
     std::cout << "wrote " << files.size() + 1 << " files to " << folder.string() << "\n";
 }
 

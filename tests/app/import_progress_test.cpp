@@ -23,6 +23,15 @@ using namespace bunraku;
 
 namespace {
 
+/// The imported takes among the derived ones (live results are published beside them).
+std::vector<const app::DerivedTake*> importedTakes(const app::Document& document)
+{
+    std::vector<const app::DerivedTake*> out;
+    for (const auto& derived : document.derivedTakes())
+        if (derived.id.startsWith(QStringLiteral("imported/"))) out.push_back(&derived);
+    return out;
+}
+
 constexpr Eigen::Index kFrames = 20000; // 4 progress reports while parsing, one per joint (and End Site) while importing
 
 std::filesystem::path longTakeFile(const std::string& name)
@@ -45,6 +54,69 @@ void acceptJointDialogWhenShown(bool& shown)
     });
 }
 
+/// Holds the work at its first progress report, presses the progress dialog's Cancel from the
+/// GUI thread (which runs while the worker waits), then lets the work go on to see it.
+class CancelAtFirstProgress {
+public:
+    explicit CancelAtFirstProgress(QWidget* window) : m_window(window)
+    {
+        QObject::connect(&m_poll, &QTimer::timeout, [this] { pressCancelWhenHeld(); });
+    }
+    ~CancelAtFirstProgress() { release(); }
+
+    app::ProgressTaskOptions options()
+    {
+        app::ProgressTaskOptions options;
+        options.showAfterMs = 0;
+        options.observe = [this](double fraction) {
+            if (fraction <= 0.0 || !m_first.exchange(false)) return;
+            m_heldAt.store(fraction);
+            m_reached.release();
+            m_proceed.acquire(); // the worker waits here until the GUI thread has pressed Cancel
+        };
+        return options;
+    }
+    void start() { m_poll.start(5); }
+    /// After the work returned: never leave the worker held, whatever happened.
+    void release()
+    {
+        m_poll.stop();
+        if (!m_released) m_proceed.release();
+        m_released = true;
+    }
+
+    bool pressed = false;
+    bool dialogVisible = false;
+    QString label;
+    double heldAt() const { return m_heldAt.load(); }
+
+private:
+    void pressCancelWhenHeld()
+    {
+        if (!m_reached.tryAcquire()) return;
+        m_poll.stop();
+        auto* progress = m_window->findChild<QProgressDialog*>();
+        dialogVisible = progress != nullptr && progress->isVisible();
+        if (progress != nullptr) {
+            label = progress->labelText();
+            for (auto* button : progress->findChildren<QPushButton*>())
+                if (button->text() == QStringLiteral("Cancel")) {
+                    QTest::mouseClick(button, Qt::LeftButton);
+                    pressed = true;
+                }
+        }
+        m_proceed.release();
+        m_released = true;
+    }
+
+    QWidget* m_window;
+    QTimer m_poll;
+    QSemaphore m_reached, m_proceed;
+    std::atomic<bool> m_first{true};
+    std::atomic<double> m_heldAt{-1.0};
+    bool m_released = false;
+};
+
 } // namespace
 
 TEST_CASE("File > Import Take reads a long BVH off the GUI thread, and Cancel half way changes nothing", "[app][import][progress]")
@@ -54,62 +126,32 @@ TEST_CASE("File > Import Take reads a long BVH off the GUI thread, and Cancel ha
     REQUIRE(test::waitUntilIdle(*window));
     const auto file = longTakeFile("app_import_cancel");
     const QString shownBefore = window->document().selectedId(app::TakeSlot::A);
-    const auto takesBefore = window->document().derivedTakes().size();
+    const auto takesBefore = importedTakes(window->document()).size();
     const int undoBefore = window->document().undoStack()->count();
 
-    QSemaphore reached, proceed;
-    std::atomic<double> heldAt{-1.0};
-    std::atomic<bool> first{true};
-    app::ProgressTaskOptions options;
-    options.showAfterMs = 0;
-    options.observe = [&](double fraction) {
-        if (fraction <= 0.0 || !first.exchange(false)) return;
-        heldAt.store(fraction);
-        reached.release();
-        proceed.acquire(); // the worker waits here until the GUI thread has pressed Cancel
-    };
-    window->files().setProgressOptionsForTesting(options);
+    CancelAtFirstProgress cancel(window.get());
+    window->files().setProgressOptionsForTesting(cancel.options());
     window->files().setDialogsEnabled(true);
     QString lastStatus;
     QObject::connect(&window->files(), &app::FileController::statusMessage, [&](const QString& text) { lastStatus = text; });
-
-    bool jointDialog = false, dialogVisible = false, pressed = false;
-    QString labelWhenHeld;
+    bool jointDialog = false;
     acceptJointDialogWhenShown(jointDialog);
-    QTimer poll;
-    QObject::connect(&poll, &QTimer::timeout, [&] {
-        if (!reached.tryAcquire()) return;
-        // The GUI thread runs this while the worker is held in the middle of the file.
-        poll.stop();
-        auto* progress = window->findChild<QProgressDialog*>();
-        dialogVisible = progress != nullptr && progress->isVisible();
-        if (progress != nullptr) {
-            labelWhenHeld = progress->labelText();
-            for (auto* button : progress->findChildren<QPushButton*>())
-                if (button->text() == QStringLiteral("Cancel")) {
-                    QTest::mouseClick(button, Qt::LeftButton);
-                    pressed = true;
-                }
-        }
-        proceed.release();
-    });
-    poll.start(5);
+    cancel.start();
     const bool imported = window->files().importTakeFile(QString::fromStdString(file.string()));
-    poll.stop();
-    proceed.release(); // never leave the worker held, whatever happened
+    cancel.release();
     window->files().setDialogsEnabled(false);
 
     CHECK(jointDialog);
-    CHECK(dialogVisible);
-    CHECK(pressed);
-    CHECK(heldAt.load() > 0.0);
-    CHECK(heldAt.load() < 0.5); // held while the file was being parsed (the first half)
-    CHECK(labelWhenHeld.contains(QString::fromStdString(analysis::synth::longTakeFileName())));
+    CHECK(cancel.dialogVisible);
+    CHECK(cancel.pressed);
+    CHECK(cancel.heldAt() > 0.0);
+    CHECK(cancel.heldAt() < 0.5); // held while the file was being parsed (the first half)
+    CHECK(cancel.label.contains(QString::fromStdString(analysis::synth::longTakeFileName())));
     CHECK_FALSE(imported);
     CHECK(window->files().lastError().isEmpty());
     CHECK(lastStatus.contains(QStringLiteral("cancelled")));
     CHECK(window->document().selectedId(app::TakeSlot::A) == shownBefore);
-    CHECK(window->document().derivedTakes().size() == takesBefore);
+    CHECK(importedTakes(window->document()).size() == takesBefore);
     CHECK(window->document().undoStack()->count() == undoBefore);
     CHECK(window->findChild<QProgressDialog*>() == nullptr);
 }
@@ -146,4 +188,40 @@ TEST_CASE("File > Import Take of a long BVH reports its progress to the end and 
     CHECK(fractions.front() == Approx(0.5 * 4096.0 / double(kFrames)));
     CHECK(fractions.back() > 0.9);
     CHECK(fractions.back() <= 1.0);
+}
+
+TEST_CASE("a project holding a long imported take reopens behind the progress dialog, and Cancel changes nothing", "[app][import][progress]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    const auto file = longTakeFile("app_project_cancel");
+    REQUIRE(window->files().importTakeFile(QString::fromStdString(file.string())));
+    const auto project = test::scratchDir("app_project_cancel_file") / "long.bunraku.json";
+    REQUIRE(window->files().saveProject(QString::fromStdString(project.string())));
+    REQUIRE(window->files().openDemoCorpus());
+    REQUIRE(importedTakes(window->document()).empty());
+    const QString shownBefore = window->document().selectedId(app::TakeSlot::A);
+
+    CancelAtFirstProgress cancel(window.get());
+    window->files().setProgressOptionsForTesting(cancel.options());
+    window->files().setDialogsEnabled(true);
+    cancel.start();
+    const bool opened = window->files().openProject(QString::fromStdString(project.string()));
+    cancel.release();
+    window->files().setDialogsEnabled(false);
+
+    CHECK(cancel.pressed);
+    CHECK(cancel.dialogVisible);
+    CHECK_FALSE(opened);
+    CHECK(window->files().lastError().isEmpty());
+    CHECK(importedTakes(window->document()).empty());
+    CHECK(window->document().selectedId(app::TakeSlot::A) == shownBefore);
+    CHECK(window->files().projectPath().isEmpty());
+
+    // Not cancelled, the same project brings the take back.
+    window->files().setProgressOptionsForTesting({});
+    REQUIRE(window->files().openProject(QString::fromStdString(project.string())));
+    const auto imported = importedTakes(window->document());
+    REQUIRE(imported.size() == 1);
+    CHECK(imported.front()->take->frameCount() == kFrames);
 }

@@ -107,3 +107,26 @@ TEST_CASE("exit codes: 0 done, 1 bad input, 2 usage, 3 I/O, as bunraku --help sa
     CHECK(io.exitCode == 3);
     CHECK(io.err.rfind("bunraku: error: ", 0) == 0);
 }
+
+TEST_CASE("every subcommand that does work offers a --json summary for batch jobs", "[cli][help]")
+{
+    const auto root = runBunraku({"--help"});
+    REQUIRE(root.exitCode == 0);
+    std::vector<std::vector<std::string>> commands;
+    for (const auto& name : listedSubcommands(root.out)) {
+        if (name == "help") continue;
+        const auto help = runBunraku({name, "--help"});
+        REQUIRE(help.exitCode == 0);
+        const auto nested = listedSubcommands(help.out);
+        if (nested.empty()) commands.push_back({name});
+        for (const auto& inner : nested) commands.push_back({name, inner});
+    }
+    REQUIRE(commands.size() >= 18);
+    for (auto command : commands) {
+        INFO(command.front() << (command.size() > 1 ? " " + command.back() : std::string()));
+        command.push_back("--help");
+        const auto help = runBunraku(command);
+        REQUIRE(help.exitCode == 0);
+        CHECK(help.out.find("--json") != std::string::npos);
+    }
+}

@@ -145,12 +145,7 @@ TEST_CASE("phase, gains and design run on a 138-frame reference and a 90-frame s
 {
     const auto happy = bunraku::test::bandaiDir() / "bye_happy_001.bvh";
     const auto angry = bunraku::test::bandaiDir() / "bye_angry_001.bvh";
-    if (!std::filesystem::exists(happy) || !std::filesystem::exists(angry)) {
-        const char* ci = std::getenv("CI");
-        if (ci && std::string(ci) == "true") FAIL("Bandai test data missing under CI: " << happy);
-        WARN("skipped: " << happy << " or " << angry << " is absent (shared Bandai data not installed)");
-        return;
-    }
+    if (!bunraku::test::requireBandaiData(std::filesystem::exists(happy) && std::filesystem::exists(angry))) return;
     const auto dir = bunraku::test::scratchDir("cli-lengths");
     runJson({"convert", happy.string(), "-o", (dir / "happy.csv").string(), "--json"});
     runJson({"convert", angry.string(), "-o", (dir / "angry.csv").string(), "--json"});
@@ -227,4 +222,62 @@ TEST_CASE("preprocessing a demo corpus keeps its ground truth and leaves no temp
         CHECK(entry.path().filename().string().rfind(".", 0) != 0);
     const auto summary = runJson({"decompose", preprocessed.string(), "--method", "ls", "-o", (dir / "ls").string(), "--json"});
     CHECK(summary.contains("truth"));
+}
+
+TEST_CASE("normalise prints and writes the variance per DOF family and marks the takes it moved away", "[cli]")
+{
+    std::vector<std::string> files;
+    for (int k = 1; k <= 5; ++k) files.push_back((bunraku::test::bandaiDir() / ("wave-right-hand_active_00" + std::to_string(k) + ".bvh")).string());
+    bool present = true;
+    for (const auto& file : files) present = present && std::filesystem::exists(file);
+    if (!bunraku::test::requireBandaiData(present)) return;
+    const auto dir = bunraku::test::scratchDir("cli-normalise-families");
+    std::vector<std::string> corpus{"corpus"};
+    corpus.insert(corpus.end(), files.begin(), files.end());
+    corpus.insert(corpus.end(), {"-o", (dir / "waves").string()});
+    REQUIRE(runBunraku(corpus).exitCode == 0);
+    for (const std::string path : {"greedy", "optimal"}) {
+        INFO("--path " << path);
+        const std::vector<std::string> arguments{"normalise", (dir / "waves").string(), "--function", "wave-right-hand", "--emotion", "active",
+                                                 "--path", path, "-o", (dir / path).string()};
+        auto withJson = arguments;
+        withJson.push_back("--json");
+        const json summary = runJson(withJson);
+        std::vector<int> worse;
+        for (const auto& take : summary.at("takes")) {
+            REQUIRE(take.at("families").size() == 2);
+            const auto& position = take.at("families")[0];
+            const auto& rotation = take.at("families")[1];
+            CHECK(position.at("family") == "position");
+            CHECK(position.at("unit") == "cm\u00b2");
+            CHECK(rotation.at("family") == "rotation");
+            CHECK(rotation.at("unit") == "deg\u00b2");
+            // The families split the thesis's total over the 24 channels.
+            CHECK(position.at("raw").get<double>() + rotation.at("raw").get<double>() ==
+                  Approx(take.at("variance_raw").get<double>()).epsilon(1e-12));
+            CHECK(position.at("normalised").get<double>() + rotation.at("normalised").get<double>() ==
+                  Approx(take.at("variance_normalised").get<double>()).epsilon(1e-12));
+            if (take.at("take") == 3) CHECK(take.at("variance_normalised") == 0.0); // the reference
+            for (const auto& family : take.at("families"))
+                if (family.at("normalised").get<double>() > family.at("raw").get<double>()) {
+                    worse.push_back(take.at("take").get<int>());
+                    break;
+                }
+        }
+        const auto printed = runBunraku(arguments);
+        REQUIRE(printed.exitCode == 0);
+        CHECK(printed.out.find("position cm\u00b2") != std::string::npos);
+        std::size_t marked = 0;
+        for (std::size_t at = printed.out.find("  worse"); at != std::string::npos; at = printed.out.find("  worse", at + 1)) ++marked;
+        if (path == "greedy") {
+            // The greedy scan moves takes 2 and 4 away from the reference, in both families.
+            CHECK(worse == std::vector<int>{2, 4});
+            CHECK(marked == 4);
+            CHECK(printed.out.find("take(s) 2 4: normalised further from the reference than raw") != std::string::npos);
+            CHECK(printed.out.find("--path optimal") != std::string::npos);
+        } else {
+            CHECK(worse.empty());
+            CHECK(marked == 0);
+        }
+    }
 }

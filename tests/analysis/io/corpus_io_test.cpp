@@ -9,6 +9,8 @@
 #include <nlohmann/json.hpp>
 
 #include <fstream>
+#include <stop_token>
+#include <vector>
 
 using namespace bunraku::analysis;
 using namespace bunraku::analysis::io;
@@ -65,6 +67,26 @@ TEST_CASE("a corpus written and read back is identical")
     CHECK(manifest["channels"].size() == 24);
     CHECK(manifest["takes"][4]["file"] == "serving-tea_none_1.csv");
     CHECK(manifest["takes"][0]["frames"] == 4);
+}
+
+TEST_CASE("a corpus is read with the fraction of its takes reported, and stops between two takes when asked")
+{
+    const auto dir = bunraku::test::scratchDir("corpus_read_progress");
+    REQUIRE(writeCorpus(smallCorpus(), dir / "corpus").ok());
+    std::vector<double> fractions;
+    auto read = readCorpus(dir / "corpus", RunControl{{}, [&](double fraction) { fractions.push_back(fraction); }});
+    REQUIRE(read.ok());
+    REQUIRE(fractions.size() == 8);
+    for (std::size_t i = 0; i < fractions.size(); ++i) CHECK(fractions[i] == Approx(double(i) / 8.0));
+
+    std::stop_source stop;
+    int reports = 0;
+    auto stopped = readCorpus(dir / "corpus", RunControl{stop.get_token(), [&](double) {
+                                                             if (++reports == 3) stop.request_stop();
+                                                         }});
+    REQUIRE_FALSE(stopped.ok());
+    CHECK(stopped.error().code == ErrorCode::Cancelled);
+    CHECK(reports == 3);
 }
 
 TEST_CASE("rewriting a corpus replaces it and leaves no temporary folders")
