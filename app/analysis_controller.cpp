@@ -230,9 +230,13 @@ QString AnalysisController::normaliseParametersText(const pl::NormaliseParameter
 QString AnalysisController::decompositionText(const pl::DecomposeOutput& decomposed)
 {
     if (!decomposed.km2o) return tr("least squares");
-    return tr("KM2O, M = %1%2")
+    // Cells with one take (docs/KM2O.md): KM2O may be estimable for none or only some cells.
+    if (!decomposed.km2o->estimable()) return tr("least squares (KM2O not estimable: no cell has two takes)");
+    const bool partial = !decomposed.km2o->notes.empty();
+    return tr("KM2O, M = %1%2%3")
         .arg(decomposed.km2o->correlationLength)
-        .arg(decomposed.parameters.correlationLength == 0 ? tr(" (chosen by P)") : QString());
+        .arg(decomposed.parameters.correlationLength == 0 ? tr(" (chosen by P)") : QString())
+        .arg(partial ? QStringLiteral("; ") + QString::fromStdString(decomposed.km2o->outcome()) : QString());
 }
 
 void AnalysisController::publishNormalised()

@@ -183,13 +183,28 @@ void EmotionPanel::showResult()
     const auto [function, emotion] = m_analysis.weightedCell();
     const double weight = m_document.parameters().design.emotionWeight;
     QString method = AnalysisController::decompositionText(*decomposed);
-    if (decomposed->km2o) method += tr(", mean P = %1 %").arg(decomposed->km2o->meanCellErrorPercent, 0, 'f', 2);
+    if (decomposed->km2o && decomposed->km2o->estimable())
+        method += tr(", mean P = %1 %").arg(decomposed->km2o->meanCellErrorPercent, 0, 'f', 2);
     m_label->setText(tr("Weighted take <b>%1/%2</b>: x = y + a z, a = %3, components by %4 of the %5 takes%6 (the live take "
                         "\"weighted\").")
                          .arg(QString::fromStdString(function), QString::fromStdString(emotion))
                          .arg(weight, 0, 'f', 2)
-                         .arg(method, QString::fromStdString(pl::inputName(decomposed->parameters.input)),
-                              scheduler.state(slot) == SlotState::Running ? tr("; recomputing") : QString()));
+                         .arg(method.toHtmlEscaped(), QString::fromStdString(pl::inputName(decomposed->parameters.input)),
+                              scheduler.state(slot) == SlotState::Running ? tr("; recomputing") : QString()) +
+                     oneTakeNotes(*decomposed));
+}
+
+QString EmotionPanel::oneTakeNotes(const pl::DecomposeOutput& decomposed)
+{
+    // What KM2O did with cells of one take (docs/KM2O.md), the first few; the report lists all.
+    if (!decomposed.km2o || decomposed.km2o->notes.empty()) return {};
+    constexpr std::size_t kShown = 6;
+    const auto& notes = decomposed.km2o->notes;
+    QString text = QStringLiteral("<ul style=\"margin:0\">");
+    for (std::size_t i = 0; i < std::min(notes.size(), kShown); ++i)
+        text += QStringLiteral("<li>") + QString::fromStdString(notes[i]).toHtmlEscaped() + QStringLiteral("</li>");
+    if (notes.size() > kShown) text += QStringLiteral("<li>") + tr("and %1 more (the report lists every cell)").arg(notes.size() - kShown) + QStringLiteral("</li>");
+    return text + QStringLiteral("</ul>");
 }
 
 void EmotionPanel::showEmotions()

@@ -12,6 +12,8 @@
 
 #include "app/document.h"
 
+#include "analysis/pipeline/stages.h"
+
 #include "widgets/bounded_spin_box.h"
 
 #include <QWidget>
@@ -50,6 +52,8 @@ private:
     void showResult();
     /// The emotion picker: take A's function's emotions, the weighted one current.
     void showEmotions();
+    /// KM2O's notes on cells with one take as an HTML list, empty when there are none.
+    static QString oneTakeNotes(const analysis::pipeline::DecomposeOutput& decomposed);
 
 signals:
     /// A message for the status bar (a typed M clamped to its limits).

@@ -234,6 +234,10 @@ Result<std::vector<ArmaCellRow>> armaCellTable(const Decomposition& decompositio
         row.mean.c = Eigen::VectorXd::Zero(q);
         row.mean.b = Eigen::VectorXd::Zero(q + 1);
         row.mean.bThesis = Eigen::VectorXd::Zero(q + 1);
+        if (cellTakeCount(decomposition, cell.function, cell.emotion) < 2) { // one take: no fluctuation (eq. 4.24)
+            rows.push_back(std::move(row));
+            continue;
+        }
         for (const auto& eta : decomposition.fluctuations) {
             if (eta.labels.function != cell.function || eta.labels.emotion != cell.emotion) continue;
             if (!(eta.values.col(channel).squaredNorm() > 0.0)) continue; // a single take or a constant channel

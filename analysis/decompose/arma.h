@@ -86,7 +86,8 @@ struct ArmaCellRow {
 };
 
 /// ARMA(p, q) of channel `channel` of every fluctuation, averaged per cell (Table 4.1 layout,
-/// rows in Decomposition::emotions order). Errors: channel out of range, fit errors (named).
+/// rows in Decomposition::emotions order). A cell with one take has no fluctuation (its take is
+/// its own mean, eq. 4.24, whatever the components' residual): its row has takes = 0. Errors: channel out of range, fit errors (named).
 Result<std::vector<ArmaCellRow>> armaCellTable(const Decomposition& decomposition, Eigen::Index channel, int p, int q,
                                                const ArmaOptions& options = {});
 

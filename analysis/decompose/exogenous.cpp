@@ -2,6 +2,7 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -11,10 +12,11 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-/// KM2O data of one cell from the autocovariance of its diff series (R(0..M) at least); a
-/// noise-free cell (all takes identical) gets gamma = 0 and unit variance, i.e. its inputs are
-/// its mean.
-Km2oLangevinData cellLangevin(const Eigen::VectorXd& r, const Eigen::VectorXd& mean, Eigen::Index takes, int m)
+/// KM2O data of one cell from the autocovariance of its diff series (R(0..M) at least), the
+/// variances multiplied by `varianceScale` (K/(K-1), eq. 4.35, for a cell's own diff series; 1
+/// for the pooled autocovariance of a one-take cell, already unbiased); a noise-free cell (all
+/// takes identical) gets gamma = 0 and unit variance, i.e. its inputs are its mean.
+Km2oLangevinData cellLangevin(const Eigen::VectorXd& r, const Eigen::VectorXd& mean, double varianceScale, int m)
 {
     const double scale = std::max(1.0, mean.squaredNorm() / double(mean.size()));
     auto data = r(0) > 1e-24 * scale ? km2oFromAutocovariance(r, m) : Result<Km2oLangevinData>(Error{});
@@ -26,9 +28,8 @@ Km2oLangevinData cellLangevin(const Eigen::VectorXd& r, const Eigen::VectorXd& m
         flat.partialForward = Eigen::VectorXd::Zero(m + 1);
         return flat;
     }
-    const double k = double(takes);
-    data->varianceForward *= k / (k - 1.0); // eq. 4.35: V_+ = K/(K-1) V_+(diff)
-    data->varianceBackward *= k / (k - 1.0);
+    data->varianceForward *= varianceScale; // eq. 4.35: V_+ = K/(K-1) V_+(diff)
+    data->varianceBackward *= varianceScale;
     return std::move(data).value();
 }
 
@@ -136,12 +137,13 @@ Result<ExogenousCells> ExogenousCells::prepare(std::vector<Eigen::MatrixXd> cell
             return makeError(ErrorCode::InvalidArgument, "KM2O inputs: cell " + std::to_string(j + 1) + " has " +
                                                              std::to_string(cells[j].rows()) + " frames, expected " +
                                                              std::to_string(frames) + " (pad or normalise first)");
-        if (cells[j].cols() < 2)
-            return makeError(ErrorCode::InvalidArgument, "KM2O inputs: cell " + std::to_string(j + 1) +
-                                                             " needs at least 2 takes (K/(K-1), eq. 4.35)");
+        if (cells[j].cols() < 1) return makeError(ErrorCode::InvalidArgument, "KM2O inputs: cell " + std::to_string(j + 1) + " has no take");
         if (!cells[j].allFinite())
             return makeError(ErrorCode::Numerical, "KM2O inputs: cell " + std::to_string(j + 1) + " has non-finite values");
     }
+    if (std::none_of(cells.begin(), cells.end(), [](const Eigen::MatrixXd& c) { return c.cols() >= 2; }))
+        return makeError(ErrorCode::InvalidArgument, "KM2O inputs: every cell has 1 take; the diff series (eqs. 4.24-4.26) need at "
+                                                     "least one cell with K >= 2 takes");
     const int maxM = analysis::maxCorrelationLength(frames);
     if (maxCorrelationLength < 0 || maxCorrelationLength > maxM) return outOfRange(maxCorrelationLength, maxM, frames);
     ExogenousCells prepared;
@@ -149,13 +151,30 @@ Result<ExogenousCells> ExogenousCells::prepare(std::vector<Eigen::MatrixXd> cell
     prepared.m_means.resize(frames, Eigen::Index(cells.size()));
     // R(tau) of every lag is computed alone, so R(0..M) of a smaller M is a prefix of these.
     const int lags = int(std::min<Eigen::Index>(maxCorrelationLength, frames - 1));
+    // A one-take cell's diff series is identically zero (eq. 4.24): its gamma and V_+ are those
+    // of the pooled diff series of the cells with K >= 2 (docs/KM2O.md, "Cells with one take"):
+    // R_pool = sum_j K_j R_diff^j / sum_j (K_j - 1), unbiased for R of the fluctuation as
+    // K/(K-1) R_diff is per cell (eq. 4.35), weighted by the cells' degrees of freedom.
+    Eigen::VectorXd pooled = Eigen::VectorXd::Zero(lags + 1);
+    double degrees = 0.0;
     for (std::size_t j = 0; j < cells.size(); ++j) {
         prepared.m_means.col(Eigen::Index(j)) = cells[j].rowwise().mean();
+        const Eigen::Index k = cells[j].cols();
+        prepared.m_varianceScale.push_back(k >= 2 ? double(k) / double(k - 1) : 1.0);
+        if (k < 2) {
+            prepared.m_autocovariance.emplace_back();
+            continue;
+        }
         const Eigen::MatrixXd diff = cells[j].colwise() - prepared.m_means.col(Eigen::Index(j));
         auto r = biasedAutocovariance(diff, lags);
         if (!r) return r.error();
+        pooled += double(k) * *r;
+        degrees += double(k - 1);
         prepared.m_autocovariance.push_back(std::move(r).value());
     }
+    pooled /= degrees;
+    for (std::size_t j = 0; j < cells.size(); ++j)
+        if (cells[j].cols() < 2) prepared.m_autocovariance[j] = pooled;
     prepared.m_cells = std::move(cells);
     // The KM2O data and Markov gains up to the longest M serve every shorter M when the
     // recursion went all the way for every cell (a cell whose recursion stops at some M is
@@ -167,7 +186,7 @@ Result<ExogenousCells> ExogenousCells::prepare(std::vector<Eigen::MatrixXd> cell
         const double scale = std::max(1.0, mean.squaredNorm() / double(mean.size()));
         const bool flatForEveryM = !(r(0) > 1e-24 * scale);
         if (!flatForEveryM && !km2oFromAutocovariance(r, lags)) prepared.m_leading = false;
-        prepared.m_langevin.push_back(cellLangevin(r, mean, prepared.m_cells[j].cols(), lags));
+        prepared.m_langevin.push_back(cellLangevin(r, mean, prepared.m_varianceScale[j], lags));
     }
     if (prepared.m_leading) prepared.markovGains(prepared.m_langevin, lags, prepared.m_gain, prepared.m_estimateVariance);
     return prepared;
@@ -205,7 +224,7 @@ Result<ExogenousEstimate> ExogenousCells::estimate(const ExogenousOptions& optio
         for (int j = 0; j < cellCount; ++j) est.langevin.push_back(leading(m_langevin[std::size_t(j)], m));
     } else {
         for (int j = 0; j < cellCount; ++j)
-            est.langevin.push_back(cellLangevin(m_autocovariance[std::size_t(j)], m_means.col(j), m_cells[std::size_t(j)].cols(), m));
+            est.langevin.push_back(cellLangevin(m_autocovariance[std::size_t(j)], m_means.col(j), m_varianceScale[std::size_t(j)], m));
         markovGains(est.langevin, m, ownGain, ownVariance);
     }
     const std::vector<Eigen::MatrixXd>& gain = m_leading ? m_gain : ownGain;

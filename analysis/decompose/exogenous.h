@@ -55,8 +55,12 @@ struct ExogenousEstimate {
 };
 
 /// Identifies u^i, v^{ij}, y^i, z^{ij} from `cells` (cell j: frames x K_j takes, all with the
-/// same frame count, K_j >= 2; cells[0] is the neutral emotion). Errors: fewer than one cell,
-/// unequal frame counts, K < 2, M outside 0..M_max (clear message), degenerate (noise-free) cells.
+/// same frame count; cells[0] is the neutral emotion). A cell with K_j = 1 has an identically
+/// zero diff series (eq. 4.24): its gamma_+ and V_+ come from the diff series of the cells with
+/// K_j >= 2 pooled (R = sum K_j R_diff^j / sum (K_j - 1), docs/KM2O.md "Cells with one take"),
+/// as the thesis's simulation (eq. 4.39) gives all cells of a function the same dynamics a^i.
+/// Errors: fewer than one cell, unequal frame counts, no cell with K >= 2, M outside 0..M_max
+/// (clear message), non-finite values.
 Result<ExogenousEstimate> estimateExogenousInputs(const std::vector<Eigen::MatrixXd>& cells,
                                                   const ExogenousOptions& options = {});
 
@@ -74,6 +78,8 @@ public:
     Result<ExogenousEstimate> estimate(const ExogenousOptions& options) const;
 
     Eigen::Index frameCount() const { return m_means.rows(); }
+    /// Whether cell j (one take) has the pooled gamma_+ and V_+ of the cells with K >= 2.
+    bool pooled(std::size_t j) const { return m_cells[j].cols() < 2; }
     int maxCorrelationLength() const { return m_maxLag; }
 
 private:
@@ -84,7 +90,9 @@ private:
 
     std::vector<Eigen::MatrixXd> m_cells;
     Eigen::MatrixXd m_means;                       ///< frames x J
-    std::vector<Eigen::VectorXd> m_autocovariance; ///< per cell, R(0..maxLag) of the diff series
+    /// per cell, R(0..maxLag) of the diff series; of the pooled diff series for a one-take cell
+    std::vector<Eigen::VectorXd> m_autocovariance;
+    std::vector<double> m_varianceScale;           ///< per cell, K/(K-1) (eq. 4.35); 1 when pooled
     int m_maxLag = 0;
     /// Whether the data below, computed up to maxLag, hold every shorter M's as their first rows.
     bool m_leading = false;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace bunraku::analysis {
@@ -28,6 +29,14 @@ struct PreparedChannel {
     Eigen::Index channel = 0;
     ExogenousCells cells;
 };
+
+/// The mean of the finite entries (the KM2O cells' P), 0 when there is none.
+double finiteMean(const Eigen::MatrixXd& values)
+{
+    const Eigen::ArrayXXd finite = values.array().isFinite().cast<double>();
+    const double count = finite.sum();
+    return count > 0.0 ? finite.select(values.array(), 0.0).sum() / count : 0.0;
+}
 
 std::string channelContext(const Decomposition& layout, const FunctionCells& family, Eigen::Index channel)
 {
@@ -61,10 +70,11 @@ Result<Evaluation> evaluate(const Decomposition& layout, const std::vector<Prepa
 {
     Evaluation out;
     const Eigen::Index channels = Eigen::Index(layout.channels.size());
-    const Eigen::Index frames = layout.frameCount();
-    out.functions.assign(layout.functions.size(), Eigen::MatrixXd(frames, channels));
-    out.emotions.assign(layout.emotions.size(), Eigen::MatrixXd(frames, channels));
-    out.cellErrorPercent = Eigen::MatrixXd::Zero(channels, Eigen::Index(layout.emotions.size()));
+    // Functions not estimable by KM2O keep the layout's least-squares components and P NaN.
+    for (const auto& y : layout.functions) out.functions.push_back(y.values);
+    for (const auto& z : layout.emotions) out.emotions.push_back(z.values);
+    out.cellErrorPercent = Eigen::MatrixXd::Constant(channels, Eigen::Index(layout.emotions.size()),
+                                                     std::numeric_limits<double>::quiet_NaN());
     for (const auto& one : prepared) {
         const FunctionCells& family = *one.family;
         const Eigen::Index ch = one.channel;
@@ -82,28 +92,63 @@ Result<Evaluation> evaluate(const Decomposition& layout, const std::vector<Prepa
     return out;
 }
 
-/// The cells of every function of `layout`, their takes from `corpus`; InvalidArgument for a
-/// cell with fewer than 2 takes.
-Result<std::vector<FunctionCells>> functionCells(const Corpus& corpus, const Decomposition& layout)
+std::string cellName(const EmotionComponent& cell)
 {
+    return cell.function + "/" + cell.emotion;
+}
+
+std::string takesText(std::size_t k)
+{
+    return std::to_string(k) + (k == 1 ? " take" : " takes");
+}
+
+/// The cells of every function of `layout` estimable by KM2O (one of its cells has K >= 2),
+/// their takes from `corpus`; per cell of the layout its K and source, and the notes
+/// (Km2oDecomposition::cells, notes).
+struct CellPlan {
     std::vector<FunctionCells> families;
+    std::vector<Km2oCellEstimate> cells;
+    std::vector<std::string> notes;
+};
+
+CellPlan planCells(const Corpus& corpus, const Decomposition& layout)
+{
+    CellPlan plan;
+    plan.cells.resize(layout.emotions.size());
     for (std::size_t i = 0; i < layout.functions.size(); ++i) {
         FunctionCells family;
         family.function = int(i);
+        std::string multi;  // the cells with K >= 2, "f/e (K takes)"
+        std::string single; // the one-take cells
         for (std::size_t c = 0; c < layout.emotions.size(); ++c) {
             const auto& cell = layout.emotions[c];
             if (cell.function != layout.functions[i].function) continue;
             auto takes = corpus.cell(cell.function, cell.emotion);
-            if (takes.size() < 2)
-                return makeError(ErrorCode::InvalidArgument, "KM2O decomposition: cell " + cell.function + "/" + cell.emotion +
-                                                                 " has " + std::to_string(takes.size()) +
-                                                                 " take(s); the diff series need K >= 2 (eq. 4.35)");
+            plan.cells[c] = {cell.function, cell.emotion, int(takes.size()), Km2oCellSource::OwnTakes};
+            std::string& list = takes.size() >= 2 ? multi : single;
+            list += (list.empty() ? "" : ", ") + cellName(cell) + (takes.size() >= 2 ? " (" + takesText(takes.size()) + ")" : "");
             family.cellIndices.push_back(int(c));
             family.takes.push_back(std::move(takes));
         }
-        families.push_back(std::move(family));
+        const auto& name = layout.functions[i].function;
+        if (multi.empty()) {
+            for (int c : family.cellIndices) plan.cells[std::size_t(c)].source = Km2oCellSource::LeastSquares;
+            plan.notes.push_back("function '" + name + "': KM2O not estimable - " + single +
+                                 (family.cellIndices.size() == 1 ? " has" : " have") +
+                                 " 1 take each, and gamma_+, V_+ need the diff series of a cell with K >= 2 takes "
+                                 "(eqs. 4.24-4.35); y and z of '" + name + "' by least squares (eq. 4.8)");
+            continue;
+        }
+        for (std::size_t j = 0; j < family.cellIndices.size(); ++j) {
+            if (family.takes[j].size() >= 2) continue;
+            auto& cell = plan.cells[std::size_t(family.cellIndices[j])];
+            cell.source = Km2oCellSource::Pooled;
+            plan.notes.push_back(cell.function + "/" + cell.emotion + " has 1 take (its diff series is zero, eq. 4.24): gamma_+, V_+ "
+                                 "from the pooled diff series of " + multi + " (same function, eq. 4.39)");
+        }
+        plan.families.push_back(std::move(family));
     }
-    return families;
+    return plan;
 }
 
 /// The skeletons' y and z by the same KM2O reading as the channels: the skeleton coordinates of
@@ -125,9 +170,8 @@ Result<SkeletalComponents> skeletalKm2o(const LinearCorpus& linear, const Exogen
         skeletal.corpus.takes[k].values = linear.skeletonCoordinates[k];
     }
     const Decomposition layout = decomposeLinear(skeletal);
-    auto families = functionCells(skeletal.corpus, layout);
-    if (!families) return families.error();
-    auto prepared = prepareChannels(layout, *families, reading.correlationLength);
+    const CellPlan plan = planCells(skeletal.corpus, layout);
+    auto prepared = prepareChannels(layout, plan.families, reading.correlationLength);
     if (!prepared) return prepared.error();
     auto evaluation = evaluate(layout, *prepared, reading);
     if (!evaluation) return evaluation.error();
@@ -135,6 +179,36 @@ Result<SkeletalComponents> skeletalKm2o(const LinearCorpus& linear, const Exogen
 }
 
 } // namespace
+
+const char* km2oCellSourceName(Km2oCellSource source)
+{
+    switch (source) {
+    case Km2oCellSource::OwnTakes: return "own takes";
+    case Km2oCellSource::Pooled: return "pooled";
+    case Km2oCellSource::LeastSquares: return "least squares";
+    }
+    return "?";
+}
+
+bool Km2oDecomposition::estimable() const
+{
+    return std::any_of(cells.begin(), cells.end(), [](const Km2oCellEstimate& c) { return c.source != Km2oCellSource::LeastSquares; });
+}
+
+std::string Km2oDecomposition::outcome() const
+{
+    const auto count = [&](Km2oCellSource source) {
+        return std::count_if(cells.begin(), cells.end(), [&](const Km2oCellEstimate& c) { return c.source == source; });
+    };
+    const auto cellsText = [](long n) { return std::to_string(n) + (n == 1 ? " cell" : " cells"); };
+    const long pooled = count(Km2oCellSource::Pooled);
+    const long leastSquares = count(Km2oCellSource::LeastSquares);
+    if (!estimable()) return "KM2O not estimable (no cell has 2 takes): y, z by least squares for all " + cellsText(leastSquares);
+    std::string text = "KM2O for " + (leastSquares == 0 ? "all " : std::string()) + cellsText(long(cells.size()) - leastSquares);
+    if (pooled > 0) text += " (" + std::to_string(pooled) + " with one take, gamma pooled over its function)";
+    if (leastSquares > 0) text += ", least squares for " + cellsText(leastSquares) + " (functions without a cell of 2 takes)";
+    return text;
+}
 
 Result<Km2oDecomposition> decomposeKm2o(const Corpus& corpus, const Km2oDecompositionOptions& options, const RunControl& control)
 {
@@ -153,10 +227,19 @@ Result<Km2oDecomposition> decomposeKm2o(const Corpus& corpus, const Km2oDecompos
     if (options.correlationLength < 0 || options.correlationLength > maxM) return outOfRange(options.correlationLength);
     if (options.lastCandidateLength < 0 || options.lastCandidateLength > maxM) return outOfRange(options.lastCandidateLength);
 
-    auto families = functionCells(linear.corpus, layout);
-    if (!families) return families.error();
-
+    CellPlan plan = planCells(linear.corpus, layout);
     Km2oDecomposition result;
+    result.cells = std::move(plan.cells);
+    result.notes = std::move(plan.notes);
+    if (!result.estimable()) {
+        // No cell of any function has two takes: y, z, eta stay least squares (eq. 4.8).
+        result.cellErrorPercent = Eigen::MatrixXd::Constant(Eigen::Index(layout.channels.size()), Eigen::Index(layout.emotions.size()),
+                                                            std::numeric_limits<double>::quiet_NaN());
+        result.meanCellErrorPercent = std::numeric_limits<double>::quiet_NaN();
+        result.components = std::move(layout);
+        control.report(1.0);
+        return result;
+    }
     if (options.correlationLength > 0) {
         result.candidateLengths = {options.correlationLength};
     } else {
@@ -167,7 +250,7 @@ Result<Km2oDecomposition> decomposeKm2o(const Corpus& corpus, const Km2oDecompos
     // diff-series autocovariances) once; then every candidate M.
     if (result.candidateLengths.empty()) return outOfRange(0);
     const int longest = *std::max_element(result.candidateLengths.begin(), result.candidateLengths.end());
-    auto prepared = prepareChannels(layout, *families, longest);
+    auto prepared = prepareChannels(layout, plan.families, longest);
     if (!prepared) return prepared.error();
     double bestError = 0.0;
     Evaluation best;
@@ -177,7 +260,7 @@ Result<Km2oDecomposition> decomposeKm2o(const Corpus& corpus, const Km2oDecompos
         reading.correlationLength = result.candidateLengths[index];
         auto evaluation = evaluate(layout, *prepared, reading);
         if (!evaluation) return evaluation.error();
-        const double meanError = evaluation->cellErrorPercent.size() > 0 ? evaluation->cellErrorPercent.mean() : 0.0;
+        const double meanError = finiteMean(evaluation->cellErrorPercent);
         result.meanErrorPercent.push_back(meanError);
         if (index == 0 || meanError < bestError) {
             bestError = meanError;

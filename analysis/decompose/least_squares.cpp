@@ -18,6 +18,13 @@ int Decomposition::cellIndex(const std::string& functionName, const std::string&
     return -1;
 }
 
+int cellTakeCount(const Decomposition& decomposition, const std::string& function, const std::string& emotion)
+{
+    return int(std::count_if(decomposition.fluctuations.begin(), decomposition.fluctuations.end(), [&](const FluctuationComponent& eta) {
+        return eta.labels.function == function && eta.labels.emotion == emotion;
+    }));
+}
+
 const EmotionComponent* Decomposition::emotion(const std::string& functionName, const std::string& emotionName) const
 {
     const int c = cellIndex(functionName, emotionName);

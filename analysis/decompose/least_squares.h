@@ -76,6 +76,9 @@ struct Decomposition {
     Eigen::Index frameCount() const { return functions.empty() ? 0 : functions.front().values.rows(); }
 };
 
+/// The number of takes (fluctuations) of a cell of `decomposition`, 0 when absent.
+int cellTakeCount(const Decomposition& decomposition, const std::string& function, const std::string& emotion);
+
 /// The shared checks of every decomposition: a valid corpus, all takes with the same frame
 /// count (pad or normalise first), and a neutral-emotion cell for every function.
 Status checkDecomposable(const Corpus& corpus);

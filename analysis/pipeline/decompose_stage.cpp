@@ -51,6 +51,11 @@ Result<FluctuationOutput> runFluctuations(const Decomposition& d, const Fluctuat
     // Welch spectra of eta, averaged over each cell's takes (thesis Figures 4.3-4.8).
     for (const auto& cell : d.emotions) {
         CellSpectra spectra{cell.function, cell.emotion, {}, {}};
+        // A one-take cell has no fluctuation to analyse (its take is its mean, eq. 4.24): no spectrum.
+        if (cellTakeCount(d, cell.function, cell.emotion) < 2) {
+            out.spectra.push_back(std::move(spectra));
+            continue;
+        }
         int takes = 0;
         for (const auto& eta : d.fluctuations) {
             if (eta.labels.function != cell.function || eta.labels.emotion != cell.emotion) continue;

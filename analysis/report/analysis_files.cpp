@@ -113,6 +113,17 @@ std::string cellStem(const std::string& function, const std::string& emotion)
 
 std::string takeStem(const TakeLabels& labels) { return cellStem(labels.function, labels.emotion) + "_" + std::to_string(labels.takeIndex); }
 
+nlohmann::json km2oOutcomeJson(const Km2oDecomposition& km2o)
+{
+    nlohmann::json cells = nlohmann::json::array();
+    for (const auto& cell : km2o.cells)
+        cells.push_back({{"function", cell.function},
+                         {"emotion", cell.emotion},
+                         {"takes", cell.takes},
+                         {"gamma", km2oCellSourceName(cell.source)}});
+    return {{"estimable", km2o.estimable()}, {"outcome", km2o.outcome()}, {"notes", km2o.notes}, {"cells", std::move(cells)}};
+}
+
 Result<std::vector<OutputFile>> analysisDataFiles(const ChainResult& chain, const pipeline::ChainParameters& parameters)
 {
     if (!chain.preprocessed || !chain.normalised || !chain.decomposed || !chain.fluctuations || !chain.axes)
@@ -186,10 +197,13 @@ Result<std::vector<OutputFile>> analysisDataFiles(const ChainResult& chain, cons
             errors += "\n";
         }
         files.push_back({"km2o_errors.csv", errors});
-        decomposition["M"] = km2o->correlationLength;
-        decomposition["candidate_M"] = km2o->candidateLengths;
-        decomposition["mean_P_percent_by_M"] = km2o->meanErrorPercent;
-        decomposition["mean_P_percent"] = km2o->meanCellErrorPercent;
+        decomposition["km2o"] = km2oOutcomeJson(*km2o);
+        if (km2o->estimable()) { // else no M was chosen: y, z by least squares
+            decomposition["M"] = km2o->correlationLength;
+            decomposition["candidate_M"] = km2o->candidateLengths;
+            decomposition["mean_P_percent_by_M"] = km2o->meanErrorPercent;
+            decomposition["mean_P_percent"] = km2o->meanCellErrorPercent;
+        }
     }
 
     const auto& fluctuations = *chain.fluctuations;

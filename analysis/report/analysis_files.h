@@ -14,6 +14,8 @@
 #include "analysis/core/result.h"
 #include "analysis/pipeline/chain.h"
 
+#include <nlohmann/json.hpp>
+
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -32,6 +34,11 @@ Result<std::vector<OutputFile>> analysisDataFiles(const pipeline::ChainResult& c
 /// in whole, refused when `folder` holds files this program did not write there; Io errors name
 /// the file.
 Status writeOutputFiles(const std::filesystem::path& folder, const std::vector<OutputFile>& files);
+
+/// What KM2O did per cell, for summary.json and the CLI's --json summaries (docs/FORMATS.md):
+/// {"estimable", "outcome", "notes", "cells": [{"function", "emotion", "takes", "gamma": "own
+/// takes" | "pooled" | "least squares"}]} (docs/KM2O.md, "Cells with one take").
+nlohmann::json km2oOutcomeJson(const Km2oDecomposition& km2o);
 
 /// File-safe "f_e" / "f_e_k" stems used above.
 std::string cellStem(const std::string& function, const std::string& emotion);

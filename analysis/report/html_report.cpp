@@ -175,12 +175,25 @@ void averageSection(Html& html, const ChainResult& chain)
     html.end();
 }
 
+/// The cells with one take, which have no fluctuation to analyse (4.3.2); empty when none.
+std::string oneTakeCellsNote(const ChainResult& chain)
+{
+    const Decomposition& d = chain.decomposed->components;
+    std::string cells;
+    for (const auto& z : d.emotions)
+        if (cellTakeCount(d, z.function, z.emotion) < 2) cells += (cells.empty() ? "" : ", ") + z.function + "/" + z.emotion;
+    if (cells.empty()) return {};
+    return "<p class=\"one-take\">No spectrum and no ARMA model for the cells with one take (" + escapeXml(cells) +
+           "): the fluctuation is the take minus its cell mean (eq. 4.24), identically zero with one take.</p>";
+}
+
 void spectraSection(Html& html, const ChainResult& chain)
 {
     const auto& f = *chain.fluctuations;
     html.section("spectra", "Spectra of the fluctuation (thesis 4.3.2)");
-    html << "<p>Welch power spectral density of eta = x - y - z, averaged over each cell's takes (data: spectra.csv).</p>"
-            "<div class=\"figures\">";
+    html << "<p>Welch power spectral density of eta = x - y - z, averaged over each cell's takes (data: spectra.csv).</p>";
+    html << oneTakeCellsNote(chain);
+    html << "<div class=\"figures\">";
     const std::vector<std::string> functions = chain.corpus.corpus->functions();
     for (const auto& function : functions) {
         for (const std::string channel : {"head.x", "arm.z"}) {
@@ -208,6 +221,7 @@ void armaSection(Html& html, const ChainResult& chain)
                 "The MA part is known only up to its spectrum: b is the invertible factor (every root of B inside the "
                 "unit circle), b<sup>T</sup> the same spectrum in Table 4.1's convention (B's largest root outside, "
                 "b1/b0 &gt; 1; docs/ARMA.md):</p>";
+    html << oneTakeCellsNote(chain);
     const auto at = std::find(f.channelNames.begin(), f.channelNames.end(), "head.x");
     const std::size_t ch = at == f.channelNames.end() ? 0 : std::size_t(at - f.channelNames.begin());
     html << "<table class=\"numbers\" data-table=\"arma\"><tr><th>cell</th>";
@@ -246,6 +260,26 @@ void km2oSection(Html& html, const ChainResult& chain)
         html.end();
         return;
     }
+    if (!km2o->notes.empty()) {
+        // Cells with one take (docs/KM2O.md): where each cell's gamma_+ and V_+ came from.
+        html << "<p data-km2o-outcome=\"" + std::string(km2o->estimable() ? "estimable" : "not-estimable") + "\"><b>" +
+                    escapeXml(km2o->outcome()) + ".</b> A cell with one take has no diff series (eq. 4.24, x - x<sub>mean</sub> = 0); "
+                    "its gamma<sub>+</sub>, V<sub>+</sub> are pooled from the cells of its function with two or more takes "
+                    "(eq. 4.39 gives the dynamics per function); a function without such a cell keeps its least-squares y, z "
+                    "(eq. 4.8).</p><ul class=\"km2o-notes\">";
+        for (const auto& note : km2o->notes) html << "<li>" + escapeXml(note) + "</li>";
+        html << "</ul><table class=\"numbers\" data-table=\"km2o-cells\"><tr><th>cell</th><th>takes</th><th>gamma, V</th></tr>";
+        for (const auto& cell : km2o->cells)
+            html << "<tr><td>" + escapeXml(cell.function + "/" + cell.emotion) + "</td><td>" + std::to_string(cell.takes) + "</td><td>" +
+                        km2oCellSourceName(cell.source) + "</td></tr>";
+        html << "</table>";
+    }
+    if (!km2o->estimable()) {
+        html << "<p>No correlation length M and no P<sup>ij</sup>: the function and emotion components above are the "
+                "least-squares ones (4.3.1).</p>";
+        html.end();
+        return;
+    }
     html << "<p>Relative error P (eq. 4.40) of y + z against the cell means, averaged over channels and cells, for every "
             "correlation length M = 1..M_max; the smallest P chooses M. Ours: <b>M = " +
                 std::to_string(km2o->correlationLength) + "</b>, mean P = <b>" + shown(km2o->meanCellErrorPercent) +
@@ -273,7 +307,9 @@ void km2oSection(Html& html, const ChainResult& chain)
         html << "<tr><td>" + escapeXml(name) + "</td>";
         for (std::size_t c = 0; c < d.emotions.size(); ++c) {
             const auto& z = d.emotions[c];
-            html << dataCell("km2o_errors.csv", name, "P_" + z.function + "/" + z.emotion, km2o->cellErrorPercent(Eigen::Index(ch), Eigen::Index(c)));
+            const double cellP = km2o->cellErrorPercent(Eigen::Index(ch), Eigen::Index(c));
+            // NaN: a cell of a function KM2O could not estimate (least squares, no P).
+            html << (std::isfinite(cellP) ? dataCell("km2o_errors.csv", name, "P_" + z.function + "/" + z.emotion, cellP) : "<td>&mdash;</td>");
             html << thesisCell(thesisCellErrorPercent(name, thesisFunctionIndex(z.function), thesisEmotionIndex(z.emotion)));
         }
         html << "</tr>";

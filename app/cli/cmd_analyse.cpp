@@ -97,19 +97,25 @@ void runAnalyse(const AnalyseArguments& arguments)
                            {"takes", corpus.corpus->takes.size()},
                            {"threads", options.threads},
                            {"seconds", seconds}};
-    if (chain->decomposed->km2o) {
-        summary["M"] = chain->decomposed->km2o->correlationLength;
-        summary["mean_P_percent"] = chain->decomposed->km2o->meanCellErrorPercent;
+    if (const auto& km2o = chain->decomposed->km2o) {
+        summary["km2o"] = rp::km2oOutcomeJson(*km2o);
+        if (km2o->estimable()) {
+            summary["M"] = km2o->correlationLength;
+            summary["mean_P_percent"] = km2o->meanCellErrorPercent;
+        }
     }
     if (arguments.json) {
         std::cout << summary.dump() << std::endl;
         return;
     }
     std::cout << "analysed " << corpus.corpus->takes.size() << " takes in " << chain->normalised->cells.size() << " cells";
-    if (chain->decomposed->km2o)
-        std::cout << " (KM2O M = " << chain->decomposed->km2o->correlationLength << ", mean P = " << chain->decomposed->km2o->meanCellErrorPercent
-                  << " %)";
+    if (const auto& km2o = chain->decomposed->km2o; km2o && km2o->estimable())
+        std::cout << " (KM2O M = " << km2o->correlationLength << ", mean P = " << km2o->meanCellErrorPercent << " %)";
     std::cout << ": " << files.size() << " files and the report " << summary["report"].get<std::string>() << "\n";
+    if (const auto& km2o = chain->decomposed->km2o; km2o && !km2o->notes.empty()) {
+        std::cout << km2o->outcome() << "\n";
+        for (const auto& note : km2o->notes) std::cout << "  " << note << "\n";
+    }
 }
 
 } // namespace

@@ -14,6 +14,7 @@
 #include "analysis/io/take_csv.h"
 #include "analysis/io/text_format.h"
 #include "analysis/pipeline/stages.h"
+#include "analysis/report/analysis_files.h"
 #include "analysis/preprocess/preprocess.h"
 #include "analysis/synth/demo_corpus.h"
 
@@ -126,6 +127,7 @@ std::string spectraCsv(const Decomposition& d, bool useWelch)
     std::ostringstream out;
     out << std::setprecision(10) << "function,emotion,take,channel,frequency_hz,power\n";
     for (const auto& eta : d.fluctuations) {
+        if (cellTakeCount(d, eta.labels.function, eta.labels.emotion) < 2) continue; // one take: no fluctuation (eq. 4.24)
         for (std::size_t ch = 0; ch < d.channels.size(); ++ch) {
             const Eigen::VectorXd x = eta.values.col(Eigen::Index(ch));
             WelchOptions welchOptions;
@@ -151,6 +153,7 @@ std::string armaTakesCsv(const Decomposition& d, ArmaOrderSearch search, int max
     options.maxOrder = maxOrder;
     options.search = search;
     for (const auto& eta : d.fluctuations) {
+        if (cellTakeCount(d, eta.labels.function, eta.labels.emotion) < 2) continue; // one take: no fluctuation (eq. 4.24)
         for (std::size_t ch = 0; ch < d.channels.size(); ++ch) {
             const Eigen::VectorXd x = eta.values.col(Eigen::Index(ch));
             if (!(x.squaredNorm() > 0.0)) continue;
@@ -299,10 +302,13 @@ void runDecompose(const DecomposeArgs& args)
         for (std::size_t i = 0; i < km2o.candidateLengths.size(); ++i)
             byM << km2o.candidateLengths[i] << ',' << km2o.meanErrorPercent[i] << '\n';
         outputs.emplace_back("km2o_by_M.csv", byM.str());
-        summary["M"] = km2o.correlationLength;
-        summary["candidate_M"] = km2o.candidateLengths;
-        summary["mean_P_percent_by_M"] = km2o.meanErrorPercent;
-        summary["mean_P_percent"] = km2o.meanCellErrorPercent;
+        summary["km2o"] = analysis::report::km2oOutcomeJson(km2o);
+        if (km2o.estimable()) { // else no M was chosen: y, z by least squares
+            summary["M"] = km2o.correlationLength;
+            summary["candidate_M"] = km2o.candidateLengths;
+            summary["mean_P_percent_by_M"] = km2o.meanErrorPercent;
+            summary["mean_P_percent"] = km2o.meanCellErrorPercent;
+        }
     }
 
     fs::path truthFolder = args.truth;
@@ -336,6 +342,10 @@ void runDecompose(const DecomposeArgs& args)
                   << d.functions.size() << " y, " << d.emotions.size() << " z, " << d.fluctuations.size() << " eta\n";
         if (summary.contains("M"))
             std::cout << "KM2O correlation length M = " << summary["M"] << ", mean P = " << summary["mean_P_percent"] << " %\n";
+        if (outcome.km2o && !outcome.km2o->notes.empty()) {
+            std::cout << outcome.km2o->outcome() << "\n";
+            for (const auto& note : outcome.km2o->notes) std::cout << "  " << note << "\n";
+        }
         if (summary.contains("truth")) std::cout << "error against ground truth: " << summary["truth"].dump() << "\n";
     }
 }

@@ -65,6 +65,8 @@ Row readRow(const std::string& folder)
         row.channels = summary.at("channels").get<std::size_t>();
         const json& decomposition = summary.at("decomposition");
         row.method = decomposition.at("method").get<std::string>();
+        if (decomposition.contains("km2o") && !decomposition.at("km2o").at("estimable").get<bool>())
+            row.method = "least-squares (KM2O not estimable)";
         if (decomposition.contains("M")) {
             row.M = std::to_string(decomposition.at("M").get<int>());
             row.meanP = number(decomposition.at("mean_P_percent"));

@@ -6,6 +6,10 @@
 #include "app/normalise_panel.h"
 
 #include "analysis/core/angle_channels.h"
+#include "analysis/io/corpus_builder.h"
+#include "analysis/io/corpus_io.h"
+#include "tests/support/shared_data.h"
+#include "tests/support/test_paths.h"
 
 #include <catch2/catch.hpp>
 
@@ -13,6 +17,9 @@
 #include <QSlider>
 #include <QSpinBox>
 #include <QTreeWidget>
+
+#include <algorithm>
+#include <filesystem>
 
 using namespace bunraku;
 using app::TakeSlot;
@@ -161,4 +168,56 @@ TEST_CASE("steps of tau, T_cmp, M and the emotion weight slider merge per contro
     document.undoStack()->undo();
     REQUIRE(tau->value() == 4);
     REQUIRE(idle(*window));
+}
+
+TEST_CASE("the Emotion dock says KM2O is not estimable on the Bandai bye takes and shows their least-squares weighting",
+          "[app][emotion][one-take]")
+{
+    // One take per emotion (docs/KM2O.md, "Cells with one take"): the default chain runs through.
+    std::vector<std::filesystem::path> files;
+    for (const char* emotion : {"normal", "happy", "angry"}) files.push_back(test::bandaiDir() / ("bye_" + std::string(emotion) + "_001.bvh"));
+    const bool present = std::all_of(files.begin(), files.end(), [](const auto& f) { return std::filesystem::exists(f); });
+    if (!test::requireBandaiData(present)) return;
+    auto sources = analysis::io::labelTakeFiles(files, "{function}_{emotion}_{take}");
+    REQUIRE(sources.ok());
+    analysis::io::CorpusBuildOptions options;
+    options.import.bvh.guessUnits = true;
+    options.name = "bye";
+    auto built = analysis::io::buildCorpus(*sources, options);
+    REQUIRE(built.ok());
+    const auto dir = test::scratchDir("emotion_one_take");
+    REQUIRE(analysis::io::writeCorpus(built->corpus, dir / "corpus").ok());
+
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    REQUIRE(window->files().openCorpusFolder(QString::fromStdString((dir / "corpus").string())));
+    auto& document = window->document();
+    const auto& takes = document.corpus().takes;
+    const auto happy = std::find_if(takes.begin(), takes.end(), [](const analysis::Take& t) { return t.labels.emotion == "happy"; });
+    REQUIRE(happy != takes.end());
+    document.selectTake(TakeSlot::A, app::Document::corpusTakeId(std::size_t(happy - takes.begin())));
+    REQUIRE(idle(*window));
+    auto* panel = window->emotionPanel();
+    REQUIRE(QTest::qWaitFor([&] { return panel->weightedTake() != nullptr; }, 60000));
+    CHECK(panel->decomposedMethod() == QStringLiteral("km2o"));
+    CHECK(panel->decomposedOrder() == 0); // no M chosen
+    const auto decomposed = window->analysis().decomposed();
+    REQUIRE(decomposed->km2o);
+    CHECK_FALSE(decomposed->km2o->estimable());
+    for (const auto& cell : decomposed->km2o->cells) CHECK(cell.source == analysis::Km2oCellSource::LeastSquares);
+    const QString text = panel->statusText();
+    INFO(text.toStdString());
+    CHECK(text.contains(QStringLiteral("Weighted take <b>bye/happy</b>")));
+    CHECK(text.contains(QStringLiteral("least squares (KM2O not estimable: no cell has two takes)")));
+    CHECK(text.contains(QStringLiteral("<li>function 'bye': KM2O not estimable")));
+    CHECK_FALSE(text.contains(QStringLiteral("mean P")));
+    // The components are least squares's, not left empty: y + z is the cell's one (normalised) take.
+    const auto& d = decomposed->components;
+    const auto* y = d.function("bye");
+    const auto* z = d.emotion("bye", "happy");
+    REQUIRE(y);
+    REQUIRE(z);
+    const int cell = d.cellIndex("bye", "happy");
+    REQUIRE(cell >= 0);
+    CHECK(((y->values + z->values) - d.cellMeans[std::size_t(cell)]).cwiseAbs().maxCoeff() < 1e-9);
 }

@@ -1,6 +1,7 @@
 // workflows/Snakefile run by Debian's snakemake on a subset of the shared Bandai files (two
-// functions: bye with one take per emotion, wave-right-hand with two; least squares, since
-// KM2O needs two takes per cell): one corpus and one analysis per function, out/summary.csv and
+// functions: bye with one take per emotion, wave-right-hand with two; the default chain, KM2O,
+// not estimable on bye and so least squares there, docs/KM2O.md): one corpus and one analysis
+// per function, out/summary.csv and
 // out/index.html checked against the per-corpus summary.json files; a second run has nothing to
 // do, and a deleted table is rebuilt alone, the same.
 #include "tests/cli/cli_files.h"
@@ -79,12 +80,9 @@ TEST_CASE("the Snakemake workflow analyses a folder of Bandai takes corpus by co
     fs::create_directories(in);
     for (const auto& [function, stems] : subset)
         for (const auto& stem : stems) fs::create_symlink(bunraku::test::bandaiDir() / (stem + ".bvh"), in / (stem + ".bvh"));
-    const fs::path parameters = dir / "parameters.json";
-    bunraku::test::writeText(parameters, R"({"decompose": {"method": "least-squares"}})");
     const std::string command = "snakemake -s '" + (bunraku::test::sourceDir() / "workflows" / "Snakefile").string() + "' --directory '" +
                                 dir.string() + "' --cores 2 --config 'input=" + in.string() + "' 'out=" + out.string() +
-                                "' 'pattern={function}_{emotion}_{take}' 'bunraku=" + bunraku::test::bunrakuPath() +
-                                "' 'parameters=" + parameters.string() + "'";
+                                "' 'pattern={function}_{emotion}_{take}' 'bunraku=" + bunraku::test::bunrakuPath() + "'";
     const Shell first = runShell(command, dir / "first.log");
     INFO(first.log);
     REQUIRE(first.exitCode == 0);
@@ -111,10 +109,21 @@ TEST_CASE("the Snakemake workflow analyses a folder of Bandai takes corpus by co
         CHECK(summary["cells"].size() == 3); // normal and two emotions
         CHECK(std::stoul(fields[3]) == summary["frames"].get<std::size_t>());
         CHECK(std::stoul(fields[4]) == summary["channels"].get<std::size_t>());
-        CHECK(fields[5] == summary["decomposition"]["method"].get<std::string>());
-        CHECK(fields[5] == "least-squares");
-        CHECK(fields[6].empty()); // no KM2O M and P
-        CHECK(fields[7].empty());
+        CHECK(summary["decomposition"]["method"] == "km2o");
+        if (function == "bye") {
+            // One take per cell: KM2O not estimable, the least-squares components (docs/KM2O.md).
+            CHECK(fields[5] == "least-squares (KM2O not estimable)");
+            CHECK(summary["decomposition"]["km2o"]["estimable"] == false);
+            CHECK(fields[6].empty()); // no KM2O M and P
+            CHECK(fields[7].empty());
+        } else {
+            CHECK(fields[5] == "km2o");
+            CHECK(summary["decomposition"]["km2o"]["estimable"] == true);
+            CHECK(summary["decomposition"]["km2o"]["notes"].empty()); // two takes in every cell
+            CHECK(std::stoi(fields[6]) == summary["decomposition"]["M"].get<int>());
+            CHECK(std::stoi(fields[6]) >= 1);
+            CHECK(std::stod(fields[7]) == summary["decomposition"]["mean_P_percent"].get<double>());
+        }
         double designError = 0.0;
         for (const auto& axis : summary["axes"]) designError += axis["design_relative_error"].get<double>();
         REQUIRE(summary["axes"].size() == 2);
