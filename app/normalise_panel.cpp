@@ -11,12 +11,15 @@
 
 #include <qcustomplot.h>
 
+#include <algorithm>
+
 #include <QComboBox>
 #include <QFormLayout>
 #include <QHeaderView>
 #include <QLabel>
 #include <QSignalBlocker>
 #include <QSpinBox>
+#include <QStringList>
 #include <QTreeWidget>
 #include <QVBoxLayout>
 
@@ -250,12 +253,29 @@ void NormalisePanel::showResult()
         return;
     }
     const auto& variance = cell->variance;
-    m_summary->setText(tr("Cell <b>%1/%2</b> normalised to <b>%3</b> with %4%5. Squared difference to the reference, "
+    // Takes that came out further from the reference in a whole DOF family, as `bunraku
+    // normalise` lists them (analysis/normalise/variance_families.h).
+    QStringList worse;
+    for (const auto& row : analysis::varianceRows(variance, cell->referenceTake.channels)) {
+        if (!row.part.empty() || !row.worse()) continue;
+        const auto k = std::size_t(std::find(variance.takeNames.begin(), variance.takeNames.end(), row.take) - variance.takeNames.begin());
+        const QString take = k < cell->takeIndices.size() ? QString::number(cell->takeIndices[k]) : QString::fromStdString(row.take);
+        if (!worse.contains(take)) worse << take;
+    }
+    QString advice;
+    if (!worse.isEmpty())
+        advice = tr(" <span style=\"color:#b00020\">Take(s) %1 came out further from the reference in a DOF family%2.</span>")
+                     .arg(worse.join(QStringLiteral(", ")),
+                          m_analysis.normalisedParameters().path == analysis::PathMethod::Greedy
+                              ? tr(": Path <i>optimal (DP)</i> finds the least-cost correspondence")
+                              : QString());
+    m_summary->setText(tr("Cell <b>%1/%2</b> normalised to <b>%3</b> with %4%5.%6 Squared difference to the reference, "
                           "summed over frames, per DOF family and part:")
                            .arg(QString::fromStdString(function), QString::fromStdString(emotion),
                                 QString::fromStdString(cell->referenceName).toHtmlEscaped(),
                                 AnalysisController::normaliseParametersText(m_analysis.normalisedParameters()).toHtmlEscaped(),
-                                scheduler.state(slot) == SlotState::Running ? tr(" (recomputing with the new parameters)") : QString()));
+                                scheduler.state(slot) == SlotState::Running ? tr(" (recomputing with the new parameters)") : QString(),
+                                advice));
     std::vector<QString> labels;
     const std::size_t reference = std::size_t(cell->suggestion.takeIndex);
     for (std::size_t k = 0; k < cell->takeIndices.size(); ++k) {

@@ -221,3 +221,39 @@ TEST_CASE("the Emotion dock says KM2O is not estimable on the Bandai bye takes a
     REQUIRE(cell >= 0);
     CHECK(((y->values + z->values) - d.cellMeans[std::size_t(cell)]).cwiseAbs().maxCoeff() < 1e-9);
 }
+
+TEST_CASE("the Normalisation panel names the takes normalisation moved away and suggests the optimal path, as the CLI does",
+          "[app][normalise][variance]")
+{
+    std::vector<std::filesystem::path> files;
+    for (int k = 1; k <= 5; ++k) files.push_back(test::bandaiDir() / ("wave-right-hand_active_00" + std::to_string(k) + ".bvh"));
+    const bool present = std::all_of(files.begin(), files.end(), [](const auto& f) { return std::filesystem::exists(f); });
+    if (!test::requireBandaiData(present)) return;
+    auto sources = analysis::io::labelTakeFiles(files, "{function}_{emotion}_{take}");
+    REQUIRE(sources.ok());
+    analysis::io::CorpusBuildOptions options;
+    options.import.bvh.guessUnits = true;
+    options.name = "active";
+    auto built = analysis::io::buildCorpus(*sources, options);
+    REQUIRE(built.ok());
+    const auto dir = test::scratchDir("normalise_worse_takes");
+    REQUIRE(analysis::io::writeCorpus(built->corpus, dir / "corpus").ok());
+
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    REQUIRE(window->files().openCorpusFolder(QString::fromStdString((dir / "corpus").string())));
+    auto* panel = window->normalisePanel();
+    // The default greedy scan: takes 2 and 4 come out further in both families (tests_cli "normalise prints*").
+    REQUIRE(QTest::qWaitFor([&] { return idle(*window) && panel->summaryText().contains(QStringLiteral("wave-right-hand/active</b> normalised to")); }, 60000));
+    INFO(panel->summaryText().toStdString());
+    CHECK(panel->summaryText().contains(QStringLiteral("Take(s) 2, 4 came out further from the reference in a DOF family")));
+    CHECK(panel->summaryText().contains(QStringLiteral("optimal (DP)")));
+
+    auto* path = panel->findChild<QComboBox*>(QStringLiteral("normalisePath"));
+    REQUIRE(path);
+    path->setCurrentIndex(path->findData(QStringLiteral("optimal"))); // as a user picks it
+    REQUIRE(window->document().parameters().normalise.path == analysis::PathMethod::Optimal);
+    REQUIRE(QTest::qWaitFor([&] { return idle(*window) && panel->summaryText().contains(QStringLiteral("optimal path")); }, 60000));
+    INFO(panel->summaryText().toStdString());
+    CHECK_FALSE(panel->summaryText().contains(QStringLiteral("came out further")));
+}
