@@ -31,6 +31,26 @@ bool idle(app::MainWindow& window)
     return QTest::qWaitFor([&] { return !window.analysis().scheduler().busy() && window.analysis().axes(); }, 60000);
 }
 
+/// A corpus folder made from the named shared Bandai files (as File > New Corpus from Files
+/// makes it); empty when the files are missing (skipped, or failed under CI=true).
+std::filesystem::path bandaiCorpus(const std::vector<std::string>& names, const std::string& scratch, const std::string& name)
+{
+    std::vector<std::filesystem::path> files;
+    for (const auto& file : names) files.push_back(test::bandaiDir() / file);
+    const bool present = std::all_of(files.begin(), files.end(), [](const auto& f) { return std::filesystem::exists(f); });
+    if (!test::requireBandaiData(present)) return {};
+    auto sources = analysis::io::labelTakeFiles(files, "{function}_{emotion}_{take}");
+    REQUIRE(sources.ok());
+    analysis::io::CorpusBuildOptions options;
+    options.import.bvh.guessUnits = true;
+    options.name = name;
+    auto built = analysis::io::buildCorpus(*sources, options);
+    REQUIRE(built.ok());
+    const auto dir = test::scratchDir(scratch) / "corpus";
+    REQUIRE(analysis::io::writeCorpus(built->corpus, dir).ok());
+    return dir;
+}
+
 } // namespace
 
 TEST_CASE("changing tau recomputes the normalised take in the background, undo restores it from the cache", "[app][normalise]")
@@ -174,23 +194,12 @@ TEST_CASE("the Emotion dock says KM2O is not estimable on the Bandai bye takes a
           "[app][emotion][one-take]")
 {
     // One take per emotion (docs/KM2O.md, "Cells with one take"): the default chain runs through.
-    std::vector<std::filesystem::path> files;
-    for (const char* emotion : {"normal", "happy", "angry"}) files.push_back(test::bandaiDir() / ("bye_" + std::string(emotion) + "_001.bvh"));
-    const bool present = std::all_of(files.begin(), files.end(), [](const auto& f) { return std::filesystem::exists(f); });
-    if (!test::requireBandaiData(present)) return;
-    auto sources = analysis::io::labelTakeFiles(files, "{function}_{emotion}_{take}");
-    REQUIRE(sources.ok());
-    analysis::io::CorpusBuildOptions options;
-    options.import.bvh.guessUnits = true;
-    options.name = "bye";
-    auto built = analysis::io::buildCorpus(*sources, options);
-    REQUIRE(built.ok());
-    const auto dir = test::scratchDir("emotion_one_take");
-    REQUIRE(analysis::io::writeCorpus(built->corpus, dir / "corpus").ok());
+    const auto corpus = bandaiCorpus({"bye_normal_001.bvh", "bye_happy_001.bvh", "bye_angry_001.bvh"}, "emotion_one_take", "bye");
+    if (corpus.empty()) return;
 
     auto window = test::demoWindow();
     REQUIRE(window);
-    REQUIRE(window->files().openCorpusFolder(QString::fromStdString((dir / "corpus").string())));
+    REQUIRE(window->files().openCorpusFolder(QString::fromStdString(corpus.string())));
     auto& document = window->document();
     const auto& takes = document.corpus().takes;
     const auto happy = std::find_if(takes.begin(), takes.end(), [](const analysis::Take& t) { return t.labels.emotion == "happy"; });
@@ -225,23 +234,14 @@ TEST_CASE("the Emotion dock says KM2O is not estimable on the Bandai bye takes a
 TEST_CASE("the Normalisation panel names the takes normalisation moved away and suggests the optimal path, as the CLI does",
           "[app][normalise][variance]")
 {
-    std::vector<std::filesystem::path> files;
-    for (int k = 1; k <= 5; ++k) files.push_back(test::bandaiDir() / ("wave-right-hand_active_00" + std::to_string(k) + ".bvh"));
-    const bool present = std::all_of(files.begin(), files.end(), [](const auto& f) { return std::filesystem::exists(f); });
-    if (!test::requireBandaiData(present)) return;
-    auto sources = analysis::io::labelTakeFiles(files, "{function}_{emotion}_{take}");
-    REQUIRE(sources.ok());
-    analysis::io::CorpusBuildOptions options;
-    options.import.bvh.guessUnits = true;
-    options.name = "active";
-    auto built = analysis::io::buildCorpus(*sources, options);
-    REQUIRE(built.ok());
-    const auto dir = test::scratchDir("normalise_worse_takes");
-    REQUIRE(analysis::io::writeCorpus(built->corpus, dir / "corpus").ok());
+    std::vector<std::string> names;
+    for (int k = 1; k <= 5; ++k) names.push_back("wave-right-hand_active_00" + std::to_string(k) + ".bvh");
+    const auto corpus = bandaiCorpus(names, "normalise_worse_takes", "active");
+    if (corpus.empty()) return;
 
     auto window = test::demoWindow();
     REQUIRE(window);
-    REQUIRE(window->files().openCorpusFolder(QString::fromStdString((dir / "corpus").string())));
+    REQUIRE(window->files().openCorpusFolder(QString::fromStdString(corpus.string())));
     auto* panel = window->normalisePanel();
     // The default greedy scan: takes 2 and 4 come out further in both families (tests_cli "normalise prints*").
     REQUIRE(QTest::qWaitFor([&] { return idle(*window) && panel->summaryText().contains(QStringLiteral("wave-right-hand/active</b> normalised to")); }, 60000));
