@@ -235,12 +235,5 @@ BENCHMARK(fullReplotLongTake)->Unit(benchmark::kMillisecond);
 
 int main(int argc, char** argv)
 {
-    QApplication application(argc, argv);
-    QApplication::setOrganizationName(QStringLiteral("BunrakuBench"));
-    QApplication::setApplicationName(QStringLiteral("bench_long_take"));
-    benchmark::Initialize(&argc, argv);
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    g_window.reset();
-    return 0;
+    return bench::runQtBenchmarks(argc, argv, "bench_long_take", [] { g_window.reset(); });
 }

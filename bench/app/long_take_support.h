@@ -4,6 +4,9 @@
 // figures, and a probe of the GUI thread's longest stall.
 #include "analysis/synth/long_take.h"
 
+#include <benchmark/benchmark.h>
+
+#include <QApplication>
 #include <QElapsedTimer>
 #include <QEventLoop>
 #include <QTimer>
@@ -78,6 +81,20 @@ inline double runMeasuringStalls(const std::function<bool()>& done, double* seco
     if (!done()) loop.exec();
     if (seconds) *seconds = double(total.nsecsElapsed()) * 1e-9;
     return longest;
+}
+
+/// The main of a benchmark program that opens windows: a QApplication named `name`, the
+/// benchmarks, then `release` (windows go before the QApplication).
+inline int runQtBenchmarks(int argc, char** argv, const char* name, const std::function<void()>& release)
+{
+    QApplication application(argc, argv);
+    QApplication::setOrganizationName(QStringLiteral("BunrakuBench"));
+    QApplication::setApplicationName(QString::fromLatin1(name));
+    benchmark::Initialize(&argc, argv);
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    release();
+    return 0;
 }
 
 } // namespace bunraku::bench

@@ -4,6 +4,7 @@
 // 3D view (the window repainted once the queued updates ran); a second figure also waits for its
 // motion axis, computed in the background. The take is made from a shared Bandai file
 // (bench/io/big_bvh.h) and never committed.
+#include "bench/app/long_take_support.h"
 #include "bench/io/big_bvh.h"
 
 #include "app/file_controller.h"
@@ -77,12 +78,5 @@ BENCHMARK(openLongBvhTake)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseMa
 
 int main(int argc, char** argv)
 {
-    QApplication application(argc, argv);
-    QApplication::setOrganizationName(QStringLiteral("BunrakuBench"));
-    QApplication::setApplicationName(QStringLiteral("bench_open_take"));
-    benchmark::Initialize(&argc, argv);
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    g_window.reset();
-    return 0;
+    return bench::runQtBenchmarks(argc, argv, "bench_open_take", [] { g_window.reset(); });
 }
