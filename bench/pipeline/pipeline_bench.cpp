@@ -25,6 +25,21 @@ void report(benchmark::State& state, const StageCache& cache)
             state.counters[stageName(stage)] = benchmark::Counter(double(cache.runs(stage)), benchmark::Counter::kAvgIterations);
 }
 
+/// One run of the whole chain with `options`: the stage digests of the first run into `digest`,
+/// the chosen M into `chosenM`; false (and the benchmark skipped) when the chain fails.
+bool runChainOnce(benchmark::State& state, const ChainOptions& options, std::string& digest, int* chosenM = nullptr)
+{
+    auto chain = runChain(demo(), {}, nullptr, options);
+    if (!chain) {
+        state.SkipWithError(chain.error().message.c_str());
+        return false;
+    }
+    if (chosenM) *chosenM = chain->decomposed->km2o->correlationLength;
+    if (digest.empty()) digest = chainDigest(*chain).text();
+    benchmark::DoNotOptimize(chain);
+    return true;
+}
+
 /// Every stage from scratch: preprocess, normalise all cells (with average takes), KM2O over all
 /// M = 1..M_max, motion axes, phase and gains; with or without the spectra and ARMA fits.
 void BM_WholeChain(benchmark::State& state)
@@ -33,16 +48,8 @@ void BM_WholeChain(benchmark::State& state)
     options.fluctuations = state.range(0) != 0;
     int M = 0;
     std::string digest;
-    for (auto _ : state) {
-        auto chain = runChain(demo(), {}, nullptr, options);
-        if (!chain) {
-            state.SkipWithError(chain.error().message.c_str());
-            break;
-        }
-        M = chain->decomposed->km2o->correlationLength;
-        if (digest.empty()) digest = chainDigest(*chain).text();
-        benchmark::DoNotOptimize(chain);
-    }
+    for (auto _ : state)
+        if (!runChainOnce(state, options, digest, &M)) break;
     state.counters["M_chosen"] = M;
     // The stage results' digests (stage_digest.h): equal before and after a change to how a
     // stage computes means bit-identical results.
@@ -59,15 +66,8 @@ void BM_WholeChainThreads(benchmark::State& state)
     ChainOptions options;
     options.threads = int(state.range(0));
     std::string digest;
-    for (auto _ : state) {
-        auto chain = runChain(demo(), {}, nullptr, options);
-        if (!chain) {
-            state.SkipWithError(chain.error().message.c_str());
-            break;
-        }
-        if (digest.empty()) digest = chainDigest(*chain).text();
-        benchmark::DoNotOptimize(chain);
-    }
+    for (auto _ : state)
+        if (!runChainOnce(state, options, digest)) break;
     state.SetLabel(digest);
 }
 BENCHMARK(BM_WholeChainThreads)->ArgName("threads")->Arg(1)->Arg(2)->MeasureProcessCPUTime()->UseRealTime()->Unit(benchmark::kMillisecond);
