@@ -5,9 +5,11 @@
 /// calling thread works too; `threads` 1 runs everything on it, in order.
 
 #include "analysis/core/result.h"
+#include "analysis/core/run_control.h"
 
 #include <cstddef>
 #include <functional>
+#include <mutex>
 #include <stop_token>
 
 namespace bunraku::analysis {
@@ -23,5 +25,27 @@ int resolveThreads(int requested);
 /// which is rethrown here) or a stop request no further item starts. Returns the error of the
 /// lowest failing index, a Cancelled error when stopped, else ok.
 Status parallelFor(std::size_t count, int threads, const std::function<Status(std::size_t)>& body, std::stop_token stop = {});
+
+/// The progress of parallelFor's items: finished() from any thread counts one more item done
+/// and reports done / total, mapped to [from, to], to the control, one report at a time.
+class ItemProgress {
+public:
+    ItemProgress(const RunControl& control, std::size_t total, double from = 0.0, double to = 1.0)
+        : m_control(control), m_total(total == 0 ? 1 : total), m_from(from), m_to(to)
+    {
+    }
+    void finished()
+    {
+        const std::lock_guard lock(m_mutex);
+        m_control.report(m_from + (m_to - m_from) * double(++m_done) / double(m_total));
+    }
+
+private:
+    const RunControl& m_control;
+    std::size_t m_total;
+    double m_from, m_to;
+    std::mutex m_mutex;
+    std::size_t m_done = 0;
+};
 
 } // namespace bunraku::analysis

@@ -85,13 +85,7 @@ Result<AxisOutput> runAxes(const NormaliseOutput& normalised, const std::string&
             if (cell.function == neutral.function && cell.emotion != neutralEmotion) emotional.emplace_back(neutrals.size(), &cell);
         neutrals.push_back(&neutral);
     }
-    const std::size_t total = std::max<std::size_t>(1, neutrals.size() + emotional.size());
-    std::mutex progress;
-    std::size_t done = 0;
-    auto report = [&] {
-        const std::lock_guard lock(progress);
-        control.report(double(++done) / double(total));
-    };
+    ItemProgress progress(control, neutrals.size() + emotional.size());
     auto cancelledOr = [](Status status) -> Status {
         if (!status && status.error().code == ErrorCode::Cancelled) return makeError(ErrorCode::Cancelled, "motion axes cancelled");
         return status;
@@ -109,7 +103,7 @@ Result<AxisOutput> runAxes(const NormaliseOutput& normalised, const std::string&
             function.function = neutral.function;
             function.boundaries = suggestPhraseBoundaries(basis->coordinates);
             function.basis = std::make_shared<const DesignBasis>(std::move(basis).value());
-            report();
+            progress.finished();
             return okStatus();
         },
         control.stop);
@@ -142,7 +136,7 @@ Result<AxisOutput> runAxes(const NormaliseOutput& normalised, const std::string&
                                                     approximation, RunControl{control.stop, {}});
             if (!errors) return makeError(errors.error().code, "approximation error of " + name + ": " + errors.error().message);
             result.approximation = std::move(errors).value();
-            report();
+            progress.finished();
             return okStatus();
         },
         control.stop);

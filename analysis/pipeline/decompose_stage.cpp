@@ -5,7 +5,6 @@
 #include "analysis/core/parallel.h"
 
 #include <algorithm>
-#include <mutex>
 
 namespace bunraku::analysis::pipeline {
 
@@ -84,16 +83,14 @@ Result<FluctuationOutput> runFluctuations(const Decomposition& d, const Fluctuat
     // independent, fitted on control.threads threads into their own slots.
     out.armaTables.resize(std::size_t(channels));
     out.armaErrors.resize(std::size_t(channels));
-    std::mutex progress;
-    std::size_t done = 0;
+    ItemProgress progress(control, std::size_t(channels), 0.2, 1.0);
     const Status status = parallelFor(
         std::size_t(channels), control.threads,
         [&](std::size_t ch) -> Status {
             auto table = armaCellTable(d, Eigen::Index(ch), parameters.armaP, parameters.armaQ);
             out.armaTables[ch] = table ? std::move(table).value() : std::vector<ArmaCellRow>{};
             out.armaErrors[ch] = table ? std::string() : table.error().message;
-            const std::lock_guard lock(progress);
-            control.report(0.2 + 0.8 * double(++done) / double(channels));
+            progress.finished();
             return okStatus();
         },
         control.stop);

@@ -6,7 +6,6 @@
 #include "analysis/normalise/average_take.h"
 
 #include <algorithm>
-#include <mutex>
 #include <optional>
 #include <string>
 
@@ -150,8 +149,7 @@ Result<NormaliseOutput> runNormalise(const Corpus& preprocessed, const Normalise
     // Cells are independent: normalised on control.threads threads, each into its own slot,
     // then gathered in cell order (the same result for any thread count).
     std::vector<std::optional<CellNormalisation>> results(cells.size());
-    std::mutex progress;
-    std::size_t done = 0;
+    ItemProgress progress(control, cells.size());
     const Status status = parallelFor(
         cells.size(), control.threads,
         [&](std::size_t c) -> Status {
@@ -159,8 +157,7 @@ Result<NormaliseOutput> runNormalise(const Corpus& preprocessed, const Normalise
             auto cell = normaliseCell(function, emotion, preprocessed.cell(function, emotion), parameters, control);
             if (!cell) return cell.error();
             results[c] = std::move(cell).value();
-            const std::lock_guard lock(progress);
-            control.report(double(++done) / double(cells.size()));
+            progress.finished();
             return okStatus();
         },
         control.stop);
