@@ -8,6 +8,7 @@
 //   (argument 0) or a 10 s window (1): target 60 fps (16.7 ms);
 // - zooming the 24 graphs from the whole take into a 10 s window (target < 50 ms), and a full
 //   replot of the whole take.
+#include "bench/app/bench_window.h"
 #include "bench/app/long_take_support.h"
 
 #include "app/analysis_controller.h"
@@ -48,12 +49,7 @@ bool idle(app::MainWindow& main)
 app::MainWindow& window()
 {
     if (!g_window) {
-        g_window = std::make_unique<app::MainWindow>();
-        g_window->files().setDialogsEnabled(false);
-        g_window->files().openDemoCorpus();
-        g_window->resize(1600, 1000);
-        g_window->show();
-        (void)QTest::qWaitForWindowExposed(g_window.get());
+        g_window = bench::shownDemoWindow();
         (void)bench::runMeasuringStalls([] { return idle(*g_window); });
     }
     return *g_window;

@@ -4,6 +4,7 @@
 // 3D view (the window repainted once the queued updates ran); a second figure also waits for its
 // motion axis, computed in the background. The take is made from a shared Bandai file
 // (bench/io/big_bvh.h) and never committed.
+#include "bench/app/bench_window.h"
 #include "bench/app/long_take_support.h"
 #include "bench/io/big_bvh.h"
 
@@ -31,12 +32,7 @@ std::unique_ptr<app::MainWindow> g_window;
 app::MainWindow& window()
 {
     if (!g_window) {
-        g_window = std::make_unique<app::MainWindow>();
-        g_window->files().setDialogsEnabled(false);
-        g_window->files().openDemoCorpus();
-        g_window->resize(1600, 1000);
-        g_window->show();
-        (void)QTest::qWaitForWindowExposed(g_window.get());
+        g_window = bench::shownDemoWindow();
     }
     return *g_window;
 }
