@@ -23,6 +23,8 @@ public:
     /// With dialogs off (tests, --screenshot) errors go to lastError() and the status signal.
     void setDialogsEnabled(bool enabled) { m_dialogs = enabled; }
     QString lastError() const { return m_lastError; }
+    /// What the last export said of a derived take's skeleton and channels (render::takeExportNote).
+    QString lastNote() const { return m_lastNote; }
 
     /// Writes the take shown in `slot` to `file` (.bvh, .glb or .csv); false on failure.
     bool exportTake(TakeSlot slot, const QString& file);
@@ -41,6 +43,7 @@ private:
     QWidget* m_window;
     bool m_dialogs = true;
     QString m_lastError;
+    QString m_lastNote;
     QAction* m_exportA = nullptr;
     QAction* m_exportB = nullptr;
 };

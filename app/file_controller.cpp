@@ -13,8 +13,6 @@
 #include "analysis/io/corpus_io.h"
 #include "analysis/io/take_reader.h"
 #include "analysis/synth/demo_corpus.h"
-#include "analysis/body/body_description.h"
-#include "render/take_export.h"
 
 #include <QAction>
 #include <QDir>
@@ -272,21 +270,6 @@ void FileController::chooseFilesForCorpus(const QStringList& inputs)
     dialog.addInputs(inputs);
     if (dialog.exec() != QDialog::Accepted) return;
     createCorpusFromFiles(dialog.sources(), dialog.buildOptions(), dialog.outputFolder());
-}
-
-bool FileController::exportTake(const QString& file)
-{
-    const TakePointer take = m_document.selectedTake(TakeSlot::A);
-    if (!take) {
-        report(tr("Nothing to export"), analysis::makeError(analysis::ErrorCode::InvalidArgument, "no take is shown as A"));
-        return false;
-    }
-    if (const auto status = render::exportTake(*take, analysis::defaultBodyDescription(), toPath(file)); !status) {
-        report(tr("Cannot export"), status.error());
-        return false;
-    }
-    emit statusMessage(tr("Exported %1 to %2").arg(m_document.takeLabel(m_document.selectedId(TakeSlot::A)), file));
-    return true;
 }
 
 ProjectState FileController::captureState() const

@@ -63,8 +63,6 @@ public:
                                const analysis::io::CorpusBuildOptions& options, const QString& folder);
     /// File > New Corpus from Files: the dialog, then createCorpusFromFiles. `inputs` preset it.
     void chooseFilesForCorpus(const QStringList& inputs = {});
-    /// Writes take A (.bvh, .glb or .csv by extension; ExportController writes A or B).
-    bool exportTake(const QString& file);
     bool saveProject(const QString& file);
     bool openProject(const QString& file);
     /// Writes this instance's autosave file now (when there are unsaved changes).

@@ -13,6 +13,7 @@
 #include <QHBoxLayout>
 #include <QToolBar>
 #include <QLabel>
+#include <QStringList>
 #include <QVBoxLayout>
 
 #include <utility>
@@ -89,6 +90,16 @@ ViewportPanel::ViewportPanel(Document& document, AnalysisController& analysis, Q
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(2);
     layout->addWidget(toggles);
+    m_gapLabel = new QLabel(this);
+    m_gapLabel->setObjectName("skeletonGap");
+    m_gapLabel->setWordWrap(true);
+    m_gapLabel->setStyleSheet(QStringLiteral("color: #b35900;"));
+    m_gapLabel->setToolTip(tr("A derived take's graphs are its 24 channels as the thesis computes them (each coordinate with its own "
+                              "time warp, positions averaged); its skeleton moves as one body (one time per frame, joint rotations "
+                              "averaged). The puppet follows the channels, the skeleton the body: this is how far apart they are. "
+                              "BVH and glTF exports hold the skeleton, CSV the channels."));
+    m_gapLabel->hide();
+    layout->addWidget(m_gapLabel);
     layout->addWidget(m_viewport, 1);
 
     // Uploading a scene costs about one frame (it happens once, at the next paint, however many
@@ -165,6 +176,32 @@ void ViewportPanel::applyVisibility()
     for (std::size_t s = 0; s < shown.size() && s < visibility.figures.size(); ++s)
         visibility.figures[s] = render::FigureStyle(m_figures[int(shown[s].first)]->currentData().toInt());
     m_viewport->setVisibility(visibility);
+    updateGapLabels();
+}
+
+void ViewportPanel::updateGapLabels()
+{
+    const auto shown = shownTakes(m_document);
+    QStringList lines;
+    for (int slot = 0; slot < 2; ++slot) {
+        TakePointer take;
+        for (const auto& [s, t] : shown)
+            if (int(s) == slot) take = t;
+        const bool skeletonDrawn =
+            take && take->skeleton && render::FigureStyle(m_figures[slot]->currentData().toInt()) != render::FigureStyle::Puppet;
+        std::optional<analysis::SkeletonChannelGap> gap;
+        if (skeletonDrawn) {
+            GapMemo& memo = m_gapMemo[slot];
+            if (memo.take.lock() != take) memo = {take, analysis::noticeableSkeletonGap(*take)};
+            gap = memo.gap;
+        }
+        if (gap)
+            lines << tr("%1: skeleton off the channels by %2")
+                         .arg(slot == 0 ? QStringLiteral("A") : QStringLiteral("B"),
+                              QString::fromStdString(analysis::describeSkeletonChannelGap(*gap)));
+    }
+    m_gapLabel->setText(lines.join(QLatin1Char('\n')));
+    m_gapLabel->setVisible(!lines.isEmpty());
 }
 
 } // namespace bunraku::app

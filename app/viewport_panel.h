@@ -11,15 +11,19 @@
 
 #include "app/document.h"
 
+#include "analysis/core/skeleton_take.h"
 #include "analysis/pipeline/stages.h"
 
 #include <QWidget>
 
+#include <memory>
+#include <optional>
 #include <vector>
 
 class QAction;
 class QCheckBox;
 class QComboBox;
+class QLabel;
 class QToolBar;
 
 namespace bunraku::widgets {
@@ -63,12 +67,18 @@ signals:
 public:
     /// The figure shown for take A (0) or B (1): the combo box in the panel's tool row.
     QComboBox* figureBox(int slot) const { return m_figures[slot]; }
+    /// A line under the tool bar, one sentence per shown take whose skeleton is drawn and differs
+    /// from its 24 channels (a derived take: analysis::noticeableSkeletonGap), saying by how much;
+    /// hidden when there is none.
+    QLabel* skeletonGapLabel() const { return m_gapLabel; }
 
 private:
     void rebuildScene();
     /// Rebuilds the scene when an axis to draw is no longer the one drawn.
     void refreshAxes();
     void applyVisibility();
+    /// Shows or hides the gap labels for the figures now chosen.
+    void updateGapLabels();
     /// The camera actions, added to `bar` (viewport_panel_camera.cpp).
     void createCameraActions(QWidget* bar);
 
@@ -85,6 +95,13 @@ private:
     QAction* m_resetCamera = nullptr;
     QString m_selectedPart;
     QComboBox* m_figures[2] = {nullptr, nullptr}; ///< puppet / skeleton / both, for take A and B
+    QLabel* m_gapLabel = nullptr;
+    /// The gap last computed per slot and the take it was computed for.
+    struct GapMemo {
+        std::weak_ptr<const analysis::Take> take;
+        std::optional<analysis::SkeletonChannelGap> gap;
+    };
+    GapMemo m_gapMemo[2];
     std::vector<analysis::pipeline::Shared<analysis::pipeline::TakeAxis>> m_drawnAxes;
 };
 

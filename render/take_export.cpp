@@ -1,6 +1,7 @@
 #include "render/take_export.h"
 
 #include "analysis/body/body_pose.h"
+#include "analysis/core/skeleton_take.h"
 #include "analysis/io/take_reader.h"
 #include "render/puppet_geometry.h"
 #include "render/skeleton_geometry.h"
@@ -76,6 +77,20 @@ analysis::Result<ExportRig> puppetRig(const analysis::BodyDescription& body, con
     for (std::size_t p = 0; p < meshes.size(); ++p)
         if (!meshes[p].empty()) rig.meshes.push_back(toJointMesh(meshes[p], int(p) + 1));
     return rig;
+}
+
+std::string takeExportNote(const analysis::Take& take, const std::filesystem::path& file)
+{
+    const TakeExportFormat format = takeExportFormat(file);
+    if (format == TakeExportFormat::Unknown) return {};
+    const auto gap = analysis::noticeableSkeletonGap(take);
+    if (!gap) return {};
+    const std::string by = analysis::describeSkeletonChannelGap(*gap);
+    if (format == TakeExportFormat::Csv)
+        return file.filename().string() + " holds the take's 24 channels; its skeleton's motion differs from them by " + by +
+               " (write .bvh or .glb for the skeleton)";
+    return file.filename().string() + " holds the take's skeleton; its 24 channels differ from that motion by " + by +
+           " (write .csv for the channels)";
 }
 
 analysis::Status exportTake(const analysis::Take& take, const analysis::BodyDescription& body, const std::filesystem::path& file)

@@ -14,6 +14,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace bunraku::render {
@@ -39,6 +40,12 @@ ExportRig skeletonRig(const std::shared_ptr<const analysis::SkeletalMotion>& mot
 /// (named as the body part), each posed by worldPartPoses in every frame, carrying that part's
 /// mesh. Errors when the take cannot drive the body (bindBody).
 analysis::Result<ExportRig> puppetRig(const analysis::BodyDescription& body, const analysis::Take& take);
+
+/// What a user must know about writing `take` to `file`: for a take whose skeleton and 24
+/// channels differ (a derived take: analysis::noticeableSkeletonGap) which of the two the file
+/// holds - .bvh and .glb the skeleton's motion, .csv the channels - and by how much the other
+/// differs; empty when they agree or the take has no skeleton.
+std::string takeExportNote(const analysis::Take& take, const std::filesystem::path& file);
 
 /// Writes the take by extension (atomic); the error names the file.
 analysis::Status exportTake(const analysis::Take& take, const analysis::BodyDescription& body, const std::filesystem::path& file);

@@ -3,7 +3,12 @@
 #include "analysis/core/pose.h"
 #include "analysis/core/puppet_layout.h"
 
+#include "analysis/core/rotation.h"
+
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <numbers>
 
 namespace bunraku::analysis {
 
@@ -31,6 +36,60 @@ Result<Take> puppetTakeFromSkeleton(std::shared_ptr<const SkeletalMotion> motion
     if (auto valid = validateTake(take); !valid)
         return makeError(ErrorCode::Numerical, skeleton.name + ": the poses overflow (values too large?): " + valid.error().message);
     return take;
+}
+
+Result<SkeletonChannelGap> skeletonChannelGap(const Take& take)
+{
+    if (!take.skeleton || !take.skeleton->skeleton) return makeError(ErrorCode::InvalidArgument, "the take has no skeleton");
+    const SkeletalMotion& motion = *take.skeleton;
+    if (motion.frameCount() != take.frameCount())
+        return makeError(ErrorCode::InvalidArgument, "the take has " + std::to_string(take.frameCount()) + " frames and its skeleton " +
+                                                         std::to_string(motion.frameCount()));
+    const Skeleton& skeleton = *motion.skeleton;
+    std::array<const PartBinding*, kPuppetPartCount> bindings{};
+    std::array<Eigen::Index, kPuppetPartCount> firstChannel{};
+    for (std::size_t p = 0; p < bindings.size(); ++p) {
+        bindings[p] = skeleton.binding(kPuppetParts[p]);
+        if (!bindings[p]) return makeError(ErrorCode::NotFound, "the puppet part '" + std::string(kPuppetParts[p]) + "' is not bound to a joint");
+        const auto first = take.channelIndex(kPuppetParts[p], "x");
+        if (!first) return makeError(ErrorCode::NotFound, "the take has no channels of the part '" + std::string(kPuppetParts[p]) + "'");
+        firstChannel[p] = *first;
+    }
+    SkeletonChannelGap gap;
+    for (Eigen::Index f = 0; f < take.frameCount(); ++f) {
+        const auto poses = motion.worldPoses(f);
+        for (std::size_t p = 0; p < bindings.size(); ++p) {
+            const RigidTransform fromSkeleton = poses[std::size_t(bindings[p]->joint)] * bindings[p]->joint_T_part;
+            const RigidTransform fromChannels = partPose(take, f, firstChannel[p]);
+            const double distance = (fromSkeleton.translation - fromChannels.translation).norm();
+            const double angle = rotationDistance(fromSkeleton.rotation, fromChannels.rotation) * 180.0 / std::numbers::pi;
+            gap.positionCm[p] = std::max(gap.positionCm[p], distance);
+            gap.angleDeg[p] = std::max(gap.angleDeg[p], angle);
+            gap.maxAngleDeg = std::max(gap.maxAngleDeg, angle);
+            if (distance > gap.maxPositionCm) {
+                gap.maxPositionCm = distance;
+                gap.worstPart = std::string(kPuppetParts[p]);
+                gap.worstFrame = f;
+            }
+        }
+    }
+    return gap;
+}
+
+std::optional<SkeletonChannelGap> noticeableSkeletonGap(const Take& take)
+{
+    if (!take.skeleton) return std::nullopt;
+    auto gap = skeletonChannelGap(take);
+    if (!gap || (gap->maxPositionCm < kSkeletonGapNoticeCm && gap->maxAngleDeg < kSkeletonGapNoticeDeg)) return std::nullopt;
+    return *gap;
+}
+
+std::string describeSkeletonChannelGap(const SkeletonChannelGap& gap)
+{
+    char text[160];
+    std::snprintf(text, sizeof text, "up to %.1f cm (%s, frame %lld) and %.1f deg", gap.maxPositionCm,
+                  gap.worstPart.empty() ? "no part" : gap.worstPart.c_str(), static_cast<long long>(gap.worstFrame), gap.maxAngleDeg);
+    return text;
 }
 
 SkeletalMotion resampleSkeletalMotion(const SkeletalMotion& motion, double fromHz, double toHz)

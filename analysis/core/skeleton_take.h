@@ -7,7 +7,10 @@
 #include "analysis/core/skeleton.h"
 #include "analysis/core/take.h"
 
+#include <array>
 #include <memory>
+#include <optional>
+#include <string>
 
 namespace bunraku::analysis {
 
@@ -15,6 +18,35 @@ namespace bunraku::analysis {
 /// frame) posed from `motion`'s part bindings, at `rateHz`, with `labels`, carrying `motion`
 /// as its skeleton. Errors: a part that is not bound, a non-finite pose.
 Result<Take> puppetTakeFromSkeleton(std::shared_ptr<const SkeletalMotion> motion, double rateHz, const TakeLabels& labels = {});
+
+/// How far a take's 24 channels are from the parts its skeleton poses (the part bindings'
+/// world_T_joint * joint_T_part), per part over every frame. A take read from BVH has none; a
+/// derived take may have some: its channels follow the thesis (each coordinate's own time warp,
+/// 3.6; positions averaged, 3.7; x = y + a z on channels, 4.5) while its skeleton moves one body
+/// (one time per frame, joint rotations averaged and weighted on rotations).
+struct SkeletonChannelGap {
+    std::array<double, 4> positionCm{};  ///< per puppet part (kPuppetParts order): largest distance
+    std::array<double, 4> angleDeg{};    ///< per part: largest angle between the two orientations
+    double maxPositionCm = 0;
+    double maxAngleDeg = 0;
+    std::string worstPart;               ///< the part of maxPositionCm ("" when 0)
+    Eigen::Index worstFrame = 0;         ///< the frame of maxPositionCm
+};
+
+/// InvalidArgument when the take has no skeleton or their frame counts differ; NotFound when a
+/// puppet part is not bound or not among the take's channels.
+Result<SkeletonChannelGap> skeletonChannelGap(const Take& take);
+
+/// Below these a gap is rounding: cm (the tolerance of the Blender acceptance) and degrees.
+inline constexpr double kSkeletonGapNoticeCm = 0.1;
+inline constexpr double kSkeletonGapNoticeDeg = 0.1;
+
+/// The take's gap when it has a skeleton and the gap reaches a notice threshold; nothing for a
+/// take without a skeleton, with one its channels follow, or one that cannot be compared.
+std::optional<SkeletonChannelGap> noticeableSkeletonGap(const Take& take);
+
+/// "up to 78.7 cm (hand, frame 172) and 127.1 deg".
+std::string describeSkeletonChannelGap(const SkeletonChannelGap& gap);
 
 /// The same motion at another rate: frame k at time k / toHz, rotations interpolated
 /// spherically and translations linearly between the two nearest source frames, the last

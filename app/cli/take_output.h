@@ -14,6 +14,8 @@ bool isTakeOutput(const std::string& output);
 /// Throws CliError unless `output` names a .bvh, .glb or .csv file (checked before any work).
 void requireTakeOutput(const std::string& output);
 /// Writes the take by the output's extension, atomically; throws CliError naming the file.
+/// Prints render::takeExportNote (which of skeleton and channels the file holds, when they
+/// differ) as a "note:" line on stderr.
 void writeTakeOutput(const analysis::Take& take, const std::string& output);
 
 } // namespace bunraku::app::cli

@@ -1,4 +1,5 @@
 #include "tests/app/app_test_support.h"
+#include "tests/app/bandai_corpus_support.h"
 
 #include "app/analysis_controller.h"
 #include "app/commands.h"
@@ -6,9 +7,6 @@
 #include "app/normalise_panel.h"
 
 #include "analysis/core/angle_channels.h"
-#include "analysis/io/corpus_builder.h"
-#include "analysis/io/corpus_io.h"
-#include "tests/support/shared_data.h"
 #include "tests/support/test_paths.h"
 
 #include <catch2/catch.hpp>
@@ -29,26 +27,6 @@ namespace {
 bool idle(app::MainWindow& window)
 {
     return QTest::qWaitFor([&] { return !window.analysis().scheduler().busy() && window.analysis().axes(); }, 60000);
-}
-
-/// A corpus folder made from the named shared Bandai files (as File > New Corpus from Files
-/// makes it); empty when the files are missing (skipped, or failed under CI=true).
-std::filesystem::path bandaiCorpus(const std::vector<std::string>& names, const std::string& scratch, const std::string& name)
-{
-    std::vector<std::filesystem::path> files;
-    for (const auto& file : names) files.push_back(test::bandaiDir() / file);
-    const bool present = std::all_of(files.begin(), files.end(), [](const auto& f) { return std::filesystem::exists(f); });
-    if (!test::requireBandaiData(present)) return {};
-    auto sources = analysis::io::labelTakeFiles(files, "{function}_{emotion}_{take}");
-    REQUIRE(sources.ok());
-    analysis::io::CorpusBuildOptions options;
-    options.import.bvh.guessUnits = true;
-    options.name = name;
-    auto built = analysis::io::buildCorpus(*sources, options);
-    REQUIRE(built.ok());
-    const auto dir = test::scratchDir(scratch) / "corpus";
-    REQUIRE(analysis::io::writeCorpus(built->corpus, dir).ok());
-    return dir;
 }
 
 } // namespace
@@ -194,7 +172,7 @@ TEST_CASE("the Emotion dock says KM2O is not estimable on the Bandai bye takes a
           "[app][emotion][one-take]")
 {
     // One take per emotion (docs/KM2O.md, "Cells with one take"): the default chain runs through.
-    const auto corpus = bandaiCorpus({"bye_normal_001.bvh", "bye_happy_001.bvh", "bye_angry_001.bvh"}, "emotion_one_take", "bye");
+    const auto corpus = test::bandaiCorpusFolder({"bye_normal_001.bvh", "bye_happy_001.bvh", "bye_angry_001.bvh"}, "emotion_one_take", "bye");
     if (corpus.empty()) return;
 
     auto window = test::demoWindow();
@@ -236,7 +214,7 @@ TEST_CASE("the Normalisation panel names the takes normalisation moved away and 
 {
     std::vector<std::string> names;
     for (int k = 1; k <= 5; ++k) names.push_back("wave-right-hand_active_00" + std::to_string(k) + ".bvh");
-    const auto corpus = bandaiCorpus(names, "normalise_worse_takes", "active");
+    const auto corpus = test::bandaiCorpusFolder(names, "normalise_worse_takes", "active");
     if (corpus.empty()) return;
 
     auto window = test::demoWindow();

@@ -48,7 +48,7 @@ TEST_CASE("take A exported to CSV re-imports with the same values", "[app][files
     auto& files = window->files();
     const auto original = window->document().selectedTake(TakeSlot::A);
     const QString file = scratchFile("export-csv", "take.csv");
-    REQUIRE(files.exportTake(file));
+    REQUIRE(window->exports().exportTake(TakeSlot::A, file));
     REQUIRE(files.importTakeFile(file));
     const auto imported = window->document().selectedTake(TakeSlot::A);
     REQUIRE(imported != original);
@@ -69,7 +69,7 @@ TEST_CASE("take A exported to BVH re-imports to the same part poses", "[app][fil
     window->document().selectTake(TakeSlot::A, app::Document::corpusTakeId(4));
     const auto original = window->document().selectedTake(TakeSlot::A);
     const QString file = scratchFile("export-bvh", "take.bvh");
-    REQUIRE(files.exportTake(file));
+    REQUIRE(window->exports().exportTake(TakeSlot::A, file));
     REQUIRE(files.importTakeFile(file, QStringLiteral("head=head,shoulder=shoulder,arm=arm,hand=hand")));
     const auto imported = window->document().selectedTake(TakeSlot::A);
     REQUIRE(imported->frameCount() == original->frameCount());
@@ -109,7 +109,7 @@ TEST_CASE("a saved project reopens to the same state", "[app][files]")
         auto window = test::demoWindow();
         REQUIRE(window);
         auto& document = window->document();
-        REQUIRE(window->files().exportTake(takeFile));
+        REQUIRE(window->exports().exportTake(TakeSlot::A, takeFile));
         REQUIRE(window->files().importTakeFile(takeFile));
         app::changeStageParameters(document, [](app::AnalysisParameters& p) { p.normalise.tau = 6; }, QStringLiteral("tau"));
         app::setEmotionWeight(document, 1.75);

@@ -170,7 +170,7 @@ TEST_CASE("command-line paths: a corpus.json opens its corpus, a project its sta
         auto window = test::demoWindow();
         REQUIRE(window);
         REQUIRE(analysis::io::writeCorpus(window->document().corpus(), folder.toStdString()).ok());
-        REQUIRE(window->files().exportTake(bvh));
+        REQUIRE(window->exports().exportTake(app::TakeSlot::A, bvh));
         window->document().setCurrentTime(2.0);
         REQUIRE(window->files().saveProject(project));
     }

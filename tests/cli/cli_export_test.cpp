@@ -2,12 +2,14 @@
 // the same writer as File > Export Take (render/take_export.h).
 #include "tests/cli/cli_files.h"
 #include "tests/cli/cli_runner.h"
+#include "tests/support/bandai_files.h"
 #include "tests/support/test_paths.h"
 
 #include "analysis/io/bvh.h"
 #include "analysis/io/take_csv.h"
 
 #include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
 
 #include <fstream>
 #include <iterator>
@@ -74,4 +76,32 @@ TEST_CASE("emotion, normalise and design write their take as BVH, glTF or CSV by
     CHECK_FALSE(std::filesystem::exists(dir / "designed.fbx"));
     CHECK_FALSE(std::filesystem::exists(dir / "weighted.txt"));
     CHECK_FALSE(std::filesystem::exists(dir / "converted.obj"));
+}
+
+TEST_CASE("a derived take whose skeleton and channels differ says which of them each format holds", "[cli][export][gap]")
+{
+    if (bunraku::test::bandaiFilesOrSkip().empty()) return;
+    const auto dir = bunraku::test::scratchDir("cli-export-gap");
+    auto run = runBunraku({"corpus", bunraku::test::bandaiDir().string(), "-o", (dir / "bandai").string()});
+    INFO(run.err);
+    REQUIRE(run.exitCode == 0);
+    // The 3.7 average of the normal waves: positions averaged in the channels, joint rotations
+    // in the skeleton.
+    for (const std::string extension : {"bvh", "glb", "csv"}) {
+        INFO(extension);
+        const auto average = dir / ("average." + extension);
+        run = runBunraku({"normalise", (dir / "bandai").string(), "--function", "wave-right-hand", "--emotion", "normal", "--reference",
+                          "average", "-o", average.string(), "--json"});
+        INFO(run.err);
+        REQUIRE(run.exitCode == 0);
+        CHECK_NOTHROW(nlohmann::json::parse(run.out)); // the note is on stderr
+        const std::string held = extension == "csv" ? "holds the take's 24 channels; its skeleton's motion differs from them by up to "
+                                                    : "holds the take's skeleton; its 24 channels differ from that motion by up to ";
+        CHECK(run.err.find("note: average." + extension + " " + held) != std::string::npos);
+    }
+    // An untouched take's channels are its skeleton's parts: nothing to say.
+    const auto take = bunraku::test::bandaiDir() / "wave-right-hand_normal_001.bvh";
+    run = runBunraku({"convert", take.string(), "-o", (dir / "converted.bvh").string()});
+    REQUIRE(run.exitCode == 0);
+    CHECK(run.err.find("note:") == std::string::npos);
 }

@@ -1,0 +1,40 @@
+#pragma once
+/// A corpus folder made from named shared Bandai files, as File > New Corpus from Files makes it,
+/// for the app tests that open real takes in the workbench.
+
+#include "analysis/io/corpus_builder.h"
+#include "analysis/io/corpus_io.h"
+#include "tests/support/shared_data.h"
+#include "tests/support/test_paths.h"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace bunraku::test {
+
+/// Labels from "{function}_{emotion}_{take}", units guessed, written under the scratch folder
+/// `scratch`; empty when the files are missing (skipped, or failed under CI=true).
+inline std::filesystem::path bandaiCorpusFolder(const std::vector<std::string>& names, const std::string& scratch,
+                                                const std::string& name)
+{
+    std::vector<std::filesystem::path> files;
+    for (const auto& file : names) files.push_back(bandaiDir() / file);
+    const bool present = std::all_of(files.begin(), files.end(), [](const auto& f) { return std::filesystem::exists(f); });
+    if (!requireBandaiData(present)) return {};
+    auto sources = analysis::io::labelTakeFiles(files, "{function}_{emotion}_{take}");
+    REQUIRE(sources.ok());
+    analysis::io::CorpusBuildOptions options;
+    options.import.bvh.guessUnits = true;
+    options.name = name;
+    auto built = analysis::io::buildCorpus(*sources, options);
+    REQUIRE(built.ok());
+    const auto dir = scratchDir(scratch) / "corpus";
+    REQUIRE(analysis::io::writeCorpus(built->corpus, dir).ok());
+    return dir;
+}
+
+} // namespace bunraku::test
