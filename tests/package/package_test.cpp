@@ -92,7 +92,7 @@ TEST_CASE("the package's control data describes it, names a maintainer with an a
     const auto recommends = packageNames(fields["Recommends"]);
     CHECK(std::find(recommends.begin(), recommends.end(), "ffmpeg") != recommends.end());
     const auto depends = packageNames(fields["Depends"]);
-    for (const char* needed : {"qt6-qpa-plugins", "libqcustomplot2.1-qt6", "libfftw3-double3", "libassimp5", "libqt6widgets6"})
+    for (const char* needed : {"qt6-qpa-plugins", "hicolor-icon-theme", "libqcustomplot2.1-qt6", "libfftw3-double3", "libassimp5", "libqt6widgets6"})
         CHECK(std::find(depends.begin(), depends.end(), needed) != depends.end());
     CHECK(fields.count("Homepage") == 0);
 }
