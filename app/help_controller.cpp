@@ -8,12 +8,15 @@
 #include <QDialogButtonBox>
 #include <QFileInfo>
 #include <QImage>
+#include <QScreen>
 #include <QTextBlock>
 #include <QTextBrowser>
 #include <QTextCursor>
 #include <QTextDocument>
 #include <QUrl>
 #include <QVBoxLayout>
+
+#include <algorithm>
 
 namespace bunraku::app {
 namespace {
@@ -58,6 +61,16 @@ HelpController::HelpController(QWidget* window) : QObject(window), m_window(wind
     connect(m_about, &QAction::triggered, this, [this] { showAbout(); });
 }
 
+QSize HelpController::guideViewerSize(const QRect& area)
+{
+    const QSize preferred(900, 800);
+    if (!area.isValid()) return preferred;
+    // Room for a window manager's title bar and borders.
+    constexpr int kFrameWidth = 16;
+    constexpr int kFrameHeight = 48;
+    return preferred.boundedTo(QSize(std::max(320, area.width() - kFrameWidth), std::max(240, area.height() - kFrameHeight)));
+}
+
 QDialog* HelpController::showUserGuide()
 {
     const QString guide = userGuidePath();
@@ -73,13 +86,19 @@ QDialog* HelpController::showUserGuide()
         // Relative links and images (screenshot.png, FORMATS.md) resolve beside the guide.
         browser->setSearchPaths({QFileInfo(guide).absolutePath()});
         browser->setSource(QUrl::fromLocalFile(guide), QTextDocument::MarkdownResource);
-        fitImages(browser->document(), 820);
+        const QRect area = m_availableForTesting.isValid() ? m_availableForTesting
+                           : m_window && m_window->screen()        ? m_window->screen()->availableGeometry()
+                                                                   : QRect();
+        const QSize size = guideViewerSize(area);
+        fitImages(browser->document(), std::max(200, size.width() - 80));
         auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, viewer);
         connect(buttons, &QDialogButtonBox::rejected, viewer, &QDialog::close);
         auto* layout = new QVBoxLayout(viewer);
         layout->addWidget(browser);
         layout->addWidget(buttons);
-        viewer->resize(900, 800);
+        viewer->resize(size);
+        // Centred in the screen area, its frame inside it.
+        if (area.isValid()) viewer->move(area.center() - QPoint(size.width() / 2, size.height() / 2));
         m_guideViewer = viewer;
     }
     m_guideViewer->show();

@@ -6,6 +6,8 @@
 
 #include <QObject>
 #include <QPointer>
+#include <QRect>
+#include <QSize>
 
 class QAction;
 class QDialog;
@@ -25,6 +27,12 @@ public:
     QDialog* showUserGuide();
     /// Shows the About dialog (modeless, one at a time).
     QDialog* showAbout();
+    /// The screen area the guide viewer is fitted into (a 1366 x 768 laptop's, in tests); an
+    /// invalid rectangle: the window's screen's available geometry.
+    void setAvailableGeometryForTesting(const QRect& area) { m_availableForTesting = area; }
+    /// The viewer's size on a screen whose available area is `area`: 900 x 800, smaller where
+    /// the screen is (room left for the window frame).
+    static QSize guideViewerSize(const QRect& area);
 
 private:
     QWidget* m_window = nullptr;
@@ -32,6 +40,7 @@ private:
     QAction* m_about = nullptr;
     QPointer<QDialog> m_guideViewer;
     QPointer<QDialog> m_aboutDialog;
+    QRect m_availableForTesting;
 };
 
 } // namespace bunraku::app

@@ -4,6 +4,7 @@
 
 #include "app/about_dialog.h"
 #include "app/build_info.h"
+#include "app/help_controller.h"
 #include "app/installed_files.h"
 #include "app/launch_paths.h"
 #include "app/library_versions.h"
@@ -14,6 +15,8 @@
 
 #include <QAction>
 #include <QDialog>
+#include <QDialogButtonBox>
+#include <QPushButton>
 #include <QFile>
 #include <QImage>
 #include <QLabel>
@@ -94,6 +97,43 @@ TEST_CASE("Help > User Guide shows the installed guide rendered from its Markdow
     // A second trigger raises the same viewer.
     action->trigger();
     CHECK(window->findChildren<QDialog*>(QStringLiteral("userGuideViewer")).size() == 1);
+    viewer->close();
+}
+
+TEST_CASE("Help > User Guide fits a 1366x768 screen: the viewer and its Close button are inside the screen's free area", "[app][help]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    auto* help = window->findChild<app::HelpController*>();
+    REQUIRE(help);
+    // A 1366 x 768 laptop with a 32-pixel panel at the top.
+    const QRect area(0, 32, 1366, 736);
+    help->setAvailableGeometryForTesting(area);
+    QAction* action = menuAction(*window, QStringLiteral("userGuideAction"));
+    REQUIRE(action);
+    action->trigger();
+    auto* viewer = window->findChild<QDialog*>(QStringLiteral("userGuideViewer"));
+    REQUIRE(viewer);
+    REQUIRE(QTest::qWaitForWindowExposed(viewer));
+    INFO("viewer " << viewer->frameGeometry().x() << "," << viewer->frameGeometry().y() << " " << viewer->frameGeometry().width() << "x"
+                   << viewer->frameGeometry().height());
+    CHECK(viewer->height() < 800); // the old fixed 900 x 800 did not fit
+    CHECK(area.contains(viewer->frameGeometry()));
+    auto* buttons = viewer->findChild<QDialogButtonBox*>();
+    REQUIRE(buttons);
+    QPushButton* close = buttons->button(QDialogButtonBox::Close);
+    REQUIRE(close);
+    REQUIRE(close->isVisible());
+    CHECK(area.contains(QRect(close->mapToGlobal(QPoint(0, 0)), close->size())));
+    // The screenshot in the guide is scaled to the smaller viewer.
+    auto* browser = viewer->findChild<QTextBrowser*>(QStringLiteral("userGuideBrowser"));
+    REQUIRE(browser);
+    for (QTextBlock block = browser->document()->begin(); block.isValid(); block = block.next())
+        for (auto fragment = block.begin(); !fragment.atEnd(); ++fragment)
+            if (fragment.fragment().charFormat().isImageFormat())
+                CHECK(fragment.fragment().charFormat().toImageFormat().width() <= viewer->width());
+    // On a large screen the viewer keeps its 900 x 800.
+    CHECK(app::HelpController::guideViewerSize(QRect(0, 0, 1920, 1080)) == QSize(900, 800));
     viewer->close();
 }
 
