@@ -1,10 +1,11 @@
 #include "app/export_controller.h"
 
+#include "app/file_dialogs.h"
+
 #include "analysis/body/body_description.h"
 #include "render/take_export.h"
 
 #include <QAction>
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QMessageBox>
 
@@ -57,7 +58,11 @@ void ExportController::chooseAndExport(TakeSlot slot)
     const QString glb = tr("glTF binary (*.glb)");
     const QString csv = tr("CSV take (*.csv)");
     QString filter = bvh;
-    QString file = QFileDialog::getSaveFileName(m_window, tr("Export take %1").arg(slotName(slot)), {}, bvh + ";;" + glb + ";;" + csv, &filter);
+    // In the folder last exported to, named after the corpus and the take ("demo-greeting-none-2.bvh").
+    const QString name = suggestedFileName(m_document, QStringLiteral(".bvh"),
+                                           slot == TakeSlot::A ? NameParts::CorpusAndTakeA : NameParts::CorpusAndTakeB);
+    QString file = chooseSaveFile(m_window, FilePurpose::ExportTake, tr("Export take %1").arg(slotName(slot)), name,
+                                  bvh + ";;" + glb + ";;" + csv, {}, &filter);
     if (file.isEmpty()) return;
     if (render::takeExportFormat(std::filesystem::path(file.toStdString())) == render::TakeExportFormat::Unknown)
         file += filter == glb ? QStringLiteral(".glb") : filter == csv ? QStringLiteral(".csv") : QStringLiteral(".bvh");

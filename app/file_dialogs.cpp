@@ -63,8 +63,8 @@ QString suggestedFileName(const Document& document, const QString& suffix, NameP
 {
     const QString source = document.corpusSource();
     QString name = source == QStringLiteral("demo") ? QStringLiteral("demo") : QFileInfo(source).fileName();
-    const QString take = document.takeLabel(document.selectedId(TakeSlot::A));
-    if (!take.isEmpty() && parts == NameParts::CorpusAndTakeA) name += QLatin1Char('-') + take;
+    const QString take = document.takeLabel(document.selectedId(parts == NameParts::CorpusAndTakeB ? TakeSlot::B : TakeSlot::A));
+    if (!take.isEmpty() && parts != NameParts::Corpus) name += QLatin1Char('-') + take;
     // Letters, digits, '.', '_' and '-' only; runs of anything else become one '-'.
     static const QRegularExpression unsafe(QStringLiteral("[^A-Za-z0-9._-]+"));
     name.replace(unsafe, QStringLiteral("-"));
@@ -78,10 +78,10 @@ QString suggestedFileName(const Document& document, const QString& suffix, NameP
 void setFileChooser(FileChooser replacement) { chooser() = std::move(replacement); }
 
 QString chooseSaveFile(QWidget* parent, FilePurpose purpose, const QString& title, const QString& suggestedName,
-                       const QString& filter, const QString& projectFile)
+                       const QString& filter, const QString& projectFile, QString* selectedFilter)
 {
     const QString start = QDir(rememberedFolder(purpose, projectFile)).filePath(suggestedName);
-    const QString file = chooser() ? chooser()(purpose, start) : QFileDialog::getSaveFileName(parent, title, start, filter);
+    const QString file = chooser() ? chooser()(purpose, start) : QFileDialog::getSaveFileName(parent, title, start, filter, selectedFilter);
     rememberFolder(purpose, file);
     return file;
 }

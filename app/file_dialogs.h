@@ -30,9 +30,9 @@ QString rememberedFolder(FilePurpose purpose, const QString& projectFile = {});
 void rememberFolder(FilePurpose purpose, const QString& path);
 
 /// What a suggested name is made of.
-enum class NameParts { CorpusAndTakeA, Corpus };
+enum class NameParts { CorpusAndTakeA, CorpusAndTakeB, Corpus };
 /// A file name (without folder) for what the document shows: the corpus ("demo" or the corpus
-/// folder's name) and take A's label, made safe for file systems, then `suffix` (".png").
+/// folder's name) and take A's (or B's) label, made safe for file systems, then `suffix` (".png").
 QString suggestedFileName(const Document& document, const QString& suffix, NameParts parts = NameParts::CorpusAndTakeA);
 
 /// Replaces the dialogs (null restores them).
@@ -40,8 +40,9 @@ using FileChooser = std::function<QString(FilePurpose purpose, const QString& st
 void setFileChooser(FileChooser chooser);
 
 /// A save dialog starting at rememberedFolder/`suggestedName`; remembers the chosen folder.
+/// `selectedFilter`, when given, is the filter shown first and receives the one chosen.
 QString chooseSaveFile(QWidget* parent, FilePurpose purpose, const QString& title, const QString& suggestedName,
-                       const QString& filter, const QString& projectFile = {});
+                       const QString& filter, const QString& projectFile = {}, QString* selectedFilter = nullptr);
 /// An open dialog starting in rememberedFolder; remembers the chosen folder.
 QString chooseOpenFile(QWidget* parent, FilePurpose purpose, const QString& title, const QString& filter,
                        const QString& projectFile = {});

@@ -283,6 +283,54 @@ TEST_CASE("file dialogs start in the folder last used for their purpose, with a 
     CHECK_FALSE(video.startsWith(QStandardPaths::writableLocation(QStandardPaths::MoviesLocation)));
 }
 
+TEST_CASE("File > Export Take A (Ctrl+E) suggests a name from the take and opens where the last export went", "[app][files][export]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    const auto root = test::scratchDir("export-take-dialog");
+    const QString first = QString::fromStdString((root / "first").string());
+    QDir().mkpath(first);
+    QSettings().remove(QStringLiteral("folders"));
+    std::vector<std::pair<app::FilePurpose, QString>> asked;
+    QString answer;
+    app::setFileChooser([&](app::FilePurpose purpose, const QString& start) {
+        asked.emplace_back(purpose, start);
+        return answer;
+    });
+    struct Restore {
+        ~Restore() { app::setFileChooser({}); }
+    } restore;
+    const auto named = [&](int take) {
+        return QStringLiteral("demo-") + window->document().takeLabel(app::Document::corpusTakeId(take)).replace(QLatin1Char('/'), QLatin1Char('-')) +
+               QStringLiteral(".bvh");
+    };
+    window->document().selectTake(app::TakeSlot::A, app::Document::corpusTakeId(3));
+    // Ctrl+E, as a user presses it.
+    window->activateWindow();
+    REQUIRE(QTest::qWaitForWindowActive(window.get()));
+    answer = first + QStringLiteral("/mine.bvh");
+    press(*window, Qt::Key_E, Qt::ControlModifier);
+    REQUIRE(asked.size() == 1);
+    CHECK(asked.back().first == app::FilePurpose::ExportTake);
+    CHECK(asked.back().second == QDir(QDir::homePath()).filePath(named(3))); // nothing chosen yet: home, a name of the take
+    CHECK(QFileInfo::exists(answer));
+    // The second export starts in the folder of the first, named after the take shown now.
+    window->document().selectTake(app::TakeSlot::A, app::Document::corpusTakeId(5));
+    answer.clear(); // cancelled: nothing written
+    press(*window, Qt::Key_E, Qt::ControlModifier);
+    REQUIRE(asked.size() == 2);
+    CHECK(asked.back().second == first + QLatin1Char('/') + named(5));
+    // A screenshot meanwhile does not move the exports' folder.
+    const QString shots = QString::fromStdString((root / "shots").string());
+    QDir().mkpath(shots);
+    answer = shots + QStringLiteral("/shot.png");
+    menuAction(*window, QStringLiteral("Save Screenshot"))->trigger();
+    answer.clear();
+    window->exports().exportAction(app::TakeSlot::B)->trigger();
+    CHECK(asked.back().first == app::FilePurpose::ExportTake);
+    CHECK(QFileInfo(asked.back().second).absolutePath() == first);
+}
+
 TEST_CASE("a project brings back the graphs' part and DOF, the camera and the emotion picked", "[app][files][project]")
 {
     const auto folder = test::scratchDir("project-view");
