@@ -20,6 +20,7 @@
 #include <QFileInfo>
 #include <QMenu>
 #include <QMessageBox>
+#include <QScopedValueRollback>
 #include <QSettings>
 #include <QStandardPaths>
 
@@ -109,7 +110,7 @@ void FileController::report(const QString& title, const analysis::Error& error)
 {
     m_lastError = QString::fromStdString(error.message);
     emit statusMessage(title + QStringLiteral(": ") + m_lastError);
-    if (m_dialogs) QMessageBox::warning(m_window, title, m_lastError);
+    if (m_dialogs && !m_errorsInDialog) QMessageBox::warning(m_window, title, m_lastError);
 }
 
 bool FileController::openDemoCorpus()
@@ -268,8 +269,20 @@ void FileController::chooseFilesForCorpus(const QStringList& inputs)
 {
     NewCorpusDialog dialog(m_window);
     dialog.addInputs(inputs);
-    if (dialog.exec() != QDialog::Accepted) return;
-    createCorpusFromFiles(dialog.sources(), dialog.buildOptions(), dialog.outputFolder());
+    dialog.setCreator([this](NewCorpusDialog& asking) {
+        // The progress dialog over the new-corpus dialog; an error is shown in it, which stays open.
+        const QScopedValueRollback<QWidget*> parent(m_window, &asking);
+        const QScopedValueRollback<bool> inDialog(m_errorsInDialog, true);
+        const QString folder = asking.outputFolder();
+        m_lastError.clear();
+        if (createCorpusFromFiles(asking.sources(), asking.buildOptions(), folder)) {
+            rememberFolder(FilePurpose::Corpus, QFileInfo(folder).absoluteFilePath());
+            return true;
+        }
+        asking.showCreateError(m_lastError.isEmpty() ? tr("cancelled; nothing was written") : m_lastError);
+        return false;
+    });
+    dialog.exec();
 }
 
 ProjectState FileController::captureState() const

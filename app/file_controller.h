@@ -62,6 +62,9 @@ public:
     bool createCorpusFromFiles(const std::vector<analysis::io::CorpusSource>& sources,
                                const analysis::io::CorpusBuildOptions& options, const QString& folder);
     /// File > New Corpus from Files: the dialog, then createCorpusFromFiles. `inputs` preset it.
+    /// When the corpus cannot be made the dialog stays open with everything the user entered and
+    /// the error (the row of the file it names selected). The corpus made is remembered as the
+    /// folder of corpora (file_dialogs.h), where the next new corpus is suggested.
     void chooseFilesForCorpus(const QStringList& inputs = {});
     bool saveProject(const QString& file);
     bool openProject(const QString& file);
@@ -123,6 +126,7 @@ private:
     QString m_pending[2];       ///< awaited live takes per slot (see pendingLiveTake)
     double m_pendingTime = 0.0; ///< the project's time, applied when an awaited take appears
     bool m_applying = false;    ///< inside applyState: selections are the project's own
+    bool m_errorsInDialog = false; ///< errors are shown by the dialog that asked, not a message box
     QTimer m_autosaveTimer;
     std::unique_ptr<AutosaveSession> m_autosave;
     std::function<int()> m_unsavedAnswer;

@@ -50,6 +50,12 @@ QString rememberedFolder(FilePurpose purpose, const QString& projectFile)
     return QDir::homePath();
 }
 
+QString rememberedPurposeFolder(FilePurpose purpose)
+{
+    const QString folder = QSettings().value(purposeKey(purpose)).toString();
+    return existingFolder(folder) ? folder : QString();
+}
+
 void rememberFolder(FilePurpose purpose, const QString& path)
 {
     if (path.isEmpty()) return;

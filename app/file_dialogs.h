@@ -25,6 +25,8 @@ QString purposeKey(FilePurpose purpose);
 /// The folder a dialog for `purpose` starts in (see the file comment); `projectFile` is the open
 /// project, if any.
 QString rememberedFolder(FilePurpose purpose, const QString& projectFile = {});
+/// The folder last chosen for `purpose` itself (no fallback), empty when none exists.
+QString rememberedPurposeFolder(FilePurpose purpose);
 /// Remembers the folder holding `path` (a file, or a chosen folder: its parent, where its
 /// siblings are) for `purpose` and as the last folder of all.
 void rememberFolder(FilePurpose purpose, const QString& path);

@@ -1,5 +1,6 @@
 #include "app/new_corpus_dialog.h"
 
+#include "app/file_dialogs.h"
 #include "app/joint_map_dialog.h"
 
 #include "analysis/io/bvh_joint_map.h"
@@ -9,18 +10,22 @@
 #include <QDoubleSpinBox>
 #include <QDragEnterEvent>
 #include <QDropEvent>
+#include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMenu>
 #include <QMimeData>
 #include <QPushButton>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <map>
 #include <set>
 
@@ -41,7 +46,12 @@ NewCorpusDialog::NewCorpusDialog(QWidget* parent) : QDialog(parent)
     setAcceptDrops(true);
     auto* addFiles = new QPushButton(tr("Add Files..."), this);
     auto* addFolder = new QPushButton(tr("Add Folder..."), this);
+    m_remove = new QPushButton(tr("Remove"), this);
+    m_remove->setToolTip(tr("Remove the selected files from the corpus (Delete)"));
+    m_remove->setEnabled(false);
+    connect(m_remove, &QPushButton::clicked, this, &NewCorpusDialog::removeSelectedRows);
     auto* clear = new QPushButton(tr("Clear"), this);
+    clear->setToolTip(tr("Remove every file"));
     connect(addFiles, &QPushButton::clicked, this, [this] {
         addInputs(QFileDialog::getOpenFileNames(this, tr("Take files"), {}, tr("Takes (*.bvh *.csv *.txt *.fastrak *.fst)")));
     });
@@ -67,6 +77,17 @@ NewCorpusDialog::NewCorpusDialog(QWidget* parent) : QDialog(parent)
     m_table->setWordWrap(false);
     m_table->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_table->setMinimumSize(720, 260);
+    m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_table->installEventFilter(this);
+    m_table->setContextMenuPolicy(Qt::CustomContextMenu);
+    connect(m_table, &QWidget::customContextMenuRequested, this, [this](const QPoint& position) {
+        if (m_table->selectionModel()->selectedRows().isEmpty()) return;
+        QMenu menu(this);
+        menu.addAction(tr("Remove Selected Files"), this, &NewCorpusDialog::removeSelectedRows);
+        menu.exec(m_table->viewport()->mapToGlobal(position));
+    });
+    connect(m_table, &QTableWidget::itemSelectionChanged, this,
+            [this] { m_remove->setEnabled(!m_table->selectionModel()->selectedRows().isEmpty()); });
     connect(m_table, &QTableWidget::itemChanged, this, [this](QTableWidgetItem* item) {
         if (m_filling) return;
         item->setData(kEditedRole, true);
@@ -101,6 +122,7 @@ NewCorpusDialog::NewCorpusDialog(QWidget* parent) : QDialog(parent)
     auto* inputs = new QHBoxLayout;
     inputs->addWidget(addFiles);
     inputs->addWidget(addFolder);
+    inputs->addWidget(m_remove);
     inputs->addWidget(clear);
     inputs->addStretch(1);
     inputs->addWidget(new QLabel(tr("or drop files and folders here"), this));
@@ -121,7 +143,10 @@ NewCorpusDialog::NewCorpusDialog(QWidget* parent) : QDialog(parent)
     m_message->setWordWrap(true);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Cancel, this);
     m_create = buttons->addButton(tr("Create Corpus"), QDialogButtonBox::AcceptRole);
-    connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
+    connect(buttons, &QDialogButtonBox::accepted, this, [this] {
+        if (!m_problem.isEmpty()) return;
+        if (!m_creator || m_creator(*this)) accept();
+    });
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(inputs);
@@ -159,12 +184,62 @@ void NewCorpusDialog::addInputs(const QStringList& paths)
         m_table->setItem(row, MapColumn, map);
     }
     m_filling = false;
-    if (m_output->text().isEmpty() && !m_files.empty())
-        m_output->setText(QString::fromStdString((std::filesystem::absolute(m_files.front()).lexically_normal().parent_path() / "corpus").string()));
+    if (m_output->text().isEmpty() && !m_files.empty()) {
+        // In the folder corpora were last opened or made in, else beside the files (where shared,
+        // read-only data often is).
+        const QString remembered = rememberedPurposeFolder(FilePurpose::Corpus);
+        m_output->setText(remembered.isEmpty()
+                              ? QString::fromStdString((std::filesystem::absolute(m_files.front()).lexically_normal().parent_path() / "corpus").string())
+                              : QDir(remembered).filePath(QStringLiteral("corpus")));
+    }
     relabel();
     remap();
     for (int column : {FileColumn, FunctionColumn, EmotionColumn, TakeColumn}) m_table->resizeColumnToContents(column);
 }
+
+void NewCorpusDialog::removeSelectedRows()
+{
+    std::vector<int> rows;
+    for (const QModelIndex& index : m_table->selectionModel()->selectedRows()) rows.push_back(index.row());
+    if (rows.empty()) return;
+    std::sort(rows.rbegin(), rows.rend()); // from the last, so the earlier rows keep their index
+    m_filling = true;
+    for (int row : rows) {
+        m_table->removeRow(row);
+        m_files.erase(m_files.begin() + row);
+    }
+    m_filling = false;
+    relabel(); // takes numbered by file order within a cell are renumbered
+}
+
+bool NewCorpusDialog::eventFilter(QObject* watched, QEvent* event)
+{
+    // (While a cell is edited its editor gets the keys, not the table.)
+    if (watched == m_table && event->type() == QEvent::KeyPress) {
+        const auto* key = static_cast<QKeyEvent*>(event);
+        if (key->key() == Qt::Key_Delete || key->key() == Qt::Key_Backspace) {
+            removeSelectedRows();
+            return true;
+        }
+    }
+    return QDialog::eventFilter(watched, event);
+}
+
+void NewCorpusDialog::showCreateError(const QString& message)
+{
+    m_message->setText(tr("The corpus was not made: %1").arg(message));
+    m_message->setStyleSheet(QStringLiteral("color: #b00020"));
+    // The row of the file the error names (errors start with the file's path).
+    for (int row = 0; row < m_table->rowCount(); ++row)
+        if (message.contains(QString::fromStdString(m_files[std::size_t(row)].string()))) {
+            m_table->selectRow(row);
+            m_table->scrollToItem(m_table->item(row, FileColumn));
+            m_table->setFocus();
+            break;
+        }
+}
+
+QString NewCorpusDialog::messageText() const { return m_message->text(); }
 
 void NewCorpusDialog::setPattern(const QString& pattern) { m_pattern->setText(pattern); }
 void NewCorpusDialog::setOutputFolder(const QString& folder) { m_output->setText(folder); }

@@ -12,6 +12,7 @@
 #include <QStringList>
 
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <optional>
 #include <vector>
@@ -34,6 +35,14 @@ public:
 
     /// Adds take files, or the take files directly inside folders (as dropped).
     void addInputs(const QStringList& paths);
+    /// Removes the selected rows (the Remove button, the Delete key, the table's context menu).
+    void removeSelectedRows();
+    /// Makes the corpus when Create Corpus is pressed: true closes the dialog; false keeps it
+    /// open with everything as the user left it, showing `lastError` (see showCreateError).
+    /// Without a creator Create Corpus accepts the dialog.
+    void setCreator(std::function<bool(NewCorpusDialog&)> creator) { m_creator = std::move(creator); }
+    /// Shows why the corpus could not be made, and selects the row of the file it names.
+    void showCreateError(const QString& message);
     void setPattern(const QString& pattern);
     void setOutputFolder(const QString& folder);
     QString outputFolder() const;
@@ -47,8 +56,12 @@ public:
     QLineEdit* jointsEdit() const { return m_joints; }
     QComboBox* sideBox() const { return m_side; }
     QComboBox* neutralBox() const { return m_neutral; }
+    QPushButton* removeButton() const { return m_remove; }
+    QPushButton* createButton() const { return m_create; }
+    QString messageText() const;
 
 protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
     void dragEnterEvent(QDragEnterEvent* event) override;
     void dropEvent(QDropEvent* event) override;
 
@@ -73,6 +86,8 @@ private:
     QLineEdit* m_output = nullptr;
     QLabel* m_message = nullptr;
     QPushButton* m_create = nullptr;
+    QPushButton* m_remove = nullptr;
+    std::function<bool(NewCorpusDialog&)> m_creator;
     QString m_problem;
     bool m_filling = false; ///< the table is being filled by code, not edited by the user
 };

@@ -3,6 +3,7 @@
 // corpus made and opened), driven as a user would under Xvfb.
 #include "tests/app/app_test_support.h"
 
+#include "app/file_dialogs.h"
 #include "app/joint_map_dialog.h"
 #include "app/new_corpus_dialog.h"
 
@@ -18,6 +19,8 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QDialogButtonBox>
+#include <QLabel>
+#include <QSettings>
 #include <QLineEdit>
 #include <QMimeData>
 #include <QPushButton>
@@ -193,6 +196,108 @@ TEST_CASE("files and folders dropped on the new-corpus dialog join its table", "
     REQUIRE(dialog.table()->rowCount() == 2);
     CHECK(dialog.table()->item(1, app::NewCorpusDialog::EmotionColumn)->text() == QStringLiteral("sad"));
     CHECK(dialog.problem().isEmpty()); // the output folder defaults to "corpus" beside the files
+    CHECK(dialog.outputFolder() == QString::fromStdString((dir / "corpus").string()));
+}
+
+TEST_CASE("new corpus from files: a file that is not a take keeps the dialog open with all input; rows are removed with Delete",
+          "[app][import]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    const auto dir = test::scratchDir("app_new_corpus_error");
+    const auto in = dir / "in";
+    writeFixtures(in, {"walk_happy_1.bvh", "walk_sad_1.bvh"});
+    // A text file whose name reads as a take but which holds none (a licence, say).
+    const auto notTake = test::writeText(in / "walk_calm_1.txt", "This work is licensed under CC BY-NC 4.0.\n");
+    // Corpora were last opened or made in `corpora`: the new corpus is suggested there.
+    const auto corpora = dir / "corpora";
+    fs::create_directories(corpora);
+    QSettings().setValue(app::purposeKey(app::FilePurpose::Corpus), QString::fromStdString(corpora.string()));
+    const QString made = QString::fromStdString((dir / "made").string());
+
+    int steps = 0;
+    QTimer::singleShot(0, [&] {
+        // (No REQUIRE in here: an exception must not cross Qt's event loop; a failed step rejects.)
+        auto* dialog = qobject_cast<app::NewCorpusDialog*>(QApplication::activeModalWidget());
+        CHECK(dialog);
+        if (!dialog) return;
+        QTableWidget* table = dialog->table();
+        CHECK(table->rowCount() == 3);
+        if (table->rowCount() != 3) return dialog->reject();
+        CHECK(dialog->outputFolder() == QString::fromStdString((corpora / "corpus").string()));
+        // The user's edits: a pattern, a corrected label and the folder.
+        dialog->setPattern(QStringLiteral("{function}_{emotion}_{take}"));
+        int bvhRow = -1, badRow = -1;
+        for (int row = 0; row < 3; ++row) {
+            if (table->item(row, app::NewCorpusDialog::FileColumn)->text() == QStringLiteral("walk_happy_1.bvh")) bvhRow = row;
+            if (table->item(row, app::NewCorpusDialog::FileColumn)->text() == QStringLiteral("walk_calm_1.txt")) badRow = row;
+        }
+        CHECK(bvhRow >= 0);
+        CHECK(badRow >= 0);
+        if (bvhRow < 0 || badRow < 0) return dialog->reject();
+        table->item(bvhRow, app::NewCorpusDialog::EmotionColumn)->setText(QStringLiteral("joyful"));
+        dialog->setOutputFolder(made);
+        CHECK(dialog->problem().isEmpty());
+        QTest::mouseClick(dialog->createButton(), Qt::LeftButton);
+        // The error is said in the dialog, which stays open with everything as it was.
+        CHECK(dialog->isVisible());
+        CHECK(dialog->messageText().contains(QStringLiteral("walk_calm_1.txt")));
+        CHECK(table->rowCount() == 3);
+        CHECK(table->item(bvhRow, app::NewCorpusDialog::EmotionColumn)->text() == QStringLiteral("joyful"));
+        CHECK(dialog->outputFolder() == made);
+        CHECK(table->selectionModel()->selectedRows().size() == 1);
+        CHECK(table->currentRow() == badRow); // the row of the file the error names
+        CHECK(dialog->removeButton()->isEnabled());
+        // Delete removes the bad row; the others keep their labels.
+        QTest::keyClick(table, Qt::Key_Delete);
+        CHECK(table->rowCount() == 2);
+        if (table->rowCount() != 2) return dialog->reject();
+        for (int row = 0; row < 2; ++row) CHECK(table->item(row, app::NewCorpusDialog::FileColumn)->text() != QStringLiteral("walk_calm_1.txt"));
+        CHECK(dialog->sources().size() == 2);
+        CHECK(dialog->problem().isEmpty());
+        ++steps;
+        QTest::mouseClick(dialog->createButton(), Qt::LeftButton);
+        CHECK_FALSE(dialog->isVisible()); // made: closed
+        ++steps;
+    });
+    // The files picked one by one (a folder's .txt files are not collected as takes).
+    QStringList picked;
+    for (const char* name : {"walk_happy_1.bvh", "walk_sad_1.bvh", "walk_calm_1.txt"}) picked << QString::fromStdString((in / name).string());
+    window->files().chooseFilesForCorpus(picked);
+    REQUIRE(steps == 2);
+    const auto& corpus = window->document().corpus();
+    CHECK(window->document().corpusSource() == QFileInfo(made).absoluteFilePath());
+    REQUIRE(corpus.takes.size() == 2);
+    CHECK(std::any_of(corpus.takes.begin(), corpus.takes.end(), [](const auto& take) { return take.labels.emotion == "joyful"; }));
+    CHECK(fs::exists(notTake)); // nothing deleted
+    // The next new corpus is suggested beside this one.
+    CHECK(app::rememberedPurposeFolder(app::FilePurpose::Corpus) == QString::fromStdString(dir.string()));
+}
+
+TEST_CASE("new corpus from files: the Remove button removes the selected rows and renumbers takes", "[app][import]")
+{
+    test::isolateSettings();
+    QSettings().remove(QStringLiteral("folders"));
+    const auto dir = test::scratchDir("app_new_corpus_remove");
+    writeFixtures(dir, {"a_walk_happy.bvh", "b_walk_happy.bvh", "c_walk_happy.bvh"});
+    app::NewCorpusDialog dialog;
+    dialog.addInputs({QString::fromStdString(dir.string())});
+    dialog.setPattern(QStringLiteral("{any}_{function}_{emotion}"));
+    QTableWidget* table = dialog.table();
+    REQUIRE(table->rowCount() == 3);
+    CHECK(table->item(2, app::NewCorpusDialog::TakeColumn)->text() == QStringLiteral("3"));
+    CHECK_FALSE(dialog.removeButton()->isEnabled()); // nothing selected
+    table->selectRow(0);
+    REQUIRE(dialog.removeButton()->isEnabled());
+    QTest::mouseClick(dialog.removeButton(), Qt::LeftButton);
+    REQUIRE(table->rowCount() == 2);
+    CHECK(table->item(0, app::NewCorpusDialog::FileColumn)->text() == QStringLiteral("b_walk_happy.bvh"));
+    // Takes numbered in file order within their cell: 1 and 2 again.
+    CHECK(table->item(0, app::NewCorpusDialog::TakeColumn)->text() == QStringLiteral("1"));
+    CHECK(table->item(1, app::NewCorpusDialog::TakeColumn)->text() == QStringLiteral("2"));
+    REQUIRE(dialog.sources().size() == 2);
+    CHECK(dialog.sources()[1].file.filename() == "c_walk_happy.bvh");
+    // No remembered corpus folder: beside the files.
     CHECK(dialog.outputFolder() == QString::fromStdString((dir / "corpus").string()));
 }
 
