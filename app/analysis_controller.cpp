@@ -54,6 +54,12 @@ AnalysisController::AnalysisController(Document& document, QObject* parent, std:
             requestTakeAxis(TakeSlot::B);
         }
     });
+    // Take A renamed (a live take recomputed with the same content): its axis is renamed too.
+    connect(&document, &Document::takeLabelChanged, this, [this](const QString& id) {
+        if (id != m_document.selectedId(TakeSlot::A) || !m_axisTakes[0] || m_document.take(id) != m_axisTakes[0]) return;
+        m_axisLabels[0] = m_document.takeLabel(id);
+        if (isCurrent(kTakeAxisSlot)) publishAxis();
+    });
     connect(&document, &Document::selectionChanged, this, [this](TakeSlot slot) {
         requestTakeAxis(slot);
         if (slot != TakeSlot::A) return;
@@ -160,15 +166,7 @@ void AnalysisController::stageFinished(int slot)
     case kAxesSlot:
         m_axes = m_scheduler->result<pl::AxisOutput>(slot);
         break;
-    case kTakeAxisSlot: {
-        const auto axis = m_scheduler->result<pl::TakeAxis>(slot);
-        if (axis) {
-            const pl::Shared<analysis::Take> coordinates(axis, &axis->coordinates);
-            m_document.setLiveTake(QStringLiteral("axis"),
-                                   tr("motion axis of %1").arg(QString::fromStdString(coordinates->labels.source.substr(8))), coordinates);
-        }
-        break;
-    }
+    case kTakeAxisSlot: publishAxis(); break;
     }
     emit resultChanged(slot);
 }
@@ -291,18 +289,31 @@ void AnalysisController::synthesiseWeighted()
     emit weightedChanged();
 }
 
+void AnalysisController::publishAxis()
+{
+    const auto axis = m_scheduler->result<pl::TakeAxis>(kTakeAxisSlot);
+    if (!axis) return;
+    const pl::Shared<analysis::Take> coordinates(axis, &axis->coordinates);
+    // Named as the take it was computed from is listed (an imported file's name, a designed
+    // take's recipe), not by the take's own labels (a derived take has none of its own).
+    m_document.setLiveTake(QStringLiteral("axis"), tr("motion axis of %1").arg(m_axisLabels[0]), coordinates);
+}
+
 void AnalysisController::requestTakeAxis(TakeSlot slot)
 {
     const int id = takeAxisSlot(slot);
     const TakePointer take = m_document.selectedTake(slot);
     TakePointer& asked = m_axisTakes[slot == TakeSlot::A ? 0 : 1];
+    QString& label = m_axisLabels[slot == TakeSlot::A ? 0 : 1];
     if (!take || !analysis::hasPuppetLayout(*take)) { // nothing to pose (an axis take, for one)
         asked.reset();
+        label.clear();
         m_scheduler->clear(id);
         return;
     }
     const pl::AxisParameters parameters = m_document.parameters().axis;
     asked = take;
+    label = m_document.takeLabel(m_document.selectedId(slot));
     m_scheduler->request(id, pl::takeAxisKey(pl::takeKey(*take), parameters),
                          [take, parameters](const analysis::RunControl& control) -> analysis::Result<StageValue> {
                              auto axis = pl::runTakeAxis(*take, parameters, control);

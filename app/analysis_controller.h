@@ -99,6 +99,8 @@ private:
     void publishNormalised();
     void synthesiseWeighted();
     void requestTakeAxis(TakeSlot slot);
+    /// Publishes take A's computed motion axis as the "axis" live take.
+    void publishAxis();
 
     Document& m_document;
     StageScheduler* m_scheduler = nullptr;
@@ -117,6 +119,7 @@ private:
     TakePointer m_weighted;
     QString m_weightError;
     TakePointer m_axisTakes[2]; ///< the takes the axis slots were last asked for
+    QString m_axisLabels[2];    ///< and their labels then (what the "axis" take's label names)
 };
 
 } // namespace bunraku::app

@@ -324,6 +324,35 @@ void DesignController::useExtractedGains()
         QCoreApplication::translate("commands", "Use extracted gains"));
 }
 
+QString DesignController::designedLabel() const
+{
+    if (!m_prepared) return {};
+    const pl::DesignEdits& design = m_document.parameters().design;
+    // The warp: the identity, the cell's extracted one, or how many of its points are off the
+    // identity (moved by hand).
+    QString warp;
+    const analysis::WarpCurve extracted = extractedCurve();
+    if (!design.warp) {
+        warp = tr("identity warp");
+    } else if (!extracted.points.empty() && design.warp->points == extracted.points) {
+        warp = tr("warp extracted from %1").arg(targetCell());
+    } else {
+        int moved = 0;
+        for (const analysis::WarpPoint& point : design.warp->points)
+            if (std::abs(point.source - point.output) > 1e-9) ++moved;
+        warp = tr("warp: %1 of %2 points moved").arg(moved).arg(design.warp->points.size());
+    }
+    int gains = 0;
+    for (const pl::GainEdit& edit : design.gains)
+        if (edit.g0 != 1.0 || edit.g1 != 1.0) ++gains;
+    const QString gainText = gains == 0 ? tr("no gains") : gains == 1 ? tr("1 phrase gain set") : tr("%1 phrase gains set").arg(gains);
+    const int phrases = std::max(1, int(boundaries().size()) - 1);
+    const QString phraseText = phrases == 1 ? (design.boundaries.suggested ? tr("1 suggested phrase") : tr("1 phrase set"))
+                                            : (design.boundaries.suggested ? tr("%1 suggested phrases") : tr("%1 phrases set")).arg(phrases);
+    return tr("designed from %1 functional (%2; %3; %4)")
+        .arg(QString::fromStdString(m_prepared->function.function), warp, gainText, phraseText);
+}
+
 void DesignController::redesign()
 {
     if (!m_prepared) return;
@@ -333,9 +362,7 @@ void DesignController::redesign()
     motion.take.labels.source = "designed";
     m_designed = std::make_shared<const analysis::Take>(std::move(motion.take));
     m_lastMilliseconds = double(clock.nsecsElapsed()) / 1e6;
-    m_document.setLiveTake(QStringLiteral("designed"),
-                           tr("designed from %1 functional").arg(QString::fromStdString(m_prepared->function.function)), m_designed,
-                           kFunctionalId);
+    m_document.setLiveTake(QStringLiteral("designed"), designedLabel(), m_designed, kFunctionalId);
     emit designed();
 }
 

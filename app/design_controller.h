@@ -87,6 +87,9 @@ public:
     QString sourceId() const;
     /// The emotional cell the phase and gains were extracted from ("function/emotion"), empty when none.
     QString targetCell() const;
+    /// The designed take's label: its functional take and what it was designed with ("designed
+    /// from wave functional (warp: 3 of 28 points moved; 2 phrase gains set; 4 suggested phrases)").
+    QString designedLabel() const;
     /// The designed take, null before the preparation finished.
     TakePointer designedTake() const { return m_designed; }
     /// Wall time of the last synthesis, milliseconds.

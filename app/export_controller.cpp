@@ -39,7 +39,10 @@ bool ExportController::exportTake(TakeSlot slot, const QString& file)
         report(tr("Nothing to export: no take is shown as %1.").arg(slotName(slot)));
         return false;
     }
-    const auto status = render::exportTake(*take, analysis::defaultBodyDescription(), std::filesystem::path(file.toStdString()));
+    // A .glb's animation is named as the take is listed ("designed from ...", an imported file's name).
+    const QString label = m_document.takeLabel(m_document.selectedId(slot));
+    const auto status =
+        render::exportTake(*take, analysis::defaultBodyDescription(), std::filesystem::path(file.toStdString()), label.toStdString());
     if (!status) {
         report(tr("Cannot export take %1: %2").arg(slotName(slot), QString::fromStdString(status.error().message)));
         return false;

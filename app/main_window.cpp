@@ -297,6 +297,10 @@ void MainWindow::connectDocument()
         m_browser->setEntryLabel(id, m_document->takeLabel(id));
         updateTitle();
     });
+    // ... and its frame count is the new take's.
+    connect(m_document, &Document::takeChanged, this, [this](const QString& id) {
+        if (const TakePointer take = m_document->take(id)) m_browser->setEntryFrames(id, int(take->frameCount()));
+    });
     connect(m_document, &Document::selectionChanged, this, [this] { refreshTakes(); });
     connect(m_document, &Document::currentTimeChanged, this, &MainWindow::refreshTime);
     connect(m_document->undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);

@@ -93,7 +93,8 @@ std::string takeExportNote(const analysis::Take& take, const std::filesystem::pa
            " (write .csv for the channels)";
 }
 
-analysis::Status exportTake(const analysis::Take& take, const analysis::BodyDescription& body, const std::filesystem::path& file)
+analysis::Status exportTake(const analysis::Take& take, const analysis::BodyDescription& body, const std::filesystem::path& file,
+                            const std::string& name)
 {
     switch (takeExportFormat(file)) {
     case TakeExportFormat::Csv:
@@ -110,7 +111,7 @@ analysis::Status exportTake(const analysis::Take& take, const analysis::BodyDesc
             rig = std::move(puppet).value();
         }
         analysis::io::GltfExportOptions options;
-        options.name = take.displayName();
+        options.name = name.empty() ? take.displayName() : name;
         return analysis::io::writeSkeletalGlb(*rig.motion, take.rateHz, rig.meshes, file, options);
     }
     case TakeExportFormat::Unknown: break;

@@ -47,7 +47,10 @@ analysis::Result<ExportRig> puppetRig(const analysis::BodyDescription& body, con
 /// differs; empty when they agree or the take has no skeleton.
 std::string takeExportNote(const analysis::Take& take, const std::filesystem::path& file);
 
-/// Writes the take by extension (atomic); the error names the file.
-analysis::Status exportTake(const analysis::Take& take, const analysis::BodyDescription& body, const std::filesystem::path& file);
+/// Writes the take by extension (atomic); the error names the file. `name` names a .glb's
+/// animation and scene (the workbench passes the take's label as listed); empty: the take's
+/// displayName().
+analysis::Status exportTake(const analysis::Take& take, const analysis::BodyDescription& body, const std::filesystem::path& file,
+                            const std::string& name = {});
 
 } // namespace bunraku::render

@@ -105,6 +105,17 @@ void CorpusBrowser::setEntryLabel(const QString& id, const QString& label)
     }
 }
 
+void CorpusBrowser::setEntryFrames(const QString& id, int frames)
+{
+    if (QTreeWidgetItem* item = findLeaf(id)) item->setText(1, QString::number(frames));
+}
+
+int CorpusBrowser::entryFrames(const QString& id) const
+{
+    const QTreeWidgetItem* item = findLeaf(id);
+    return item ? item->text(1).toInt() : -1;
+}
+
 QString CorpusBrowser::entryText(const QString& id) const
 {
     const QTreeWidgetItem* item = findLeaf(id);

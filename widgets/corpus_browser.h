@@ -35,6 +35,10 @@ public:
     void setEntries(const std::vector<BrowserEntry>& entries);
     /// Renames the derived take `id` in place (selection and expansion kept).
     void setEntryLabel(const QString& id, const QString& label);
+    /// Sets the frame count shown for `id` (a live take recomputed from another take).
+    void setEntryFrames(const QString& id, int frames);
+    /// The frame count shown for `id`, -1 when not listed.
+    int entryFrames(const QString& id) const;
     /// The text the tree shows for `id`, empty when not listed.
     QString entryText(const QString& id) const;
     /// Marks which takes are A and B (empty id: none).

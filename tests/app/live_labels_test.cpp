@@ -5,6 +5,7 @@
 #include "tests/app/app_test_support.h"
 
 #include "app/analysis_controller.h"
+#include "app/design_controller.h"
 #include "app/emotion_panel.h"
 #include "app/normalise_panel.h"
 
@@ -13,6 +14,8 @@
 #include "analysis/io/corpus_io.h"
 #include "analysis/pipeline/stages.h"
 #include "analysis/synth/demo_corpus.h"
+#include "tests/analysis/io/io_test_support.h"
+#include "tests/support/bvh_fixtures.h"
 
 #include <catch2/catch.hpp>
 
@@ -182,4 +185,72 @@ TEST_CASE("a neutral take is weighted against the emotion picked, an emotional o
     // Back on a neutral take: the pick is remembered.
     document.selectTake(TakeSlot::A, takeId(document, "greeting", "none", 1));
     CHECK(picker->currentText() == QStringLiteral("hostile"));
+}
+
+TEST_CASE("the designed take's label names its warp, gains and phrases; the axis take names and counts the take it was computed from",
+          "[app][labels][design]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    auto& document = window->document();
+    auto& design = window->design();
+    document.selectTake(TakeSlot::A, takeId(document, "greeting", "none", 2));
+    REQUIRE(idle(*window));
+    REQUIRE(QTest::qWaitFor([&] { return bool(document.take(QStringLiteral("live/designed"))); }, 60000));
+    const auto listed = [&](const QString& id) { return window->browser()->entryText(id); };
+    const QString designed = QStringLiteral("live/designed"), axis = QStringLiteral("live/axis");
+    CHECK(listed(designed).startsWith(QStringLiteral("designed from greeting functional (identity warp; no gains; ")));
+    CHECK(listed(designed).contains(QStringLiteral("suggested phrase")));
+
+    // A warp point moved, then a gain set: the label says so at once.
+    analysis::WarpCurve curve = design.warpCurve();
+    REQUIRE(curve.points.size() >= 4);
+    curve.points[2].source += 0.5 * (curve.points[3].source - curve.points[2].source);
+    design.editWarp(curve);
+    CHECK(listed(designed).contains(QStringLiteral("warp: 1 of %1 points moved").arg(curve.points.size())));
+    design.editGain(0, 0, 1.5, 1.2);
+    CHECK(listed(designed).contains(QStringLiteral("1 phrase gain set")));
+    document.undoStack()->undo();
+    CHECK(listed(designed).contains(QStringLiteral("no gains")));
+    design.editGain(0, 0, 1.5, 1.2);
+    CHECK(listed(designed) == document.takeLabel(designed));
+
+    // The designed take as A: its axis is named as it is listed (not "greeting/none/0") and
+    // counts its frames.
+    const auto axisNames = [&](const QString& id) {
+        return listed(axis) == QStringLiteral("motion axis of ") + document.takeLabel(id) &&
+               window->browser()->entryFrames(axis) == int(document.take(id)->frameCount());
+    };
+    document.selectTake(TakeSlot::A, designed);
+    REQUIRE(QTest::qWaitFor([&] { return axisNames(designed); }, 60000));
+    CHECK_FALSE(listed(axis).contains(QStringLiteral("/0")));
+    CHECK(int(document.take(axis)->frameCount()) == int(document.take(designed)->frameCount()));
+    // Exported as glTF, its animation is named as the take is listed.
+    const auto dir = test::scratchDir("designed-labels");
+    REQUIRE(window->exports().exportTake(TakeSlot::A, QString::fromStdString((dir / "designed.glb").string())));
+    const std::string glb = test::fileBytes(dir / "designed.glb");
+    CHECK(glb.find("\"" + document.takeLabel(designed).toStdString() + "\"") != std::string::npos);
+    CHECK(glb.find("greeting/none/0") == std::string::npos);
+
+    // Corpus takes of other lengths in turn: the axis entry's label and frame count follow.
+    for (const auto& [emotion, index] : std::vector<std::pair<std::string, int>>{{"hostile", 1}, {"none", 1}, {"friendly", 2}}) {
+        const QString id = takeId(document, "greeting", emotion, index);
+        REQUIRE(!id.isEmpty());
+        document.selectTake(TakeSlot::A, id);
+        INFO(document.takeLabel(id).toStdString() << " of " << document.take(id)->frameCount() << " frames");
+        REQUIRE(QTest::qWaitFor([&] { return axisNames(id); }, 60000));
+        CHECK(window->browser()->entryFrames(axis) == int(document.take(axis)->frameCount()));
+    }
+
+    // An imported file: named as it is listed (the file's name), not by its full path.
+    const auto families = test::bvhFamilies();
+    const auto file = test::writeText(dir / "imported-wave.bvh", test::fixtureBvh(families[3], 40));
+    REQUIRE(window->files().importTakeFile(QString::fromStdString(file.string())));
+    QString imported;
+    for (const auto& derived : document.derivedTakes())
+        if (derived.id.startsWith(QStringLiteral("imported/"))) imported = derived.id;
+    REQUIRE(!imported.isEmpty());
+    document.selectTake(TakeSlot::A, imported);
+    REQUIRE(QTest::qWaitFor([&] { return axisNames(imported); }, 60000));
+    CHECK_FALSE(listed(axis).contains(QString::fromStdString(dir.string())));
 }
