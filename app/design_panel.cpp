@@ -5,11 +5,11 @@
 
 #include "analysis/axis/axis_channels.h"
 
+#include "widgets/flow_layout.h"
 #include "widgets/gain_table.h"
 #include "widgets/scale_error_plot.h"
 #include "widgets/warp_curve_editor.h"
 
-#include <QGridLayout>
 #include <QLabel>
 #include <QPushButton>
 #include <QSplitter>
@@ -49,14 +49,11 @@ DesignPanel::DesignPanel(Document& document, DesignController& controller, QWidg
     splitter->setStretchFactor(0, 3);
     splitter->setStretchFactor(1, 2);
     splitter->setStretchFactor(2, 2);
-    // Two columns of buttons: the dock stays narrow enough for a 1280-pixel screen.
-    auto* buttons = new QGridLayout;
-    const QList<QPushButton*> order{showDesigned, extractedGains, resetGains, addBoundary, removeBoundary, resetBoundaries};
-    for (int i = 0; i < order.size(); ++i) {
-        order[i]->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
-        order[i]->setMinimumWidth(order[i]->fontMetrics().horizontalAdvance(order[i]->text()) + 24);
-        buttons->addWidget(order[i], i / 2, i % 2);
-    }
+    // The buttons at their full width, wrapped onto as many rows as the dock's width needs
+    // (a 1280-pixel screen's narrow column: one or two per row, never clipped).
+    auto* buttons = new widgets::FlowLayout;
+    for (QPushButton* button : {showDesigned, extractedGains, resetGains, addBoundary, removeBoundary, resetBoundaries})
+        buttons->addWidget(button);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
     layout->addWidget(m_inputs);

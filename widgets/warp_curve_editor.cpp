@@ -1,9 +1,10 @@
 #include "widgets/warp_curve_editor.h"
 
+#include "widgets/flow_layout.h"
+
 #include <qcustomplot.h>
 
 #include <QCheckBox>
-#include <QHBoxLayout>
 #include <QPushButton>
 #include <QVBoxLayout>
 
@@ -39,9 +40,9 @@ WarpCurveEditor::WarpCurveEditor(QWidget* parent) : QWidget(parent), m_plot(new 
     auto* extracted = new QPushButton(tr("Reset to extracted"), this);
     identity->setObjectName("resetIdentity");
     extracted->setObjectName("resetExtracted");
-    auto* buttons = new QHBoxLayout;
+    // Wrapped onto more rows in a narrow dock rather than clipped.
+    auto* buttons = new FlowLayout;
     buttons->addWidget(m_snap);
-    buttons->addStretch(1);
     buttons->addWidget(identity);
     buttons->addWidget(extracted);
     auto* layout = new QVBoxLayout(this);

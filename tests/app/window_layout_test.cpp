@@ -12,8 +12,15 @@
 
 #include <catch2/catch.hpp>
 
+#include <QCheckBox>
 #include <QDockWidget>
+#include <QFile>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QMenuBar>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QWindow>
 #include <QStatusBar>
 
@@ -111,4 +118,51 @@ TEST_CASE("the splitter between the 3D view and the graphs widens the view", "[a
     INFO("3D view " << before << " -> " << viewport->width() << " pixels wide");
     CHECK(viewport->width() == Approx(before + 200).margin(12));
     CHECK(inWindow(window->graphPanel(), window.get()).width() >= 400);
+}
+
+TEST_CASE("at 1280x720 and 1366x768 every button of the Design dock is whole inside the dock's visible area", "[app][layout][design]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    for (const QSize size : {QSize(1280, 720), QSize(1366, 768)}) {
+        INFO("window " << size.width() << "x" << size.height());
+        window->resetLayout();
+        resizeTo(*window, size);
+        QDockWidget* dock = window->dock("designDock");
+        dock->raise();
+        for (int pass = 0; pass < 4; ++pass) QCoreApplication::processEvents();
+        auto* scroll = qobject_cast<QScrollArea*>(dock->widget());
+        REQUIRE(scroll);
+        // The content reflows to the dock's width: nothing to scroll sideways to.
+        CHECK(scroll->horizontalScrollBar()->maximum() == 0);
+        const auto visible = [&] { return QRect(scroll->viewport()->mapTo(window.get(), QPoint(0, 0)), scroll->viewport()->size()); };
+        CHECK(inWindow(dock, window.get()).contains(visible()));
+        // The warp plot takes the width.
+        auto* plot = scroll->widget()->findChild<QWidget*>(QStringLiteral("warpPlot"));
+        REQUIRE(plot);
+        CHECK(plot->width() >= scroll->viewport()->width() - 24);
+        CHECK(visible().left() <= inWindow(plot, window.get()).left());
+        CHECK(inWindow(plot, window.get()).right() <= visible().right());
+        // Each button (and the snap box) scrolled into view vertically only, as a user scrolls
+        // down the dock: whole inside the visible area.
+        QList<QAbstractButton*> buttons;
+        for (auto* button : scroll->widget()->findChildren<QPushButton*>()) buttons << button;
+        buttons << scroll->widget()->findChild<QCheckBox*>();
+        CHECK(buttons.size() >= 9);
+        for (QAbstractButton* button : buttons) {
+            REQUIRE(button);
+            INFO("button \"" << button->text().toStdString() << "\"");
+            CHECK(button->isVisible());
+            const int top = button->mapTo(scroll->widget(), QPoint(0, 0)).y();
+            scroll->verticalScrollBar()->setValue(std::max(0, top + button->height() - scroll->viewport()->height() + 4));
+            QCoreApplication::processEvents();
+            const QRect shown = inWindow(button, window.get());
+            INFO("at " << shown.x() << "," << shown.y() << " " << shown.width() << "x" << shown.height() << " in " << visible().x() << ","
+                       << visible().y() << " " << visible().width() << "x" << visible().height());
+            CHECK(visible().contains(shown));
+            // Its text is not cut: the button is as wide as it asks to be.
+            CHECK(button->width() >= button->sizeHint().width());
+        }
+        scroll->verticalScrollBar()->setValue(0);
+    }
 }
