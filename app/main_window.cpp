@@ -516,7 +516,9 @@ QVariantMap MainWindow::viewState() const
             {"dof", m_graphs->selectedDof()},
             {"camera", m_viewportPanel->cameraState()},
             {"weightEmotion", m_analysis->weightEmotion()},
-            {"speed", m_timeline->speed()}};
+            {"speed", m_timeline->speed()},
+            // The docks' places and sizes (QMainWindow::saveState), so the project reopens as laid out.
+            {"windowState", QString::fromLatin1(saveState(kLayoutVersion).toBase64())}};
 }
 
 void MainWindow::restoreViewState(const QVariantMap& state)
@@ -531,6 +533,12 @@ void MainWindow::restoreViewState(const QVariantMap& state)
     if (state.contains("weightEmotion")) m_analysis->setWeightEmotion(state["weightEmotion"].toString());
     if (state.contains("graphLayout")) m_graphs->setGraphLayout(widgets::GraphLayout(state["graphLayout"].toInt()));
     if (state.contains("speed")) m_timeline->setSpeed(state["speed"].toDouble());
+    if (state.contains("windowState")) {
+        // A value that is not base64 or not a state of this layout version is ignored.
+        const auto decoded = QByteArray::fromBase64Encoding(state["windowState"].toString().toLatin1(),
+                                                            QByteArray::AbortOnBase64DecodingErrors);
+        if (decoded && restoreState(*decoded, kLayoutVersion)) m_columns->adoptLayoutNow();
+    }
 }
 
 void MainWindow::closeEvent(QCloseEvent* event)

@@ -27,6 +27,7 @@ using nlohmann::json;
 
 constexpr qint64 kMaxProjectBytes = 64 * 1024 * 1024;
 constexpr int kMaxImported = 10000;
+constexpr qsizetype kMaxWindowStateChars = 64 * 1024; ///< a window's dock layout is a few kB
 /// The view values the main window stores, with their ranges (MainWindow::viewState).
 struct ViewRange {
     const char* key;
@@ -216,6 +217,14 @@ analysis::Result<ProjectState> parseProject(const QByteArray& text, const QStrin
                                        "\"distance\": cm in 10..5000, \"target\": [x, y, z] cm, \"fov\": deg in 1..170}");
     }
     state.view = viewObject.toVariantMap();
+    // The window's dock layout (base64 of QMainWindow::saveState): a malformed one is ignored,
+    // the project still opens (the layout as it is).
+    if (state.view.contains("windowState")) {
+        const QJsonValue layout = viewObject["windowState"];
+        const bool valid = layout.isString() && layout.toString().size() <= kMaxWindowStateChars &&
+                           QByteArray::fromBase64Encoding(layout.toString().toLatin1(), QByteArray::AbortOnBase64DecodingErrors);
+        if (!valid) state.view.remove("windowState");
+    }
     return state;
 }
 

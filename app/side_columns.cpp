@@ -19,7 +19,9 @@ std::vector<QDockWidget*> docksIn(QMainWindow& window, Qt::DockWidgetArea area)
 {
     std::vector<QDockWidget*> docks;
     for (QDockWidget* dock : window.findChildren<QDockWidget*>(QString(), Qt::FindDirectChildrenOnly))
-        if (dock->isVisible() && !dock->isFloating() && window.dockWidgetArea(dock) == area) docks.push_back(dock);
+        // (A tab behind another in a restored layout is "visible" but placed outside the window.)
+        if (dock->isVisible() && !dock->isFloating() && window.dockWidgetArea(dock) == area && dock->geometry().intersects(window.rect()))
+            docks.push_back(dock);
     return docks;
 }
 
@@ -52,6 +54,14 @@ void SideColumns::reset()
 {
     m_leftWidth = 0;
     m_adopt = false;
+    m_windowSize = QSize();
+    QTimer::singleShot(0, this, &SideColumns::keepLeftWidth);
+}
+
+void SideColumns::adoptLayoutNow()
+{
+    m_leftWidth = 0;
+    m_adopt = true;
     m_windowSize = QSize();
     QTimer::singleShot(0, this, &SideColumns::keepLeftWidth);
 }

@@ -27,6 +27,8 @@ public:
     void reset();
     /// Keeps the width a restored layout gives the column (the layout saved at the last quit).
     void adoptRestoredLayout() { m_adopt = true; }
+    /// Keeps the width a layout restored now gives the column (a project's), once laid out.
+    void adoptLayoutNow();
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;

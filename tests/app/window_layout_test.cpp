@@ -1,6 +1,7 @@
 // The window on small screens: at 1280 x 720 and 1366 x 768 every dock's content lies inside the
 // window (between the menu bar and the status bar, overlapping no other dock) at a useful size;
-// the splitter between the 3D view and the graphs widens the view.
+// the splitter between the 3D view and the graphs widens the view; the Design dock's buttons are
+// whole inside its visible area; a project brings back the dock layout it was saved with.
 #include "tests/app/app_test_support.h"
 
 #include "app/viewport_panel.h"
@@ -164,5 +165,65 @@ TEST_CASE("at 1280x720 and 1366x768 every button of the Design dock is whole ins
             CHECK(button->width() >= button->sizeHint().width());
         }
         scroll->verticalScrollBar()->setValue(0);
+    }
+}
+
+TEST_CASE("a project reopens with its dock layout; a malformed layout in it is ignored", "[app][layout][project]")
+{
+    const auto folder = test::scratchDir("project-layout");
+    const QString file = QString::fromStdString((folder / "layout.bunraku.json").string());
+    const auto leftWidth = [](app::MainWindow& window) { return window.dock("corpusDock")->width(); };
+    const auto settle = [] {
+        for (int pass = 0; pass < 6; ++pass) QCoreApplication::processEvents();
+    };
+    int saved = 0;
+    {
+        auto window = test::demoWindow();
+        REQUIRE(window);
+        window->resetLayout();
+        resizeTo(*window, QSize(1366, 768));
+        window->resizeDocks({window->dock("corpusDock")}, {557}, Qt::Horizontal);
+        settle();
+        saved = leftWidth(*window); // as wide as the other docks' minimum widths let it be
+        CHECK(saved >= 440);
+        REQUIRE(window->files().saveProject(file));
+    }
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    window->resetLayout();
+    resizeTo(*window, QSize(1366, 768));
+    const int fresh = leftWidth(*window);
+    INFO("fresh " << fresh << " saved " << saved);
+    REQUIRE(fresh < saved - 100);
+    REQUIRE(window->files().openProject(file));
+    settle();
+    CHECK(leftWidth(*window) == Approx(saved).margin(4));
+    // The restored width is the one kept when the window is resized.
+    resizeTo(*window, QSize(1500, 900));
+    CHECK(leftWidth(*window) == Approx(saved).margin(4));
+    resizeTo(*window, QSize(1366, 768));
+
+    // A layout that is not base64, or base64 of no layout: the project opens, the layout stays.
+    window->resetLayout();
+    settle();
+    const int before = leftWidth(*window);
+    QFile project(file);
+    REQUIRE(project.open(QIODevice::ReadOnly));
+    QJsonObject root = QJsonDocument::fromJson(project.readAll()).object();
+    project.close();
+    for (const QString& malformed : {QStringLiteral("not base64 at all!"), QStringLiteral("QUJDREVGRw==")}) {
+        INFO(malformed.toStdString());
+        QJsonObject view = root["view"].toObject();
+        view["windowState"] = malformed;
+        root["view"] = view;
+        const QString broken = QString::fromStdString((folder / "broken.bunraku.json").string());
+        QFile out(broken);
+        REQUIRE(out.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        out.write(QJsonDocument(root).toJson());
+        out.close();
+        REQUIRE(window->files().openProject(broken));
+        settle();
+        CHECK(leftWidth(*window) == Approx(before).margin(4));
+        for (QDockWidget* dock : window->docks()) CHECK(dock->isVisible());
     }
 }
