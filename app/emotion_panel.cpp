@@ -1,5 +1,7 @@
 #include "app/emotion_panel.h"
 
+#include "app/analysis_scope_notice.h"
+
 #include "app/analysis_controller.h"
 #include "app/commands.h"
 
@@ -69,6 +71,7 @@ EmotionPanel::EmotionPanel(Document& document, AnalysisController& analysis, QWi
     form->setRowWrapPolicy(QFormLayout::WrapLongRows);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
+    layout->addWidget(new AnalysisScopeNotice(m_document, this));
     layout->addLayout(form);
     layout->addWidget(m_label);
     layout->addWidget(show);

@@ -1,5 +1,7 @@
 #include "app/normalise_panel.h"
 
+#include "app/analysis_scope_notice.h"
+
 #include "app/commands.h"
 #include "app/analysis_controller.h"
 #include "app/variance_tree.h"
@@ -113,6 +115,7 @@ NormalisePanel::NormalisePanel(Document& document, AnalysisController& analysis,
     form->addRow(tr("Path"), m_path);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
+    layout->addWidget(new AnalysisScopeNotice(m_document, this));
     layout->addLayout(form);
     layout->addWidget(m_summary);
     layout->addWidget(m_table, 1);
