@@ -10,6 +10,7 @@
 
 #include "analysis/normalise/coupling.h"
 #include "analysis/pipeline/parameters_json.h"
+#include "analysis/pipeline/stage_parameters.h"
 
 #include <qcustomplot.h>
 
@@ -60,15 +61,17 @@ NormalisePanel::NormalisePanel(Document& document, AnalysisController& analysis,
     m_reference->setObjectName("normaliseReference");
     m_tau = new widgets::BoundedSpinBox(this);
     m_tau->setObjectName("normaliseTau");
-    m_tau->setRange(0, 20);
+    // The limits every parameter is validated against (projects, the command line): the panel can
+    // show every valid value.
+    m_tau->setRange(0, analysis::pipeline::kMaxTau);
     m_tau->setSuffix(tr(" frames"));
     m_band = new widgets::BoundedSpinBox(this);
     m_band->setObjectName("normaliseSearchBand");
-    m_band->setRange(1, 60);
+    m_band->setRange(0, analysis::pipeline::kMaxSearchBand);
     m_band->setSuffix(tr(" frames"));
     m_scales = new widgets::BoundedSpinBox(this);
     m_scales->setObjectName("normaliseMaxScale");
-    m_scales->setRange(1, 32);
+    m_scales->setRange(1, analysis::pipeline::kMaxScale);
     m_coupling = new QComboBox(this);
     m_coupling->setObjectName("normaliseCoupling");
     m_coupling->setEditable(true);
