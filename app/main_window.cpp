@@ -356,7 +356,7 @@ void MainWindow::refreshTakes()
     const TakePointer takeA = m_document->selectedTake(TakeSlot::A);
     const TakePointer takeB = m_document->selectedTake(TakeSlot::B);
     m_browser->setChosen(m_document->selectedId(TakeSlot::A), m_document->selectedId(TakeSlot::B));
-    m_graphs->grid()->setGhost(m_document->ghostOf(m_document->selectedId(TakeSlot::A)));
+    m_graphs->setGhost(m_document->ghostOf(m_document->selectedId(TakeSlot::A)));
     m_graphs->setTakes(takeA, takeB, m_document->selectedId(TakeSlot::A) + QLatin1Char('|') + m_document->selectedId(TakeSlot::B));
     m_inspector->setTakes(takeA, takeB);
     m_timeline->setDuration(m_document->duration(), m_document->rateHz());
@@ -511,6 +511,7 @@ QVariantMap MainWindow::viewState() const
     return {{"graphLayout", int(m_graphs->grid()->graphLayout())},
             {"twoTakeMode", int(m_graphs->grid()->twoTakeMode())},
             {"valueScale", int(m_graphs->grid()->valueScale())},
+            {"angleDisplay", int(m_graphs->angleDisplay())},
             {"thesisTicks", m_graphs->grid()->thesisTicks()},
             {"part", m_graphs->selectedPart()},
             {"dof", m_graphs->selectedDof()},
@@ -527,6 +528,7 @@ void MainWindow::restoreViewState(const QVariantMap& state)
     if (state.contains("twoTakeMode")) m_graphs->setTwoTakeMode(widgets::TwoTakeMode(state["twoTakeMode"].toInt()));
     if (state.contains("valueScale")) m_graphs->setValueScale(widgets::ValueScale(state["valueScale"].toInt()));
     if (state.contains("thesisTicks")) m_graphs->setThesisTicks(state["thesisTicks"].toBool());
+    if (state.contains("angleDisplay")) m_graphs->setAngleDisplay(widgets::AngleDisplay(state["angleDisplay"].toInt()));
     if (state.contains("part")) m_graphs->selectPart(state["part"].toString());
     if (state.contains("dof")) m_graphs->selectDof(state["dof"].toString());
     if (state.contains("camera")) m_viewportPanel->setCameraState(state["camera"].toMap());

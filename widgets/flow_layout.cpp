@@ -1,13 +1,15 @@
 #include "widgets/flow_layout.h"
 
-#include <QStyle>
 #include <QWidget>
 
 #include <algorithm>
 
 namespace bunraku::widgets {
 
-FlowLayout::FlowLayout(QWidget* parent, int spacing) : QLayout(parent), m_spacing(spacing) {}
+FlowLayout::FlowLayout(QWidget* parent, int spacing) : QLayout(parent), m_gap(spacing)
+{
+    setContentsMargins(0, 0, 0, 0);
+}
 
 FlowLayout::~FlowLayout()
 {
@@ -16,66 +18,72 @@ FlowLayout::~FlowLayout()
 
 void FlowLayout::addItem(QLayoutItem* item) { m_items.append(item); }
 
-QLayoutItem* FlowLayout::itemAt(int index) const { return index >= 0 && index < m_items.size() ? m_items[index] : nullptr; }
+QLayoutItem* FlowLayout::itemAt(int index) const { return index >= 0 && index < m_items.size() ? m_items.at(index) : nullptr; }
 
 QLayoutItem* FlowLayout::takeAt(int index) { return index >= 0 && index < m_items.size() ? m_items.takeAt(index) : nullptr; }
 
-int FlowLayout::itemSpacing() const
-{
-    if (m_spacing >= 0) return m_spacing;
-    const QWidget* owner = parentWidget();
-    return owner ? owner->style()->pixelMetric(QStyle::PM_LayoutHorizontalSpacing, nullptr, owner) : 6;
-}
-
-int FlowLayout::heightForWidth(int width) const { return place(QRect(0, 0, width, 0), false); }
-
-QSize FlowLayout::minimumSize() const
-{
-    // The widest item: every other item goes on a row of its own below it.
-    QSize size;
-    for (const QLayoutItem* item : m_items) size = size.expandedTo(item->minimumSize().expandedTo(item->sizeHint()));
-    const QMargins margins = contentsMargins();
-    return size + QSize(margins.left() + margins.right(), margins.top() + margins.bottom());
-}
+int FlowLayout::heightForWidth(int width) const { return arrange(QRect(0, 0, width, 0), false); }
 
 QSize FlowLayout::sizeHint() const
 {
-    // Everything on one row.
-    int width = 0, height = 0;
+    // One row of everything: what the layout asks for when there is room.
+    int width = 0;
+    int height = 0;
     for (const QLayoutItem* item : m_items) {
         if (item->isEmpty()) continue;
-        width += (width > 0 ? itemSpacing() : 0) + item->sizeHint().width();
+        width += item->sizeHint().width() + (width > 0 ? m_gap : 0);
         height = std::max(height, item->sizeHint().height());
     }
     const QMargins margins = contentsMargins();
     return QSize(width + margins.left() + margins.right(), height + margins.top() + margins.bottom());
 }
 
+QSize FlowLayout::minimumSize() const
+{
+    // The widest single item: narrower than that nothing can be placed whole.
+    QSize size;
+    for (const QLayoutItem* item : m_items)
+        if (!item->isEmpty()) size = size.expandedTo(item->minimumSize().expandedTo(item->sizeHint()));
+    const QMargins margins = contentsMargins();
+    return size + QSize(margins.left() + margins.right(), margins.top() + margins.bottom());
+}
+
 void FlowLayout::setGeometry(const QRect& rect)
 {
     QLayout::setGeometry(rect);
-    place(rect, true);
+    arrange(rect, true);
 }
 
-int FlowLayout::place(const QRect& rect, bool apply) const
+int FlowLayout::rowCount(int width) const
 {
-    const QMargins margins = contentsMargins();
-    const QRect area = rect.marginsRemoved(margins);
-    const int spacing = itemSpacing();
-    int x = area.x(), y = area.y(), rowHeight = 0;
+    int rows = 0;
+    arrange(QRect(0, 0, width, 0), false, &rows);
+    return rows;
+}
+
+int FlowLayout::arrange(const QRect& rect, bool apply, int* rows) const
+{
+    const QRect area = rect.marginsRemoved(contentsMargins());
+    int x = area.x();
+    int y = area.y();
+    int rowHeight = 0;
+    int rowsUsed = 0;
     for (QLayoutItem* item : m_items) {
         if (item->isEmpty()) continue;
-        // At its preferred size, never wider than the row.
-        const QSize size(std::min(item->sizeHint().width(), std::max(1, area.width())), item->sizeHint().height());
-        if (x > area.x() && x + size.width() > area.right() + 1) { // wrap
+        const QSize size = item->sizeHint();
+        if (rowsUsed == 0) rowsUsed = 1;
+        if (x > area.x() && x + size.width() > area.right() + 1) { // the next row
             x = area.x();
-            y += rowHeight + spacing;
+            y += rowHeight + m_gap;
             rowHeight = 0;
+            ++rowsUsed;
         }
-        if (apply) item->setGeometry(QRect(QPoint(x, y), size));
-        x += size.width() + spacing;
+        if (apply) item->setGeometry(QRect(QPoint(x, y), QSize(std::min(size.width(), area.width()), size.height())));
+        x += size.width() + m_gap;
         rowHeight = std::max(rowHeight, size.height());
     }
+    if (rows) *rows = rowsUsed;
+    const QMargins margins = contentsMargins();
     return y + rowHeight - rect.y() + margins.bottom();
 }
 

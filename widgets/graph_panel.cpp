@@ -1,11 +1,14 @@
 #include "widgets/graph_panel.h"
 
+#include "widgets/flow_layout.h"
+
+#include "analysis/core/angle_channels.h"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QSignalBlocker>
-#include <QToolBar>
 #include <QVBoxLayout>
 
 namespace bunraku::widgets {
@@ -43,6 +46,15 @@ GraphPanel::GraphPanel(QWidget* parent) : QWidget(parent), m_grid(new GraphGrid(
     m_scale->setObjectName("valueScale");
     m_scale->addItem(tr("Scale per graph"), int(ValueScale::PerGraph));
     m_scale->addItem(tr("Scale per DOF"), int(ValueScale::PerDof));
+    m_angles = new QComboBox(this);
+    m_angles->setObjectName("angleDisplay");
+    m_angles->addItem(tr("Euler angles"), int(AngleDisplay::Euler));
+    m_angles->addItem(tr("Rotation coordinates"), int(AngleDisplay::RotationCoordinates));
+    m_angles->setToolTip(tr("How the yaw, pitch and roll graphs show orientations: as the take's Z-Y'-X'' Euler angles, or as "
+                            "rotation coordinates - the turn from the part's mean orientation in take A, as a rotation vector in "
+                            "degrees about the vertical (yaw), lateral (pitch) and forward (roll) axes - which never wind or jump "
+                            "near pitch +-90 deg, where Euler yaw and roll sweep far for a small turn. The analyses always "
+                            "compute on rotation coordinates."));
     m_thesisTicks = new QCheckBox(tr("Thesis ticks"), this);
     m_thesisTicks->setObjectName("thesisTicks");
     m_thesisTicks->setToolTip(tr("Value ticks every 10 units and time ticks every 2 s, as the thesis's graphs"));
@@ -52,16 +64,18 @@ GraphPanel::GraphPanel(QWidget* parent) : QWidget(parent), m_grid(new GraphGrid(
 
     m_mode->setToolTip(tr("How take B is shown beside take A"));
     m_scale->setToolTip(tr("Each graph fits its own values, or graphs of one DOF share their range"));
-    // A tool bar: in a narrow dock the controls that do not fit move behind its extension
-    // button instead of widening the dock.
-    auto* controls = new QToolBar(this);
+    // The controls flow onto more rows in a narrow dock: every one stays reachable, and the
+    // dock does not widen (a tool bar's extension menu cannot show combo and check boxes).
+    auto* controls = new QWidget(this);
     controls->setObjectName("graphToolBar");
-    for (QWidget* widget : std::initializer_list<QWidget*>{m_layout, m_part, m_dof, m_mode, m_scale, m_thesisTicks}) controls->addWidget(widget);
+    auto* flow = new FlowLayout(controls);
+    flow->setContentsMargins(4, 2, 4, 2);
+    for (QWidget* widget : std::initializer_list<QWidget*>{m_layout, m_part, m_dof, m_mode, m_scale, m_angles, m_thesisTicks}) flow->addWidget(widget);
     const QString help = tr("drag: scrub   wheel: zoom   Shift+drag: pan   double click: whole take");
     auto* hint = new QLabel(help, this);
     hint->setEnabled(false);
     hint->setContentsMargins(8, 0, 0, 0);
-    controls->addWidget(hint);
+    flow->addWidget(hint);
     m_grid->setToolTip(help);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
@@ -76,6 +90,7 @@ GraphPanel::GraphPanel(QWidget* parent) : QWidget(parent), m_grid(new GraphGrid(
     connect(m_scale, &QComboBox::currentIndexChanged, this,
             [this] { m_grid->setValueScale(ValueScale(m_scale->currentData().toInt())); });
     connect(m_thesisTicks, &QCheckBox::toggled, m_grid, &GraphGrid::setThesisTicks);
+    connect(m_angles, &QComboBox::currentIndexChanged, this, [this] { showTakes({}); });
     connect(m_part, &QComboBox::currentIndexChanged, this, &GraphPanel::applySelection);
     connect(m_dof, &QComboBox::currentIndexChanged, this, &GraphPanel::applySelection);
 }
@@ -96,7 +111,34 @@ void GraphPanel::setTakes(std::shared_ptr<const analysis::Take> takeA, std::shar
     refill(m_part, parts);
     refill(m_dof, dofs);
     m_grid->setSelectedChannel(selectedPart().toStdString(), selectedDof().toStdString());
-    m_grid->setTakes(std::move(takeA), std::move(takeB), identity);
+    m_takeA = std::move(takeA);
+    m_takeB = std::move(takeB);
+    showTakes(identity);
+}
+
+void GraphPanel::setGhost(std::shared_ptr<const analysis::Take> ghost)
+{
+    m_ghost = std::move(ghost);
+    m_grid->setGhost(shown(m_ghost));
+}
+
+void GraphPanel::setAngleDisplay(AngleDisplay display) { m_angles->setCurrentIndex(m_angles->findData(int(display))); }
+
+AngleDisplay GraphPanel::angleDisplay() const { return AngleDisplay(m_angles->currentData().toInt()); }
+
+std::shared_ptr<const analysis::Take> GraphPanel::shown(const std::shared_ptr<const analysis::Take>& take) const
+{
+    if (!take || angleDisplay() == AngleDisplay::Euler) return take;
+    // Every take about take A's mean part orientations, so A, B and the ghost share one base.
+    return std::make_shared<const analysis::Take>(analysis::rotationCoordinateTake(*take, m_takeA.get()));
+}
+
+void GraphPanel::showTakes(const QString& identity)
+{
+    m_shownA = shown(m_takeA);
+    m_shownB = shown(m_takeB);
+    m_grid->setGhost(shown(m_ghost));
+    m_grid->setTakes(m_shownA, m_shownB, identity);
 }
 
 void GraphPanel::setGraphLayout(GraphLayout layout) { m_layout->setCurrentIndex(m_layout->findData(int(layout))); }

@@ -1,7 +1,8 @@
 #pragma once
 /// The graph grid with its controls: layout (all / one part / one DOF / single), the part and
 /// DOF those layouts show, the two-take mode (overlay / side by side), the value scaling and the
-/// thesis's ticks (10-unit value ticks, 2 s time ticks).
+/// thesis's ticks (10-unit value ticks, 2 s time ticks), and the angles as Euler angles or rotation
+/// coordinates.
 
 #include "widgets/graph_grid.h"
 
@@ -11,6 +12,12 @@ class QCheckBox;
 class QComboBox;
 
 namespace bunraku::widgets {
+
+/// How the graphs show the yaw, pitch and roll channels of 6-DOF parts.
+enum class AngleDisplay {
+    Euler,               ///< the take's Euler angles, as stored
+    RotationCoordinates, ///< analysis::rotationCoordinateTake about take A's mean orientations
+};
 
 class GraphPanel : public QWidget {
     Q_OBJECT
@@ -23,6 +30,15 @@ public:
     /// `identity` names the shown takes (GraphGrid::setTakes: other takes refit the time axis).
     void setTakes(std::shared_ptr<const analysis::Take> takeA, std::shared_ptr<const analysis::Take> takeB,
                   const QString& identity = {});
+    /// The take drawn faintly behind A (GraphGrid::setGhost), shown as the angles are.
+    void setGhost(std::shared_ptr<const analysis::Take> ghost);
+    /// The "Angles" choice: Euler angles, or rotation coordinates (which never wind or jump at
+    /// gimbal); the same takes are shown again with the zoom kept.
+    void setAngleDisplay(AngleDisplay display);
+    AngleDisplay angleDisplay() const;
+    /// What the grid draws as take A / B (the takes given, or their rotation-coordinate copies).
+    std::shared_ptr<const analysis::Take> shownTakeA() const { return m_shownA; }
+    std::shared_ptr<const analysis::Take> shownTakeB() const { return m_shownB; }
     void setGraphLayout(GraphLayout layout);
     void setTwoTakeMode(TwoTakeMode mode);
     void setValueScale(ValueScale scale);
@@ -37,6 +53,10 @@ public:
 
 private:
     void applySelection();
+    /// The take as the angle choice shows it.
+    std::shared_ptr<const analysis::Take> shown(const std::shared_ptr<const analysis::Take>& take) const;
+    /// Passes the takes to the grid as the angle choice shows them.
+    void showTakes(const QString& identity);
 
     GraphGrid* m_grid = nullptr;
     QComboBox* m_layout = nullptr;
@@ -44,7 +64,10 @@ private:
     QComboBox* m_dof = nullptr;
     QComboBox* m_mode = nullptr;
     QComboBox* m_scale = nullptr;
+    QComboBox* m_angles = nullptr;
     QCheckBox* m_thesisTicks = nullptr;
+    std::shared_ptr<const analysis::Take> m_takeA, m_takeB, m_ghost; ///< as given
+    std::shared_ptr<const analysis::Take> m_shownA, m_shownB;         ///< as drawn
 };
 
 } // namespace bunraku::widgets

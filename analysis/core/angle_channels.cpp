@@ -51,6 +51,23 @@ std::vector<Eigen::Quaterniond> partRotations(const Take& take, const SixDofPart
     return rotations;
 }
 
+Take rotationCoordinateTake(const Take& take, const Take* reference)
+{
+    const auto parts = sixDofParts(take);
+    if (reference) {
+        const auto referenceParts = sixDofParts(*reference);
+        const bool same = referenceParts.size() == parts.size() &&
+                          std::equal(parts.begin(), parts.end(), referenceParts.begin(),
+                                     [](const SixDofPart& a, const SixDofPart& b) { return a.part == b.part; });
+        if (!same || reference->frameCount() == 0) reference = nullptr;
+    }
+    Take out = take;
+    if (parts.empty() || take.frameCount() == 0) return out;
+    const RotationChart chart = meanPartChart({reference ? reference : &take});
+    out.values = rotationCoordinates(take, chart);
+    return out;
+}
+
 RotationChart meanPartChart(const std::vector<const Take*>& takes, ChartTime time)
 {
     RotationChart chart;

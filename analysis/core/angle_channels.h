@@ -71,6 +71,13 @@ Eigen::MatrixXd rotationCoordinates(const Take& take, const RotationChart& chart
 Eigen::MatrixXd eulerFromRotationCoordinates(const Take& layout, const Eigen::MatrixXd& coordinates, const RotationChart& chart,
                                              const std::optional<Eigen::RowVectorXd>& firstAngles = std::nullopt);
 
+/// A copy of `take` whose 6-DOF parts' angle columns hold rotation coordinates (degrees,
+/// continuous, never winding or jumping at gimbal) about the mean orientation of `reference`'s
+/// parts (meanPartChart, Constant) - so two takes shown together share one base - or about the
+/// take's own when `reference` is null or has other 6-DOF parts. What the graphs show with
+/// "Angles: rotation coordinates". Positions are copied.
+Take rotationCoordinateTake(const Take& take, const Take* reference = nullptr);
+
 /// The discontinuity (Euler) filter: every 6-DOF part's angle triple replaced, frame by frame,
 /// by the equivalent triple (whole turns, mirrored pitch) nearest the previous frame's
 /// (nearestEquivalent); the first frame is kept. The orientations are unchanged. Returns the

@@ -119,6 +119,7 @@ TEST_CASE("a saved project reopens to the same state", "[app][files]")
         document.setCurrentTime(5.4);
         window->graphPanel()->selectPart(QStringLiteral("arm"));
         window->graphPanel()->setTwoTakeMode(widgets::TwoTakeMode::SideBySide);
+        window->graphPanel()->setAngleDisplay(widgets::AngleDisplay::RotationCoordinates);
         REQUIRE(window->graphPanel()->grid()->graphCount() == 12);
         REQUIRE(window->isWindowModified());
         REQUIRE(window->files().saveProject(project));
@@ -138,6 +139,8 @@ TEST_CASE("a saved project reopens to the same state", "[app][files]")
     REQUIRE(importedTakes(document)[0].sourcePath == takeFile);
     REQUIRE(window->graphPanel()->selectedPart() == QStringLiteral("arm"));
     REQUIRE(window->graphPanel()->grid()->graphCount() == 12);
+    REQUIRE(window->graphPanel()->angleDisplay() == widgets::AngleDisplay::RotationCoordinates);
+    REQUIRE(window->graphPanel()->shownTakeA() != document.selectedTake(TakeSlot::A)); // the coordinates' copy
     REQUIRE(window->files().projectPath() == project);
     REQUIRE_FALSE(window->isWindowModified());
 }

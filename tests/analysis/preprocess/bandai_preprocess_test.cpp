@@ -8,6 +8,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <numbers>
+
 using namespace bunraku::analysis;
 using namespace bunraku::analysis::preprocess;
 using bunraku::test::bandaiAvailable;
@@ -93,4 +96,36 @@ TEST_CASE("the full skeleton goes through every preprocessing step with its take
         }
         CHECK(worst < 1e-6);
     }
+}
+
+TEST_CASE("as rotation coordinates the preprocessed Bandai waves step no further than their parts turn", "[angles][display]")
+{
+    if (!bandaiAvailable(bunraku::test::bandaiWaveFiles())) return;
+    auto result = preprocessCorpus(bunraku::test::bandaiWaveCorpus());
+    REQUIRE(result.ok());
+    const Take& first = result->corpus.takes.front();
+    double eulerWorst = 0.0;
+    for (const Take& take : result->corpus.takes) {
+        INFO(take.displayName());
+        // Shown about the first take's mean orientations, as the graphs show take B beside A.
+        const Take shown = rotationCoordinateTake(take, &first);
+        CHECK((shown.values.leftCols(3) - take.values.leftCols(3)).cwiseAbs().maxCoeff() == 0.0);
+        const RotationChart chart = meanPartChart({&first});
+        CHECK(shown.values == rotationCoordinates(take, chart));
+        for (const auto& part : sixDofParts(take)) {
+            const auto turns = partRotations(take, part);
+            for (Eigen::Index f = 1; f < take.frameCount(); ++f) {
+                const double turn = rotationDistance(turns[std::size_t(f - 1)], turns[std::size_t(f)]) * 180.0 / std::numbers::pi;
+                const auto step = [&](const Take& t) {
+                    return (t.values.block(f, part.firstChannel + 3, 1, 3) - t.values.block(f - 1, part.firstChannel + 3, 1, 3)).norm();
+                };
+                eulerWorst = std::max(eulerWorst, step(take) - turn);
+                // A rotation vector of length r about its base moves at most (r/2) / sin(r/2) times
+                // as far as the orientation turns: below pi/2 = 1.571 for |r| <= 180 deg.
+                CHECK(step(shown) <= 1.6 * turn + 1e-9);
+            }
+        }
+    }
+    // The Euler numbers of the same frames sweep much further than the turn (gimbal regions).
+    CHECK(eulerWorst > 45.0);
 }
