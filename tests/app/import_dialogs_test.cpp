@@ -199,7 +199,7 @@ TEST_CASE("files and folders dropped on the new-corpus dialog join its table", "
     CHECK(dialog.outputFolder() == QString::fromStdString((dir / "corpus").string()));
 }
 
-TEST_CASE("new corpus from files: a file that is not a take keeps the dialog open with all input; rows are removed with Delete",
+TEST_CASE("new corpus from files: a file that is not a take keeps the dialog open with all input, and rows are removed with Delete",
           "[app][import]")
 {
     auto window = test::demoWindow();

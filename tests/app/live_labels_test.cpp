@@ -187,7 +187,7 @@ TEST_CASE("a neutral take is weighted against the emotion picked, an emotional o
     CHECK(picker->currentText() == QStringLiteral("hostile"));
 }
 
-TEST_CASE("the designed take's label names its warp, gains and phrases; the axis take names and counts the take it was computed from",
+TEST_CASE("the designed take's label names its warp, gains and phrases, and the axis take names and counts the take it was computed from",
           "[app][labels][design]")
 {
     auto window = test::demoWindow();

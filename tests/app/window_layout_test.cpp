@@ -189,7 +189,7 @@ TEST_CASE("at 1280x720 and 1366x768 every button of the Design dock is whole ins
     }
 }
 
-TEST_CASE("a project reopens with its dock layout; a malformed layout in it is ignored", "[app][layout][project]")
+TEST_CASE("a project reopens with its dock layout and ignores a malformed one", "[app][layout][project]")
 {
     const auto folder = test::scratchDir("project-layout");
     const QString file = QString::fromStdString((folder / "layout.bunraku.json").string());
