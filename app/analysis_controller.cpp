@@ -269,7 +269,10 @@ void AnalysisController::publishNormalised()
 
 void AnalysisController::synthesiseWeighted()
 {
-    if (!m_decomposed || m_function.empty()) return;
+    // As publishNormalised: the weighted take shown as A announces a new selection when it is
+    // replaced, which must not synthesise it again.
+    if (m_publishing || !m_decomposed || m_function.empty()) return;
+    const QScopedValueRollback<bool> publishing(m_publishing, true);
     const auto [function, emotion] = weightedCell();
     const double weight = m_document.parameters().design.emotionWeight;
     auto take = pl::weightedTake(*m_decomposed, function, emotion, weight);

@@ -92,7 +92,8 @@ struct SkeletalMotion {
     /// frames x joints (all of Skeleton::joints, End Sites identity): parent_R_joint of joint j
     /// at frame f is rotations[f * joints + j].
     std::vector<Eigen::Quaterniond> rotations;
-    /// Per joint: its local translation when it does not change over the take (cm).
+    /// Per joint: its local translation when it does not change over the take (cm); for a joint
+    /// in movingJoints, its translation at the first frame.
     std::vector<Eigen::Vector3d> staticTranslations;
     /// Joints whose local translation changes from frame to frame (the root, usually).
     std::vector<int> movingJoints;

@@ -250,7 +250,7 @@ Result<std::shared_ptr<const SkeletalMotion>> bvhToSkeletalMotion(const BvhFile&
     // A joint moves when one of its position channels changes over the take.
     auto motion = std::make_shared<SkeletalMotion>();
     motion->skeleton = skeleton;
-    motion->staticTranslations.resize(slots);
+    motion->staticTranslations.assign(slots, Eigen::Vector3d::Zero()); // a take of no frames keeps zeros
     for (std::size_t j = 0; j < slots; ++j) {
         const BvhJoint& joint = file.skeleton.joints[j];
         bool moving = false;
@@ -301,7 +301,8 @@ Result<std::shared_ptr<const SkeletalMotion>> bvhToSkeletalMotion(const BvhFile&
             }
             rotations[std::size_t(f) * slots] = (world_R_file * rotation * file_R_world).normalized();
             if (moving) motion->movingTranslations.block<1, 3>(f, 3 * movingSlot[j]) = (C * (scale * translation)).transpose();
-            else if (f == 0) motion->staticTranslations[j] = C * (scale * translation);
+            // A moving joint's static translation is its first frame's (what the skeleton file shows).
+            if (f == 0) motion->staticTranslations[j] = C * (scale * translation);
         }
     }
     if (auto valid = validateSkeletalMotion(*motion); !valid)

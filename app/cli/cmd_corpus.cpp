@@ -6,6 +6,7 @@
 #include "analysis/io/corpus_io.h"
 
 #include <filesystem>
+#include <algorithm>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -68,12 +69,20 @@ void runCorpus(const CorpusArguments& arguments)
     }
     std::cout << "corpus '" << corpus.name << "': " << corpus.takes.size() << " takes, " << corpus.functions().size() << " function(s), "
               << corpus.emotions().size() << " emotion(s), " << corpus.rateHz << " Hz -> " << arguments.output << "\n";
-    std::cout << "  " << std::left << std::setw(40) << "file" << std::setw(20) << "function" << std::setw(12) << "emotion" << std::right
-              << std::setw(5) << "take" << std::setw(8) << "frames" << std::setw(8) << "Hz" << "  part map\n";
+    // Columns as wide as their longest entry (and two spaces apart), so long names never run together.
+    std::size_t fileWidth = 4, functionWidth = 8, emotionWidth = 7;
+    for (const auto& f : build.files) {
+        fileWidth = std::max(fileWidth, f.file.filename().string().size());
+        functionWidth = std::max(functionWidth, f.labels.function.size());
+        emotionWidth = std::max(emotionWidth, f.labels.emotion.size());
+    }
+    const auto left = [](std::size_t width) { return std::setw(int(width + 2)); };
+    std::cout << "  " << std::left << left(fileWidth) << "file" << left(functionWidth) << "function" << left(emotionWidth) << "emotion"
+              << std::right << std::setw(4) << "take" << std::setw(8) << "frames" << std::setw(8) << "Hz" << "  part map\n";
     for (const auto& f : build.files)
-        std::cout << "  " << std::left << std::setw(40) << f.file.filename().string() << std::setw(20) << f.labels.function << std::setw(12)
-                  << f.labels.emotion << std::right << std::setw(5) << f.labels.takeIndex << std::setw(8) << f.frames << std::setw(8)
-                  << f.rateHz << "  " << (f.partMap.empty() ? std::string("-") : f.partMap) << (f.resampled ? "  (resampled)" : "")
+        std::cout << "  " << std::left << left(fileWidth) << f.file.filename().string() << left(functionWidth) << f.labels.function
+                  << left(emotionWidth) << f.labels.emotion << std::right << std::setw(4) << f.labels.takeIndex << std::setw(8) << f.frames
+                  << std::setw(8) << f.rateHz << "  " << (f.partMap.empty() ? std::string("-") : f.partMap) << (f.resampled ? "  (resampled)" : "")
                   << "\n";
     for (const auto& note : build.notes) std::cout << "note: " << note << "\n";
 }

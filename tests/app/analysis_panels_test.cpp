@@ -12,6 +12,7 @@
 #include <catch2/catch.hpp>
 
 #include <QComboBox>
+#include <QPushButton>
 #include <QSlider>
 #include <QSpinBox>
 #include <QTreeWidget>
@@ -98,6 +99,34 @@ TEST_CASE("the emotion weight slider re-synthesises y + a z live as one undo ste
     document.undoStack()->undo(); // back to a = 1
     REQUIRE(slider->value() == 100);
     REQUIRE((panel->weightedTake()->values - atOne).cwiseAbs().maxCoeff() < 1e-12);
+}
+
+TEST_CASE("Show weighted as A shows the weighted take, which follows the weight while shown", "[app][emotion]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    auto* panel = window->emotionPanel();
+    auto& document = window->document();
+    document.selectTake(TakeSlot::A, app::Document::corpusTakeId(7)); // a friendly take
+    REQUIRE(QTest::qWaitFor([&] { return panel->ready() && panel->weightedTake(); }, 60000));
+    QPushButton* show = nullptr;
+    for (auto* button : panel->findChildren<QPushButton*>())
+        if (button->text() == QStringLiteral("Show weighted as A")) show = button;
+    REQUIRE(show);
+    QTest::mouseClick(show, Qt::LeftButton);
+    REQUIRE(document.selectedId(TakeSlot::A) == QStringLiteral("live/weighted"));
+    const auto atOne = document.selectedTake(TakeSlot::A);
+    REQUIRE(atOne == panel->weightedTake());
+    // While shown, a new weight replaces it once (the replacement announces a new selection,
+    // which must not synthesise it again), and A shows the new one.
+    int replaced = 0;
+    QObject::connect(&document, &app::Document::takeChanged, [&](const QString& id) { replaced += id == QStringLiteral("live/weighted"); });
+    panel->weightSlider()->setValue(200);
+    CHECK(replaced == 1);
+    CHECK(document.selectedId(TakeSlot::A) == QStringLiteral("live/weighted"));
+    CHECK(document.selectedTake(TakeSlot::A) == panel->weightedTake());
+    CHECK(document.selectedTake(TakeSlot::A) != atOne);
+    CHECK(document.takeLabel(QStringLiteral("live/weighted")).contains(QStringLiteral("a=2.00")));
 }
 
 TEST_CASE("chapter 4 defaults to the thesis: KM2O on the normalised takes with M chosen by P", "[app][emotion]")

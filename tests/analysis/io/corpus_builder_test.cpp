@@ -13,6 +13,7 @@
 #include <catch2/catch.hpp>
 
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 using namespace bunraku::analysis;
@@ -235,6 +236,22 @@ TEST_CASE("every fixture family's skeleton is kept by a corpus folder, bit for b
     for (std::size_t i = 0; i < corpus.takes.size(); ++i) {
         INFO(corpus.takes[i].labels.emotion);
         requireSameSkeleton(*corpus.takes[i].skeleton, *back->takes[i].skeleton, 0.0);
+        // A moving joint's "translation" in the file is its first frame's, never uninitialised.
+        const SkeletalMotion& motion = *corpus.takes[i].skeleton;
+        for (std::size_t m = 0; m < motion.movingJoints.size(); ++m)
+            CHECK(motion.staticTranslations[std::size_t(motion.movingJoints[m])] ==
+                  motion.movingTranslations.block<1, 3>(0, Eigen::Index(3 * m)).transpose());
+    }
+    // The same corpus written again gives the same files, byte for byte.
+    REQUIRE(writeCorpus(corpus, dir / "again").ok());
+    for (const auto& entry : fs::directory_iterator(dir / "families")) {
+        if (entry.path().filename().string().rfind(".", 0) == 0) continue;
+        INFO(entry.path().filename().string());
+        std::ifstream a(entry.path(), std::ios::binary);
+        std::ifstream b(dir / "again" / entry.path().filename(), std::ios::binary);
+        const std::string first((std::istreambuf_iterator<char>(a)), std::istreambuf_iterator<char>());
+        const std::string second((std::istreambuf_iterator<char>(b)), std::istreambuf_iterator<char>());
+        CHECK(first == second);
     }
 }
 
