@@ -1,5 +1,7 @@
 #include "app/design_panel.h"
 
+#include "app/analysis_scope_notice.h"
+
 #include "app/design_controller.h"
 #include "app/document.h"
 
@@ -59,6 +61,7 @@ DesignPanel::DesignPanel(Document& document, DesignController& controller, QWidg
     }
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
+    layout->addWidget(new AnalysisScopeNotice(m_document, this));
     layout->addWidget(m_inputs);
     layout->addWidget(splitter, 1);
     layout->addLayout(buttons);

@@ -1,5 +1,9 @@
 #include "app/emotion_panel.h"
 
+#include "analysis/pipeline/stage_parameters.h"
+
+#include "app/analysis_scope_notice.h"
+
 #include "app/analysis_controller.h"
 #include "app/commands.h"
 
@@ -40,7 +44,7 @@ EmotionPanel::EmotionPanel(Document& document, AnalysisController& analysis, QWi
     m_method->setToolTip(tr("Decomposition of the corpus into function and emotion components"));
     m_order = new widgets::BoundedSpinBox(this);
     m_order->setObjectName("emotionOrder");
-    m_order->setRange(0, 64);
+    m_order->setRange(0, analysis::pipeline::kMaxCorrelationLength); // what projects and the command line accept
     m_order->setSpecialValueText(tr("chosen by P (4.4.4)"));
     m_order->setDescription(tr("KM2O correlation length M; 0 chooses it by the relative error P over 1..M_max as thesis "
                                "4.4.4 (which found M = 2); must not exceed M_max = floor(3 sqrt(T + 1)) - 1 for T frames."));
@@ -69,6 +73,7 @@ EmotionPanel::EmotionPanel(Document& document, AnalysisController& analysis, QWi
     form->setRowWrapPolicy(QFormLayout::WrapLongRows);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
+    layout->addWidget(new AnalysisScopeNotice(m_document, this));
     layout->addLayout(form);
     layout->addWidget(m_label);
     layout->addWidget(show);

@@ -1,5 +1,7 @@
 #include "app/normalise_panel.h"
 
+#include "app/analysis_scope_notice.h"
+
 #include "app/commands.h"
 #include "app/analysis_controller.h"
 #include "app/variance_tree.h"
@@ -8,6 +10,7 @@
 
 #include "analysis/normalise/coupling.h"
 #include "analysis/pipeline/parameters_json.h"
+#include "analysis/pipeline/stage_parameters.h"
 
 #include <qcustomplot.h>
 
@@ -58,15 +61,17 @@ NormalisePanel::NormalisePanel(Document& document, AnalysisController& analysis,
     m_reference->setObjectName("normaliseReference");
     m_tau = new widgets::BoundedSpinBox(this);
     m_tau->setObjectName("normaliseTau");
-    m_tau->setRange(0, 20);
+    // The limits every parameter is validated against (projects, the command line): the panel can
+    // show every valid value.
+    m_tau->setRange(0, analysis::pipeline::kMaxTau);
     m_tau->setSuffix(tr(" frames"));
     m_band = new widgets::BoundedSpinBox(this);
     m_band->setObjectName("normaliseSearchBand");
-    m_band->setRange(1, 60);
+    m_band->setRange(0, analysis::pipeline::kMaxSearchBand);
     m_band->setSuffix(tr(" frames"));
     m_scales = new widgets::BoundedSpinBox(this);
     m_scales->setObjectName("normaliseMaxScale");
-    m_scales->setRange(1, 32);
+    m_scales->setRange(1, analysis::pipeline::kMaxScale);
     m_coupling = new QComboBox(this);
     m_coupling->setObjectName("normaliseCoupling");
     m_coupling->setEditable(true);
@@ -113,6 +118,7 @@ NormalisePanel::NormalisePanel(Document& document, AnalysisController& analysis,
     form->addRow(tr("Path"), m_path);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
+    layout->addWidget(new AnalysisScopeNotice(m_document, this));
     layout->addLayout(form);
     layout->addWidget(m_summary);
     layout->addWidget(m_table, 1);

@@ -2,6 +2,7 @@
 
 #include "app/analysis_controller.h"
 
+#include "widgets/flow_layout.h"
 #include "widgets/viewport_widget.h"
 
 #include "analysis/core/puppet_layout.h"
@@ -11,7 +12,6 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QHBoxLayout>
-#include <QToolBar>
 #include <QLabel>
 #include <QStringList>
 #include <QVBoxLayout>
@@ -62,13 +62,14 @@ ViewportPanel::ViewportPanel(Document& document, AnalysisController& analysis, Q
     m_grid->setToolTip(tr("The floor: a 20 cm grid under the lowest point of the figures"));
     m_partner->setToolTip(tr("Where the partner stands (the person greeted or served): a grey cone on a disc on the floor, "
                              "110 cm in front of the puppet"));
-    // A tool bar, not a row of widgets: in a narrow dock what does not fit moves behind its
-    // extension button instead of widening the dock.
-    auto* toggles = new QToolBar(this);
+    // The controls flow onto more rows in a narrow dock: every one stays reachable, and the
+    // dock does not widen (a tool bar's extension menu cannot show check and combo boxes).
+    auto* toggles = new QWidget(this);
     toggles->setObjectName("viewToolBar");
-    toggles->setIconSize(QSize(16, 16));
+    auto* flow = new widgets::FlowLayout(toggles);
+    flow->setContentsMargins(4, 2, 4, 2);
     for (auto* box : {m_puppet, m_axis, m_orbits, m_grid, m_partner}) {
-        toggles->addWidget(box);
+        flow->addWidget(box);
         connect(box, &QCheckBox::toggled, this, &ViewportPanel::applyVisibility);
     }
     for (int slot = 0; slot < 2; ++slot) {
@@ -80,11 +81,16 @@ ViewportPanel::ViewportPanel(Document& document, AnalysisController& analysis, Q
         box->setToolTip(slot == 0 ? tr("Figure of take A: the puppet, the performer's skeleton (takes read from BVH), or both")
                                   : tr("Figure of take B: the puppet, the performer's skeleton (takes read from BVH), or both"));
         connect(box, &QComboBox::currentIndexChanged, this, &ViewportPanel::applyVisibility);
-        toggles->addWidget(new QLabel(slot == 0 ? tr("A:") : tr("B:"), this));
-        toggles->addWidget(box);
+        // The label and its box as one item: they never part at a row's end.
+        auto* pair = new QWidget(toggles);
+        auto* row = new QHBoxLayout(pair);
+        row->setContentsMargins(0, 0, 0, 0);
+        row->setSpacing(2);
+        row->addWidget(new QLabel(slot == 0 ? tr("A:") : tr("B:"), pair));
+        row->addWidget(box);
+        flow->addWidget(pair);
         m_figures[slot] = box;
     }
-    toggles->addSeparator();
     createCameraActions(toggles);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);

@@ -24,7 +24,6 @@ class QAction;
 class QCheckBox;
 class QComboBox;
 class QLabel;
-class QToolBar;
 
 namespace bunraku::widgets {
 class ViewportWidget;
@@ -79,7 +78,7 @@ private:
     void applyVisibility();
     /// Shows or hides the gap labels for the figures now chosen.
     void updateGapLabels();
-    /// The camera actions, added to `bar` (viewport_panel_camera.cpp).
+    /// The camera actions, added to `bar` as buttons in its layout (viewport_panel_camera.cpp).
     void createCameraActions(QWidget* bar);
 
     Document& m_document;

@@ -5,6 +5,8 @@
 
 #include <QAction>
 #include <QKeySequence>
+#include <QLayout>
+#include <QToolButton>
 #include <QVariantList>
 
 #include <cmath>
@@ -31,6 +33,10 @@ void ViewportPanel::createCameraActions(QWidget* bar)
     for (QAction* action : {m_frameAll, m_frameSelected, m_resetCamera}) {
         action->setShortcutContext(Qt::WindowShortcut);
         bar->addAction(action);
+        auto* button = new QToolButton(bar);
+        button->setDefaultAction(action);
+        button->setAutoRaise(true);
+        bar->layout()->addWidget(button);
     }
     connect(m_frameAll, &QAction::triggered, m_viewport, &widgets::ViewportWidget::frameAll);
     connect(m_frameSelected, &QAction::triggered, this, [this] { m_viewport->frameSelected(m_selectedPart); });

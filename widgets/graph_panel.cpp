@@ -1,11 +1,12 @@
 #include "widgets/graph_panel.h"
 
+#include "widgets/flow_layout.h"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QSignalBlocker>
-#include <QToolBar>
 #include <QVBoxLayout>
 
 namespace bunraku::widgets {
@@ -52,16 +53,18 @@ GraphPanel::GraphPanel(QWidget* parent) : QWidget(parent), m_grid(new GraphGrid(
 
     m_mode->setToolTip(tr("How take B is shown beside take A"));
     m_scale->setToolTip(tr("Each graph fits its own values, or graphs of one DOF share their range"));
-    // A tool bar: in a narrow dock the controls that do not fit move behind its extension
-    // button instead of widening the dock.
-    auto* controls = new QToolBar(this);
+    // The controls flow onto more rows in a narrow dock: every one stays reachable, and the
+    // dock does not widen (a tool bar's extension menu cannot show combo and check boxes).
+    auto* controls = new QWidget(this);
     controls->setObjectName("graphToolBar");
-    for (QWidget* widget : std::initializer_list<QWidget*>{m_layout, m_part, m_dof, m_mode, m_scale, m_thesisTicks}) controls->addWidget(widget);
+    auto* flow = new FlowLayout(controls);
+    flow->setContentsMargins(4, 2, 4, 2);
+    for (QWidget* widget : std::initializer_list<QWidget*>{m_layout, m_part, m_dof, m_mode, m_scale, m_thesisTicks}) flow->addWidget(widget);
     const QString help = tr("drag: scrub   wheel: zoom   Shift+drag: pan   double click: whole take");
     auto* hint = new QLabel(help, this);
     hint->setEnabled(false);
     hint->setContentsMargins(8, 0, 0, 0);
-    controls->addWidget(hint);
+    flow->addWidget(hint);
     m_grid->setToolTip(help);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);

@@ -3,6 +3,7 @@
 
 #include "app/analysis_controller.h"
 #include "app/commands.h"
+#include "app/design_panel.h"
 #include "app/emotion_panel.h"
 #include "app/normalise_panel.h"
 
@@ -12,6 +13,7 @@
 #include <catch2/catch.hpp>
 
 #include <QComboBox>
+#include <QLabel>
 #include <QPushButton>
 #include <QSlider>
 #include <QSpinBox>
@@ -263,4 +265,32 @@ TEST_CASE("the Normalisation panel names the takes normalisation moved away and 
     REQUIRE(QTest::qWaitFor([&] { return idle(*window) && panel->summaryText().contains(QStringLiteral("optimal path")); }, 60000));
     INFO(panel->summaryText().toStdString());
     CHECK_FALSE(panel->summaryText().contains(QStringLiteral("came out further")));
+}
+
+TEST_CASE("the analysis docks say they analyse the corpus while take A is an imported take", "[app][import]")
+{
+    const auto file = test::bandaiDir() / "bye_angry_001.bvh";
+    if (!test::requireBandaiData(std::filesystem::exists(file))) return;
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    std::vector<QWidget*> docks{window->normalisePanel(), window->emotionPanel(), window->designPanel()};
+    const auto notices = [&] {
+        std::vector<QLabel*> found;
+        for (QWidget* dock : docks) found.push_back(dock->findChild<QLabel*>(QStringLiteral("analysisScopeNotice")));
+        return found;
+    };
+    for (QLabel* notice : notices()) {
+        REQUIRE(notice);
+        CHECK_FALSE(notice->isVisibleTo(notice->parentWidget()));
+    }
+    REQUIRE(window->files().importTakeFile(QString::fromStdString(file.string())));
+    REQUIRE(window->document().selectedId(TakeSlot::A).startsWith(QStringLiteral("imported/")));
+    for (QLabel* notice : notices()) {
+        CHECK(notice->isVisibleTo(notice->parentWidget()));
+        CHECK(notice->text().contains(QStringLiteral("Take A (bye_angry_001.bvh) is imported beside the corpus")));
+        CHECK(notice->text().contains(QStringLiteral("the demo corpus (30 takes)")));
+        CHECK(notice->text().contains(QStringLiteral("File &gt; New Corpus from Files")));
+    }
+    window->document().selectTake(TakeSlot::A, app::Document::corpusTakeId(2));
+    for (QLabel* notice : notices()) CHECK_FALSE(notice->isVisibleTo(notice->parentWidget()));
 }

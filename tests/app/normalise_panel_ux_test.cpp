@@ -4,6 +4,8 @@
 // in the status bar; undo steps named after the value they set.
 #include "tests/app/app_test_support.h"
 
+#include "analysis/pipeline/stage_parameters.h"
+
 #include "app/analysis_controller.h"
 #include "app/normalise_panel.h"
 #include "app/variance_tree.h"
@@ -154,25 +156,36 @@ TEST_CASE("the normalisation panel's table, legend and summary say what was comp
     CHECK(panel->summaryText().contains(QStringLiteral("tau 4, T_cmp 20, scales 1-16")));
 }
 
-TEST_CASE("limits are in the tool tips; 100 typed into T_cmp becomes 60 and the status bar says so", "[app][normalise][limits]")
+TEST_CASE("limits are in the tool tips and are the project's; 200000 typed into T_cmp becomes 100000 and the status bar says so",
+          "[app][normalise][limits]")
 {
     auto window = test::demoWindow();
     REQUIRE(window);
     auto& document = window->document();
     auto* panel = window->normalisePanel();
-    CHECK(panel->tauSpin()->toolTip().endsWith(QStringLiteral("From 0 to 20 frames.")));
-    CHECK(panel->searchBandSpin()->toolTip().endsWith(QStringLiteral("From 1 to 60 frames.")));
-    CHECK(panel->maxScaleSpin()->toolTip().endsWith(QStringLiteral("From 1 to 32.")));
+    CHECK(panel->tauSpin()->toolTip().endsWith(QStringLiteral("From 0 to 200 frames.")));
+    CHECK(panel->searchBandSpin()->toolTip().endsWith(QStringLiteral("From 0 to 100000 frames.")));
+    CHECK(panel->maxScaleSpin()->toolTip().endsWith(QStringLiteral("From 1 to 256.")));
+    // The panel shows every value a project may hold: the validation's limits.
+    CHECK(panel->tauSpin()->maximum() == analysis::pipeline::kMaxTau);
+    CHECK(panel->searchBandSpin()->maximum() == analysis::pipeline::kMaxSearchBand);
+    CHECK(panel->maxScaleSpin()->maximum() == analysis::pipeline::kMaxScale);
+    app::AnalysisParameters parameters = document.parameters();
+    parameters.normalise.maxScale = 100;
+    parameters.normalise.searchBand = 90;
+    document.restoreParameters(parameters);
+    CHECK(panel->maxScaleSpin()->value() == 100);
+    CHECK(panel->searchBandSpin()->value() == 90);
 
     auto* band = panel->searchBandSpin();
     band->setFocus();
     band->selectAll();
-    QTest::keyClicks(band, QStringLiteral("100"));
+    QTest::keyClicks(band, QStringLiteral("200000"));
     QTest::keyClick(band, Qt::Key_Return);
-    CHECK(band->value() == 60);
-    CHECK(document.parameters().normalise.searchBand == 60);
-    CHECK(statusText(*window).contains(QStringLiteral("T_cmp 100 frames is above the limit: set to 60 frames")));
-    CHECK(document.undoStack()->undoText() == QStringLiteral("Set T_cmp to 60 frames"));
+    CHECK(band->value() == 100000);
+    CHECK(document.parameters().normalise.searchBand == 100000);
+    CHECK(statusText(*window).contains(QStringLiteral("T_cmp 200000 frames is above the limit: set to 100000 frames")));
+    CHECK(document.undoStack()->undoText() == QStringLiteral("Set T_cmp to 100000 frames"));
 }
 
 TEST_CASE("undo steps are named after the value they set", "[app][normalise][undo]")

@@ -12,6 +12,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <QAbstractButton>
+#include <QComboBox>
 #include <QDockWidget>
 #include <QMenuBar>
 #include <QWindow>
@@ -81,6 +83,25 @@ TEST_CASE("at 1280x720 and 1366x768 every dock is inside the window at a useful 
         const QRect bar = inWindow(window->timeline()->scrubBar(), window.get());
         CHECK(area.contains(bar));
         CHECK(bar.width() >= 300);
+        // Every control of the 3D view's and the graphs' rows is shown, whole, inside its dock:
+        // nothing hidden behind an extension menu (the figure of take B with two takes shown).
+        window->document().selectTake(app::TakeSlot::B, app::Document::corpusTakeId(3));
+        QCoreApplication::processEvents();
+        for (const char* row : {"viewToolBar", "graphToolBar"}) {
+            QWidget* controls = window->findChild<QWidget*>(QString::fromLatin1(row));
+            REQUIRE(controls);
+            const QRect dock = inWindow(qobject_cast<QWidget*>(controls->parent()), window.get());
+            int checked = 0;
+            for (QWidget* control : controls->findChildren<QWidget*>()) {
+                if (!qobject_cast<QComboBox*>(control) && !qobject_cast<QAbstractButton*>(control)) continue;
+                INFO(row << ": " << control->objectName().toStdString() << " " << control->property("text").toString().toStdString());
+                CHECK(control->isVisibleTo(window.get()));
+                CHECK(dock.contains(inWindow(control, window.get())));
+                ++checked;
+            }
+            CHECK(checked >= (std::string(row) == "viewToolBar" ? 10 : 6));
+        }
+        window->document().selectTake(app::TakeSlot::B, QString());
     }
 }
 
