@@ -354,11 +354,15 @@ float Renderer::floorHeight() const
 
 float Renderer::framedHeight() const
 {
-    // A drawn skeleton is framed by its height (a puppet by the height the distances were chosen for).
+    // A drawn skeleton, or a puppet fitted to a taller performer, is framed by its height (the
+    // shipped puppet by the height the distances were chosen for); two such takes side by side
+    // then stand as far apart as they are tall, so a raised arm does not reach into the other.
     const float floor = floorHeight();
     float height = kPuppetFramedHeight;
-    for (std::size_t s = 0; s < m_slots.size(); ++s)
+    for (std::size_t s = 0; s < m_slots.size(); ++s) {
         if (skeletonDrawn(int(s))) height = std::max(height, m_slots[s].skeletonHighest - floor);
+        if (puppetDrawn(int(s))) height = std::max(height, m_slots[s].puppetHighest - floor);
+    }
     return height;
 }
 

@@ -1,13 +1,12 @@
 // Subcommand: analyse - the thesis's whole chain (analysis/pipeline) with data files and the
 // HTML report (analysis/report).
 #include "app/cli/commands.h"
+#include "app/cli/chain_parameters.h"
 #include "app/cli/output_guard.h"
 
 #include "analysis/core/parallel.h"
-#include "analysis/io/atomic_file.h"
 
 #include "analysis/pipeline/chain.h"
-#include "analysis/pipeline/parameters_json.h"
 #include "analysis/report/analysis_files.h"
 #include "analysis/report/html_report.h"
 
@@ -46,25 +45,10 @@ public:
     }
 };
 
-pl::ChainParameters readParameters(const std::string& file)
-{
-    if (file.empty()) return {};
-    const std::string text = unwrap(analysis::io::readTextFile(file, analysis::io::kDocumentLimitBytes));
-    nlohmann::json document;
-    try {
-        document = nlohmann::json::parse(text);
-    } catch (const nlohmann::json::exception& parse) { // a syntax error, or a number out of range (1e400)
-        throw CliError(file + ": expected JSON: " + parse.what());
-    }
-    // A project file holds the parameters under "parameters"; a parameters file may too.
-    const nlohmann::json& parameters = document.is_object() && document.contains("parameters") ? document["parameters"] : document;
-    return unwrap(pl::chainParametersFromJson(parameters, file));
-}
-
 void runAnalyse(const AnalyseArguments& arguments)
 {
     refuseOutputOverInputs(arguments.output, OutputKind::Folder, {arguments.corpus, arguments.parameters});
-    const pl::ChainParameters parameters = readParameters(arguments.parameters);
+    const pl::ChainParameters parameters = readChainParameters(arguments.parameters);
     const pl::CorpusInput corpus = unwrap(pl::importCorpus(arguments.corpus));
     const bool terminal = ::isatty(STDERR_FILENO) == 1;
     ProgressBar bar;

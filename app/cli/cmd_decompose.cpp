@@ -1,5 +1,6 @@
 // Subcommands: decompose, emotion, experiment km2o.
 #include "app/cli/commands.h"
+#include "app/cli/chain_parameters.h"
 #include "app/cli/take_output.h"
 #include "app/cli/output_guard.h"
 
@@ -13,6 +14,9 @@
 #include "analysis/io/staged_folder.h"
 #include "analysis/io/take_csv.h"
 #include "analysis/io/text_format.h"
+#include "analysis/core/parallel.h"
+#include "analysis/pipeline/chain.h"
+#include "analysis/pipeline/parameters_json.h"
 #include "analysis/pipeline/stages.h"
 #include "analysis/report/analysis_files.h"
 #include "analysis/preprocess/preprocess.h"
@@ -34,28 +38,6 @@ namespace {
 namespace fs = std::filesystem;
 using namespace bunraku::analysis;
 
-struct CorpusInput {
-    std::string path;
-    bool pad = false;
-};
-
-/// Reads the corpus; pads every take to the longest (thesis 2.2 step 1) when asked, else
-/// decomposition reports unequal lengths.
-Corpus loadCorpus(const CorpusInput& input)
-{
-    Corpus corpus = unwrap(io::readCorpus(input.path));
-    Eigen::Index longest = 0;
-    for (const auto& take : corpus.takes) longest = std::max(longest, take.frameCount());
-    for (auto& take : corpus.takes) {
-        if (take.frameCount() == longest) continue;
-        if (!input.pad)
-            throw CliError(input.path + ": take " + take.displayName() + " has " + std::to_string(take.frameCount()) + " frames, the longest " +
-                           std::to_string(longest) + ": pad with --pad (thesis 2.2) or time-normalise the corpus first");
-        preprocess::padToLength(take, longest);
-    }
-    return corpus;
-}
-
 /// Runs `work`; an error that does not name the corpus folder gets it in front, so every
 /// message says which input it is about.
 template <class Work>
@@ -70,30 +52,100 @@ auto aboutCorpus(const std::string& path, Work&& work)
     }
 }
 
-enum class Method { LeastSquares, Km2o };
+/// What the chain of `decompose` and `emotion` starts from and how: the workbench's Emotion
+/// tab's chain by default (thesis 2.2 preprocessing, chapter 3 normalisation of every cell, then
+/// chapter 4 on the normalised takes with KM2O, M chosen by P), with the parameters of
+/// `--parameters` and the options below on top.
+inline constexpr int kNotGiven = std::numeric_limits<int>::min();
 
-struct DecomposeSettings {
-    Method method = Method::LeastSquares;
-    int correlationLength = 0;
+struct ChainArgs {
+    std::string corpus;
+    std::string parameters;  ///< --parameters FILE (as `bunraku analyse`)
+    std::string input;       ///< normalised | preprocessed; empty: the parameters' (normalised)
+    std::string method;      ///< km2o | ls; empty: the parameters' (km2o)
+    int correlationLength = kNotGiven; ///< --M; kNotGiven: the parameters' (0 = chosen by P)
+    bool pad = false;
+    bool noPreprocess = false;
 };
 
-struct Outcome {
-    Decomposition components;
-    std::optional<Km2oDecomposition> km2o; ///< with --method km2o
+/// The chain's results up to chapter 4, each from the pipeline's own stage functions (chain.h),
+/// the ones the workbench's scheduler runs.
+struct ChainOutcome {
+    pipeline::ChainParameters parameters;
+    pipeline::CorpusInput corpus;
+    pipeline::Shared<pipeline::PreprocessOutput> preprocessed;
+    pipeline::Shared<pipeline::NormaliseOutput> normalised; ///< null for --input preprocessed
+    pipeline::Shared<pipeline::DecomposeOutput> decomposed;
 };
 
-/// The pipeline's decompose stage (analysis/pipeline), as the workbench runs it, on the corpus
-/// as given (already preprocessed or normalised by the user).
-Outcome decompose(const Corpus& corpus, const DecomposeSettings& settings)
+pipeline::ChainParameters chainParameters(const ChainArgs& args)
 {
-    if (settings.method == Method::LeastSquares && settings.correlationLength != 0)
-        throw CliError("--M applies to --method km2o only");
-    pipeline::DecomposeParameters parameters;
-    parameters.input = pipeline::DecomposeInput::Preprocessed;
-    parameters.method = settings.method == Method::Km2o ? pipeline::DecomposeMethod::Km2o : pipeline::DecomposeMethod::LeastSquares;
-    parameters.correlationLength = settings.correlationLength;
-    pipeline::DecomposeOutput output = unwrap(pipeline::runDecompose(corpus, parameters));
-    return {std::move(output.components), std::move(output.km2o)};
+    pipeline::ChainParameters parameters = readChainParameters(args.parameters);
+    if (!args.input.empty())
+        parameters.decompose.input = args.input == "preprocessed" ? pipeline::DecomposeInput::Preprocessed : pipeline::DecomposeInput::Normalised;
+    if (!args.method.empty())
+        parameters.decompose.method = args.method == "km2o" ? pipeline::DecomposeMethod::Km2o : pipeline::DecomposeMethod::LeastSquares;
+    if (args.correlationLength != kNotGiven) {
+        if (parameters.decompose.method == pipeline::DecomposeMethod::LeastSquares && args.correlationLength != 0)
+            throw CliError("--M applies to --method km2o only");
+        parameters.decompose.correlationLength = args.correlationLength;
+    }
+    // As `bunraku normalise --no-preprocess`: angles are still unwrapped, nothing else.
+    if (args.noPreprocess)
+        parameters.preprocess.pad = parameters.preprocess.alignStart = parameters.preprocess.alignHeading =
+            parameters.preprocess.alignPosition = false;
+    if (args.pad) parameters.preprocess.pad = true;
+    if (auto valid = pipeline::validate(parameters); !valid) throw CliError(args.corpus + ": " + valid.error().message);
+    return parameters;
+}
+
+/// Runs every stage a chapter-4 result depends on; an error names the corpus and the stage.
+ChainOutcome decomposeChain(const ChainArgs& args)
+{
+    ChainOutcome out;
+    out.parameters = chainParameters(args);
+    out.corpus = unwrap(pipeline::importCorpus(args.corpus));
+    const pipeline::ChainKeys keys = pipeline::chainKeys(out.corpus.key, out.parameters);
+    const RunControl control{{}, {}, resolveThreads(0)}; // the workbench's thread count; the same bits for any
+    auto failed = [&](pipeline::Stage stage, const Error& error) {
+        return CliError(args.corpus + ": " + pipeline::stageTitle(stage) + ": " + error.message);
+    };
+    auto preprocessed = pipeline::preprocessStage(out.corpus, out.parameters.preprocess, nullptr, control);
+    if (!preprocessed) throw failed(pipeline::Stage::Preprocess, preprocessed.error());
+    out.preprocessed = *preprocessed;
+    const bool fromNormalised = out.parameters.decompose.input == pipeline::DecomposeInput::Normalised;
+    if (fromNormalised) {
+        auto normalised = pipeline::normaliseStage(keys.preprocess, *out.preprocessed, out.parameters.normalise, nullptr, control);
+        if (!normalised) throw failed(pipeline::Stage::Normalise, normalised.error());
+        out.normalised = *normalised;
+    }
+    auto decomposed = pipeline::decomposeStage(fromNormalised ? keys.normalise : keys.preprocess,
+                                               fromNormalised ? out.normalised->normalised : out.preprocessed->corpus,
+                                               out.parameters.decompose, nullptr, control);
+    if (!decomposed) {
+        Error error = decomposed.error();
+        if (!out.parameters.preprocess.pad) error.message += " (--pad pads every take to the longest first)";
+        throw failed(pipeline::Stage::Decompose, error);
+    }
+    out.decomposed = *decomposed;
+    return out;
+}
+
+/// What every summary says about the chain it ran.
+nlohmann::json chainSummary(const ChainOutcome& chain)
+{
+    nlohmann::json summary;
+    summary["input"] = pipeline::inputName(chain.parameters.decompose.input);
+    summary["method"] = chain.parameters.decompose.method == pipeline::DecomposeMethod::Km2o ? "km2o" : "ls"; // as --method
+    summary["parameters"] = pipeline::toJson(chain.parameters);
+    if (const auto& km2o = chain.decomposed->km2o) {
+        summary["km2o"] = analysis::report::km2oOutcomeJson(*km2o);
+        if (km2o->estimable()) { // else no M was chosen: y, z by least squares
+            summary["M"] = km2o->correlationLength;
+            summary["mean_P_percent"] = km2o->meanCellErrorPercent;
+        }
+    }
+    return summary;
 }
 
 /// Table 4.5 layout: one row per channel, one P^{ij} [%] column per cell.
@@ -242,9 +294,7 @@ nlohmann::json truthErrors(const Decomposition& d, const synth::DemoGroundTruth&
 }
 
 struct DecomposeArgs {
-    CorpusInput corpus;
-    std::string method = "km2o"; // thesis 4.4.4: KM2O, M chosen by P
-    int correlationLength = 0;
+    ChainArgs chain;
     std::string output;
     std::string truth;
     std::string armaSearch = "equal";
@@ -256,16 +306,12 @@ struct DecomposeArgs {
 void runDecompose(const DecomposeArgs& args)
 {
     if (args.armaTableOrder.size() != 2) throw CliError("--arma-table takes two orders: p q");
-    refuseOutputOverInputs(args.output, OutputKind::Folder, {args.corpus.path, args.truth});
-    const Corpus corpus = loadCorpus(args.corpus);
-    DecomposeSettings settings;
-    settings.method = args.method == "km2o" ? Method::Km2o : Method::LeastSquares;
-    settings.correlationLength = args.correlationLength;
-    nlohmann::json summary;
-    summary["corpus"] = args.corpus.path;
-    summary["method"] = args.method;
-    const Outcome outcome = aboutCorpus(args.corpus.path, [&] { return decompose(corpus, settings); });
-    const Decomposition& d = outcome.components;
+    refuseOutputOverInputs(args.output, OutputKind::Folder, {args.chain.corpus, args.chain.parameters, args.truth});
+    const ChainOutcome chain = decomposeChain(args.chain);
+    const Decomposition& d = chain.decomposed->components;
+    nlohmann::json summary = chainSummary(chain);
+    summary["corpus"] = args.chain.corpus;
+    const std::string& corpusPath = args.chain.corpus;
 
     // Every output is computed before anything is written: bad input writes nothing.
     const fs::path out = args.output;
@@ -274,7 +320,7 @@ void runDecompose(const DecomposeArgs& args)
         if (auto valid = validateTake(take); !valid) throw CliError(name + ": " + valid.error().message);
         outputs.emplace_back(name, io::formatTakeCsv(take));
     };
-    aboutCorpus(args.corpus.path, [&] {
+    aboutCorpus(corpusPath, [&] {
         // y as a pose (Euler angles); z and eta are differences: rotation coordinates (deg).
         for (const auto& f : d.functions) {
             Take y = unwrap(functionComponentTake(d, f.function));
@@ -294,26 +340,23 @@ void runDecompose(const DecomposeArgs& args)
         outputs.emplace_back("arma_takes.csv", armaTakesCsv(d, search, args.armaMaxOrder));
         outputs.emplace_back("arma_table.csv", armaTableCsv(d, args.armaTableOrder[0], args.armaTableOrder[1]));
     });
-    if (outcome.km2o) {
-        const Km2oDecomposition& km2o = *outcome.km2o;
+    if (chain.decomposed->km2o) {
+        const Km2oDecomposition& km2o = *chain.decomposed->km2o;
         outputs.emplace_back("km2o_errors.csv", km2oErrorCsv(km2o));
         std::ostringstream byM;
         byM << "M,mean_P_percent\n";
         for (std::size_t i = 0; i < km2o.candidateLengths.size(); ++i)
             byM << km2o.candidateLengths[i] << ',' << km2o.meanErrorPercent[i] << '\n';
         outputs.emplace_back("km2o_by_M.csv", byM.str());
-        summary["km2o"] = analysis::report::km2oOutcomeJson(km2o);
-        if (km2o.estimable()) { // else no M was chosen: y, z by least squares
-            summary["M"] = km2o.correlationLength;
+        if (km2o.estimable()) {
             summary["candidate_M"] = km2o.candidateLengths;
             summary["mean_P_percent_by_M"] = km2o.meanErrorPercent;
-            summary["mean_P_percent"] = km2o.meanCellErrorPercent;
         }
     }
 
     fs::path truthFolder = args.truth;
-    if (truthFolder.empty() && fs::exists(fs::path(args.corpus.path) / "truth" / "truth.json"))
-        truthFolder = fs::path(args.corpus.path) / "truth";
+    if (truthFolder.empty() && fs::exists(fs::path(corpusPath) / "truth" / "truth.json"))
+        truthFolder = fs::path(corpusPath) / "truth";
     if (!truthFolder.empty()) {
         const auto truth = unwrap(synth::readGroundTruth(truthFolder));
         summary["truth"] = truthErrors(d, truth);
@@ -338,43 +381,56 @@ void runDecompose(const DecomposeArgs& args)
     if (args.json) {
         printJson(summary);
     } else {
-        std::cout << "decomposed " << corpus.takes.size() << " takes (" << args.method << ") into " << out.string() << ": "
+        std::cout << "decomposed " << chain.corpus.corpus->takes.size() << " " << summary["input"].get<std::string>() << " takes ("
+                  << summary["method"].get<std::string>() << ") into " << out.string() << ": "
                   << d.functions.size() << " y, " << d.emotions.size() << " z, " << d.fluctuations.size() << " eta\n";
         if (summary.contains("M"))
             std::cout << "KM2O correlation length M = " << summary["M"] << ", mean P = " << summary["mean_P_percent"] << " %\n";
-        if (outcome.km2o && !outcome.km2o->notes.empty()) {
-            std::cout << outcome.km2o->outcome() << "\n";
-            for (const auto& note : outcome.km2o->notes) std::cout << "  " << note << "\n";
+        if (const auto& km2o = chain.decomposed->km2o; km2o && !km2o->notes.empty()) {
+            std::cout << km2o->outcome() << "\n";
+            for (const auto& note : km2o->notes) std::cout << "  " << note << "\n";
         }
         if (summary.contains("truth")) std::cout << "error against ground truth: " << summary["truth"].dump() << "\n";
     }
 }
 
 struct EmotionArgs {
-    CorpusInput corpus;
+    ChainArgs chain;
     std::string function;
     std::string emotion;
     double weight = 1.0;
-    std::string method = "km2o";
-    int correlationLength = 0;
     std::string output;
+    bool json = false;
 };
 
 void runEmotion(const EmotionArgs& args)
 {
     requireTakeOutput(args.output);
-    refuseOutputOverInputs(args.output, OutputKind::File, {args.corpus.path});
-    const Corpus corpus = loadCorpus(args.corpus);
-    DecomposeSettings settings;
-    settings.method = args.method == "km2o" ? Method::Km2o : Method::LeastSquares;
-    settings.correlationLength = args.correlationLength;
-    const Outcome outcome = aboutCorpus(args.corpus.path, [&] { return decompose(corpus, settings); });
-    const Decomposition& d = outcome.components;
-    const Take take =
-        aboutCorpus(args.corpus.path, [&] { return unwrap(weightEmotion(d, args.function, args.emotion, args.weight)); });
+    refuseOutputOverInputs(args.output, OutputKind::File, {args.chain.corpus, args.chain.parameters});
+    const ChainOutcome chain = decomposeChain(args.chain);
+    // The workbench's weighted take: the same function on the same stage result.
+    const Take take = aboutCorpus(args.chain.corpus, [&] {
+        return unwrap(pipeline::weightedTake(*chain.decomposed, args.function, args.emotion, args.weight));
+    });
     writeTakeOutput(take, args.output);
+    nlohmann::json summary = chainSummary(chain);
+    summary["corpus"] = args.chain.corpus;
+    summary["function"] = args.function;
+    summary["emotion"] = args.emotion;
+    summary["weight"] = args.weight;
+    summary["frames"] = take.frameCount();
+    summary["channels"] = take.channels.size();
+    summary["rate_hz"] = take.rateHz;
+    summary["output"] = args.output;
+    if (args.json) {
+        printJson(summary);
+        return;
+    }
     std::cout << "wrote " << args.output << ": " << args.function << "/" << args.emotion << " with emotion weight a = " << args.weight
-              << " (" << take.frameCount() << " frames)\n";
+              << " (" << take.frameCount() << " frames; " << summary["input"].get<std::string>() << " takes, "
+              << summary["method"].get<std::string>();
+    if (summary.contains("M")) std::cout << ", M = " << summary["M"].get<int>();
+    std::cout << ")\n";
 }
 
 struct ExperimentArgs {
@@ -459,20 +515,39 @@ void runExperiment(const ExperimentArgs& args)
     }
 }
 
+/// The options of the chain up to chapter 4 (`decompose`, `emotion`).
+void addChainOptions(CLI::App* command, ChainArgs& args)
+{
+    command->add_option("corpus", args.corpus, "Corpus folder (corpus.json), or 'demo' for the embedded demo corpus")->required();
+    command->add_option("--parameters", args.parameters,
+                        "JSON file of the chain's parameters (docs/FORMATS.md, as `bunraku analyse`), or a project file; "
+                        "default the thesis's")
+        ->type_name("FILE");
+    command->add_option("--input", args.input,
+                        "Takes decomposed: normalised (thesis 4.1: after 2.2 and chapter 3, default) or preprocessed (2.2 only)")
+        ->check(CLI::IsMember({"normalised", "preprocessed"}));
+    command->add_option("--method", args.method, "km2o (KM2O-Langevin, 4.4.4; default) or ls (least squares, 4.3.1)")
+        ->check(CLI::IsMember({"ls", "km2o"}));
+    command->add_option("--M", args.correlationLength, "KM2O correlation length M (1..M_max); default: chosen by P (4.4.4)");
+    command->add_flag("--no-preprocess", args.noPreprocess,
+                      "Skip thesis 2.2's padding and alignments (angles are still unwrapped), as `bunraku normalise "
+                      "--no-preprocess`");
+    command->add_flag("--pad", args.pad,
+                      "Pad takes to the longest by repeating the last frame (thesis 2.2 step 1): part of the default "
+                      "preprocessing; with --no-preprocess, the one step kept");
+}
+
 } // namespace
 
 void addDecompositionCommands(CommandSet& commands)
 {
     auto decomposeArgs = std::make_shared<DecomposeArgs>();
     CLI::App* dec = commands.root.add_subcommand(
-        "decompose", "Decompose a corpus into function y^i, emotion z^{ij} and fluctuation eta (thesis ch. 4); write "
+        "decompose", "Decompose a corpus into function y^i, emotion z^{ij} and fluctuation eta (thesis ch. 4) as the "
+                     "workbench's Emotion tab does (preprocess 2.2, normalise every cell 3, KM2O with M chosen by P); write "
                      "components, spectra and ARMA tables");
-    dec->add_option("corpus", decomposeArgs->corpus.path, "Corpus folder (corpus.json)")->required();
-    dec->add_option("--method", decomposeArgs->method, "km2o (KM2O-Langevin, 4.4.4; default) or ls (least squares, 4.3.1)")
-        ->check(CLI::IsMember({"ls", "km2o"}));
-    dec->add_option("--M", decomposeArgs->correlationLength,
-                    "KM2O correlation length M (1..M_max); default: chosen by reconstruction error");
-    dec->add_option("-o,--output", decomposeArgs->output, "Output folder")->required();
+    addChainOptions(dec, decomposeArgs->chain);
+    dec->add_option("-o,--output", decomposeArgs->output, "Output folder")->required()->type_name("DIR");
     dec->add_option("--truth", decomposeArgs->truth,
                     "Ground-truth folder of a synthetic corpus (default: CORPUS/truth when it exists)");
     dec->add_option("--arma-search", decomposeArgs->armaSearch, "ARMA orders tried per take: equal ((n,n)) or all ((p,q))")
@@ -482,21 +557,19 @@ void addDecompositionCommands(CommandSet& commands)
     dec->add_option("--arma-table", decomposeArgs->armaTableOrder, "ARMA(p,q) averaged per cell (Table 4.1), each 0..4")
         ->expected(2)
         ->check(CLI::Range(0, 4));
-    dec->add_flag("--pad", decomposeArgs->corpus.pad, "Pad takes to the longest by repeating the last frame");
     dec->add_flag("--json", decomposeArgs->json, "Print a JSON summary");
     dec->callback([decomposeArgs] { runDecompose(*decomposeArgs); });
 
     auto emotionArgs = std::make_shared<EmotionArgs>();
     CLI::App* emo = commands.root.add_subcommand(
-        "emotion", "Design a motion with an emotion weight: x = y^i + a z^{ij} (thesis eq. 4.45)");
-    emo->add_option("corpus", emotionArgs->corpus.path, "Corpus folder (corpus.json)")->required();
+        "emotion", "Design a motion with an emotion weight: x = y^i + a z^{ij} (thesis eq. 4.45), the workbench's weighted "
+                   "take: the same chain as `decompose`");
+    addChainOptions(emo, emotionArgs->chain);
     emo->add_option("--function", emotionArgs->function, "Function label, e.g. greeting")->required();
     emo->add_option("--emotion", emotionArgs->emotion, "Emotion label, e.g. friendly")->required();
     emo->add_option("--weight", emotionArgs->weight, "Emotion weight a in [0, 3] (1 = as performed)")->required();
-    emo->add_option("--method", emotionArgs->method, "km2o (default, M chosen by P unless --M) or ls")->check(CLI::IsMember({"ls", "km2o"}));
-    emo->add_option("--M", emotionArgs->correlationLength, "KM2O correlation length");
-    emo->add_option("-o,--output", emotionArgs->output, "Output take (.bvh, .glb or .csv)")->required();
-    emo->add_flag("--pad", emotionArgs->corpus.pad, "Pad takes to the longest by repeating the last frame");
+    emo->add_option("-o,--output", emotionArgs->output, "Output take (.bvh, .glb or .csv)")->required()->type_name("FILE");
+    emo->add_flag("--json", emotionArgs->json, "Print a JSON summary");
     emo->callback([emotionArgs] { runEmotion(*emotionArgs); });
 
     auto experimentArgs = std::make_shared<ExperimentArgs>();

@@ -240,6 +240,11 @@ void runNormalise(const NormaliseArguments& arguments)
         writeText(stem + "_correspondence.csv", csv.str());
         files.push_back(stem + "_normalised.csv");
         files.push_back(stem + "_correspondence.csv");
+        // A take with a skeleton (a BVH corpus): also on the performer's skeleton.
+        if (normalised[k].normalised.skeleton) {
+            writeTakeIntoFolder(normalised[k].normalised, staged, stem + "_normalised.bvh");
+            files.push_back(stem + "_normalised.bvh");
+        }
     }
     std::ostringstream variance;
     variance << std::setprecision(10) << "take,stage,total";

@@ -3,8 +3,10 @@
 #include "app/cli/cli.h"
 
 #include "analysis/body/body_description.h"
+#include "analysis/io/atomic_file.h"
 #include "render/take_export.h"
 
+#include <filesystem>
 #include <iostream>
 
 namespace bunraku::app::cli {
@@ -22,6 +24,27 @@ void writeTakeOutput(const analysis::Take& take, const std::string& output)
     unwrap(render::exportTake(take, analysis::defaultBodyDescription(), output));
     // On stderr: a --json answer on stdout stays one document.
     if (const std::string note = render::takeExportNote(take, output); !note.empty()) std::cerr << "note: " << note << "\n";
+}
+
+void writeTakeIntoFolder(const analysis::Take& take, analysis::io::StagedFolder& folder, const std::string& name)
+{
+    const std::filesystem::path shown = folder.target() / name;
+    requireTakeOutput(name);
+    // Errors name the file the user asked for, not the hidden staging folder.
+    const auto named = [&](const analysis::Error& error) {
+        std::string message = error.message;
+        const std::string staged = (folder.path() / name).string();
+        for (auto at = message.find(staged); at != std::string::npos; at = message.find(staged, at + 1))
+            message.replace(at, staged.size(), shown.string());
+        return CliError(message);
+    };
+    const std::filesystem::path file = folder.path() / name;
+    if (auto written = render::exportTake(take, analysis::defaultBodyDescription(), file); !written) throw named(written.error());
+    // Read back and recorded in the manifest (writeFile replaces the file with the same bytes).
+    auto content = analysis::io::readTextFile(file, analysis::io::kTakeFileLimitBytes);
+    if (!content) throw named(content.error());
+    if (auto recorded = folder.writeFile(name, *content); !recorded) throw named(recorded.error());
+    if (const std::string note = render::takeExportNote(take, shown); !note.empty()) std::cerr << "note: " << note << "\n";
 }
 
 } // namespace bunraku::app::cli

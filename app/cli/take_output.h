@@ -4,6 +4,7 @@
 /// takes that carry no skeleton of their own.
 
 #include "analysis/core/take.h"
+#include "analysis/io/staged_folder.h"
 
 #include <string>
 
@@ -17,5 +18,9 @@ void requireTakeOutput(const std::string& output);
 /// Prints render::takeExportNote (which of skeleton and channels the file holds, when they
 /// differ) as a "note:" line on stderr.
 void writeTakeOutput(const analysis::Take& take, const std::string& output);
+
+/// The same writer (and note) for a take inside a folder output: written as `name` (.bvh, .glb,
+/// .csv) into the staging folder and listed in its manifest like the folder's other files.
+void writeTakeIntoFolder(const analysis::Take& take, analysis::io::StagedFolder& folder, const std::string& name);
 
 } // namespace bunraku::app::cli

@@ -2,14 +2,17 @@
 // data files `bunraku analyse` writes for the same corpus and parameters, per stage; the CLI on
 // one thread, the workbench on one per hardware thread (its default).
 #include "tests/app/app_test_support.h"
+#include "tests/app/bandai_corpus_support.h"
 
 #include "app/analysis_controller.h"
+#include "app/commands.h"
 #include "app/design_controller.h"
 
 #include "analysis/core/parallel.h"
 #include "analysis/decompose/emotion_weight.h"
 #include "analysis/io/take_csv.h"
 #include "analysis/io/text_format.h"
+#include "analysis/pipeline/parameters_json.h"
 #include "analysis/report/analysis_files.h"
 
 #include <catch2/catch.hpp>
@@ -39,7 +42,70 @@ std::string text(const std::filesystem::path& file)
     return buffer.str();
 }
 
+/// The Emotion dock's weighted take (y + a z of take A's cell, eq. 4.45) against `bunraku emotion
+/// CORPUS ... -o X.csv` run with the window's parameters: the same values bit for bit (the take
+/// CSV prints the shortest text that reads back to the same double).
+void checkWeightedTakeEqualsCli(app::MainWindow& window, const std::string& corpus, std::size_t takeA, double weight,
+                                const std::filesystem::path& dir)
+{
+    auto& document = window.document();
+    document.selectTake(app::TakeSlot::A, app::Document::corpusTakeId(takeA));
+    REQUIRE(app::setEmotionWeight(document, weight));
+    auto& analysis = window.analysis();
+    REQUIRE(QTest::qWaitFor([&] { return !analysis.scheduler().busy() && analysis.decomposed() && analysis.weightedTake(); }, 120000));
+    const auto weighted = analysis.weightedTake();
+    REQUIRE(document.take(QStringLiteral("live/weighted")) == weighted);
+    const auto [function, emotion] = analysis.weightedCell();
+    // The window's parameters (the thesis's defaults here) as a --parameters file.
+    const auto parameters = dir / "parameters.json";
+    {
+        std::ofstream out(parameters);
+        out << analysis::pipeline::toJson(document.parameters()).dump(2);
+    }
+    const auto file = dir / "weighted.csv";
+    QProcess cli;
+    cli.start(QStringLiteral(BUNRAKU_CLI),
+              {QStringLiteral("emotion"), QString::fromStdString(corpus), QStringLiteral("--function"), QString::fromStdString(function),
+               QStringLiteral("--emotion"), QString::fromStdString(emotion), QStringLiteral("--weight"),
+               QString::fromStdString(analysis::io::shortestNumber(weight)), QStringLiteral("--parameters"),
+               QString::fromStdString(parameters.string()), QStringLiteral("-o"), QString::fromStdString(file.string()),
+               QStringLiteral("--json")});
+    REQUIRE(cli.waitForFinished(300000));
+    INFO(cli.readAllStandardError().toStdString());
+    REQUIRE(cli.exitCode() == 0);
+    const auto summary = nlohmann::json::parse(cli.readAllStandardOutput().toStdString());
+    CHECK(summary.at("input") == "normalised");
+    CHECK(summary.at("method") == "km2o");
+    CHECK(summary.at("frames") == weighted->frameCount());
+    INFO(function << "/" << emotion << " a = " << weight);
+    CHECK(csvValues(file) == weighted->values);
+}
+
 } // namespace
+
+TEST_CASE("the Emotion dock's weighted take equals bunraku emotion's on the demo corpus bit for bit", "[app][pipeline][cli][emotion]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    const auto dir = test::scratchDir("peer-emotion-demo");
+    SECTION("an emotional take A: its own cell") { checkWeightedTakeEqualsCli(*window, "demo", 7, 1.75, dir); }
+    SECTION("a neutral take A: its function's first emotion") { checkWeightedTakeEqualsCli(*window, "demo", 0, 0.5, dir); }
+}
+
+TEST_CASE("the Emotion dock's weighted take equals bunraku emotion's on Bandai takes bit for bit", "[app][pipeline][cli][emotion][bandai]")
+{
+    const auto corpus = test::bandaiCorpusFolder({"wave-right-hand_normal_001.bvh", "wave-right-hand_normal_002.bvh",
+                                                  "wave-right-hand_exhausted_001.bvh", "wave-right-hand_exhausted_002.bvh"},
+                                                 "peer-emotion-bandai", "waves");
+    if (corpus.empty()) return;
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    REQUIRE(window->files().openCorpusFolder(QString::fromStdString(corpus.string())));
+    const auto& takes = window->document().corpus().takes;
+    const auto exhausted = std::find_if(takes.begin(), takes.end(), [](const analysis::Take& t) { return t.labels.emotion == "exhausted"; });
+    REQUIRE(exhausted != takes.end());
+    checkWeightedTakeEqualsCli(*window, corpus.string(), std::size_t(exhausted - takes.begin()), 2.0, corpus.parent_path());
+}
 
 TEST_CASE("the workbench's stage results equal bunraku analyse's data files bit for bit", "[app][pipeline][cli]")
 {

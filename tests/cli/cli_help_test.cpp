@@ -11,6 +11,9 @@
 #include <filesystem>
 #include <regex>
 #include <set>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
 
 using bunraku::test::runBunraku;
 
@@ -112,21 +115,70 @@ TEST_CASE("every subcommand that does work offers a --json summary for batch job
 {
     const auto root = runBunraku({"--help"});
     REQUIRE(root.exitCode == 0);
-    std::vector<std::vector<std::string>> commands;
+    std::vector<std::string> commands;
     for (const auto& name : listedSubcommands(root.out)) {
         if (name == "help") continue;
         const auto help = runBunraku({name, "--help"});
         REQUIRE(help.exitCode == 0);
         const auto nested = listedSubcommands(help.out);
-        if (nested.empty()) commands.push_back({name});
-        for (const auto& inner : nested) commands.push_back({name, inner});
+        if (nested.empty()) commands.push_back(name);
+        for (const auto& inner : nested) commands.push_back(name + " " + inner);
     }
     REQUIRE(commands.size() >= 18);
-    for (auto command : commands) {
-        INFO(command.front() << (command.size() > 1 ? " " + command.back() : std::string()));
-        command.push_back("--help");
-        const auto help = runBunraku(command);
-        REQUIRE(help.exitCode == 0);
-        CHECK(help.out.find("--json") != std::string::npos);
+
+    // Each one run with --json on the demo corpus (and what the earlier ones wrote): standard
+    // output is JSON (`analyse`: one JSON document per line, progress then the summary).
+    const auto dir = bunraku::test::scratchDir("cli-json-every-command");
+    const auto s = [&](const std::string& name) { return (dir / name).string(); };
+    const std::string demo = s("demo"), take = s("demo") + "/greeting_hostile_1.csv", neutral = s("demo") + "/greeting_none_1.csv";
+    const std::vector<std::pair<std::string, std::vector<std::string>>> runs = {
+        {"demo", {"demo", "-o", demo}},
+        {"info", {"info", demo}},
+        {"convert", {"convert", take, "-o", s("converted.bvh")}},
+        {"preprocess", {"preprocess", demo, "-o", s("preprocessed")}},
+        {"corpus", {"corpus", take, neutral, "-o", s("two")}},
+        {"normalise", {"normalise", demo, "--function", "greeting", "--emotion", "hostile", "-o", s("normalised")}},
+        {"decompose", {"decompose", demo, "-o", s("decomposed")}},
+        {"emotion", {"emotion", demo, "--function", "greeting", "--emotion", "hostile", "--weight", "2", "-o", s("weighted.csv")}},
+        {"axis", {"axis", take, "-o", s("axis.csv")}},
+        {"phase", {"phase", "--reference", neutral, "--sample", take, "-o", s("warp.csv")}},
+        {"gains", {"gains", "--reference", neutral, "--sample", take, "--warp", s("warp.csv"), "-o", s("gains.json")}},
+        {"design", {"design", neutral, "--warp", s("warp.csv"), "--gains", s("gains.json"), "-o", s("designed.csv")}},
+        {"analyse", {"analyse", "demo", "-o", s("analysis")}},
+        {"summary", {"summary", s("analysis"), "--table", s("summary.csv")}},
+        {"render", {"render", take, "--size", "160x90", "-o", s("frame.png")}},
+        {"experiment noise", {"experiment", "noise"}},
+        {"experiment truth", {"experiment", "truth", demo}},
+        {"experiment km2o", {"experiment", "km2o", "--seeds", "1", "--M", "3:4"}},
+        {"experiment design", {"experiment", "design", demo}},
+        {"experiment approximation", {"experiment", "approximation", "demo", "--max-scale", "4"}},
+    };
+    std::set<std::string> run;
+    for (auto [name, arguments] : runs) {
+        INFO(name);
+        run.insert(name);
+        arguments.push_back("--json");
+        const auto result = runBunraku(arguments);
+        INFO(result.err);
+        REQUIRE(result.exitCode == 0);
+        std::vector<std::string> documents{result.out};
+        if (name == "analyse") {
+            documents.clear();
+            std::istringstream lines(result.out);
+            for (std::string line; std::getline(lines, line);) documents.push_back(line);
+            REQUIRE(documents.size() >= 2);
+        }
+        for (const auto& document : documents) {
+            INFO(document.substr(0, 300));
+            nlohmann::json parsed;
+            REQUIRE_NOTHROW(parsed = nlohmann::json::parse(document));
+            CHECK(parsed.is_object());
+            CHECK_FALSE(parsed.empty());
+        }
+    }
+    // A subcommand added later without a --json run here fails this test.
+    for (const auto& command : commands) {
+        INFO(command << " has no --json run in this test");
+        CHECK(run.count(command) == 1);
     }
 }

@@ -136,7 +136,7 @@ TEST_CASE("decompose and emotion reject bad options with one line and write noth
     CHECK(badOrder.err.find("--arma-table") != std::string::npos);
     // The remaining errors all name the corpus folder they are about.
     const std::vector<std::vector<std::string>> commands = {
-        {"decompose", corpus.string(), "--method", "ls", "-o", out.string()}, // unequal lengths without --pad
+        {"decompose", corpus.string(), "--no-preprocess", "--method", "ls", "-o", out.string()}, // unequal lengths without --pad
         {"decompose", corpus.string(), "--pad", "--method", "km2o", "--M", "-3", "-o", out.string()},
         {"decompose", corpus.string(), "--pad", "--method", "km2o", "--M", "1000", "-o", out.string()},
         {"emotion", corpus.string(), "--pad", "--function", "greeting", "--emotion", "friendly", "--weight", "4", "-o", out.string() + ".csv"},

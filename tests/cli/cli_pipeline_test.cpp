@@ -3,11 +3,16 @@
 #include "tests/support/shared_data.h"
 #include "tests/cli/cli_files.h"
 #include "tests/cli/cli_runner.h"
+
+#include "analysis/io/bvh.h"
+#include "analysis/io/staged_folder.h"
+#include "analysis/io/take_csv.h"
 #include "tests/support/test_paths.h"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
@@ -222,6 +227,48 @@ TEST_CASE("preprocessing a demo corpus keeps its ground truth and leaves no temp
         CHECK(entry.path().filename().string().rfind(".", 0) != 0);
     const auto summary = runJson({"decompose", preprocessed.string(), "--method", "ls", "-o", (dir / "ls").string(), "--json"});
     CHECK(summary.contains("truth"));
+}
+
+TEST_CASE("normalise writes each normalised take of a BVH corpus on the performer's skeleton, listed in the manifest", "[cli][bandai]")
+{
+    std::vector<std::string> files;
+    for (int k = 1; k <= 3; ++k) files.push_back((bunraku::test::bandaiDir() / ("wave-right-hand_active_00" + std::to_string(k) + ".bvh")).string());
+    bool present = true;
+    for (const auto& file : files) present = present && std::filesystem::exists(file);
+    if (!bunraku::test::requireBandaiData(present)) return;
+    const auto dir = bunraku::test::scratchDir("cli-normalise-bvh");
+    std::vector<std::string> corpus{"corpus"};
+    corpus.insert(corpus.end(), files.begin(), files.end());
+    corpus.insert(corpus.end(), {"-o", (dir / "waves").string()});
+    REQUIRE(runBunraku(corpus).exitCode == 0);
+    const auto out = dir / "out";
+    const auto run = runBunraku({"normalise", (dir / "waves").string(), "--function", "wave-right-hand", "--emotion", "active", "-o",
+                                 out.string(), "--json"});
+    INFO(run.err);
+    REQUIRE(run.exitCode == 0);
+    const auto summary = json::parse(run.out);
+    const auto reference = bunraku::analysis::io::readTakeCsv(out / "reference.csv");
+    REQUIRE(reference.ok());
+    const auto source = bunraku::analysis::io::readBvh(files.front());
+    REQUIRE(source.ok());
+    REQUIRE(source->skeleton.jointCount() == 22);
+    const json manifest = json::parse(bunraku::test::readTextFile(out / bunraku::analysis::io::kWrittenFilesManifest));
+    const std::string manifestText = manifest.dump();
+    std::vector<std::string> listed;
+    for (const auto& file : summary.at("files")) listed.push_back(file.get<std::string>());
+    for (int k = 1; k <= 3; ++k) {
+        const std::string name = "wave-right-hand_active_" + std::to_string(k) + "_normalised.bvh";
+        INFO(name);
+        CHECK(std::find(listed.begin(), listed.end(), name) != listed.end());
+        CHECK(manifestText.find("\"" + name + "\"") != std::string::npos);
+        const auto bvh = bunraku::analysis::io::readBvh(out / name);
+        REQUIRE(bvh.ok());
+        CHECK(bvh->skeleton.jointCount() == source->skeleton.jointCount());
+        CHECK(bvh->motion.values.rows() == reference->frameCount());
+        CHECK(bvh->motion.frameTime == Approx(source->motion.frameTime));
+    }
+    // Nothing in the folder the manifest does not list: it may be replaced by the next run.
+    CHECK(bunraku::analysis::io::foreignFiles(out).empty());
 }
 
 TEST_CASE("normalise prints and writes the variance per DOF family and marks the takes it moved away", "[cli]")

@@ -1,0 +1,27 @@
+#include "app/cli/chain_parameters.h"
+
+#include "app/cli/cli.h"
+
+#include "analysis/io/atomic_file.h"
+#include "analysis/pipeline/parameters_json.h"
+
+#include <nlohmann/json.hpp>
+
+namespace bunraku::app::cli {
+
+analysis::pipeline::ChainParameters readChainParameters(const std::string& file)
+{
+    if (file.empty()) return {};
+    const std::string text = unwrap(analysis::io::readTextFile(file, analysis::io::kDocumentLimitBytes));
+    nlohmann::json document;
+    try {
+        document = nlohmann::json::parse(text);
+    } catch (const nlohmann::json::exception& parse) { // a syntax error, or a number out of range (1e400)
+        throw CliError(file + ": expected JSON: " + parse.what());
+    }
+    // A project file holds the parameters under "parameters"; a parameters file may too.
+    const nlohmann::json& parameters = document.is_object() && document.contains("parameters") ? document["parameters"] : document;
+    return unwrap(analysis::pipeline::chainParametersFromJson(parameters, file));
+}
+
+} // namespace bunraku::app::cli

@@ -1,0 +1,17 @@
+#pragma once
+/// The chain's parameters as the command line takes them: `--parameters FILE` (a JSON file of
+/// analysis/pipeline/parameters_json.h, or a project file, whose "parameters" are read), shared by
+/// `analyse`, `decompose` and `emotion` so each runs the stages with the workbench's typed
+/// parameters and defaults (docs/FORMATS.md).
+
+#include "analysis/pipeline/stage_parameters.h"
+
+#include <string>
+
+namespace bunraku::app::cli {
+
+/// The thesis's defaults for an empty name; else the file's parameters (strictly validated).
+/// Throws CliError naming the file and what was expected.
+analysis::pipeline::ChainParameters readChainParameters(const std::string& file);
+
+} // namespace bunraku::app::cli
