@@ -128,7 +128,7 @@ TEST_CASE("after a control is set the focus returns to the window and Space play
     CHECK_FALSE(playback.playing());
 }
 
-TEST_CASE("Home resets the camera in the focused 3D view and goes to the start elsewhere; F frames the view", "[app][keys][camera]")
+TEST_CASE("Home resets the camera in the focused 3D view and goes to the start elsewhere, F frames the view", "[app][keys][camera]")
 {
     auto window = test::demoWindow();
     REQUIRE(window);

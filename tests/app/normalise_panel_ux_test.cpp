@@ -156,7 +156,7 @@ TEST_CASE("the normalisation panel's table, legend and summary say what was comp
     CHECK(panel->summaryText().contains(QStringLiteral("tau 4, T_cmp 20, scales 1-16")));
 }
 
-TEST_CASE("limits are in the tool tips and are the project's; 200000 typed into T_cmp becomes 100000 and the status bar says so",
+TEST_CASE("limits are in the tool tips and are the project's: 200000 typed into T_cmp becomes 100000 and the status bar says so",
           "[app][normalise][limits]")
 {
     auto window = test::demoWindow();

@@ -33,7 +33,7 @@ void showGrid(widgets::GraphGrid& grid, QSize size = QSize(800, 700))
 
 } // namespace
 
-TEST_CASE("other takes refit the time axis; the same takes keep the zoom", "[widgets][graph_grid][time]")
+TEST_CASE("other takes refit the time axis, the same takes keep the zoom", "[widgets][graph_grid][time]")
 {
     widgets::GraphGrid grid;
     const auto shortTake = test::syntheticPuppetTake(36);  // 7.0 s at 5 Hz

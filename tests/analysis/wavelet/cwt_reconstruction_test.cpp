@@ -88,7 +88,7 @@ TEST_CASE("reconstruction rejects unsorted scales", "[cwt][approximation]")
     CHECK(result.error().message.find("increasing") != std::string::npos);
 }
 
-TEST_CASE("the scales' separate terms sum to the reconstruction; nested integer scales share them")
+TEST_CASE("the scales' separate terms sum to the reconstruction, nested integer scales share them")
 {
     Eigen::VectorXd x(106);
     for (Eigen::Index t = 0; t < x.size(); ++t) x[t] = std::sin(0.69 * double(t)) + 0.5 * std::cos(0.17 * double(t)) + 3.0;
