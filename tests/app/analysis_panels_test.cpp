@@ -32,6 +32,18 @@ bool idle(app::MainWindow& window)
     return QTest::qWaitFor([&] { return !window.analysis().scheduler().busy() && window.analysis().axes(); }, 60000);
 }
 
+/// The demo window with a friendly take as A once its weighted take (y + a z) is computed; null
+/// when the window did not show or the weighted take did not come.
+std::unique_ptr<app::MainWindow> windowWithWeightedFriendlyTake()
+{
+    auto window = test::demoWindow();
+    if (!window) return nullptr;
+    window->document().selectTake(TakeSlot::A, app::Document::corpusTakeId(7)); // a friendly take
+    auto* panel = window->emotionPanel();
+    if (!QTest::qWaitFor([&] { return panel->ready() && panel->weightedTake(); }, 60000)) return nullptr;
+    return window;
+}
+
 } // namespace
 
 TEST_CASE("changing tau recomputes the normalised take in the background, undo restores it from the cache", "[app][normalise]")
@@ -64,12 +76,10 @@ TEST_CASE("changing tau recomputes the normalised take in the background, undo r
 
 TEST_CASE("the emotion weight slider re-synthesises y + a z live as one undo step", "[app][emotion]")
 {
-    auto window = test::demoWindow();
+    auto window = windowWithWeightedFriendlyTake();
     REQUIRE(window);
     auto* panel = window->emotionPanel();
     auto& document = window->document();
-    document.selectTake(TakeSlot::A, app::Document::corpusTakeId(7)); // a friendly take
-    REQUIRE(QTest::qWaitFor([&] { return panel->ready() && panel->weightedTake(); }, 60000));
     const Eigen::MatrixXd atOne = panel->weightedTake()->values;
 
     auto* slider = panel->weightSlider();
@@ -105,12 +115,10 @@ TEST_CASE("the emotion weight slider re-synthesises y + a z live as one undo ste
 
 TEST_CASE("Show weighted as A shows the weighted take, which follows the weight while shown", "[app][emotion]")
 {
-    auto window = test::demoWindow();
+    auto window = windowWithWeightedFriendlyTake();
     REQUIRE(window);
     auto* panel = window->emotionPanel();
     auto& document = window->document();
-    document.selectTake(TakeSlot::A, app::Document::corpusTakeId(7)); // a friendly take
-    REQUIRE(QTest::qWaitFor([&] { return panel->ready() && panel->weightedTake(); }, 60000));
     QPushButton* show = nullptr;
     for (auto* button : panel->findChildren<QPushButton*>())
         if (button->text() == QStringLiteral("Show weighted as A")) show = button;

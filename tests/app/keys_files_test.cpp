@@ -41,6 +41,23 @@ using namespace bunraku;
 
 namespace {
 
+/// Stands in for every file dialog while it lives: records what each one was asked (its purpose
+/// and the path it would start at) and answers `answer` ("" = cancelled).
+struct RecordedChooser {
+    std::vector<std::pair<app::FilePurpose, QString>> asked;
+    QString answer;
+    RecordedChooser()
+    {
+        app::setFileChooser([this](app::FilePurpose purpose, const QString& start) {
+            asked.emplace_back(purpose, start);
+            return answer;
+        });
+    }
+    ~RecordedChooser() { app::setFileChooser({}); }
+    RecordedChooser(const RecordedChooser&) = delete;
+    RecordedChooser& operator=(const RecordedChooser&) = delete;
+};
+
 /// Presses `key` where the keyboard focus is (the window when nothing has it), as a keyboard would.
 void press(app::MainWindow& window, Qt::Key key, Qt::KeyboardModifiers modifiers = Qt::NoModifier)
 {
@@ -242,15 +259,9 @@ TEST_CASE("file dialogs start in the folder last used for their purpose, with a 
     QDir().mkpath(shots);
     QDir().mkpath(reports);
     QSettings().remove(QStringLiteral("folders"));
-    std::vector<std::pair<app::FilePurpose, QString>> asked;
-    QString answer;
-    app::setFileChooser([&](app::FilePurpose purpose, const QString& start) {
-        asked.emplace_back(purpose, start);
-        return answer;
-    });
-    struct Restore {
-        ~Restore() { app::setFileChooser({}); }
-    } restore;
+    RecordedChooser chooser;
+    auto& asked = chooser.asked;
+    auto& answer = chooser.answer;
 
     // First screenshot: the home folder (nothing chosen yet), named after the corpus and take A.
     const QString takeA = window->document().takeLabel(window->document().selectedId(app::TakeSlot::A));
@@ -291,15 +302,9 @@ TEST_CASE("File > Export Take A (Ctrl+E) suggests a name from the take and opens
     const QString first = QString::fromStdString((root / "first").string());
     QDir().mkpath(first);
     QSettings().remove(QStringLiteral("folders"));
-    std::vector<std::pair<app::FilePurpose, QString>> asked;
-    QString answer;
-    app::setFileChooser([&](app::FilePurpose purpose, const QString& start) {
-        asked.emplace_back(purpose, start);
-        return answer;
-    });
-    struct Restore {
-        ~Restore() { app::setFileChooser({}); }
-    } restore;
+    RecordedChooser chooser;
+    auto& asked = chooser.asked;
+    auto& answer = chooser.answer;
     const auto named = [&](int take) {
         return QStringLiteral("demo-") + window->document().takeLabel(app::Document::corpusTakeId(take)).replace(QLatin1Char('/'), QLatin1Char('-')) +
                QStringLiteral(".bvh");

@@ -51,6 +51,13 @@ void resizeTo(app::MainWindow& window, QSize size)
     for (int pass = 0; pass < 4; ++pass) QCoreApplication::processEvents();
 }
 
+/// The default dock layout at `size`.
+void resetLayoutAt(app::MainWindow& window, QSize size)
+{
+    window.resetLayout();
+    resizeTo(window, size);
+}
+
 } // namespace
 
 TEST_CASE("at 1280x720 and 1366x768 every dock is inside the window at a useful size", "[app][layout]")
@@ -59,8 +66,7 @@ TEST_CASE("at 1280x720 and 1366x768 every dock is inside the window at a useful 
     REQUIRE(window);
     for (const QSize size : {QSize(1280, 720), QSize(1366, 768)}) {
         INFO("window " << size.width() << "x" << size.height());
-        window->resetLayout();
-        resizeTo(*window, size);
+        resetLayoutAt(*window, size);
         CHECK(window->minimumSizeHint().width() <= size.width());
         CHECK(window->minimumSizeHint().height() <= size.height());
         const QRect area(0, window->menuBar()->geometry().bottom() + 1, window->width(),
@@ -148,8 +154,7 @@ TEST_CASE("at 1280x720 and 1366x768 every button of the Design dock is whole ins
     REQUIRE(window);
     for (const QSize size : {QSize(1280, 720), QSize(1366, 768)}) {
         INFO("window " << size.width() << "x" << size.height());
-        window->resetLayout();
-        resizeTo(*window, size);
+        resetLayoutAt(*window, size);
         QDockWidget* dock = window->dock("designDock");
         dock->raise();
         for (int pass = 0; pass < 4; ++pass) QCoreApplication::processEvents();
