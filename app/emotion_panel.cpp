@@ -3,6 +3,7 @@
 #include "analysis/pipeline/stage_parameters.h"
 
 #include "app/analysis_scope_notice.h"
+#include "app/focus_return.h"
 
 #include "app/analysis_controller.h"
 #include "app/commands.h"
@@ -106,7 +107,9 @@ EmotionPanel::EmotionPanel(Document& document, AnalysisController& analysis, QWi
             order == 0 ? tr("Set the correlation length M to chosen by P") : tr("Set the correlation length M to %1").arg(order),
             QStringLiteral("decompose.M"));
     });
-    connect(m_order, &QSpinBox::editingFinished, &document, &Document::endStepSeries);
+    connect(m_order, &QSpinBox::editingFinished, this, [this] {
+        if (!focusReturnedToWindow(m_order)) m_document.endStepSeries();
+    });
     connect(m_order, &widgets::BoundedSpinBox::clamped, this, [this](int requested, int applied) {
         emit statusMessage(tr("M %1 is %2 the limit: set to %3 (%4)")
                                .arg(requested)

@@ -35,6 +35,13 @@ bool isClickControl(QWidget* widget)
 
 } // namespace
 
+bool focusReturnedToWindow(const QWidget* control)
+{
+    // When the focus moves, QApplication::focusWidget() is the new holder before the old one
+    // sees its focus-out (where a spin box emits editingFinished).
+    return control && QApplication::focusWidget() == control->window();
+}
+
 FocusReturn::FocusReturn(QWidget* window) : QObject(window), m_window(window) { qApp->installEventFilter(this); }
 
 FocusReturn::~FocusReturn() { qApp->removeEventFilter(this); }

@@ -17,6 +17,12 @@ class QWidget;
 
 namespace bunraku::app {
 
+/// Whether `control` just lost the focus to its own window (the focus given back after a step
+/// of it), rather than to another control the person went to. A spin box's editingFinished on
+/// such a loss does not end its series of merged undo steps: two arrow clicks merge as two key
+/// presses do (Document::endStepSeries).
+bool focusReturnedToWindow(const QWidget* control);
+
 class FocusReturn : public QObject {
     Q_OBJECT
 public:

@@ -5,6 +5,8 @@
 // projects bring back the graphs' part and DOF and the camera.
 #include "tests/app/app_test_support.h"
 
+#include "app/normalise_panel.h"
+
 #include "app/analysis_controller.h"
 #include "app/file_dialogs.h"
 #include "app/playback_controller.h"
@@ -21,6 +23,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QCheckBox>
+#include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -85,6 +88,52 @@ QAction* menuAction(app::MainWindow& window, const QString& text)
 }
 
 } // namespace
+
+TEST_CASE("two clicks on a spin box's arrow merge into one undo step though the focus returns after each", "[app][keys][focus][undo]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    window->activateWindow();
+    REQUIRE(QTest::qWaitForWindowActive(window.get()));
+    auto& document = window->document();
+    qint64 now = 0;
+    document.setClock([&now] { return now; });
+    auto* tau = window->normalisePanel()->tauSpin();
+    window->dock("normaliseDock")->raise();
+    settle();
+    REQUIRE(tau->isVisible());
+    QStyleOptionSpinBox option;
+    option.initFrom(tau);
+    option.subControls = QStyle::SC_SpinBoxUp;
+    const QPoint up = tau->style()->subControlRect(QStyle::CC_SpinBox, &option, QStyle::SC_SpinBoxUp, tau).center();
+    const int before = document.undoStack()->count();
+    QTest::mouseClick(tau, Qt::LeftButton, Qt::NoModifier, up);
+    settle();
+    CHECK_FALSE(focusInside(tau)); // the keys went back to the window
+    now += 300;
+    QTest::mouseClick(tau, Qt::LeftButton, Qt::NoModifier, up);
+    settle();
+    CHECK(tau->value() == 6);
+    CHECK(document.undoStack()->count() == before + 1);
+    CHECK(document.undoStack()->undoText() == QStringLiteral("Set tau to 6 frames"));
+    // Later, typed and entered: its own step; Enter ends the series, so a click 300 ms after it
+    // is its own step too.
+    now += 2000;
+    auto* text = tau->findChild<QLineEdit*>();
+    REQUIRE(text);
+    QTest::mouseClick(text, Qt::LeftButton, Qt::NoModifier, text->rect().center());
+    settle();
+    tau->selectAll();
+    QTest::keyClicks(text, QStringLiteral("8"));
+    QTest::keyClick(text, Qt::Key_Return);
+    settle();
+    CHECK(tau->value() == 8);
+    now += 300;
+    QTest::mouseClick(tau, Qt::LeftButton, Qt::NoModifier, up);
+    settle();
+    CHECK(tau->value() == 9);
+    CHECK(document.undoStack()->count() == before + 3);
+}
 
 TEST_CASE("after a control is set the focus returns to the window and Space plays", "[app][keys][focus]")
 {
