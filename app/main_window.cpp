@@ -32,6 +32,7 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QComboBox>
 #include <QCloseEvent>
 #include <QDir>
 #include <QDockWidget>
@@ -516,6 +517,8 @@ QVariantMap MainWindow::viewState() const
             {"part", m_graphs->selectedPart()},
             {"dof", m_graphs->selectedDof()},
             {"camera", m_viewportPanel->cameraState()},
+            {"figureA", m_viewportPanel->figureBox(0)->currentIndex()},
+            {"figureB", m_viewportPanel->figureBox(1)->currentIndex()},
             {"weightEmotion", m_analysis->weightEmotion()},
             {"speed", m_timeline->speed()},
             // The docks' places and sizes (QMainWindow::saveState), so the project reopens as laid out.
@@ -532,6 +535,9 @@ void MainWindow::restoreViewState(const QVariantMap& state)
     if (state.contains("part")) m_graphs->selectPart(state["part"].toString());
     if (state.contains("dof")) m_graphs->selectDof(state["dof"].toString());
     if (state.contains("camera")) m_viewportPanel->setCameraState(state["camera"].toMap());
+    // The 3D view's figure per take: puppet, skeleton or both (the boxes' order).
+    if (state.contains("figureA")) m_viewportPanel->figureBox(0)->setCurrentIndex(state["figureA"].toInt());
+    if (state.contains("figureB")) m_viewportPanel->figureBox(1)->setCurrentIndex(state["figureB"].toInt());
     if (state.contains("weightEmotion")) m_analysis->setWeightEmotion(state["weightEmotion"].toString());
     if (state.contains("graphLayout")) m_graphs->setGraphLayout(widgets::GraphLayout(state["graphLayout"].toInt()));
     if (state.contains("speed")) m_timeline->setSpeed(state["speed"].toDouble());

@@ -1,4 +1,5 @@
 #include "tests/app/app_test_support.h"
+#include "app/viewport_panel.h"
 
 #include "app/commands.h"
 #include "app/design_controller.h"
@@ -14,6 +15,8 @@
 #include "analysis/io/take_csv.h"
 
 #include <catch2/catch.hpp>
+
+#include <QComboBox>
 
 #include <QFile>
 #include <QFileInfo>
@@ -120,6 +123,7 @@ TEST_CASE("a saved project reopens to the same state", "[app][files]")
         window->graphPanel()->selectPart(QStringLiteral("arm"));
         window->graphPanel()->setTwoTakeMode(widgets::TwoTakeMode::SideBySide);
         window->graphPanel()->setAngleDisplay(widgets::AngleDisplay::RotationCoordinates);
+        window->viewportPanel()->figureBox(1)->setCurrentIndex(2); // take B as both figures
         REQUIRE(window->graphPanel()->grid()->graphCount() == 12);
         REQUIRE(window->isWindowModified());
         REQUIRE(window->files().saveProject(project));
@@ -140,6 +144,8 @@ TEST_CASE("a saved project reopens to the same state", "[app][files]")
     REQUIRE(window->graphPanel()->selectedPart() == QStringLiteral("arm"));
     REQUIRE(window->graphPanel()->grid()->graphCount() == 12);
     REQUIRE(window->graphPanel()->angleDisplay() == widgets::AngleDisplay::RotationCoordinates);
+    REQUIRE(window->viewportPanel()->figureBox(0)->currentIndex() == 0);
+    REQUIRE(window->viewportPanel()->figureBox(1)->currentIndex() == 2);
     REQUIRE(window->graphPanel()->shownTakeA() != document.selectedTake(TakeSlot::A)); // the coordinates' copy
     REQUIRE(window->files().projectPath() == project);
     REQUIRE_FALSE(window->isWindowModified());
