@@ -65,6 +65,13 @@ std::vector<double> graphTicks(double lower, double upper, double step, int coun
     return ticks;
 }
 
+std::vector<double> valueAxisTicks(double lower, double upper, bool thesisTicks)
+{
+    auto ticks = graphTicks(lower, upper, thesisTicks ? 10.0 : 0.0, 3);
+    if (ticks.size() < 2) ticks = graphTicks(lower, upper, 0.0, 3);
+    return ticks;
+}
+
 MultimodalGeometry multimodalGeometry(const std::vector<analysis::Channel>& channels, bool twoTakes,
                                       const MultimodalOptions& options)
 {
@@ -169,6 +176,14 @@ analysis::Result<MultimodalFrame> MultimodalFrame::create(std::shared_ptr<const 
     return frame;
 }
 
+QString MultimodalFrame::unitText(const Series& series) const
+{
+    const analysis::Take& take = *m_takes[series.slot];
+    if (series.channel < 0 || series.channel >= Eigen::Index(take.channels.size())) return {};
+    const std::string& unit = take.channels[std::size_t(series.channel)].unit;
+    return unit.empty() ? QString() : QStringLiteral(" (") + QString::fromStdString(unit) + QLatin1Char(')');
+}
+
 int MultimodalFrame::cursorColumn(const QRect& plot, double seconds) const
 {
     const double fraction = std::clamp(seconds / m_duration, 0.0, 1.0);
@@ -195,7 +210,7 @@ void MultimodalFrame::drawGraph(QPainter& painter, std::size_t index, double sec
 
     painter.setRenderHint(QPainter::Antialiasing, false);
     painter.setPen(m_colours.grid);
-    const auto valueTicks = graphTicks(series.lower, series.upper, m_options.thesisTicks ? 10.0 : 0.0, 3);
+    const auto valueTicks = valueAxisTicks(series.lower, series.upper, m_options.thesisTicks);
     const auto timeTicks = graphTicks(0.0, m_duration, m_options.thesisTicks ? 2.0 : 0.0, 5);
     for (double v : valueTicks) painter.drawLine(QPointF(plot.left(), yOf(v)), QPointF(plot.right(), yOf(v)));
     for (double t : timeTicks) painter.drawLine(QPointF(xOf(t), plot.top()), QPointF(xOf(t), plot.bottom()));
@@ -207,7 +222,7 @@ void MultimodalFrame::drawGraph(QPainter& painter, std::size_t index, double sec
     painter.setPen(m_colours.text);
     const QString takeName = m_takes[1] ? (series.slot == 0 ? QStringLiteral("A ") : QStringLiteral("B ")) : QString();
     painter.drawText(QRect(plot.left(), graph.top(), graph.right() - plot.left(), text + 3), Qt::AlignLeft | Qt::AlignVCenter,
-                     takeName + QString::fromStdString(cell.part + "." + cell.dof));
+                     takeName + QString::fromStdString(cell.part + "." + cell.dof) + unitText(series));
     if (labels) {
         const QFontMetrics metrics(font);
         // value labels at the lowest and highest tick, time labels at every other tick that fits

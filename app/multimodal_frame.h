@@ -103,10 +103,17 @@ private:
         double lower = 0.0, upper = 1.0;
     };
     std::vector<Series> m_series;
+    /// " (cm)", " (deg)": the unit of the series' channel, for its title; "" when it has none.
+    QString unitText(const Series& series) const;
 };
 
 /// Ticks from `lower` to `upper`: multiples of `step` when step > 0, else about `count` round
 /// values (1, 2 or 5 x 10^k apart).
 std::vector<double> graphTicks(double lower, double upper, double step, int count = 4);
+
+/// A graph's value ticks: every 10 units with the thesis's ticks (6.3.3), unless its range holds
+/// fewer than two of them (a head moving 5 cm), then about 3 round values as without: every
+/// graph keeps two value labels to read.
+std::vector<double> valueAxisTicks(double lower, double upper, bool thesisTicks);
 
 } // namespace bunraku::app

@@ -151,6 +151,14 @@ TEST_CASE("thesis ticks are every 10 units and every 2 s, automatic ticks round"
     for (std::size_t i = 0; i < automatic.size(); ++i) CHECK(automatic[i] == Approx(0.2 * double(i)).margin(1e-12));
     CHECK(app::graphTicks(-0.5, 0.5, 0.0, 4).at(2) == 0.0);
     CHECK(app::graphTicks(1.0, 1.0, 10.0).empty());
+    // A graph whose range holds fewer than two thesis ticks (a head moving 5 cm, or -3..2 cm)
+    // keeps two value labels: round ticks instead.
+    CHECK(app::valueAxisTicks(-23.0, 41.0, true) == values);
+    CHECK(app::graphTicks(-3.2, 2.1, 10.0).size() == 1);
+    const auto small = app::valueAxisTicks(-3.2, 2.1, true);
+    CHECK(small == std::vector<double>{-2, 0, 2});
+    CHECK(app::valueAxisTicks(141.0, 144.0, true).size() >= 2); // no multiple of 10 at all
+    CHECK(app::valueAxisTicks(-3.2, 2.1, false) == small);
 }
 
 TEST_CASE("the multimodal cursor's column moves with the frame", "[app][multimodal][pixels]")
