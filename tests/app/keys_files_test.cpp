@@ -334,7 +334,10 @@ TEST_CASE("file dialogs start in the folder last used for their purpose, with a 
     CHECK(asked.back().second == shots + QStringLiteral("/demo-") + other + QStringLiteral(".png"));
     CHECK(app::rememberedFolder(app::FilePurpose::Report) == reports);
 
-    // The video: not a ~/Videos the person never went to; the folder last used, a name of what is shown.
+    // The video: not a ~/Videos the person never went to; the folder last used, a name of what is
+    // shown. As MP4: a video export of an earlier case in this process may have left PNG frames as
+    // the remembered format.
+    QSettings().remove(QStringLiteral("videoExport"));
     app::VideoExportDialog dialog(app::VideoExportLimits{20, 5.0, QSize(320, 240)}, window.get());
     dialog.suggestOutput(app::suggestedFileName(window->document(), {}));
     const QString video = dialog.options().output;
