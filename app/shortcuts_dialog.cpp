@@ -69,6 +69,8 @@ std::vector<ShortcutEntry> windowShortcuts(const QMainWindow& window)
         {tr("Show the whole take"), tr("Double click"), tr("graphs (mouse)")},
         {tr("Move a phrase boundary"), tr("Drag an orange tick"), tr("timeline (mouse)")},
         {tr("Add a phrase boundary"), tr("Double click"), tr("timeline (mouse)")},
+        {tr("Move a warp point (it stops at its neighbours)"), tr("Drag a point"), tr("Design warp curve (mouse)")},
+        {tr("Move a warp point pushing the points it meets"), tr("Shift+drag a point"), tr("Design warp curve (mouse)")},
         {tr("Show as A"), tr("Double click"), tr("corpus (mouse)")},
     };
     entries.insert(entries.end(), views.begin(), views.end());

@@ -49,7 +49,8 @@ WarpCurveEditor::WarpCurveEditor(QWidget* parent) : QWidget(parent), m_plot(new 
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_plot, 1);
     layout->addLayout(buttons);
-    setToolTip(tr("Drag a point to move it; double click to add one; right click a point to delete it"));
+    setToolTip(tr("Drag a point to move it (Shift+drag pushes the points it meets along); double click to add one; "
+                  "right click a point to delete it"));
 
     connect(identity, &QPushButton::clicked, this, &WarpCurveEditor::resetToIdentityRequested);
     connect(extracted, &QPushButton::clicked, this, &WarpCurveEditor::resetToExtractedRequested);
@@ -190,7 +191,9 @@ void WarpCurveEditor::onMove(QMouseEvent* event)
     const QPoint position = event->position().toPoint();
     analysis::WarpPoint proposed{m_plot->xAxis->pixelToCoord(position.x()), m_plot->yAxis->pixelToCoord(position.y())};
     if (snapToFrames()) proposed = {std::round(proposed.output), std::round(proposed.source)};
-    const auto moved = analysis::moveControlPoint(m_curve, *m_dragged, proposed, snapToFrames() ? 1.0 : 0.5);
+    // Shift pushes the neighbours along instead of stopping at them.
+    const auto mode = (event->modifiers() & Qt::ShiftModifier) ? analysis::WarpMove::Push : analysis::WarpMove::Clamp;
+    const auto moved = analysis::moveControlPoint(m_curve, *m_dragged, proposed, snapToFrames() ? 1.0 : 0.5, mode);
     if (moved.points != m_curve.points) emit curveEdited(moved);
 }
 

@@ -2,7 +2,9 @@
 /// The time-warp curve editor (thesis Fig. 5.13): designed frame (x) -> functional frame (y),
 /// a monotone cubic through draggable control points (analysis/design/warp_curve.h), with the
 /// extracted correspondence drawn faintly behind it and the identity as a dotted diagonal.
-/// Drag a point to move it (clamped between its neighbours: monotone by construction), double
+/// Drag a point to move it (clamped between its neighbours: monotone by construction; with
+/// Shift held it pushes its neighbours' functional frames along instead, so one drag retimes a
+/// whole stretch), double
 /// click empty space to add a point on the curve, right click a point to delete it (not the
 /// ends); "snap to frames" rounds moved points to whole frames. The editor never changes its
 /// own curve: it proposes edits (curveEdited) and shows what setCurve gives it.

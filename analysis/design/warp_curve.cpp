@@ -110,7 +110,7 @@ double inverseWarp(const WarpCurve& curve, double source)
     return high;
 }
 
-WarpCurve moveControlPoint(const WarpCurve& curve, std::size_t index, const WarpPoint& proposed, double minimumGap)
+WarpCurve moveControlPoint(const WarpCurve& curve, std::size_t index, const WarpPoint& proposed, double minimumGap, WarpMove mode)
 {
     WarpCurve moved = curve;
     if (index >= moved.points.size()) return moved;
@@ -122,6 +122,12 @@ WarpCurve moveControlPoint(const WarpCurve& curve, std::size_t index, const Warp
     } else {
         const double low = p[index - 1].output + minimumGap, high = p[index + 1].output - minimumGap;
         point.output = low <= high ? std::clamp(point.output, low, high) : 0.5 * (p[index - 1].output + p[index + 1].output);
+    }
+    if (mode == WarpMove::Push) {
+        for (std::size_t j = 0; j < index; ++j) p[j].source = std::min(p[j].source, point.source);
+        for (std::size_t j = index + 1; j < p.size(); ++j) p[j].source = std::max(p[j].source, point.source);
+        p[index] = point;
+        return moved;
     }
     const double lowSource = first ? -std::numeric_limits<double>::infinity() : p[index - 1].source;
     const double highSource = last ? std::numeric_limits<double>::infinity() : p[index + 1].source;

@@ -46,10 +46,19 @@ Eigen::VectorXd sampleWarp(const WarpCurve& curve);
 /// An invalid curve (validateWarpCurve) returns `source` unchanged (the identity).
 double inverseWarp(const WarpCurve& curve, double source);
 
-/// The curve with point `index` moved towards `proposed`, clamped so output stays strictly
-/// between the neighbours (by `minimumGap` frames) and source between the neighbours' sources;
-/// the first and last points keep their output frame.
-WarpCurve moveControlPoint(const WarpCurve& curve, std::size_t index, const WarpPoint& proposed, double minimumGap = 0.5);
+/// How a dragged point meets its neighbours' source frames.
+enum class WarpMove {
+    Clamp, ///< it stops at them
+    Push,  ///< it pushes them (and theirs) along: one drag retimes a whole stretch
+};
+
+/// The curve with point `index` moved towards `proposed`, its output clamped strictly between
+/// the neighbours' (by `minimumGap` frames; the first and last points keep their output frame).
+/// Its source: Clamp keeps it between the neighbours' sources; Push takes it as proposed and
+/// moves every earlier point's source down to it where above, every later point's up to it where
+/// below, so the curve stays monotone. Points that do not block the move are never touched.
+WarpCurve moveControlPoint(const WarpCurve& curve, std::size_t index, const WarpPoint& proposed, double minimumGap = 0.5,
+                           WarpMove mode = WarpMove::Clamp);
 
 /// Control points summarising a dense monotone map (one source frame per output frame): one
 /// every `spacing` frames plus the last frame.

@@ -35,17 +35,16 @@ bool waitForDesign(app::MainWindow& window)
     return QTest::qWaitFor([&] { return window.design().ready() && !window.analysis().scheduler().busy(); }, 60000);
 }
 
-/// A left-button drag in 5 moves from `from` to `to` (widget coordinates).
-void dragIn(QWidget* widget, QPoint from, QPoint to)
+/// A left-button drag in 5 moves from `from` to `to` (widget coordinates), with `modifiers` held.
+void dragIn(QWidget* widget, QPoint from, QPoint to, Qt::KeyboardModifiers modifiers = Qt::NoModifier)
 {
-    QTest::mousePress(widget, Qt::LeftButton, Qt::NoModifier, from);
+    QTest::mousePress(widget, Qt::LeftButton, modifiers, from);
     for (int step = 1; step <= 5; ++step) {
         const QPoint at = from + (to - from) * step / 5;
-        QMouseEvent move(QEvent::MouseMove, QPointF(at), widget->mapToGlobal(QPointF(at)), Qt::NoButton, Qt::LeftButton,
-                         Qt::NoModifier);
+        QMouseEvent move(QEvent::MouseMove, QPointF(at), widget->mapToGlobal(QPointF(at)), Qt::NoButton, Qt::LeftButton, modifiers);
         QCoreApplication::sendEvent(widget, &move);
     }
-    QTest::mouseRelease(widget, Qt::LeftButton, Qt::NoModifier, to);
+    QTest::mouseRelease(widget, Qt::LeftButton, modifiers, to);
 }
 
 } // namespace
@@ -113,6 +112,40 @@ TEST_CASE("dragging a warp control point changes the designed take, stays monoto
     REQUIRE((window->design().designedTake()->values - valuesBefore).cwiseAbs().maxCoeff() < 1e-12);
     document.undoStack()->redo();
     REQUIRE(editor->curve().points[index].source > curveBefore.points[index].source);
+}
+
+TEST_CASE("a Shift drag of a warp point pushes the points it meets, as one undo step", "[app][design]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    REQUIRE(waitForDesign(*window));
+    auto& document = window->document();
+    window->dock("designDock")->show();
+    window->dock("designDock")->raise();
+    auto* editor = window->designPanel()->editor();
+    REQUIRE(QTest::qWaitForWindowExposed(editor));
+    editor->plot()->replot();
+    const auto curveBefore = editor->curve();
+    const std::size_t index = curveBefore.points.size() / 2;
+    REQUIRE(index + 3 < curveBefore.points.size());
+    // Up past the next two points' functional frames.
+    const double target = curveBefore.points[index + 2].source + 4.0;
+    const QPoint from = editor->plot()->mapFrom(editor, editor->pointPosition(index));
+    const QPoint to(from.x(), int(editor->plot()->yAxis->coordToPixel(target)));
+    dragIn(editor->plot(), from, to, Qt::ShiftModifier);
+    REQUIRE(document.undoStack()->count() == 1);
+    const auto curve = editor->curve();
+    const double reached = curve.points[index].source;
+    CHECK(reached > curveBefore.points[index + 2].source); // a plain drag stops at the next point's
+    CHECK(curve.points[index + 1].source == reached);
+    CHECK(curve.points[index + 2].source == reached);
+    for (std::size_t i = 0; i < index; ++i) CHECK(curve.points[i] == curveBefore.points[i]);
+    for (std::size_t i = index + 3; i < curve.points.size(); ++i)
+        CHECK(curve.points[i].source == std::max(curveBefore.points[i].source, reached));
+    const Eigen::VectorXd samples = analysis::sampleWarp(curve);
+    for (Eigen::Index i = 1; i < samples.size(); ++i) REQUIRE(samples[i] >= samples[i - 1]);
+    document.undoStack()->undo();
+    CHECK(editor->curve().points == curveBefore.points);
 }
 
 TEST_CASE("a gain slider drag changes the designed take as one undo step", "[app][design]")

@@ -51,6 +51,37 @@ TEST_CASE("moving a control point is clamped between its neighbours")
     CHECK(end.points[2].source == 30.0);
 }
 
+TEST_CASE("a pushing drag moves the points it meets and no others, and keeps the curve monotone")
+{
+    const WarpCurve curve{{{0, 0}, {10, 10}, {20, 20}, {30, 30}, {40, 40}}, 41};
+    // Up past two neighbours: they are pushed up to it; the point beyond them is not touched.
+    const WarpCurve up = moveControlPoint(curve, 1, {10, 27}, 0.5, WarpMove::Push);
+    CHECK(up.points[1].source == 27.0);
+    CHECK(up.points[2].source == 27.0);
+    CHECK(up.points[3].source == 30.0);
+    CHECK(up.points[0].source == 0.0);
+    // Down past the first: it goes down with it; the output is clamped as without pushing.
+    const WarpCurve down = moveControlPoint(curve, 2, {35, 3}, 0.5, WarpMove::Push);
+    CHECK(down.points[2].output == Approx(29.5));
+    CHECK(down.points[2].source == 3.0);
+    CHECK(down.points[1].source == 3.0);
+    CHECK(down.points[0].source == 0.0);
+    CHECK(down.points[3].source == 30.0);
+    // Clamp stops where Push goes on.
+    CHECK(moveControlPoint(curve, 1, {10, 27}).points[1].source == 20.0);
+
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> jump(-60.0, 60.0);
+    WarpCurve pushed = identityWarp(106, 8);
+    for (int drag = 0; drag < 300; ++drag) {
+        const std::size_t index = std::size_t(random() % pushed.points.size());
+        const WarpPoint& p = pushed.points[index];
+        pushed = moveControlPoint(pushed, index, {p.output + jump(random), p.source + jump(random)}, 0.5, WarpMove::Push);
+        REQUIRE(validateWarpCurve(pushed).ok());
+        for (std::size_t i = 1; i < pushed.points.size(); ++i) REQUIRE(pushed.points[i].source >= pushed.points[i - 1].source);
+    }
+}
+
 TEST_CASE("the inverse warp finds the output frame that shows a source frame")
 {
     // a smooth non-identity warp: slow start, fast end
