@@ -35,6 +35,18 @@ bool waitForDesign(app::MainWindow& window)
     return QTest::qWaitFor([&] { return window.design().ready() && !window.analysis().scheduler().busy(); }, 60000);
 }
 
+/// The Design dock's warp editor, shown and drawn once the design is ready; null if it never is.
+widgets::WarpCurveEditor* shownWarpEditor(app::MainWindow& window)
+{
+    if (!waitForDesign(window)) return nullptr;
+    window.dock("designDock")->show();
+    window.dock("designDock")->raise();
+    auto* editor = window.designPanel()->editor();
+    if (!QTest::qWaitForWindowExposed(editor)) return nullptr;
+    editor->plot()->replot();
+    return editor;
+}
+
 /// A left-button drag in 5 moves from `from` to `to` (widget coordinates), with `modifiers` held.
 void dragIn(QWidget* widget, QPoint from, QPoint to, Qt::KeyboardModifiers modifiers = Qt::NoModifier)
 {
@@ -68,13 +80,9 @@ TEST_CASE("dragging a warp control point changes the designed take, stays monoto
 {
     auto window = test::demoWindow();
     REQUIRE(window);
-    REQUIRE(waitForDesign(*window));
+    auto* editor = shownWarpEditor(*window);
+    REQUIRE(editor);
     auto& document = window->document();
-    window->dock("designDock")->show();
-    window->dock("designDock")->raise();
-    auto* editor = window->designPanel()->editor();
-    REQUIRE(QTest::qWaitForWindowExposed(editor));
-    editor->plot()->replot();
     const auto before = window->design().designedTake();
     const Eigen::MatrixXd valuesBefore = before->values;
     const auto curveBefore = editor->curve();
@@ -118,13 +126,9 @@ TEST_CASE("a Shift drag of a warp point pushes the points it meets, as one undo 
 {
     auto window = test::demoWindow();
     REQUIRE(window);
-    REQUIRE(waitForDesign(*window));
+    auto* editor = shownWarpEditor(*window);
+    REQUIRE(editor);
     auto& document = window->document();
-    window->dock("designDock")->show();
-    window->dock("designDock")->raise();
-    auto* editor = window->designPanel()->editor();
-    REQUIRE(QTest::qWaitForWindowExposed(editor));
-    editor->plot()->replot();
     const auto curveBefore = editor->curve();
     const std::size_t index = curveBefore.points.size() / 2;
     REQUIRE(index + 3 < curveBefore.points.size());
