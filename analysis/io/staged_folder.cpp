@@ -204,7 +204,7 @@ StagedFolder::~StagedFolder()
     fs::remove_all(m_stage, ignored);
 }
 
-Status StagedFolder::writeFile(const fs::path& relative, std::string_view content)
+Result<fs::path> StagedFolder::stagedName(const fs::path& relative) const
 {
     const fs::path clean = relative.lexically_normal();
     const std::string name = clean.generic_string();
@@ -212,14 +212,36 @@ Status StagedFolder::writeFile(const fs::path& relative, std::string_view conten
     if (clean.empty() || clean.is_absolute() || climbs || name == kWrittenFilesManifest)
         return makeError(ErrorCode::InvalidArgument, (m_target / relative).string() + ": not a file name inside the folder");
     if (m_committed) return makeError(ErrorCode::InvalidArgument, (m_target / clean).string() + ": the folder is already written");
-    const fs::path file = m_stage / clean;
-    std::error_code ec;
-    fs::create_directories(file.parent_path(), ec);
-    if (ec) return makeError(ErrorCode::Io, (m_target / clean).parent_path().string() + ": cannot create the folder: " + ec.message());
-    if (auto written = writeStagedFile(file, content, (m_target / clean).string()); !written) return written;
+    return clean;
+}
+
+void StagedFolder::record(const std::string& name, std::string_view content)
+{
     m_entries.erase(std::remove_if(m_entries.begin(), m_entries.end(), [&](const Entry& e) { return e.path == name; }),
                     m_entries.end());
     m_entries.push_back(Entry{name, content.size(), fnv1a64(content)});
+}
+
+Status StagedFolder::writeFile(const fs::path& relative, std::string_view content)
+{
+    auto clean = stagedName(relative);
+    if (!clean) return clean.error();
+    const fs::path file = m_stage / *clean;
+    std::error_code ec;
+    fs::create_directories(file.parent_path(), ec);
+    if (ec) return makeError(ErrorCode::Io, (m_target / *clean).parent_path().string() + ": cannot create the folder: " + ec.message());
+    if (auto written = writeStagedFile(file, content, (m_target / *clean).string()); !written) return written;
+    record(clean->generic_string(), content);
+    return okStatus();
+}
+
+Status StagedFolder::recordFile(const fs::path& relative)
+{
+    auto clean = stagedName(relative);
+    if (!clean) return clean.error();
+    auto content = readTextFile(m_stage / *clean, kTakeFileLimitBytes);
+    if (!content) return content.error();
+    record(clean->generic_string(), *content);
     return okStatus();
 }
 

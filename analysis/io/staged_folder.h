@@ -54,6 +54,10 @@ public:
     /// to the disk, and records it in the manifest. Errors name the target's file.
     Status writeFile(const std::filesystem::path& relative, std::string_view content);
 
+    /// Records in the manifest a file another writer (an atomic, durable one) already wrote at
+    /// `relative` inside the stage (path()), read once for its size and hash.
+    Status recordFile(const std::filesystem::path& relative);
+
     /// Copies every regular file under `source` into `relative` inside the stage (recorded in the
     /// manifest); anything else in `source` (a link, a FIFO) is refused with its name.
     Status copyFolder(const std::filesystem::path& source, const std::filesystem::path& relative);
@@ -64,6 +68,11 @@ public:
 
 private:
     StagedFolder(std::filesystem::path target, std::filesystem::path stage);
+    /// `relative` normalised when it names a file inside the folder and the folder is not yet
+    /// committed; else the error naming the target's file.
+    Result<std::filesystem::path> stagedName(const std::filesystem::path& relative) const;
+    /// Lists `name` in the manifest (once) with the content's size and hash.
+    void record(const std::string& name, std::string_view content);
 
     struct Entry {
         std::string path;

@@ -3,7 +3,6 @@
 #include "app/cli/cli.h"
 
 #include "analysis/body/body_description.h"
-#include "analysis/io/atomic_file.h"
 #include "render/take_export.h"
 
 #include <filesystem>
@@ -40,10 +39,8 @@ void writeTakeIntoFolder(const analysis::Take& take, analysis::io::StagedFolder&
     };
     const std::filesystem::path file = folder.path() / name;
     if (auto written = render::exportTake(take, analysis::defaultBodyDescription(), file); !written) throw named(written.error());
-    // Read back and recorded in the manifest (writeFile replaces the file with the same bytes).
-    auto content = analysis::io::readTextFile(file, analysis::io::kTakeFileLimitBytes);
-    if (!content) throw named(content.error());
-    if (auto recorded = folder.writeFile(name, *content); !recorded) throw named(recorded.error());
+    // Written atomically by exportTake; listed in the manifest like the folder's other files.
+    if (auto recorded = folder.recordFile(name); !recorded) throw named(recorded.error());
     if (const std::string note = render::takeExportNote(take, shown); !note.empty()) std::cerr << "note: " << note << "\n";
 }
 
