@@ -12,16 +12,28 @@
 
 namespace bunraku::analysis {
 
+namespace {
+
+/// The joint binding of each puppet part, in kPuppetParts order; NotFound names a part not bound.
+Result<std::array<const PartBinding*, kPuppetPartCount>> boundParts(const Skeleton& skeleton)
+{
+    std::array<const PartBinding*, kPuppetPartCount> bindings{};
+    for (std::size_t p = 0; p < bindings.size(); ++p) {
+        bindings[p] = skeleton.binding(kPuppetParts[p]);
+        if (!bindings[p]) return makeError(ErrorCode::NotFound, "the puppet part '" + std::string(kPuppetParts[p]) + "' is not bound to a joint");
+    }
+    return bindings;
+}
+
+} // namespace
+
 Result<Take> puppetTakeFromSkeleton(std::shared_ptr<const SkeletalMotion> motion, double rateHz, const TakeLabels& labels)
 {
     if (!motion || !motion->skeleton) return makeError(ErrorCode::InvalidArgument, "a puppet take needs a skeletal motion");
     const Skeleton& skeleton = *motion->skeleton;
-    std::array<const PartBinding*, kPuppetPartCount> bindings{};
-    for (std::size_t p = 0; p < bindings.size(); ++p) {
-        bindings[p] = skeleton.binding(kPuppetParts[p]);
-        if (!bindings[p])
-            return makeError(ErrorCode::NotFound, skeleton.name + ": the puppet part '" + std::string(kPuppetParts[p]) + "' is not bound to a joint");
-    }
+    const auto found = boundParts(skeleton);
+    if (!found) return makeError(found.error().code, skeleton.name + ": " + found.error().message);
+    const auto& bindings = *found;
     Take take;
     take.channels = puppetChannels();
     take.rateHz = rateHz;
@@ -45,12 +57,11 @@ Result<SkeletonChannelGap> skeletonChannelGap(const Take& take)
     if (motion.frameCount() != take.frameCount())
         return makeError(ErrorCode::InvalidArgument, "the take has " + std::to_string(take.frameCount()) + " frames and its skeleton " +
                                                          std::to_string(motion.frameCount()));
-    const Skeleton& skeleton = *motion.skeleton;
-    std::array<const PartBinding*, kPuppetPartCount> bindings{};
+    const auto found = boundParts(*motion.skeleton);
+    if (!found) return found.error();
+    const auto& bindings = *found;
     std::array<Eigen::Index, kPuppetPartCount> firstChannel{};
     for (std::size_t p = 0; p < bindings.size(); ++p) {
-        bindings[p] = skeleton.binding(kPuppetParts[p]);
-        if (!bindings[p]) return makeError(ErrorCode::NotFound, "the puppet part '" + std::string(kPuppetParts[p]) + "' is not bound to a joint");
         const auto first = take.channelIndex(kPuppetParts[p], "x");
         if (!first) return makeError(ErrorCode::NotFound, "the take has no channels of the part '" + std::string(kPuppetParts[p]) + "'");
         firstChannel[p] = *first;
