@@ -48,7 +48,7 @@ bool ExportController::exportTake(TakeSlot slot, const QString& file)
         return false;
     }
     m_lastError.clear();
-    QString message = tr("Exported take %1 (%2) to %3").arg(slotName(slot), m_document.takeLabel(m_document.selectedId(slot)), file);
+    QString message = tr("Exported take %1 (%2) to %3").arg(slotName(slot), label, file);
     m_lastNote = QString::fromStdString(render::takeExportNote(*take, std::filesystem::path(file.toStdString())));
     if (!m_lastNote.isEmpty()) message += QStringLiteral(": ") + m_lastNote;
     emit statusMessage(message);

@@ -118,6 +118,9 @@ void GraphPanel::setTakes(std::shared_ptr<const analysis::Take> takeA, std::shar
 
 void GraphPanel::setGhost(std::shared_ptr<const analysis::Take> ghost)
 {
+    // The same ghost again (every step of a drag of the take in front of it): setTakes shows it
+    // on the new take A's base; converting it here as well would be done twice.
+    if (ghost == m_ghost) return;
     m_ghost = std::move(ghost);
     m_grid->setGhost(shown(m_ghost));
 }
