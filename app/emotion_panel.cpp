@@ -107,9 +107,7 @@ EmotionPanel::EmotionPanel(Document& document, AnalysisController& analysis, QWi
             order == 0 ? tr("Set the correlation length M to chosen by P") : tr("Set the correlation length M to %1").arg(order),
             QStringLiteral("decompose.M"));
     });
-    connect(m_order, &QSpinBox::editingFinished, this, [this] {
-        if (!focusReturnedToWindow(m_order)) m_document.endStepSeries();
-    });
+    endSeriesWhenEdited(m_order, [this] { m_document.endStepSeries(); });
     connect(m_order, &widgets::BoundedSpinBox::clamped, this, [this](int requested, int applied) {
         emit statusMessage(tr("M %1 is %2 the limit: set to %3 (%4)")
                                .arg(requested)

@@ -39,21 +39,18 @@ QString purposeKey(FilePurpose purpose)
     return kLastFolderKey;
 }
 
-QString rememberedFolder(FilePurpose purpose, const QString& projectFile)
-{
-    const QSettings settings;
-    for (const QString& key : {purposeKey(purpose), kLastFolderKey}) {
-        const QString folder = settings.value(key).toString();
-        if (existingFolder(folder)) return folder;
-    }
-    if (!projectFile.isEmpty() && existingFolder(QFileInfo(projectFile).absolutePath())) return QFileInfo(projectFile).absolutePath();
-    return QDir::homePath();
-}
-
 QString rememberedPurposeFolder(FilePurpose purpose)
 {
     const QString folder = QSettings().value(purposeKey(purpose)).toString();
     return existingFolder(folder) ? folder : QString();
+}
+
+QString rememberedFolder(FilePurpose purpose, const QString& projectFile)
+{
+    if (const QString folder = rememberedPurposeFolder(purpose); !folder.isEmpty()) return folder;
+    if (const QString last = QSettings().value(kLastFolderKey).toString(); existingFolder(last)) return last;
+    if (!projectFile.isEmpty() && existingFolder(QFileInfo(projectFile).absolutePath())) return QFileInfo(projectFile).absolutePath();
+    return QDir::homePath();
 }
 
 void rememberFolder(FilePurpose purpose, const QString& path)

@@ -33,13 +33,22 @@ bool isClickControl(QWidget* widget)
     return combo && !combo->isEditable();
 }
 
-} // namespace
-
+/// Whether `control` just lost the focus to its own window (given back after a step of it) rather
+/// than to another control the person went to.
 bool focusReturnedToWindow(const QWidget* control)
 {
     // When the focus moves, QApplication::focusWidget() is the new holder before the old one
     // sees its focus-out (where a spin box emits editingFinished).
     return control && QApplication::focusWidget() == control->window();
+}
+
+} // namespace
+
+void endSeriesWhenEdited(QAbstractSpinBox* box, std::function<void()> endSeries)
+{
+    QObject::connect(box, &QAbstractSpinBox::editingFinished, box, [box, endSeries = std::move(endSeries)] {
+        if (!focusReturnedToWindow(box)) endSeries();
+    });
 }
 
 FocusReturn::FocusReturn(QWidget* window) : QObject(window), m_window(window) { qApp->installEventFilter(this); }

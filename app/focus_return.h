@@ -13,15 +13,18 @@
 #include <QObject>
 #include <QPointer>
 
+#include <functional>
+
+class QAbstractSpinBox;
 class QWidget;
 
 namespace bunraku::app {
 
-/// Whether `control` just lost the focus to its own window (the focus given back after a step
-/// of it), rather than to another control the person went to. A spin box's editingFinished on
-/// such a loss does not end its series of merged undo steps: two arrow clicks merge as two key
-/// presses do (Document::endStepSeries).
-bool focusReturnedToWindow(const QWidget* control);
+/// Calls `endSeries` (Document::endStepSeries) when `box`'s editing is finished by the person -
+/// Enter, or a move to another control - and not when the focus was only given back to the
+/// window after a step of it: two arrow clicks merge into one undo step as two key presses do.
+/// Connected for `box`'s lifetime.
+void endSeriesWhenEdited(QAbstractSpinBox* box, std::function<void()> endSeries);
 
 class FocusReturn : public QObject {
     Q_OBJECT

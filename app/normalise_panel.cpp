@@ -157,9 +157,7 @@ NormalisePanel::NormalisePanel(Document& document, AnalysisController& analysis,
         edit(QStringLiteral("maxScale"), tr("Set the largest scale to %1").arg(value), [value](auto& p) { p.maxScale = value; });
     });
     for (widgets::BoundedSpinBox* box : {m_tau, m_band, m_scales}) {
-        connect(box, &QSpinBox::editingFinished, this, [this, box] {
-            if (!focusReturnedToWindow(box)) m_document.endStepSeries();
-        });
+        endSeriesWhenEdited(box, [this] { m_document.endStepSeries(); });
         connect(box, &widgets::BoundedSpinBox::clamped, this, [this, box](int requested, int applied) {
             const QString name = box == m_tau ? tr("tau") : box == m_band ? tr("T_cmp") : tr("The largest scale");
             emit statusMessage(tr("%1 %2%3 is %4 the limit: set to %5%3 (%6)")
