@@ -7,6 +7,7 @@
 // - the 3D view alone: a moving frame, a still (multisampled) frame, a replaced scene;
 // - the drag step and the playback frame with a Bandai take's 22-joint skeleton shown as take B
 //   beside the puppet (issue 12 point 5), against the same take B shown as a puppet.
+#include "bench/app/bench_window.h"
 #include "app/analysis_controller.h"
 #include "app/design_controller.h"
 #include "app/file_controller.h"
@@ -51,12 +52,7 @@ void waitIdle(app::MainWindow& main)
 app::MainWindow& window()
 {
     if (!g_window) g_window = [] {
-        auto made = std::make_unique<app::MainWindow>();
-        made->files().setDialogsEnabled(false);
-        made->files().openDemoCorpus();
-        made->resize(1600, 1000);
-        made->show();
-        (void)QTest::qWaitForWindowExposed(made.get());
+        auto made = bench::shownDemoWindow();
         made->document().selectTake(app::TakeSlot::B, app::Document::corpusTakeId(7));
         made->graphPanel()->setTwoTakeMode(widgets::TwoTakeMode::SideBySide);
         (void)QTest::qWaitFor([&] { return made->design().ready(); }, 60000);

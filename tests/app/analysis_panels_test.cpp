@@ -214,9 +214,8 @@ TEST_CASE("the Emotion dock says KM2O is not estimable on the Bandai bye takes a
     const auto corpus = test::bandaiCorpusFolder({"bye_normal_001.bvh", "bye_happy_001.bvh", "bye_angry_001.bvh"}, "emotion_one_take", "bye");
     if (corpus.empty()) return;
 
-    auto window = test::demoWindow();
+    auto window = test::windowOnCorpus(corpus);
     REQUIRE(window);
-    REQUIRE(window->files().openCorpusFolder(QString::fromStdString(corpus.string())));
     auto& document = window->document();
     const auto& takes = document.corpus().takes;
     const auto happy = std::find_if(takes.begin(), takes.end(), [](const analysis::Take& t) { return t.labels.emotion == "happy"; });
@@ -251,14 +250,11 @@ TEST_CASE("the Emotion dock says KM2O is not estimable on the Bandai bye takes a
 TEST_CASE("the Normalisation panel names the takes normalisation moved away and suggests the optimal path, as the CLI does",
           "[app][normalise][variance]")
 {
-    std::vector<std::string> names;
-    for (int k = 1; k <= 5; ++k) names.push_back("wave-right-hand_active_00" + std::to_string(k) + ".bvh");
-    const auto corpus = test::bandaiCorpusFolder(names, "normalise_worse_takes", "active");
+    const auto corpus = test::bandaiCorpusFolder(test::bandaiWaveNames("active"), "normalise_worse_takes", "active");
     if (corpus.empty()) return;
 
-    auto window = test::demoWindow();
+    auto window = test::windowOnCorpus(corpus);
     REQUIRE(window);
-    REQUIRE(window->files().openCorpusFolder(QString::fromStdString(corpus.string())));
     auto* panel = window->normalisePanel();
     // The default greedy scan: takes 2 and 4 come out further in both families (tests_cli "normalise prints*").
     REQUIRE(QTest::qWaitFor([&] { return idle(*window) && panel->summaryText().contains(QStringLiteral("wave-right-hand/active</b> normalised to")); }, 60000));

@@ -2,6 +2,8 @@
 /// A corpus folder made from named shared Bandai files, as File > New Corpus from Files makes it,
 /// for the app tests that open real takes in the workbench.
 
+#include "tests/app/app_test_support.h"
+
 #include "analysis/io/corpus_builder.h"
 #include "analysis/io/corpus_io.h"
 #include "tests/support/shared_data.h"
@@ -11,6 +13,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -35,6 +38,22 @@ inline std::filesystem::path bandaiCorpusFolder(const std::vector<std::string>& 
     const auto dir = scratchDir(scratch) / "corpus";
     REQUIRE(analysis::io::writeCorpus(built->corpus, dir).ok());
     return dir;
+}
+
+/// The five Bandai waves of one style: wave-right-hand_<style>_001.bvh ... _005.bvh.
+inline std::vector<std::string> bandaiWaveNames(const std::string& style)
+{
+    std::vector<std::string> names;
+    for (int k = 1; k <= 5; ++k) names.push_back("wave-right-hand_" + style + "_00" + std::to_string(k) + ".bvh");
+    return names;
+}
+
+/// A shown window (demoWindow) that then opened the corpus folder `folder`; null when either failed.
+inline std::unique_ptr<app::MainWindow> windowOnCorpus(const std::filesystem::path& folder)
+{
+    auto window = demoWindow();
+    if (!window || !window->files().openCorpusFolder(QString::fromStdString(folder.string()))) return nullptr;
+    return window;
 }
 
 } // namespace bunraku::test

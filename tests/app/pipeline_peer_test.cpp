@@ -98,9 +98,8 @@ TEST_CASE("the Emotion dock's weighted take equals bunraku emotion's on Bandai t
                                                   "wave-right-hand_exhausted_001.bvh", "wave-right-hand_exhausted_002.bvh"},
                                                  "peer-emotion-bandai", "waves");
     if (corpus.empty()) return;
-    auto window = test::demoWindow();
+    auto window = test::windowOnCorpus(corpus);
     REQUIRE(window);
-    REQUIRE(window->files().openCorpusFolder(QString::fromStdString(corpus.string())));
     const auto& takes = window->document().corpus().takes;
     const auto exhausted = std::find_if(takes.begin(), takes.end(), [](const analysis::Take& t) { return t.labels.emotion == "exhausted"; });
     REQUIRE(exhausted != takes.end());

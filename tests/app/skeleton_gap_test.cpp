@@ -18,13 +18,10 @@ using namespace bunraku;
 
 TEST_CASE("the 3D view and the export say how far a normalised Bandai take's skeleton is from its channels", "[app][skeleton][gap]")
 {
-    std::vector<std::string> names;
-    for (int k = 1; k <= 5; ++k) names.push_back("wave-right-hand_normal_00" + std::to_string(k) + ".bvh");
-    const auto corpus = test::bandaiCorpusFolder(names, "app_skeleton_gap", "waves");
+    const auto corpus = test::bandaiCorpusFolder(test::bandaiWaveNames("normal"), "app_skeleton_gap", "waves");
     if (corpus.empty()) return;
-    auto window = test::demoWindow();
+    auto window = test::windowOnCorpus(corpus);
     REQUIRE(window);
-    REQUIRE(window->files().openCorpusFolder(QString::fromStdString(corpus.string())));
     auto& document = window->document();
     document.selectTake(TakeSlot::A, app::Document::corpusTakeId(0));
     auto* view = window->viewportPanel();
