@@ -8,6 +8,7 @@
 #include "analysis/core/rotation.h"
 #include "analysis/core/skeleton.h"
 #include "analysis/io/take_reader.h"
+#include "tests/support/shared_data.h"
 #include "tests/support/test_paths.h"
 
 #include <catch2/catch.hpp>
@@ -22,17 +23,12 @@
 
 namespace bunraku::test {
 
-/// True when every named Bandai file exists; otherwise FAIL under CI=true, WARN (skip) outside.
+/// True when every named Bandai file exists; otherwise fails under CI=true and is reported as
+/// skipped outside (requireBandaiData, tests/support/peer.h).
 inline bool bandaiAvailable(const std::vector<std::string>& names)
 {
-    for (const auto& name : names) {
-        if (std::filesystem::exists(bandaiDir() / name)) continue;
-        const char* ci = std::getenv("CI");
-        if (ci && std::string(ci) == "true") FAIL("Bandai test data missing under CI: " << (bandaiDir() / name).string());
-        WARN("Bandai test data not found (" << (bandaiDir() / name).string() << "); skipping");
-        return false;
-    }
-    return true;
+    const bool all = std::all_of(names.begin(), names.end(), [](const std::string& name) { return std::filesystem::exists(bandaiDir() / name); });
+    return requireBandaiData(all);
 }
 
 inline std::vector<std::string> bandaiWaveStyles() { return {"normal", "active", "exhausted"}; }

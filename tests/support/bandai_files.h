@@ -2,6 +2,7 @@
 /// The shared Bandai Namco BVH files (../shared/data/bandai, read in place, never copied), for
 /// tests that need real motion capture. When they are missing the test fails under CI=true
 /// and is reported as skipped otherwise (a WARN naming the folder), never passed silently.
+#include "tests/support/shared_data.h"
 #include "tests/support/test_paths.h"
 
 #include <catch2/catch.hpp>
@@ -23,11 +24,8 @@ inline std::vector<std::filesystem::path> bandaiFilesOrSkip()
         for (const auto& entry : std::filesystem::directory_iterator(bandaiDir(), ec))
             if (entry.path().extension() == ".bvh") files.push_back(entry.path());
     std::sort(files.begin(), files.end());
-    if (files.empty()) {
-        const char* ci = std::getenv("CI");
-        if (ci != nullptr && std::string(ci) == "true") FAIL("the Bandai test data is missing from " << bandaiDir() << " (CI=true)");
-        WARN("SKIPPED: the Bandai test data is missing from " << bandaiDir());
-    }
+    // Missing: fails under CI=true, reported as skipped otherwise (tests/support/peer.h).
+    (void)requireBandaiData(!files.empty());
     return files;
 }
 
