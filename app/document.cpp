@@ -1,5 +1,7 @@
 #include "app/document.h"
 
+#include "analysis/core/skeleton_take.h"
+
 #include <algorithm>
 #include <chrono>
 
@@ -89,7 +91,9 @@ double Document::rateHz() const
 TakePointer Document::ghostOf(const QString& id) const
 {
     const int index = indexOfDerived(id);
-    return index < 0 || m_derived[std::size_t(index)].ghostId.isEmpty() ? nullptr : take(m_derived[std::size_t(index)].ghostId);
+    if (index < 0) return nullptr;
+    const DerivedTake& derived = m_derived[std::size_t(index)];
+    return derived.ghostId.isEmpty() ? derived.perChannelGhost : take(derived.ghostId);
 }
 
 void Document::setLiveTake(const QString& name, const QString& label, TakePointer take, const QString& ghostId)
@@ -103,18 +107,32 @@ void Document::setLiveTake(const QString& name, const QString& label, TakePointe
         emit derivedTakesChanged();
         return;
     }
+    // One motion: the figure, the graphs and every export show the body's.
+    TakePointer perChannelGhost;
+    if (take->skeleton) {
+        auto body = analysis::bodyMotion(*take);
+        if (body.perChannel) {
+            auto ghost = std::make_shared<analysis::Take>(body.take);
+            ghost->values = *body.perChannel;
+            ghost->skeleton = nullptr;
+            ghost->labels.source = "per-channel (thesis) result of " + body.take.labels.source;
+            perChannelGhost = std::move(ghost);
+            take = std::make_shared<const analysis::Take>(std::move(body.take));
+        }
+    }
     if (index >= 0) {
         const bool relabelled = m_derived[std::size_t(index)].label != label;
         m_derived[std::size_t(index)].take = std::move(take);
         m_derived[std::size_t(index)].label = label;
         m_derived[std::size_t(index)].ghostId = ghostId;
+        m_derived[std::size_t(index)].perChannelGhost = std::move(perChannelGhost);
         if (relabelled) emit takeLabelChanged(id);
         emit takeChanged(id);
         for (int slot = 0; slot < 2; ++slot)
             if (m_selected[slot] == id) emit selectionChanged(TakeSlot(slot));
         return;
     }
-    m_derived.push_back(DerivedTake{id, label, std::move(take), QString(), ghostId, nullptr});
+    m_derived.push_back(DerivedTake{id, label, std::move(take), QString(), ghostId, nullptr, std::move(perChannelGhost)});
     emit derivedTakesChanged();
 }
 

@@ -57,6 +57,9 @@ struct DerivedTake {
     QString ghostId;    ///< live results: the take drawn faintly behind it (its original)
     /// imported takes: the options they were read with (stored in projects); null for defaults
     std::shared_ptr<const analysis::io::ImportOptions> importOptions;
+    /// live results shown as one body (analysis::bodyMotion): the thesis's per-channel result, drawn
+    /// as the ghost when there is no ghostId; null when the take's channels are its body's.
+    TakePointer perChannelGhost;
 };
 
 class Document : public QObject {
@@ -103,9 +106,12 @@ public:
 
     /// Publishes a live analysis result under "live/<name>" (replacing the previous one; null
     /// removes it). For the AnalysisController only; not undoable: results are recomputed from
-    /// the parameters.
+    /// the parameters. A result with a skeleton is published as its body moves
+    /// (analysis::bodyMotion: one motion for the figure, the graphs and exports), its per-channel
+    /// result kept as perChannelGhost.
     void setLiveTake(const QString& name, const QString& label, TakePointer take, const QString& ghostId = {});
-    /// The take drawn as a ghost behind `id` (a live result's original), null when none.
+    /// The take drawn as a ghost behind `id` (a live result's original, else its per-channel
+    /// result), null when none.
     TakePointer ghostOf(const QString& id) const;
 
     /// Replaces every parameter (loading a project): not undoable, clears the undo stack.

@@ -2,12 +2,14 @@
 
 #include "analysis/body/body_pose.h"
 #include "analysis/core/skeleton_take.h"
+#include "analysis/skeleton/puppet_rig_fit.h"
 #include "analysis/io/take_reader.h"
 #include "render/puppet_geometry.h"
 #include "render/skeleton_geometry.h"
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 
 namespace bunraku::render {
 
@@ -81,38 +83,44 @@ analysis::Result<ExportRig> puppetRig(const analysis::BodyDescription& body, con
 
 std::string takeExportNote(const analysis::Take& take, const std::filesystem::path& file)
 {
-    const TakeExportFormat format = takeExportFormat(file);
-    if (format == TakeExportFormat::Unknown) return {};
-    const auto gap = analysis::noticeableSkeletonGap(take);
-    if (!gap) return {};
-    const std::string by = analysis::describeSkeletonChannelGap(*gap);
-    if (format == TakeExportFormat::Csv)
-        return file.filename().string() + " holds the take's 24 channels; its skeleton's motion differs from them by " + by +
-               " (write .bvh or .glb for the skeleton)";
-    return file.filename().string() + " holds the take's skeleton; its 24 channels differ from that motion by " + by +
-           " (write .csv for the channels)";
+    if (takeExportFormat(file) == TakeExportFormat::Unknown) return {};
+    const auto body = analysis::bodyMotion(take);
+    if (!body.perChannel) return {};
+    const auto distance = analysis::perChannelDistance(body.take, *body.perChannel);
+    if (!distance || (distance->maxPositionCm < analysis::kSkeletonGapNoticeCm && distance->maxAngleDeg < analysis::kSkeletonGapNoticeDeg))
+        return {};
+    char by[160];
+    std::snprintf(by, sizeof by, "up to %.1f cm (%s, frame %lld) and %.1f deg", distance->maxPositionCm, distance->worstPart.c_str(),
+                  static_cast<long long>(distance->worstFrame), distance->maxAngleDeg);
+    return file.filename().string() + " holds the take as one body moves (its skeleton, and the channels posed from it); the thesis's " +
+           "per-channel result differs from it by " + by;
 }
 
 analysis::Status exportTake(const analysis::Take& take, const analysis::BodyDescription& body, const std::filesystem::path& file,
                             const std::string& name)
 {
+    // One motion: every format holds the body's (analysis::bodyTake), as the view and graphs show it.
+    const analysis::Take shown = analysis::bodyTake(take);
     switch (takeExportFormat(file)) {
     case TakeExportFormat::Csv:
-    case TakeExportFormat::Bvh: return analysis::io::writeTakeFile(take, file);
+    case TakeExportFormat::Bvh: return analysis::io::writeTakeFile(shown, file);
     case TakeExportFormat::Glb: {
-        if (auto valid = analysis::validateTake(take); !valid)
+        if (auto valid = analysis::validateTake(shown); !valid)
             return analysis::makeError(valid.error().code, file.string() + ": " + valid.error().message);
         ExportRig rig;
-        if (take.skeleton) {
-            rig = skeletonRig(take.skeleton);
+        if (shown.skeleton && !analysis::isPuppetRig(*shown.skeleton->skeleton)) {
+            rig = skeletonRig(shown.skeleton);
         } else {
-            auto puppet = puppetRig(body, take);
+            // The puppet itself (a take of the puppet's channels, or on its fitted rig).
+            analysis::Take channels = shown;
+            channels.skeleton = nullptr;
+            auto puppet = puppetRig(body, channels);
             if (!puppet) return analysis::makeError(puppet.error().code, file.string() + ": " + puppet.error().message);
             rig = std::move(puppet).value();
         }
         analysis::io::GltfExportOptions options;
-        options.name = name.empty() ? take.displayName() : name;
-        return analysis::io::writeSkeletalGlb(*rig.motion, take.rateHz, rig.meshes, file, options);
+        options.name = name.empty() ? shown.displayName() : name;
+        return analysis::io::writeSkeletalGlb(*rig.motion, shown.rateHz, rig.meshes, file, options);
     }
     case TakeExportFormat::Unknown: break;
     }

@@ -1,5 +1,7 @@
 #include "analysis/body/body_fit.h"
 
+#include "analysis/skeleton/puppet_rig_fit.h"
+
 #include "analysis/core/puppet_layout.h"
 #include "analysis/core/skeleton_anatomy.h"
 
@@ -137,7 +139,7 @@ Result<BodyDescription> fitBodyToSkeleton(const BodyDescription& puppet, const S
 
 BodyDescription bodyForTake(const BodyDescription& puppet, const Take& take)
 {
-    if (!take.skeleton || !take.skeleton->skeleton) return puppet;
+    if (!take.skeleton || !take.skeleton->skeleton || isPuppetRig(*take.skeleton->skeleton)) return puppet;
     for (const auto part : kPuppetParts)
         if (!take.skeleton->skeleton->binding(part)) return puppet;
     auto fitted = fitBodyToSkeleton(puppet, *take.skeleton);

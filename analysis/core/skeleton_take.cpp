@@ -103,6 +103,67 @@ std::string describeSkeletonChannelGap(const SkeletonChannelGap& gap)
     return text;
 }
 
+BodyMotion bodyMotion(Take take)
+{
+    if (!take.skeleton || !take.skeleton->skeleton || !hasPuppetLayout(take) || take.skeleton->frameCount() != take.frameCount())
+        return {std::move(take), nullptr};
+    const auto found = boundParts(*take.skeleton->skeleton);
+    if (!found) return {std::move(take), nullptr};
+    const auto gap = skeletonChannelGap(take);
+    if (!gap || (gap->maxPositionCm <= kBodyAgreementTolerance && gap->maxAngleDeg <= kBodyAgreementTolerance))
+        return {std::move(take), nullptr};
+    const auto& bindings = *found;
+    Eigen::MatrixXd body(take.frameCount(), kPuppetChannelCount);
+    for (Eigen::Index f = 0; f < take.frameCount(); ++f) {
+        const auto poses = take.skeleton->worldPoses(f);
+        for (std::size_t p = 0; p < bindings.size(); ++p) {
+            const Eigen::Index first = Eigen::Index(p) * kDofCount;
+            const RigidTransform pose = poses[std::size_t(bindings[p]->joint)] * bindings[p]->joint_T_part;
+            const Eigen::MatrixXd& previousRow = f == 0 ? take.values : body;
+            const Eigen::Index previousFrame = f == 0 ? 0 : f - 1;
+            const YawPitchRoll previous{previousRow(previousFrame, first + 3), previousRow(previousFrame, first + 4),
+                                        previousRow(previousFrame, first + 5)};
+            const YawPitchRoll angles = nearestEquivalent(yawPitchRollFromRotation(pose.rotation), previous);
+            body.block<1, 3>(f, first) = pose.translation.transpose();
+            body(f, first + 3) = angles.yaw;
+            body(f, first + 4) = angles.pitch;
+            body(f, first + 5) = angles.roll;
+        }
+    }
+    auto perChannel = std::make_shared<const Eigen::MatrixXd>(std::move(take.values));
+    take.values = std::move(body);
+    return {std::move(take), std::move(perChannel)};
+}
+
+Take bodyTake(Take take)
+{
+    return bodyMotion(std::move(take)).take;
+}
+
+std::optional<PerChannelDistance> perChannelDistance(const Take& take, const Eigen::MatrixXd& perChannel)
+{
+    if (perChannel.rows() != take.frameCount() || perChannel.cols() != take.channelCount() || !hasPuppetLayout(take))
+        return std::nullopt;
+    Take ghost;
+    ghost.channels = take.channels;
+    ghost.values = perChannel;
+    PerChannelDistance d;
+    for (Eigen::Index f = 0; f < take.frameCount(); ++f) {
+        for (int p = 0; p < kPuppetPartCount; ++p) {
+            const RigidTransform a = partPose(take, f, Eigen::Index(p) * kDofCount);
+            const RigidTransform b = partPose(ghost, f, Eigen::Index(p) * kDofCount);
+            const double distance = (a.translation - b.translation).norm();
+            d.maxAngleDeg = std::max(d.maxAngleDeg, rotationDistance(a.rotation, b.rotation) * 180.0 / std::numbers::pi);
+            if (distance > d.maxPositionCm) {
+                d.maxPositionCm = distance;
+                d.worstPart = std::string(kPuppetParts[std::size_t(p)]);
+                d.worstFrame = f;
+            }
+        }
+    }
+    return d;
+}
+
 SkeletalMotion resampleSkeletalMotion(const SkeletalMotion& motion, double fromHz, double toHz)
 {
     const Eigen::Index sourceFrames = motion.frameCount();

@@ -40,6 +40,8 @@ Result<SkeletonChannelGap> skeletonChannelGap(const Take& take);
 /// Below these a gap is rounding: cm (the tolerance of the Blender acceptance) and degrees.
 inline constexpr double kSkeletonGapNoticeCm = 0.1;
 inline constexpr double kSkeletonGapNoticeDeg = 0.1;
+/// Below this (cm and deg) a take's channels are its skeleton's poses (bodyTake leaves them).
+inline constexpr double kBodyAgreementTolerance = 1e-9;
 
 /// The take's gap when it has a skeleton and the gap reaches a notice threshold; nothing for a
 /// take without a skeleton, with one its channels follow, or one that cannot be compared.
@@ -47,6 +49,34 @@ std::optional<SkeletonChannelGap> noticeableSkeletonGap(const Take& take);
 
 /// "up to 78.7 cm (hand, frame 172) and 127.1 deg".
 std::string describeSkeletonChannelGap(const SkeletonChannelGap& gap);
+
+/// One motion for a take (what the 3D view draws, the graphs show and every export writes): for a
+/// take with the 24 puppet channels and a skeleton that poses the four parts, whose channels are
+/// not the parts' poses (a derived take: the thesis's per-channel arithmetic of 3.6, 3.7, 4.5 and
+/// 5.5), the take whose channels are those poses by forward kinematics of the skeleton (angles
+/// continuous, starting on the branch nearest the take's own first frame), with the take's own
+/// values as `perChannel`. Any other take (no skeleton, another layout, channels within
+/// kBodyAgreementTolerance of the skeleton) is returned as it is, `perChannel` null.
+/// Idempotent: the body motion of a body motion is itself.
+struct BodyMotion {
+    Take take;
+    /// The thesis's per-channel result the channels were projected from; null when unchanged.
+    std::shared_ptr<const Eigen::MatrixXd> perChannel;
+};
+BodyMotion bodyMotion(Take take);
+/// bodyMotion(take).take.
+Take bodyTake(Take take);
+
+/// The largest distance (cm) and angle (deg) between a take's puppet parts and the same parts
+/// posed by `perChannel` (its per-channel ghost), over every part and frame; nothing when the
+/// shapes differ or the take is not of the puppet layout.
+struct PerChannelDistance {
+    double maxPositionCm = 0;
+    double maxAngleDeg = 0;
+    std::string worstPart;
+    Eigen::Index worstFrame = 0;
+};
+std::optional<PerChannelDistance> perChannelDistance(const Take& take, const Eigen::MatrixXd& perChannel);
 
 /// The same motion at another rate: frame k at time k / toHz, rotations interpolated
 /// spherically and translations linearly between the two nearest source frames, the last

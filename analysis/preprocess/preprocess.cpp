@@ -2,6 +2,7 @@
 
 #include "analysis/core/angle_channels.h"
 #include "analysis/core/puppet_layout.h"
+#include "analysis/skeleton/puppet_rig_fit.h"
 #include "analysis/skeleton/skeleton_resample.h"
 
 #include <Eigen/Geometry>
@@ -288,6 +289,9 @@ Result<PreprocessResult> preprocessCorpus(const Corpus& corpus, const Preprocess
     for (const Take& take : corpus.takes) originalFrames.push_back(take.frameCount());
     PreprocessResult result{corpus, {}};
     Corpus& out = result.corpus;
+    // One body per take: puppet-channel takes without a skeleton get the puppet's rig fitted to
+    // the whole corpus (one puppet), which every step below moves as one body.
+    if (auto rig = attachPuppetRig(out.takes); !rig) return rig.error();
     auto& reports = result.report.takes;
     for (const Take& take : out.takes) {
         TakeReport report;
@@ -353,6 +357,10 @@ Result<PreprocessResult> preprocessCorpus(const Corpus& corpus, const Preprocess
                 std::optional<Eigen::Vector3d> bodyOffset;
                 for (std::size_t p = 0; p < parts.size() && p < reports[i].positionOffsets.size(); ++p)
                     if (parts[p].part == options.headingPart || !bodyOffset) bodyOffset = reports[i].positionOffsets[p];
+                // A performer stands on the floor: the body moves across it, never into or above
+                // it (the thesis's channels still move up or down; the puppet's rig, held by its
+                // puppeteers, follows them).
+                if (take.skeleton && bodyOffset && !isPuppetRig(*take.skeleton->skeleton)) bodyOffset->z() = 0.0;
                 if (take.skeleton && bodyOffset && !bodyOffset->isZero())
                     take.skeleton = moveSkeletalMotion(*take.skeleton, RigidTransform{Eigen::Quaterniond::Identity(), *bodyOffset});
             }

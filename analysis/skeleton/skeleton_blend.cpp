@@ -52,7 +52,7 @@ Error incompatible(const SkeletalMotion& a, const SkeletalMotion& b)
     const std::string first = a.skeleton ? a.skeleton->name : std::string("?");
     const std::string second = b.skeleton ? b.skeleton->name : std::string("?");
     return makeError(ErrorCode::InvalidArgument, "skeletons '" + first + "' and '" + second +
-                                                     "' differ in their joints or bone offsets: their motions cannot be averaged joint by joint");
+                                                     "' have other joints (names, parents, End Sites): their motions cannot be averaged joint by joint");
 }
 
 } // namespace

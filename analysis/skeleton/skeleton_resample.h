@@ -47,9 +47,11 @@ std::vector<int> partChainRoots(const Skeleton& skeleton);
 /// joint moving in any of `motions`, in joint order.
 std::vector<int> translatingJoints(const std::vector<const SkeletalMotion*>& motions);
 
-/// True when both motions have the same joints (names, parents, End Sites) and the same bone
-/// offsets (to 1e-6 cm) for every joint that is not translating in either: motions that can be
-/// averaged joint by joint. Roots may stand anywhere (a take moved to its start position).
+/// True when both motions have the same joints (names, parents, End Sites): motions that can be
+/// averaged joint by joint. Roots may stand anywhere (a take moved to its start position), and
+/// bones may differ (files of one performer written with other End Sites or rounding, or
+/// performers of other sizes): an average or weighted motion moves the first motion's bones, so
+/// that it is one body whose segment lengths never change (docs/NORMALISATION.md).
 bool compatibleMotions(const SkeletalMotion& a, const SkeletalMotion& b);
 
 } // namespace bunraku::analysis

@@ -136,9 +136,14 @@ nlohmann::json chainSummary(const ChainOutcome& chain)
 {
     nlohmann::json summary;
     summary["input"] = pipeline::inputName(chain.parameters.decompose.input);
-    summary["method"] = chain.parameters.decompose.method == pipeline::DecomposeMethod::Km2o ? "km2o" : "ls"; // as --method
+    const char* requested = chain.parameters.decompose.method == pipeline::DecomposeMethod::Km2o ? "km2o" : "ls"; // as --method
+    summary["method"] = requested;
+    summary["method_requested"] = requested;
     summary["parameters"] = pipeline::toJson(chain.parameters);
     if (const auto& km2o = chain.decomposed->km2o) {
+        // The method really used: KM2O needs a cell of two takes; without one, y and z are least squares.
+        if (!km2o->estimable()) summary["method"] = "ls";
+        summary["method_note"] = km2o->outcome();
         summary["km2o"] = analysis::report::km2oOutcomeJson(*km2o);
         if (km2o->estimable()) { // else no M was chosen: y, z by least squares
             summary["M"] = km2o->correlationLength;
@@ -431,6 +436,8 @@ void runEmotion(const EmotionArgs& args)
               << summary["method"].get<std::string>();
     if (summary.contains("M")) std::cout << ", M = " << summary["M"].get<int>();
     std::cout << ")\n";
+    if (summary["method"] != summary["method_requested"]) std::cout << summary["method_note"].get<std::string>() << "\n";
+    if (!take.skeleton) std::cout << "the take has no skeleton: " << args.output << " holds the puppet's parts\n";
 }
 
 struct ExperimentArgs {

@@ -11,6 +11,7 @@
 #include "analysis/io/take_reader.h"
 #include "analysis/io/text_format.h"
 #include "analysis/preprocess/preprocess.h"
+#include "analysis/skeleton/puppet_rig_fit.h"
 #include "analysis/synth/demo_corpus_io.h"
 
 #include <algorithm>
@@ -31,6 +32,11 @@ namespace pre = analysis::preprocess;
 namespace synth = analysis::synth;
 using analysis::Corpus;
 using analysis::Take;
+using analysis::PuppetRigFit;
+using analysis::fitPuppetRig;
+using analysis::describePuppetRigResidual;
+using analysis::hasPuppetLayout;
+using analysis::kPuppetParts;
 using nlohmann::json;
 
 /// A corpus folder, or a one-take corpus made of a take file of any supported format. A BVH
@@ -218,6 +224,18 @@ void runInfo(const InfoArguments& arguments)
         high = high.cwiseMax(take.values.colwise().maxCoeff().transpose());
     }
 
+    // Takes of the puppet's 24 channels without a skeleton get the puppet's rig (one body per
+    // take; analysis/skeleton/puppet_rig_fit.h): how well it fits them.
+    std::vector<const Take*> rigTakes;
+    for (const Take& take : corpus.takes)
+        if (!take.skeleton && hasPuppetLayout(take) && take.frameCount() > 0) rigTakes.push_back(&take);
+    std::optional<PuppetRigFit> rig;
+    if (!rigTakes.empty()) {
+        auto fit = fitPuppetRig(rigTakes);
+        if (!fit) throw CliError(arguments.path + ": " + fit.error().message, exitCodeOf(fit.error()));
+        rig = std::move(fit).value();
+    }
+
     if (arguments.json) {
         json takeList = json::array();
         for (const Take& take : corpus.takes) takeList.push_back(takeJson(take));
@@ -245,6 +263,18 @@ void runInfo(const InfoArguments& arguments)
             document["convention"] = corpus.convention;
         }
         if (loaded.bvh) document.update(bvhJson(loaded));
+        if (rig) {
+            json parts = json::object();
+            for (std::size_t p = 0; p < kPuppetParts.size(); ++p)
+                parts[std::string(kPuppetParts[p])] = {{"max_cm", rig->residual.maxCm[p]},
+                                                       {"rms_cm", rig->residual.rmsCm[p]},
+                                                       {"max_deg", rig->residual.maxDeg[p]}};
+            json segments = json::object();
+            for (const auto& joint : rig->skeleton->joints)
+                if (joint.parent >= 0) segments[joint.name] = joint.offset.norm();
+            document["rig_fit"] = {{"takes", rigTakes.size()}, {"frames", rig->residual.frames}, {"parts", parts},
+                                   {"segment_cm", segments}};
+        }
         printJson(document);
         return;
     }
@@ -267,6 +297,10 @@ void runInfo(const InfoArguments& arguments)
     }
     std::cout.unsetf(std::ios::fixed);
     std::cout << std::setprecision(6);
+    if (rig)
+        std::cout << "\npuppet rig fitted to " << rigTakes.size() << (rigTakes.size() == 1 ? " take" : " takes")
+                  << " (one body: derived takes move it; each part's distance from its channels, largest and rms):\n  "
+                  << describePuppetRigResidual(rig->residual) << "\n";
     if (loaded.bvh) printBvh(loaded);
 }
 

@@ -1,6 +1,7 @@
 // The analysis pipeline on the demo corpus (30 takes, 6 cells): the whole chain from scratch,
 // and the chain again after one parameter change with a warm cache - the counters say which
 // stages ran per iteration (1 = recomputed, 0 = taken from the cache).
+#include "analysis/core/skeleton_take.h"
 #include "analysis/pipeline/chain.h"
 #include "analysis/pipeline/stage_digest.h"
 #include "analysis/synth/demo_corpus.h"
@@ -153,6 +154,33 @@ void BM_CachedChange(benchmark::State& state)
     report(state, cache);
 }
 BENCHMARK(BM_CachedChange)->ArgName("changed")->DenseRange(0, 3)->Unit(benchmark::kMillisecond);
+
+/// One body per take: the Emotion dock's weighted take (eq. 4.45 on the channels and on the
+/// skeleton's coordinates) and the body motion the workbench shows and exports (forward
+/// kinematics of its skeleton, analysis::bodyTake), for a 106-frame demo cell; arg 1 also
+/// designs the function with the cell's extracted warp (the Design dock's drag result).
+void BM_BodyTake(benchmark::State& state)
+{
+    static const ChainResult inputs = std::move(runChain(demo(), {}, nullptr)).value();
+    const bool design = state.range(0) == 1;
+    const auto& cell = inputs.axes->cells.front();
+    const FunctionAxis* function = inputs.axes->function(cell.function);
+    DesignEdits edits;
+    edits.warp = cell.extracted.phase.curve;
+    double a = 0.0;
+    Eigen::Index frames = 0;
+    for (auto _ : state) {
+        Take take = design ? designFunction(*function, edits).take
+                           : std::move(weightedTake(*inputs.decomposed, cell.function, cell.emotion, a)).value();
+        a = a > 2.9 ? 0.0 : a + 0.1;
+        const Take body = bodyTake(std::move(take));
+        frames = body.frameCount();
+        benchmark::DoNotOptimize(body.values.data());
+    }
+    state.counters["frames"] = double(frames);
+    state.SetLabel(design ? "designed" : "weighted");
+}
+BENCHMARK(BM_BodyTake)->ArgName("designed")->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
 } // namespace
 

@@ -100,3 +100,39 @@ TEST_CASE("bunraku analyse on the three Bandai bye takes writes least-squares co
     REQUIRE(text.exitCode == 0);
     CHECK_THAT(text.out, Contains("KM2O not estimable (no cell has 2 takes)") && Contains("function 'bye': KM2O not estimable"));
 }
+
+TEST_CASE("bunraku emotion on the bye takes writes the performer's skeleton and names least squares as the method",
+          "[cli][one-take][body]")
+{
+    const std::vector<std::string> stems{"bye_angry_001", "bye_happy_001", "bye_normal_001"};
+    bool present = true;
+    for (const auto& stem : stems) present = present && fs::is_regular_file(bunraku::test::bandaiDir() / (stem + ".bvh"));
+    if (!bunraku::test::requireBandaiData(present)) return;
+    const fs::path dir = bunraku::test::scratchDir("cli_one_take_emotion");
+    std::vector<std::string> corpusArguments{"corpus"};
+    for (const auto& stem : stems) corpusArguments.push_back((bunraku::test::bandaiDir() / (stem + ".bvh")).string());
+    corpusArguments.insert(corpusArguments.end(), {"-o", (dir / "bye").string()});
+    const auto corpus = runBunraku(corpusArguments);
+    INFO(corpus.err);
+    REQUIRE(corpus.exitCode == 0);
+
+    const auto weighted = runBunraku({"emotion", (dir / "bye").string(), "--function", "bye", "--emotion", "angry", "--weight", "2",
+                                      "-o", (dir / "x.bvh").string(), "--json"});
+    INFO(weighted.err);
+    REQUIRE(weighted.exitCode == 0);
+    const json summary = json::parse(weighted.out);
+    CHECK(summary["method"] == "ls"); // KM2O needs a cell of two takes
+    CHECK(summary["method_requested"] == "km2o");
+    CHECK_THAT(summary["method_note"].get<std::string>(), Contains("not estimable"));
+    // The performer's 22 joints, not the puppet's part layout.
+    const auto info = runBunraku({"info", (dir / "x.bvh").string(), "--json"});
+    INFO(info.err);
+    REQUIRE(info.exitCode == 0);
+    const json described = json::parse(info.out);
+    CHECK(described["joint_count"] == 22);
+    // Its output equals --method ls byte for byte, as the summary says.
+    const auto ls = runBunraku({"emotion", (dir / "bye").string(), "--function", "bye", "--emotion", "angry", "--weight", "2",
+                                "--method", "ls", "-o", (dir / "ls.bvh").string()});
+    REQUIRE(ls.exitCode == 0);
+    CHECK(readTextFile(dir / "x.bvh") == readTextFile(dir / "ls.bvh"));
+}

@@ -1,0 +1,286 @@
+// One body per take: the puppet's rig fitted to takes without a skeleton, and every derived take
+// (preprocessed, normalised by method1 and method2, averaged, weighted, designed) shown as the
+// motion of one articulated body (analysis/skeleton/puppet_rig_fit.h, analysis/core/skeleton_take.h).
+#include "analysis/core/puppet_layout.h"
+#include "analysis/core/skeleton_take.h"
+#include "analysis/io/take_csv.h"
+#include "analysis/pipeline/stages.h"
+#include "analysis/skeleton/puppet_rig_fit.h"
+#include "analysis/synth/demo_corpus.h"
+#include "tests/support/bandai_data.h"
+
+#include <catch2/catch.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <limits>
+#include <numbers>
+
+using namespace bunraku;
+using namespace bunraku::analysis;
+
+namespace {
+
+/// A derived take and what it is, for messages.
+struct Derived {
+    std::string what;
+    Take take;
+};
+
+/// Every kind of derived take of `corpus`: preprocessed, normalised (method1 and method2),
+/// the 3.7 averages, weighted at a = 0, 0.5, 1, 2, 3 (every emotional cell) and designed
+/// (the extracted phase and gains of every emotional cell, and a moved warp).
+std::vector<Derived> derivedTakes(const Corpus& corpus)
+{
+    std::vector<Derived> out;
+    auto pre = pipeline::runPreprocess(corpus, {});
+    REQUIRE(pre);
+    for (const auto& take : pre->corpus.takes) out.push_back({"preprocessed " + take.displayName(), take});
+    std::optional<pipeline::NormaliseOutput> method2;
+    for (const std::string coupling : {"method1", "method2"}) {
+        pipeline::NormaliseParameters parameters;
+        parameters.coupling = coupling;
+        auto normalised = pipeline::runNormalise(pre->corpus, parameters);
+        REQUIRE(normalised);
+        for (const auto& take : normalised->normalised.takes) out.push_back({coupling + " normalised " + take.displayName(), take});
+        for (const auto& cell : normalised->cells) out.push_back({coupling + " average " + cell.function + "/" + cell.emotion, cell.average});
+        if (coupling == "method2") method2 = std::move(normalised).value();
+    }
+    auto decomposed = pipeline::runDecompose(method2->normalised, {});
+    REQUIRE(decomposed);
+    for (const auto& cell : decomposed->components.emotions) {
+        for (const double a : {0.0, 0.5, 1.0, 2.0, 3.0}) {
+            auto weighted = pipeline::weightedTake(*decomposed, cell.function, cell.emotion, a);
+            REQUIRE(weighted);
+            out.push_back({"weighted " + cell.function + "/" + cell.emotion + " a = " + std::to_string(a), *weighted});
+        }
+    }
+    auto axes = pipeline::runAxes(*method2, corpus.neutralEmotion, {});
+    REQUIRE(axes);
+    for (const auto& cell : axes->cells) {
+        const auto* function = axes->function(cell.function);
+        REQUIRE(function);
+        pipeline::DesignEdits edits;
+        edits.warp = cell.extracted.phase.curve;
+        out.push_back({"designed with the phase of " + cell.function + "/" + cell.emotion, pipeline::designFunction(*function, edits).take});
+        edits.setGain({0, 1, 1.0, 1.5});
+        out.push_back({"designed with the phase of " + cell.function + "/" + cell.emotion + " and a gain",
+                       pipeline::designFunction(*function, edits).take});
+    }
+    return out;
+}
+
+/// The checks of one body per take on a derived take: it has a skeleton, its body motion's
+/// channels are the parts its skeleton poses, its bones keep their lengths, and its CSV holds
+/// those channels.
+void checkOneBody(const Derived& derived, const std::filesystem::path& scratch)
+{
+    INFO(derived.what);
+    REQUIRE(derived.take.skeleton);
+    const Take body = bodyTake(derived.take);
+    REQUIRE(body.skeleton == derived.take.skeleton);
+    const auto gap = skeletonChannelGap(body);
+    REQUIRE(gap);
+    CHECK(gap->maxPositionCm < 1e-6);
+    CHECK(gap->maxAngleDeg < 1e-6);
+    CHECK(test::maxBoneLengthChange(*body.skeleton) < 1e-6);
+    // Idempotent: the body of a body is itself, bit for bit.
+    CHECK(bodyTake(body).values == body.values);
+    // What a CSV export holds is the graphed body motion.
+    const auto file = scratch / "take.csv";
+    REQUIRE(io::writeTakeCsv(body, file));
+    auto back = io::readTakeCsv(file);
+    REQUIRE(back);
+    CHECK((back->values - body.values).cwiseAbs().maxCoeff() < 1e-6);
+}
+
+std::filesystem::path scratchFolder(const std::string& name)
+{
+    const auto folder = std::filesystem::temp_directory_path() / ("bunraku-body-" + name);
+    std::filesystem::create_directories(folder);
+    return folder;
+}
+
+/// The lowest point of the body (every joint and End Site but the roots) per frame, cm.
+Eigen::VectorXd lowestPoints(const SkeletalMotion& motion)
+{
+    Eigen::VectorXd low(motion.frameCount());
+    for (Eigen::Index f = 0; f < motion.frameCount(); ++f) {
+        const auto poses = motion.worldPoses(f);
+        double z = std::numeric_limits<double>::infinity();
+        for (std::size_t j = 0; j < poses.size(); ++j)
+            if (motion.skeleton->joints[j].parent >= 0) z = std::min(z, poses[j].translation.z());
+        low(f) = z;
+    }
+    return low;
+}
+
+/// The bye takes (one per style) as a corpus of one take per cell.
+Corpus bandaiByeCorpus()
+{
+    Corpus corpus;
+    corpus.name = "bandai bye";
+    corpus.neutralEmotion = "normal";
+    for (const std::string style : {"normal", "happy", "angry"})
+        corpus.takes.push_back(test::readBandai("bye_" + style + "_001.bvh", {"bye", style, 1, ""}));
+    corpus.rateHz = corpus.takes.front().rateHz;
+    return corpus;
+}
+
+} // namespace
+
+TEST_CASE("the puppet rig fitted to the demo corpus finds the demo rig's neck and head", "[body][rig]")
+{
+    const Corpus corpus = synth::generateDemoCorpus().corpus;
+    std::vector<const Take*> takes;
+    for (const auto& take : corpus.takes) takes.push_back(&take);
+    const auto fit = fitPuppetRig(takes);
+    REQUIRE(fit);
+    const Skeleton& rig = *fit->skeleton;
+    REQUIRE(isPuppetRig(rig));
+    // The demo rig (analysis/synth/puppet_rig.cpp): the neck 1 cm forward and 8 cm above the
+    // shoulder sensor, the head sensor 3 cm forward and 7 cm above the neck in the head's frame.
+    CHECK((rig.joints[std::size_t(rig.find(kRigNeckJoint))].offset - Eigen::Vector3d(1, 0, 8)).norm() < 0.5);
+    CHECK((rig.binding("head")->joint_T_part.translation - Eigen::Vector3d(3, 0, 7)).norm() < 0.5);
+    // Head and shoulder are rigid in the demo rig; the arm sensor slides with the reach.
+    CHECK(fit->residual.maxCm[0] < 1.0);
+    CHECK(fit->residual.maxCm[1] < 1e-9);
+    CHECK(fit->residual.maxDeg[0] < 1e-6);
+    CHECK(fit->residual.maxDeg[3] < 1e-6);
+    Eigen::Index frames = 0;
+    for (const auto& take : corpus.takes) frames += take.frameCount();
+    CHECK(fit->residual.frames == frames);
+    // A take of another layout is refused by name.
+    Take other = corpus.takes.front();
+    other.values = other.values.leftCols(6);
+    other.channels.resize(6);
+    const auto refused = fitPuppetRig({&other});
+    REQUIRE_FALSE(refused);
+    CHECK(refused.error().message.find("24 puppet channels") != std::string::npos);
+}
+
+TEST_CASE("preprocessing gives every demo take the corpus's rig and leaves its channels as they were", "[body][rig]")
+{
+    const Corpus corpus = synth::generateDemoCorpus().corpus;
+    auto pre = pipeline::runPreprocess(corpus, {});
+    REQUIRE(pre);
+    const Skeleton* first = nullptr;
+    for (const auto& take : pre->corpus.takes) {
+        INFO(take.displayName());
+        REQUIRE(take.skeleton);
+        REQUIRE(isPuppetRig(*take.skeleton->skeleton));
+        if (!first) first = take.skeleton->skeleton.get();
+        CHECK(take.skeleton->skeleton.get() == first); // one puppet: one rig for the corpus
+        CHECK(take.skeleton->frameCount() == take.frameCount());
+    }
+}
+
+TEST_CASE("every derived take of the demo corpus is one articulated body", "[body]")
+{
+    const auto scratch = scratchFolder("demo");
+    const auto derived = derivedTakes(synth::generateDemoCorpus().corpus);
+    CHECK(derived.size() > 100);
+    for (const auto& d : derived) checkOneBody(d, scratch);
+    std::filesystem::remove_all(scratch);
+}
+
+TEST_CASE("every derived take of the Bandai waves is one articulated body", "[body][bandai]")
+{
+    if (!test::bandaiAvailable(test::bandaiWaveFiles())) return;
+    const auto scratch = scratchFolder("waves");
+    for (const auto& d : derivedTakes(test::bandaiWaveCorpus())) {
+        checkOneBody(d, scratch);
+        CHECK(d.take.skeleton->skeleton->jointCount() == 22);
+    }
+    std::filesystem::remove_all(scratch);
+}
+
+TEST_CASE("the weighted bye take of one take per cell keeps the performer's 22 joints at a = 2", "[body][bandai]")
+{
+    if (!test::bandaiAvailable({"bye_normal_001.bvh", "bye_happy_001.bvh", "bye_angry_001.bvh"})) return;
+    const Corpus corpus = bandaiByeCorpus();
+    const auto scratch = scratchFolder("bye");
+    for (const auto& d : derivedTakes(corpus)) {
+        checkOneBody(d, scratch);
+        CHECK(d.take.skeleton->skeleton->jointCount() == 22);
+    }
+    std::filesystem::remove_all(scratch);
+    // On the floor: at every frame of the weighted takes the lowest point of the body (a foot) is
+    // where the inputs' lowest points are, never below the lowest of them nor above the highest.
+    auto pre = pipeline::runPreprocess(corpus, {});
+    REQUIRE(pre);
+    auto normalised = pipeline::runNormalise(pre->corpus, {});
+    REQUIRE(normalised);
+    auto decomposed = pipeline::runDecompose(normalised->normalised, {});
+    REQUIRE(decomposed);
+    double floor = std::numeric_limits<double>::infinity(), ceiling = -floor;
+    for (const auto& take : corpus.takes) {
+        const auto low = lowestPoints(*take.skeleton);
+        floor = std::min(floor, low.minCoeff());
+        ceiling = std::max(ceiling, low.maxCoeff());
+    }
+    for (const double a : {0.5, 2.0, 3.0}) {
+        INFO("a = " << a);
+        auto weighted = pipeline::weightedTake(*decomposed, "bye", "angry", a);
+        REQUIRE(weighted);
+        const auto low = lowestPoints(*weighted->skeleton);
+        CHECK(low.minCoeff() > floor - 0.1); // the inputs' bones differ by rounding at the End Sites
+        CHECK(low.maxCoeff() < ceiling + 0.1);
+    }
+}
+
+namespace {
+
+/// Root mean square distance of the parts' positions (cm) and mean angle (deg) between a take's
+/// channels and `truth` (frames x 24), over the frames both have.
+std::pair<double, double> truthError(const Eigen::MatrixXd& values, const Eigen::MatrixXd& truth)
+{
+    Take a, b;
+    a.channels = b.channels = puppetChannels();
+    const Eigen::Index frames = std::min(values.rows(), truth.rows());
+    a.values = values.topRows(frames);
+    b.values = truth.topRows(frames);
+    double squares = 0.0, angles = 0.0;
+    for (Eigen::Index f = 0; f < frames; ++f)
+        for (int p = 0; p < kPuppetPartCount; ++p) {
+            const RigidTransform x = partPose(a, f, Eigen::Index(p) * kDofCount);
+            const RigidTransform y = partPose(b, f, Eigen::Index(p) * kDofCount);
+            squares += (x.translation - y.translation).squaredNorm();
+            angles += rotationDistance(x.rotation, y.rotation) * 180.0 / std::numbers::pi;
+        }
+    const double n = double(frames * kPuppetPartCount);
+    return {std::sqrt(squares / n), angles / n};
+}
+
+} // namespace
+
+TEST_CASE("on the demo corpus the body's weighted and designed takes are as near the truth as the per-channel ones", "[body][truth]")
+{
+    const auto demo = synth::generateDemoCorpus();
+    auto pre = pipeline::runPreprocess(demo.corpus, {});
+    REQUIRE(pre);
+    auto normalised = pipeline::runNormalise(pre->corpus, {});
+    REQUIRE(normalised);
+    auto decomposed = pipeline::runDecompose(normalised->normalised, {});
+    REQUIRE(decomposed);
+    double perChannelCm = 0.0, bodyCm = 0.0, perChannelDeg = 0.0, bodyDeg = 0.0;
+    int cells = 0;
+    for (const auto& cell : decomposed->components.emotions) {
+        const auto* truth = demo.truth.cell(cell.function, cell.emotion);
+        REQUIRE(truth);
+        auto weighted = pipeline::weightedTake(*decomposed, cell.function, cell.emotion, 1.0);
+        REQUIRE(weighted);
+        const auto [pc, pd] = truthError(weighted->values, truth->motion);
+        const auto [bc, bd] = truthError(bodyTake(*weighted).values, truth->motion);
+        std::printf("truth %-24s a = 1: per-channel %.3f cm %.3f deg, body %.3f cm %.3f deg\n",
+                    (cell.function + "/" + cell.emotion).c_str(), pc, pd, bc, bd);
+        perChannelCm += pc;
+        perChannelDeg += pd;
+        bodyCm += bc;
+        bodyDeg += bd;
+        ++cells;
+    }
+    std::printf("truth mean over %d cells: per-channel %.3f cm %.3f deg, body %.3f cm %.3f deg\n", cells, perChannelCm / cells,
+                perChannelDeg / cells, bodyCm / cells, bodyDeg / cells);
+    CHECK(cells == 6);
+}
