@@ -126,7 +126,7 @@ Result<GainSet> extractGains(const Eigen::MatrixXd& functional, const Eigen::Mat
                 // and by where the phase adjustment cut the phrase. Regularised: A1_em is floored at
                 // the fraction of A1_no, so g1 = 1 / fraction, the largest well-conditioned gain -
                 // the emotion does still this phrase's swing, by an amount the data cannot tell.
-                gain.g1 = 1.0 / options.illConditionedFraction;
+                gain.g1 = std::min(1.0 / options.illConditionedFraction, options.gainLimit);
                 gain.illConditioned = true;
                 gain.illConditionedReason = "A1_em = " + formatNumber(em.a1) + " is below " +
                                             formatNumber(options.illConditionedFraction) + " x A1_no = " +
@@ -136,7 +136,7 @@ Result<GainSet> extractGains(const Eigen::MatrixXd& functional, const Eigen::Mat
                 if (const auto held = heldFrames(emotional, phrase.begin, phrase.end); held && 2 * (held->second - held->first + 1) >= length)
                     gain.illConditionedReason += "; the phase-adjusted emotional axis is held still over frames " +
                                                  std::to_string(held->first) + "-" + std::to_string(held->second) +
-                                                 " (the warp does not reach them)";
+                                                 " (the emotional take stands still there, or the warp does not reach them)";
                 note("g1 of " + where + " is ill-conditioned: " + gain.illConditionedReason);
             } else if (const double agreement = (no.cosine * em.cosine + no.sine * em.sine) / (no.a1 * em.a1);
                        em.a1 > options.additiveRatio * no.a1 || agreement < options.minimumPhaseAgreement) {
