@@ -19,9 +19,10 @@ GainTable::GainTable(QWidget* parent) : QWidget(parent), m_table(new QTableWidge
 {
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->setSelectionMode(QAbstractItemView::SingleSelection);
-    // Each cell holds g0 over g1 on two lines: "g0 / g1" on one line needs about twice the width
-    // and was elided to "1.00 / ..." in a dock a third of a 1366-pixel screen wide (6 columns).
-    // Columns share the width but never fall below their widest number (then the table scrolls).
+    // Each cell holds g0 over g1 on two lines: "g0 / g1" on one line is wider than a column and
+    // was elided to "1.00 / ..." in the Design dock of a 1366-pixel window (a 252-pixel table,
+    // 6 columns of 42). Columns share the width but never fall below their widest number (then
+    // the table scrolls sideways rather than cut a number).
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
     m_table->setTextElideMode(Qt::ElideNone);
     m_table->setWordWrap(false);
@@ -59,7 +60,7 @@ QString GainTable::cellText(const analysis::DofGain& gain)
 
 void GainTable::fitColumns()
 {
-    // the widest line of any cell plus the item's margins (the style's focus frame and padding)
+    // the widest line of any cell plus the item's margins
     const QFontMetrics metrics(m_table->font());
     int widest = metrics.horizontalAdvance(QStringLiteral("0.00"));
     for (int p = 0; p < m_table->rowCount(); ++p)
