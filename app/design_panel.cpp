@@ -13,6 +13,7 @@
 #include "widgets/warp_curve_editor.h"
 
 #include <QLabel>
+#include <QStringList>
 #include <QPushButton>
 #include <QSplitter>
 #include <QVBoxLayout>
@@ -29,6 +30,11 @@ DesignPanel::DesignPanel(Document& document, DesignController& controller, QWidg
     m_inputs->setWordWrap(true);
     m_timing = new QLabel(this);
     m_timing->setEnabled(false);
+    m_conditioning = new QLabel(this);
+    m_conditioning->setObjectName("illConditionedNotice");
+    m_conditioning->setWordWrap(true);
+    m_conditioning->setTextFormat(Qt::PlainText);
+    m_conditioning->hide();
     auto* showDesigned = new QPushButton(tr("Show designed as A"), this);
     showDesigned->setObjectName("showDesigned");
     auto* extractedGains = new QPushButton(tr("Use extracted gains"), this);
@@ -60,6 +66,7 @@ DesignPanel::DesignPanel(Document& document, DesignController& controller, QWidg
     layout->setContentsMargins(4, 4, 4, 4);
     layout->addWidget(new AnalysisScopeNotice(m_document, this));
     layout->addWidget(m_inputs);
+    layout->addWidget(m_conditioning);
     layout->addWidget(splitter, 1);
     layout->addLayout(buttons);
     layout->addWidget(m_timing);
@@ -96,6 +103,7 @@ DesignPanel::DesignPanel(Document& document, DesignController& controller, QWidg
         if (!same) {
             m_gains->setGains(gains);
             m_gains->setExtracted(m_controller.extractedGains()); // they follow the boundaries
+            showConditioning();
         }
         showStatus();
     });
@@ -117,6 +125,7 @@ void DesignPanel::refresh()
     m_editor->setCurve(m_controller.warpCurve());
     m_gains->setGains(m_controller.gains());
     m_gains->setExtracted(m_controller.extractedGains());
+    showConditioning();
     std::vector<std::string> dofs;
     for (const auto& channel : analysis::axisCoordinateChannels()) dofs.push_back(channel.name());
     m_scaleError->setError(m_controller.approximationError(), dofs, m_controller.targetCell());
@@ -131,6 +140,46 @@ void DesignPanel::showStatus()
                     .arg(tr("No extracted gains for these phrases: %1").arg(error.toHtmlEscaped()));
     m_timing->setText(text);
 }
+
+void DesignPanel::showConditioning()
+{
+    // One line naming the phrases and DOF; the reasons (amplitudes, ratio) in the tooltip and
+    // in the shaded cells' tooltips.
+    const auto ill = analysis::illConditionedGains(m_controller.extractedGains());
+    if (ill.empty()) {
+        m_conditioning->clear();
+        m_conditioning->setToolTip({});
+        m_conditioning->hide();
+        return;
+    }
+    QStringList phrases, reasons;
+    for (std::size_t i = 0; i < ill.size();) {
+        QStringList dofs;
+        std::size_t j = i;
+        for (; j < ill.size() && ill[j].phrase == ill[i].phrase; ++j) {
+            dofs << QString::fromStdString(ill[j].dofName).remove(QStringLiteral("axis."));
+            reasons << tr("Phrase %1 (frames %2-%3), %4: %5")
+                           .arg(ill[j].phrase + 1)
+                           .arg(ill[j].begin)
+                           .arg(ill[j].end)
+                           .arg(QString::fromStdString(ill[j].dofName), QString::fromStdString(ill[j].reason));
+        }
+        phrases << tr("phrase %1 (%2)").arg(ill[i].phrase + 1).arg(dofs.join(QStringLiteral(", ")));
+        i = j;
+    }
+    m_conditioning->setText(
+        tr("Ill-conditioned g1, regularised to %1 (emotional amplitude below %2 % of the functional one): %3")
+            .arg(1.0 / analysis::kIllConditionedAmplitudeFraction, 0, 'g', 3)
+            .arg(100.0 * analysis::kIllConditionedAmplitudeFraction, 0, 'g', 3)
+            .arg(phrases.join(QStringLiteral("; "))));
+    m_conditioning->setToolTip(reasons.join('\n'));
+    m_conditioning->setStyleSheet(QStringLiteral("color: #8a4b00"));
+    m_conditioning->show();
+}
+
+QString DesignPanel::illConditionedNotice() const { return m_conditioning->text(); }
+
+bool DesignPanel::illConditionedNoticeShown() const { return !m_conditioning->isHidden(); }
 
 QString DesignPanel::statusText() const { return m_timing->text(); }
 

@@ -4,7 +4,9 @@
 /// the designed take (with its original as a ghost), to use the extracted gains, and to add a
 /// phrase boundary at the time cursor or remove the one nearest to it (so the phrase structure
 /// is editable without the mouse; the timeline's ticks do the same by mouse), and under them the
-/// per-scale approximation error of the extracted cell (thesis 5.4.1, Fig. 5.16).
+/// per-scale approximation error of the extracted cell (thesis 5.4.1, Fig. 5.16). A notice over
+/// the editors names the phrases and DOF whose extracted g1 is ill-conditioned and why (their
+/// cells are shaded in the gain table, with the reason in the tooltip).
 
 #include <QWidget>
 
@@ -33,10 +35,15 @@ public:
 
     /// The status line under the editors (synthesis time, why extracted gains are missing).
     QString statusText() const;
+    /// The ill-conditioned-gains notice ("" when every extracted g1 is well conditioned).
+    QString illConditionedNotice() const;
+    /// Whether the notice is shown (not hidden; the panel itself may be hidden).
+    bool illConditionedNoticeShown() const;
 
 private:
     void refresh();
     void showStatus();
+    void showConditioning();
     /// The functional frame under the time cursor on take A.
     double cursorFrame() const;
 
@@ -47,6 +54,7 @@ private:
     widgets::ScaleErrorPlot* m_scaleError = nullptr;
     QLabel* m_inputs = nullptr;
     QLabel* m_timing = nullptr;
+    QLabel* m_conditioning = nullptr;
 };
 
 } // namespace bunraku::app

@@ -1,5 +1,8 @@
 #include "widgets/gain_table.h"
 
+#include <QBrush>
+#include <QColor>
+#include <QFontMetrics>
 #include <QFormLayout>
 #include <QHeaderView>
 #include <QLabel>
@@ -7,6 +10,7 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 
 namespace bunraku::widgets {
@@ -15,9 +19,16 @@ GainTable::GainTable(QWidget* parent) : QWidget(parent), m_table(new QTableWidge
 {
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->setSelectionMode(QAbstractItemView::SingleSelection);
+    // Each cell holds g0 over g1 on two lines: "g0 / g1" on one line is wider than a column and
+    // was elided to "1.00 / ..." in the Design dock of a 1366-pixel window (a 252-pixel table,
+    // 6 columns of 42). Columns share the width but never fall below their widest number (then
+    // the table scrolls sideways rather than cut a number).
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
-    m_table->verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 6);
-    m_table->setToolTip(tr("g0: gain of the phrase's mean, g1: gain of its first harmonic (thesis eqs. 5.22, 5.23)"));
+    m_table->setTextElideMode(Qt::ElideNone);
+    m_table->setWordWrap(false);
+    m_table->verticalHeader()->setDefaultSectionSize(2 * fontMetrics().lineSpacing() + 6);
+    m_table->setToolTip(tr("Each cell: g0 (gain of the phrase's mean) over g1 (gain of its first harmonic), thesis eqs. 5.22, "
+                           "5.23. Shaded cells: the extracted g1 is ill-conditioned (hover for why)."));
     auto makeSlider = [this](const char* name) {
         auto* slider = new QSlider(Qt::Horizontal, this);
         slider->setObjectName(name);
@@ -42,6 +53,35 @@ GainTable::GainTable(QWidget* parent) : QWidget(parent), m_table(new QTableWidge
     connect(m_table, &QTableWidget::currentCellChanged, this, [this] { bindSliders(); });
 }
 
+QString GainTable::cellText(const analysis::DofGain& gain)
+{
+    return QStringLiteral("%1\n%2").arg(gain.g0, 0, 'f', 2).arg(gain.g1, 0, 'f', 2);
+}
+
+void GainTable::fitColumns()
+{
+    // the widest line of any cell plus the item's margins
+    const QFontMetrics metrics(m_table->font());
+    int widest = metrics.horizontalAdvance(QStringLiteral("0.00"));
+    for (int p = 0; p < m_table->rowCount(); ++p)
+        for (int d = 0; d < m_table->columnCount(); ++d)
+            if (const QTableWidgetItem* item = m_table->item(p, d))
+                for (const QString& line : item->text().split('\n')) widest = std::max(widest, metrics.horizontalAdvance(line));
+    m_table->horizontalHeader()->setMinimumSectionSize(widest + kCellMargin);
+}
+
+bool GainTable::cellTextFits(int phrase, int dof) const
+{
+    const QTableWidgetItem* item = m_table->item(phrase, dof);
+    if (!item) return false;
+    const QFontMetrics metrics(m_table->font());
+    const QStringList lines = item->text().split('\n');
+    int widest = 0;
+    for (const QString& line : lines) widest = std::max(widest, metrics.horizontalAdvance(line));
+    return widest + kCellMargin <= m_table->columnWidth(dof) + 1 &&
+           int(lines.size()) * metrics.lineSpacing() <= m_table->rowHeight(phrase);
+}
+
 double GainTable::gainOfPosition(int position) { return std::pow(2.0, position / 100.0); }
 int GainTable::positionOfGain(double gain) { return gain > 0.0 ? int(std::lround(100.0 * std::log2(gain))) : -200; }
 
@@ -61,11 +101,12 @@ void GainTable::setGains(const analysis::GainSet& gains)
         m_table->setVerticalHeaderItem(p, new QTableWidgetItem(tr("%1-%2").arg(phrase.begin).arg(phrase.end)));
         for (int d = 0; d < int(phrase.dofs.size()) && d < m_table->columnCount(); ++d) {
             const auto& gain = phrase.dofs[std::size_t(d)];
-            auto* item = new QTableWidgetItem(QStringLiteral("%1 / %2").arg(gain.g0, 0, 'f', 2).arg(gain.g1, 0, 'f', 2));
+            auto* item = new QTableWidgetItem(cellText(gain));
             item->setTextAlignment(Qt::AlignCenter);
             m_table->setItem(p, d, item);
         }
     }
+    fitColumns();
     updateTooltips();
     if (row >= 0 && row < m_table->rowCount() && column >= 0 && column < m_table->columnCount())
         m_table->setCurrentCell(row, column);
@@ -107,8 +148,20 @@ void GainTable::updateTooltips()
             }
             const auto& reason = m_gains.phrases[std::size_t(p)].dofs[std::size_t(d)].reason;
             if (!reason.empty()) lines << QString::fromStdString(reason);
+            const bool ill = isIllConditioned(p, d);
+            if (ill)
+                lines.prepend(tr("Extracted g1 is ill-conditioned: %1")
+                                  .arg(QString::fromStdString(extractedGain(m_extracted, m_gains, p, d)->illConditionedReason)));
+            item->setBackground(ill ? QBrush(QColor(255, 214, 153)) : QBrush());
+            item->setForeground(ill ? QBrush(Qt::black) : QBrush());
             item->setToolTip(lines.join('\n'));
         }
+}
+
+bool GainTable::isIllConditioned(int phrase, int dof) const
+{
+    const auto* extracted = extractedGain(m_extracted, m_gains, phrase, dof);
+    return extracted && extracted->illConditioned;
 }
 
 QString GainTable::selectionText() const { return m_label->text(); }
@@ -134,8 +187,10 @@ void GainTable::bindSliders()
                        .arg(QString::fromStdString(d < int(m_gains.dofNames.size()) ? m_gains.dofNames[std::size_t(d)] : std::string()))
                        .arg(gain.g0, 0, 'f', 2)
                        .arg(gain.g1, 0, 'f', 2);
-    if (const auto* extracted = extractedGain(m_extracted, m_gains, p, d))
+    if (const auto* extracted = extractedGain(m_extracted, m_gains, p, d)) {
         text += tr(" (extracted %1 / %2)").arg(extracted->g0, 0, 'f', 2).arg(extracted->g1, 0, 'f', 2);
+        if (extracted->illConditioned) text += tr("; extracted g1 ill-conditioned (regularised)");
+    }
     m_label->setText(text);
 }
 

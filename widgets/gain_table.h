@@ -1,9 +1,11 @@
 #pragma once
 /// The per-phrase gain table of a design (thesis 5.4): one row per phrase, one column per axis
-/// DOF, each cell "g0 / g1"; the selected cell's g0 and g1 are edited with two sliders on a
+/// DOF, each cell g0 over g1 (two lines, so six columns stay legible in a narrow dock); the selected cell's g0 and g1 are edited with two sliders on a
 /// logarithmic scale (0.25 to 4). The table never changes its own gains: it proposes edits
 /// (gainEdited) and shows what setGains gives it. The extracted gains (setExtracted) are shown
-/// for comparison in each cell's tooltip and beside the selected cell's values.
+/// for comparison in each cell's tooltip and beside the selected cell's values; a cell whose
+/// extracted g1 is ill-conditioned (analysis::DofGain::illConditioned) is shaded and its tooltip
+/// says why.
 
 #include "analysis/design/phrase_gains.h"
 
@@ -32,6 +34,12 @@ public:
     QSlider* g0Slider() const { return m_g0; }
     QSlider* g1Slider() const { return m_g1; }
     QTableWidget* table() const { return m_table; }
+    /// True when the extracted gain of `phrase` and `dof` (same phrase frames) is ill-conditioned.
+    bool isIllConditioned(int phrase, int dof) const;
+    /// True when every line of the cell's text fits its column width and row height unelided.
+    bool cellTextFits(int phrase, int dof) const;
+    /// A cell's text: g0 over g1, two decimals each.
+    static QString cellText(const analysis::DofGain& gain);
 
     /// Slider position <-> gain: 2^(position / 100), position in [-200, 200].
     static double gainOfPosition(int position);
@@ -44,6 +52,10 @@ signals:
     void gainEdited(int phrase, int dof, double g0, double g1);
 
 private:
+    /// Horizontal room an item needs beside its text, pixels: the style's text margins (2 x 3 in
+    /// Fusion) and a pixel of grid line on each side.
+    static constexpr int kCellMargin = 8;
+    void fitColumns();
     void bindSliders();
     void updateTooltips();
     void sliderMoved();

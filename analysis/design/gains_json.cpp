@@ -78,6 +78,8 @@ Status writeGainsJson(const GainSet& gains, const std::filesystem::path& file)
                                {"harmonic_cos", g.harmonicCos},
                                {"harmonic_sin", g.harmonicSin},
                                {"reason", g.reason},
+                               {"ill_conditioned", g.illConditioned},
+                               {"ill_conditioned_reason", g.illConditionedReason},
                                {"a0_functional", g.a0Functional},
                                {"a0_emotional", g.a0Emotional},
                                {"A1_functional", g.a1Functional},
@@ -175,6 +177,13 @@ Result<GainSet> parseGainsJson(const std::string& text, const std::string& sourc
             auto reason = reader.text(item, "reason", at, "");
             if (!reason) return reason.error();
             g.reason = *reason;
+            if (const auto ill = item.find("ill_conditioned"); ill != item.end()) {
+                if (!ill->is_boolean()) return reader.error(at + ".ill_conditioned", "expected true or false");
+                g.illConditioned = ill->get<bool>();
+            }
+            auto illReason = reader.text(item, "ill_conditioned_reason", at, "");
+            if (!illReason) return illReason.error();
+            g.illConditionedReason = *illReason;
             phrase.dofs.push_back(g);
         }
         gains.phrases.push_back(std::move(phrase));

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <complex>
 #include <numbers>
+#include <optional>
+#include <utility>
 #include <sstream>
 
 namespace bunraku::analysis {
@@ -24,6 +26,21 @@ std::string formatNumber(double value)
     text.precision(3);
     text << value;
     return text.str();
+}
+
+/// The frames [first, last] of rows begin..end of `emotional` over which it is held at one row
+/// (identical rows: the phase adjustment resamples the emotional take's first or last frame
+/// where the warp does not reach), the longer of the run at the start and at the end; nullopt
+/// when neither run is longer than one frame.
+std::optional<std::pair<Eigen::Index, Eigen::Index>> heldFrames(const Eigen::MatrixXd& emotional, Eigen::Index begin, Eigen::Index end)
+{
+    Eigen::Index tail = end;
+    while (tail > begin && emotional.row(tail - 1) == emotional.row(end)) --tail;
+    Eigen::Index head = begin;
+    while (head < end && emotional.row(head + 1) == emotional.row(begin)) ++head;
+    if (end - tail >= head - begin && end - tail >= 1) return std::pair{tail, end};
+    if (head - begin >= 1) return std::pair{begin, head};
+    return std::nullopt;
 }
 
 } // namespace
@@ -87,43 +104,74 @@ Result<GainSet> extractGains(const Eigen::MatrixXd& functional, const Eigen::Mat
                 gain.reason = "DC term of " + where + " is near zero (|a0/2| = " +
                               formatNumber(std::min(std::abs(no.a0), std::abs(em.a0)) / 2) + " < motion range " +
                               formatNumber(nearZero) + "): additive offset instead of g0";
+            } else if (no.a0 * em.a0 < 0.0) {
+                // means on opposite sides of 0: a negative g0 would mirror the phrase's mean
+                gain.dcMode = DcMode::Offset;
+                gain.offset = (em.a0 - no.a0) / 2.0;
+                gain.g0 = 1.0;
+                gain.reason = "DC terms of " + where + " have opposite signs: additive offset instead of g0";
             } else {
                 gain.g0 = no.a0 / em.a0;
             }
+            // thesis eq. 5.23: g1 = A1_no / A1_em, A1 = |2/N sum x e^{-2 pi i n / N}| (eq. 5.19): a
+            // ratio of magnitudes, never negative. The phase difference of the harmonics belongs to
+            // the phase component (5.3), which the thesis assumes has made them equal (eq. 5.24).
             const double flat = options.flatFraction * scale;
+            auto note = [&gain](const std::string& text) { gain.reason += (gain.reason.empty() ? "" : "; ") + text; };
             if (no.a1 < flat) {
                 gain.g1 = 1.0;
-                gain.reason += std::string(gain.reason.empty() ? "" : "; ") + "first harmonic of " + where +
-                               " is flat in the functional motion: g1 = 1";
-            } else if (const double agreement = (no.cosine * em.cosine + no.sine * em.sine) / (no.a1 * std::max(em.a1, 1e-300));
-                       em.a1 > options.additiveRatio * no.a1 || std::abs(agreement) < options.minimumPhaseAgreement) {
+                note("first harmonic of " + where + " is flat in the functional motion: g1 = 1");
+            } else if (em.a1 < options.illConditionedFraction * no.a1) {
+                // Dividing by a harmonic the emotional phrase hardly has: the ratio is set by noise
+                // and by where the phase adjustment cut the phrase. Regularised: A1_em is floored at
+                // the fraction of A1_no, so g1 = 1 / fraction, the largest well-conditioned gain -
+                // the emotion does still this phrase's swing, by an amount the data cannot tell.
+                gain.g1 = std::min(1.0 / options.illConditionedFraction, options.gainLimit);
+                gain.illConditioned = true;
+                gain.illConditionedReason = "A1_em = " + formatNumber(em.a1) + " is below " +
+                                            formatNumber(options.illConditionedFraction) + " x A1_no = " +
+                                            formatNumber(no.a1) + " (g1 = A1_no/A1_em would be " +
+                                            (em.a1 > 0.0 ? formatNumber(no.a1 / em.a1) : std::string("infinite")) +
+                                            "): g1 regularised to " + formatNumber(gain.g1);
+                if (const auto held = heldFrames(emotional, phrase.begin, phrase.end); held && 2 * (held->second - held->first + 1) >= length)
+                    gain.illConditionedReason += "; the phase-adjusted emotional axis is held still over frames " +
+                                                 std::to_string(held->first) + "-" + std::to_string(held->second) +
+                                                 " (the emotional take stands still there, or the warp does not reach them)";
+                note("g1 of " + where + " is ill-conditioned: " + gain.illConditionedReason);
+            } else if (const double agreement = (no.cosine * em.cosine + no.sine * em.sine) / (no.a1 * em.a1);
+                       em.a1 > options.additiveRatio * no.a1 || agreement < options.minimumPhaseAgreement) {
                 gain.acMode = AcMode::Additive;
                 gain.g1 = 1.0;
                 gain.harmonicCos = em.cosine - no.cosine;
                 gain.harmonicSin = em.sine - no.sine;
-                gain.reason += std::string(gain.reason.empty() ? "" : "; ") + "first harmonic of " + where +
-                               (em.a1 > options.additiveRatio * no.a1
-                                    ? " is " + formatNumber(em.a1 / no.a1) + " times the functional one"
-                                    : " is out of phase with the functional one (cos = " + formatNumber(agreement) + ")") +
-                               ": added instead of scaled";
-            } else if (agreement < 0.0 && em.a1 >= no.a1 / options.gainLimit) {
-                gain.g1 = -std::clamp(no.a1 / em.a1, 1.0 / options.gainLimit, options.gainLimit);
-                gain.reason += std::string(gain.reason.empty() ? "" : "; ") + "first harmonic of " + where +
-                               " is opposite to the functional one: g1 negative";
-            } else if (em.a1 < no.a1 / options.gainLimit) {
-                gain.g1 = options.gainLimit;
-                gain.reason += std::string(gain.reason.empty() ? "" : "; ") + "first harmonic of " + where +
-                               " vanishes in the emotional motion: g1 clamped to " + formatNumber(options.gainLimit);
+                note("first harmonic of " + where +
+                     (em.a1 > options.additiveRatio * no.a1
+                          ? " is " + formatNumber(em.a1 / no.a1) + " times the functional one"
+                          : " is out of phase with the functional one (cos = " + formatNumber(agreement) + ")") +
+                     ": added instead of scaled");
             } else {
                 gain.g1 = std::clamp(no.a1 / em.a1, 1.0 / options.gainLimit, options.gainLimit);
-                if (gain.g1 != no.a1 / em.a1)
-                    gain.reason += std::string(gain.reason.empty() ? "" : "; ") + "g1 of " + where + " clamped";
+                if (gain.g1 != no.a1 / em.a1) note("g1 of " + where + " clamped");
             }
             phrase.dofs.push_back(gain);
         }
         set.phrases.push_back(std::move(phrase));
     }
     return set;
+}
+
+std::vector<IllConditionedGain> illConditionedGains(const GainSet& gains)
+{
+    std::vector<IllConditionedGain> found;
+    for (std::size_t p = 0; p < gains.phrases.size(); ++p)
+        for (std::size_t d = 0; d < gains.phrases[p].dofs.size(); ++d) {
+            const DofGain& gain = gains.phrases[p].dofs[d];
+            if (!gain.illConditioned) continue;
+            found.push_back({p, d, gains.phrases[p].begin, gains.phrases[p].end,
+                             d < gains.dofNames.size() ? gains.dofNames[d] : std::to_string(d), gain.a1Functional,
+                             gain.a1Emotional, gain.g1, gain.illConditionedReason});
+        }
+    return found;
 }
 
 GainSet unitGains(const std::vector<Eigen::Index>& boundaries, const std::vector<std::string>& dofNames)

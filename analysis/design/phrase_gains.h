@@ -9,12 +9,16 @@
 /// many times the functional one (motion the function lacks), the harmonic difference is added
 /// instead of scaling. A DC term near zero (|a0/2| below the DOF's motion range) would make g0
 /// meaningless or infinite: that DOF's phrase switches to an additive offset (a0_em - a0_no)/2,
-/// with the reason recorded.
+/// with the reason recorded. A1 is a magnitude (eq. 5.19), so g1 = A1_no / A1_em >= 0 always;
+/// where A1_em is below kIllConditionedAmplitudeFraction of A1_no the ratio divides by (nearly)
+/// nothing: A1_em is floored at that fraction (g1 = 1 / fraction = 10) and the phrase and DOF are
+/// marked ill-conditioned, with the reason.
 
 #include "analysis/core/result.h"
 
 #include <Eigen/Core>
 
+#include <cstddef>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -31,9 +35,18 @@ enum class AcMode {
     Additive, ///< (x_no - mean_no) + the first-harmonic difference (harmonicCos, harmonicSin)
 };
 
+/// A1_em below this fraction of A1_no makes g1 = A1_no / A1_em ill-conditioned (thesis eq. 5.23
+/// divides by a first harmonic that the emotional phrase hardly has: g1 would exceed 10 and be
+/// set by noise and by how the phase adjustment cut the phrase). Such a gain is regularised -
+/// A1_em floored at this fraction of A1_no, g1 = 1 / fraction = 10 - and flagged
+/// (DofGain::illConditioned). Not left at 1: the measurement does say the emotion stills the
+/// phrase's swing, and on the demo corpus g1 = 1 there raises serving-tea/hostile's design error
+/// from under 0.10 to 0.27 (docs/MOTION-AXIS.md).
+inline constexpr double kIllConditionedAmplitudeFraction = 0.1;
+
 struct DofGain {
     double g0 = 1.0;     ///< a0_no / a0_em (thesis eq. 5.22)
-    double g1 = 1.0;     ///< A1_no / A1_em (thesis eq. 5.23), negative when the harmonics are opposite
+    double g1 = 1.0;     ///< A1_no / A1_em (thesis eq. 5.23): a ratio of magnitudes, never negative when extracted
     DcMode dcMode = DcMode::Scale;
     double offset = 0.0; ///< (a0_em - a0_no) / 2 when dcMode is Offset (units of the DOF)
     AcMode acMode = AcMode::Scale;
@@ -41,6 +54,10 @@ struct DofGain {
     /// n = frame - phrase begin, N = phrase frames; the emotional minus the functional one.
     double harmonicCos = 0.0, harmonicSin = 0.0;
     std::string reason;  ///< why a default or offset replaced a ratio; empty when the ratios hold
+    /// True when A1_em < fraction x A1_no (GainOptions::illConditionedFraction): the ratio was
+    /// not taken, g1 is regularised to 1 / fraction, and illConditionedReason says why.
+    bool illConditioned = false;
+    std::string illConditionedReason; ///< "A1_em = 0.02 is below 0.1 x A1_no = 3.1 (...)"; empty when well conditioned
     // the coefficients they came from (0 when set by hand)
     double a0Functional = 0.0, a0Emotional = 0.0, a1Functional = 0.0, a1Emotional = 0.0;
 };
@@ -63,14 +80,17 @@ struct GainOptions {
     double nearZeroDcFraction = 1.0;
     /// A1 below this fraction of the motion range: g1 is set to 1 (nothing to scale).
     double flatFraction = 1e-3;
-    double gainLimit = 100.0; ///< |g1| and 1/|g1| are clamped to this, with a reason
+    /// A1_em below this fraction of A1_no: g1 is ill-conditioned, regularised to 1 / fraction and flagged.
+    double illConditionedFraction = kIllConditionedAmplitudeFraction;
+    double gainLimit = 100.0; ///< g1 and 1/g1 are clamped to this, with a reason
     /// A1_em above this multiple of A1_no: the emotion adds motion the function hardly has in
     /// this phrase (a hostile turn away); scaling the functional wiggle that much would amplify
     /// its noise, so the first harmonic is added instead (AcMode::Additive, with a reason).
     double additiveRatio = 4.0;
-    /// |cos(theta1_no - theta1_em)| below this: the first harmonics are out of phase (the
-    /// thesis assumes them equal, eq. 5.24), so the harmonic is added instead of scaled.
-    /// Opposite harmonics (cos < 0) give a negative g1 rather than a mirrored motion.
+    /// cos(theta1_no - theta1_em) below this: the first harmonics are out of phase (the thesis
+    /// assumes them equal, eq. 5.24), so the harmonic is added instead of scaled. Opposite
+    /// harmonics (cos near -1) are out of phase too: g1 is a ratio of magnitudes (eq. 5.23) and
+    /// cannot carry a sign.
     double minimumPhaseAgreement = 0.5;
     int blendFrames = 3;
 };
@@ -91,6 +111,19 @@ FourierLow lowFourier(const Eigen::Ref<const Eigen::VectorXd>& samples);
 Result<GainSet> extractGains(const Eigen::MatrixXd& functional, const Eigen::MatrixXd& emotional,
                              const std::vector<Eigen::Index>& boundaries, const std::vector<std::string>& dofNames,
                              const GainOptions& options = {});
+
+/// One ill-conditioned gain of a GainSet: phrase index (0-based), DOF index, and the reason.
+struct IllConditionedGain {
+    std::size_t phrase = 0;
+    std::size_t dof = 0;
+    Eigen::Index begin = 0, end = 0; ///< the phrase's frames
+    std::string dofName;
+    double a1Functional = 0.0, a1Emotional = 0.0;
+    double g1 = 1.0; ///< the regularised gain in use
+    std::string reason;
+};
+/// Every gain flagged illConditioned, phrase by phrase, DOF by DOF.
+std::vector<IllConditionedGain> illConditionedGains(const GainSet& gains);
 
 /// Gains that change nothing (g0 = g1 = 1) over the given phrases.
 GainSet unitGains(const std::vector<Eigen::Index>& boundaries, const std::vector<std::string>& dofNames);
@@ -124,7 +157,7 @@ inline constexpr double kMaxGainMagnitude = 1e6;
 inline constexpr double kMaxGainOffset = 1e9;
 
 /// gains.json: {"dofs": [...], "blend_frames": 3, "phrases": [{"begin", "end", "gains": [{"dof", "g0", "g1",
-/// "mode", "offset", "reason", ...}]}]}. Written atomically.
+/// "mode", "offset", "reason", "ill_conditioned", "ill_conditioned_reason", ...}]}]}. Written atomically.
 Status writeGainsJson(const GainSet& gains, const std::filesystem::path& file);
 /// Parses gains JSON text, checking every field: dofs a non-empty list of distinct names;
 /// blend_frames a whole number in [0, kMaxBlendFrames]; phrases in order, each begin < end,

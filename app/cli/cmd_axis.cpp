@@ -250,8 +250,19 @@ void runGains(const GainsCommandArguments& arguments)
     for (const an::PhraseGains& phrase : gains.phrases)
         for (const an::DofGain& gain : phrase.dofs)
             if (!gain.reason.empty()) reasons.push_back(gain.reason);
+    const std::vector<an::IllConditionedGain> illConditioned = an::illConditionedGains(gains);
     if (arguments.json) {
-        printJson({{"phrases", boundaries}, {"notes", reasons}, {"output", arguments.output}});
+        nlohmann::json ill = nlohmann::json::array();
+        for (const an::IllConditionedGain& gain : illConditioned)
+            ill.push_back({{"phrase", gain.phrase + 1},
+                           {"begin", gain.begin},
+                           {"end", gain.end},
+                           {"dof", gain.dofName},
+                           {"A1_functional", gain.a1Functional},
+                           {"A1_emotional", gain.a1Emotional},
+                           {"g1", gain.g1},
+                           {"reason", gain.reason}});
+        printJson({{"phrases", boundaries}, {"notes", reasons}, {"output", arguments.output}, {"ill_conditioned", ill}});
         return;
     }
     std::cout << gains.phrases.size() << " phrases (boundaries";
@@ -259,6 +270,13 @@ void runGains(const GainsCommandArguments& arguments)
     std::cout << (arguments.phrases.empty() ? ", suggested at minima of the axis speed" : "") << ") -> " << arguments.output
               << "\n";
     for (const std::string& reason : reasons) std::cout << "  note: " << reason << "\n";
+    if (illConditioned.empty()) return;
+    const double fraction = an::GainOptions{}.illConditionedFraction;
+    std::cout << illConditioned.size() << " ill-conditioned g1 (A1_em below " << fraction << " x A1_no; regularised to "
+              << 1.0 / fraction << "):\n";
+    for (const an::IllConditionedGain& gain : illConditioned)
+        std::cout << "  phrase " << gain.phrase + 1 << " (frames " << gain.begin << "-" << gain.end << "), " << gain.dofName
+                  << ": " << gain.reason << "\n";
 }
 
 // ---- design -------------------------------------------------------------------------------

@@ -1,4 +1,5 @@
 #include "tests/app/app_test_support.h"
+#include "tests/app/bandai_corpus_support.h"
 
 #include "app/commands.h"
 #include "app/design_controller.h"
@@ -16,6 +17,8 @@
 #include <qcustomplot.h>
 
 #include <QDockWidget>
+#include <QScrollBar>
+#include <QLabel>
 #include <QMenu>
 #include <QPushButton>
 #include <QSlider>
@@ -406,11 +409,13 @@ TEST_CASE("the extracted gains follow the phrase boundaries in use", "[app][desi
     }
     // Phrases before the split are extracted as before; the halves are extracted on their own.
     for (std::size_t p = 0; p < last; ++p) REQUIRE(gainValues(extracted)[p] == gainValues(extractedBefore)[p]);
+    // (the demo's last phrase is ill-conditioned on every DOF, its g1 regularised to 10 in the
+    // whole and in both halves: compare the first-harmonic amplitudes the gains came from)
     bool halvesDiffer = false;
     for (std::size_t d = 0; d < extracted.phrases[last].dofs.size(); ++d) {
-        const double whole = extractedBefore.phrases[last].dofs[d].g1;
-        halvesDiffer = halvesDiffer || std::abs(extracted.phrases[last].dofs[d].g1 - whole) > 1e-6 ||
-                       std::abs(extracted.phrases[last + 1].dofs[d].g1 - whole) > 1e-6;
+        const double whole = extractedBefore.phrases[last].dofs[d].a1Functional;
+        halvesDiffer = halvesDiffer || std::abs(extracted.phrases[last].dofs[d].a1Functional - whole) > 1e-6 ||
+                       std::abs(extracted.phrases[last + 1].dofs[d].a1Functional - whole) > 1e-6;
     }
     REQUIRE(halvesDiffer);
     // The table shows them, and "Use extracted gains" uses them.
@@ -543,4 +548,78 @@ TEST_CASE("the Design dock plots the extracted cell's approximation error per sc
     REQUIRE(plot->curveCount() == 7); // six axis DOF and the mean
     for (int c : {1, 8, 16}) CHECK(plot->value(6, c) == Approx(error.meanRelativeError(c - 1)));
     CHECK(plot->value(6, 16) < plot->value(6, 1));
+}
+
+TEST_CASE("the Design dock names the ill-conditioned gains, shades their cells and shows every gain legibly at 1366x768",
+          "[app][design]")
+{
+    // The demo's design extracts from greeting/friendly, whose warp ends at functional frame 96:
+    // its last phrase has A1_em ~ 0 on all 6 DOF (g1 was 100, the clamp).
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    REQUIRE(waitForDesign(*window));
+    auto& design = window->design();
+    window->resetLayout();
+    window->resize(1366, 768);
+    REQUIRE(QTest::qWaitFor([&] { return window->size() == QSize(1366, 768); }, 5000));
+    window->dock("designDock")->show();
+    window->dock("designDock")->raise();
+    for (int pass = 0; pass < 4; ++pass) QCoreApplication::processEvents();
+
+    const analysis::GainSet extracted = design.extractedGains();
+    const auto ill = analysis::illConditionedGains(extracted);
+    INFO("cell " << design.targetCell().toStdString());
+    REQUIRE_FALSE(ill.empty());
+    auto* panel = window->designPanel();
+    auto* table = panel->gainTable();
+    // The notice names each phrase with its DOF; the shaded cells are exactly the flagged ones.
+    CHECK(panel->illConditionedNoticeShown());
+    const QString notice = panel->illConditionedNotice();
+    INFO(notice.toStdString());
+    CHECK(notice.startsWith(
+        QStringLiteral("Ill-conditioned g1, regularised to 10 (emotional amplitude below 10 % of the functional one): ")));
+    for (const auto& gain : ill) {
+        CHECK(notice.contains(QStringLiteral("phrase %1 (").arg(gain.phrase + 1)));
+        CHECK(table->isIllConditioned(int(gain.phrase), int(gain.dof)));
+        CHECK(table->table()->item(int(gain.phrase), int(gain.dof))->toolTip().contains(QStringLiteral("ill-conditioned")));
+        CHECK(panel->findChild<QLabel*>(QStringLiteral("illConditionedNotice"))->toolTip().contains(QString::fromStdString(gain.reason)));
+    }
+    int shaded = 0;
+    for (int p = 0; p < table->table()->rowCount(); ++p)
+        for (int d = 0; d < table->table()->columnCount(); ++d) shaded += table->isIllConditioned(p, d) ? 1 : 0;
+    CHECK(shaded == int(ill.size()));
+
+    // Use extracted gains: every g1 positive, the ill-conditioned ones regularised to 10.
+    design.useExtractedGains();
+    const analysis::GainSet used = design.gains();
+    for (const auto& phrase : used.phrases)
+        for (const auto& gain : phrase.dofs) {
+            CHECK(gain.g0 > 0.0);
+            CHECK(gain.g1 > 0.0);
+        }
+    for (const auto& gain : ill) CHECK(used.phrases[gain.phrase].dofs[gain.dof].g1 == Approx(10.0));
+
+    // Legible at 1366 pixels: every cell's numbers whole (no "1.00 / ..."), without scrolling sideways.
+    for (int pass = 0; pass < 4; ++pass) QCoreApplication::processEvents();
+    INFO("table " << table->table()->viewport()->width() << " px wide, column 0 " << table->table()->columnWidth(0) << " px");
+    CHECK(table->table()->horizontalScrollBar()->maximum() == 0);
+    for (int p = 0; p < table->table()->rowCount(); ++p)
+        for (int d = 0; d < table->table()->columnCount(); ++d) {
+            INFO("cell " << p << "," << d << ": " << table->table()->item(p, d)->text().toStdString());
+            CHECK(table->cellTextFits(p, d));
+        }
+}
+
+TEST_CASE("on the Bandai bye takes, where no extracted gain is ill-conditioned, the Design dock shows no notice", "[app][design][bandai]")
+{
+    const auto corpus = test::bandaiCorpusFolder({"bye_normal_001.bvh", "bye_happy_001.bvh", "bye_angry_001.bvh"},
+                                                 "design_well_conditioned", "bye");
+    if (corpus.empty()) return;
+    auto window = test::windowOnCorpus(corpus);
+    REQUIRE(window);
+    REQUIRE(waitForDesign(*window));
+    REQUIRE_FALSE(window->design().extractedGains().phrases.empty());
+    CHECK(analysis::illConditionedGains(window->design().extractedGains()).empty());
+    CHECK_FALSE(window->designPanel()->illConditionedNoticeShown());
+    CHECK(window->designPanel()->illConditionedNotice().isEmpty());
 }

@@ -132,3 +132,89 @@ TEST_CASE("phrase lists and gain files are checked")
     REQUIRE_FALSE(bad.ok());
     CHECK(bad.error().message.find("one entry per DOF") != std::string::npos);
 }
+
+TEST_CASE("a first harmonic opposite to the functional one gives a non-negative g1 and is added, not mirrored")
+{
+    // thesis eq. 5.23: g1 = A1_no / A1_em is a ratio of magnitudes. The emotional phrase swings
+    // the other way at half the amplitude: the old extraction gave g1 = -2.
+    const Eigen::MatrixXd functional = functionalSignal();
+    Eigen::MatrixXd emotional = functional;
+    const Eigen::RowVectorXd mean = functional.colwise().mean();
+    for (Eigen::Index t = 0; t < functional.rows(); ++t)
+        emotional.row(t) = mean - 0.5 * (functional.row(t) - mean);
+    GainOptions options;
+    options.blendFrames = 0;
+    const auto gains = extractGains(functional, emotional, {0, 105}, {"h", "s"}, options);
+    REQUIRE(gains.ok());
+    for (const DofGain& gain : gains->phrases[0].dofs) {
+        CHECK(gain.g0 > 0.0);
+        CHECK(gain.g1 > 0.0);
+        CHECK_FALSE(gain.illConditioned);
+        CHECK(gain.acMode == AcMode::Additive);
+        CHECK(gain.reason.find("out of phase") != std::string::npos);
+    }
+}
+
+TEST_CASE("an emotional first harmonic below a tenth of the functional one is flagged ill-conditioned and g1 regularised to 10")
+{
+    const Eigen::MatrixXd functional = functionalSignal();
+    const std::vector<Eigen::Index> boundaries{0, 50, 105};
+    // phrase 1: the emotion keeps 1 % of the functional wiggle (g1 would be 100, the old clamp);
+    // phrase 2: 20 % of it (g1 = 5, well conditioned)
+    Eigen::MatrixXd emotional = functional;
+    for (int p = 0; p < 2; ++p) {
+        const Eigen::Index b = boundaries[std::size_t(p)], n = boundaries[std::size_t(p) + 1] - b + 1;
+        const Eigen::RowVectorXd mean = functional.middleRows(b, n).colwise().mean();
+        // the shared boundary frame 50 stays phrase 1's
+        for (Eigen::Index t = p == 0 ? b : b + 1; t < b + n; ++t)
+            emotional.row(t) = mean + (p == 0 ? 0.01 : 0.2) * (functional.row(t) - mean);
+    }
+    const auto gains = extractGains(functional, emotional, boundaries, {"h", "s"});
+    REQUIRE(gains.ok());
+    for (std::size_t d = 0; d < 2; ++d) {
+        const DofGain& ill = gains->phrases[0].dofs[d];
+        CHECK(ill.illConditioned);
+        CHECK(ill.g1 == Approx(1.0 / kIllConditionedAmplitudeFraction)); // not the old clamp at 100
+        CHECK(ill.acMode == AcMode::Scale);
+        CHECK(ill.a1Emotional < kIllConditionedAmplitudeFraction * ill.a1Functional);
+        CHECK(ill.illConditionedReason.find("below 0.1 x A1_no") != std::string::npos);
+        CHECK(ill.reason.find("ill-conditioned") != std::string::npos);
+        const DofGain& fine = gains->phrases[1].dofs[d];
+        CHECK_FALSE(fine.illConditioned);
+        CHECK(fine.illConditionedReason.empty());
+        CHECK(fine.g1 > 3.0); // about 5 (frame 50 is phrase 1's)
+        CHECK(fine.g1 < 8.0);
+    }
+    const auto listed = illConditionedGains(*gains);
+    REQUIRE(listed.size() == 2);
+    CHECK(listed[0].phrase == 0);
+    CHECK(listed[0].dof == 0);
+    CHECK(listed[0].dofName == "h");
+    CHECK(listed[1].dofName == "s");
+    CHECK(listed[1].begin == 0);
+    CHECK(listed[1].end == 50);
+    CHECK(listed[1].reason == gains->phrases[0].dofs[1].illConditionedReason);
+
+    // gains.json keeps the flag and its reason
+    const auto dir = bunraku::test::scratchDir("gains-ill-conditioned");
+    REQUIRE(writeGainsJson(*gains, dir / "gains.json").ok());
+    const auto read = readGainsJson(dir / "gains.json");
+    REQUIRE(read.ok());
+    CHECK(read->phrases[0].dofs[1].illConditioned);
+    CHECK(read->phrases[0].dofs[1].illConditionedReason == gains->phrases[0].dofs[1].illConditionedReason);
+    CHECK_FALSE(read->phrases[1].dofs[1].illConditioned);
+}
+
+TEST_CASE("means on opposite sides of zero give an additive offset, never a negative g0")
+{
+    Eigen::MatrixXd functional = functionalSignal();
+    Eigen::MatrixXd emotional = functional;
+    emotional.col(0).array() -= 160.0; // the height's mean moves from about +83 to about -77
+    const auto gains = extractGains(functional, emotional, {0, 105}, {"h", "s"});
+    REQUIRE(gains.ok());
+    const DofGain& height = gains->phrases[0].dofs[0];
+    CHECK(height.dcMode == DcMode::Offset);
+    CHECK(height.g0 == 1.0);
+    CHECK(height.offset == Approx(-160.0));
+    CHECK(height.reason.find("opposite signs") != std::string::npos);
+}
