@@ -35,6 +35,9 @@ ParsedNumber parseNumber(std::string_view token);
 /// Parses the whole token as an int.
 std::optional<long> parseInteger(std::string_view token);
 
+/// True when `text` is well-formed UTF-8 (no overlong forms, surrogates or code points past U+10FFFF).
+bool isUtf8(std::string_view text);
+
 /// A number for messages: 6 significant digits (%g).
 std::string shortText(double value);
 /// "'token'" with the token shortened to 40 characters, for messages; bytes outside printable

@@ -281,3 +281,19 @@ TEST_CASE("projects with out-of-range parameters, take ids, times or view values
     CHECK(p.design.gain(1, 2)->g1 == 2.0);
     CHECK(p.decompose.method == analysis::pipeline::DecomposeMethod::LeastSquares); // as version 1 decomposed
 }
+
+TEST_CASE("a project holding a number beyond a double is refused naming the file and line", "[app][files]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    const QString file = scratchFile("project-1e400", "huge.bunraku.json");
+    {
+        std::ofstream out(file.toStdString());
+        out << "{\"format\": \"bunraku-project\", \"version\": 2, \"corpus\": \"demo\",\n"
+               "\"parameters\": {\"normalise\": {\"tau\": 1e400}}}\n";
+    }
+    REQUIRE_FALSE(window->files().openProject(file));
+    INFO(window->files().lastError().toStdString());
+    CHECK(window->files().lastError().contains(QStringLiteral("huge.bunraku.json:2")));
+    CHECK(window->files().lastError().contains(QStringLiteral("1e400")));
+}
