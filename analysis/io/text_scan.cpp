@@ -12,7 +12,7 @@ std::vector<TextLine> splitLines(std::string_view text)
 {
     std::vector<TextLine> lines;
     long number = 1;
-    std::size_t start = 0;
+    std::size_t start = text.substr(0, 3) == "\xEF\xBB\xBF" ? 3 : 0; // a UTF-8 byte order mark (Excel writes one)
     while (start <= text.size()) {
         std::size_t end = text.find('\n', start);
         const bool last = end == std::string_view::npos;

@@ -16,7 +16,8 @@ struct TextLine {
     std::string_view text;  ///< without the line end; trailing '\r' removed
 };
 
-/// Every line of `text` (a final line without '\n' included).
+/// Every line of `text` (a final line without '\n' included); a UTF-8 byte order mark at the
+/// start is skipped.
 std::vector<TextLine> splitLines(std::string_view text);
 /// Without leading and trailing spaces, tabs and '\r'.
 std::string_view trim(std::string_view text);

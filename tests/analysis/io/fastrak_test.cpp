@@ -84,6 +84,16 @@ TEST_CASE("malformed fastrak files give errors naming the file and line")
     }
 }
 
+TEST_CASE("a fastrak file starting with a UTF-8 byte order mark reads as without it")
+{
+    const std::string rows = "1 10 0 0 0 0 0\n2 0 10 0 0 0 0\n3 0 0 10 0 0 0\n4 0 0 0 10 0 0\n";
+    auto plain = parseFastrak(rows, "f.txt");
+    auto marked = parseFastrak("\xEF\xBB\xBF" + rows, "f.txt");
+    REQUIRE(plain.ok());
+    REQUIRE(marked.ok());
+    CHECK(marked->values == plain->values);
+}
+
 TEST_CASE("the take reader refuses unknown extensions with a clear message")
 {
     auto take = readTakeFile("/tmp/some.xyz");
