@@ -20,4 +20,9 @@ analysis::pipeline::ChainParameters readChainParameters(const std::string& file)
     return unwrap(analysis::pipeline::chainParametersFromJson(parameters, file));
 }
 
+std::string chainSubject(const std::string& corpus, const std::string& parametersFile)
+{
+    return parametersFile.empty() ? corpus : corpus + " with the parameters of " + parametersFile;
+}
+
 } // namespace bunraku::app::cli

@@ -185,6 +185,55 @@ TEST_CASE("a JSON input holding 1e400 or ill-formed UTF-8 is one error line nami
     CHECK_FALSE(std::filesystem::exists(dir / "out"));
 }
 
+TEST_CASE("parameters in their range that fail at run time name the parameters file", "[cli]")
+{
+    const auto dir = bunraku::test::scratchDir("cli-parameters-run-time");
+    const auto corpus = dir / "corpus";
+    REQUIRE(runBunraku({"demo", "-o", corpus.string()}).exitCode == 0);
+    const std::vector<std::pair<std::string, std::string>> files = {
+        {"band.json", "{\"normalise\": {\"searchBand\": 100000}}"},
+        {"scale.json", "{\"normalise\": {\"maxScale\": 256}}"},
+        {"m.json", "{\"decompose\": {\"M\": 1000}}"},
+    };
+    for (const auto& [name, text] : files) {
+        const auto parameters = writeText(dir / name, text);
+        for (const std::string command : {"decompose", "analyse"}) {
+            const auto run = runBunraku({command, corpus.string(), "--parameters", parameters.string(), "-o", (dir / "out").string()});
+            INFO(command << " " << name << ": " << run.err);
+            CHECK(isOneLineError(run.exitCode, run.err));
+            CHECK(run.err.find(corpus.string()) != std::string::npos);
+            CHECK(run.err.find(parameters.string()) != std::string::npos);
+        }
+    }
+    CHECK_FALSE(std::filesystem::exists(dir / "out"));
+}
+
+TEST_CASE("a 1 MB label or file name gives an error line of at most a few hundred characters", "[cli]")
+{
+    const auto dir = bunraku::test::scratchDir("cli-long-label");
+    const auto corpus = dir / "corpus";
+    REQUIRE(runBunraku({"demo", "-o", corpus.string()}).exitCode == 0);
+    std::filesystem::remove_all(corpus / "truth");
+    auto manifest = nlohmann::json::parse(bunraku::test::readTextFile(corpus / "corpus.json"));
+    const std::string label(1'000'000, 'g');
+    for (auto& take : manifest["takes"])
+        if (take["function"] == "greeting") take["function"] = label;
+    writeText(corpus / "corpus.json", manifest.dump(1));
+    const std::vector<std::vector<std::string>> commands = {
+        {"normalise", corpus.string(), "--function", "greeting", "--emotion", "none", "-o", (dir / "n").string()},
+        {"emotion", corpus.string(), "--pad", "--method", "ls", "--function", "greeting", "--emotion", "none", "--weight", "1", "-o",
+         (dir / "e.csv").string()},
+        {"preprocess", corpus.string(), "-o", (dir / "p").string()}, // a take file named after the label: too long a name
+    };
+    for (const auto& command : commands) {
+        const auto run = runBunraku(command);
+        INFO(command.front() << ": " << run.err.substr(0, 400));
+        CHECK(isOneLineError(run.exitCode, run.err));
+        CHECK(run.err.size() < 1000);
+        CHECK(run.err.find("...") != std::string::npos);
+    }
+}
+
 TEST_CASE("decompose and emotion reject bad options with one line and write nothing", "[cli]")
 {
     const auto dir = bunraku::test::scratchDir("cli-bad-options");
