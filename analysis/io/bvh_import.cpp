@@ -4,9 +4,9 @@
 #include "analysis/core/skeleton_calibration.h"
 #include "analysis/core/skeleton_take.h"
 #include "analysis/io/atomic_file.h"
-#include "analysis/io/json_text.h"
 #include "analysis/io/bvh_export.h"
 #include "analysis/io/bvh_joint_map.h"
+#include "analysis/io/json_text.h"
 #include "analysis/io/text_scan.h"
 
 #include <nlohmann/json.hpp>
