@@ -332,6 +332,7 @@ bool FileController::applyStateNow(const ProjectState& state)
     // (an hour-long take among them): Cancel leaves the document as it was.
     std::vector<analysis::Result<analysis::Take>> takes;
     bool cancelled = false;
+    m_unreadTakes.clear();
     if (!state.imported.empty())
         runProgressTask(m_dialogs ? m_window : nullptr, tr("Reading the project's %n imported take(s)...", nullptr, int(state.imported.size())),
                         [&](const analysis::RunControl& control) {
@@ -354,7 +355,8 @@ bool FileController::applyStateNow(const ProjectState& state)
         const auto& recipe = state.imported[i];
         auto& take = takes[std::size_t(i)];
         if (!take) {
-            report(tr("Cannot re-import a take of the project"), take.error());
+            m_unreadTakes.append(tr("'%1' (%2)").arg(recipe.label, QString::fromStdString(take.error().message)));
+            report(tr("Cannot re-import the take '%1' of the project").arg(recipe.label), take.error());
             continue;
         }
         m_document.insertImportedTake(
@@ -402,7 +404,15 @@ bool FileController::openProject(const QString& file)
     if (!applyState(state.value())) return false;
     m_projectPath = file;
     addRecent(file);
-    emit statusMessage(tr("Opened project %1").arg(file));
+    if (m_unreadTakes.isEmpty()) {
+        emit statusMessage(tr("Opened project %1").arg(file));
+    } else {
+        // The last word in the status bar: which takes are missing and why (each was reported too).
+        m_lastError = tr("Opened project %1 without %n of its imported take(s), which could not be read: %2", nullptr,
+                         int(m_unreadTakes.size()))
+                          .arg(file, m_unreadTakes.join(QStringLiteral("; ")));
+        emit statusMessage(m_lastError);
+    }
     return true;
 }
 

@@ -127,6 +127,7 @@ private:
     double m_pendingTime = 0.0; ///< the project's time, applied when an awaited take appears
     bool m_applying = false;    ///< inside applyState: selections are the project's own
     bool m_errorsInDialog = false; ///< errors are shown by the dialog that asked, not a message box
+    QStringList m_unreadTakes;     ///< the last opened project's imported takes that could not be read, with why
     QTimer m_autosaveTimer;
     std::unique_ptr<AutosaveSession> m_autosave;
     std::function<int()> m_unsavedAnswer;

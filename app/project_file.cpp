@@ -4,6 +4,7 @@
 
 #include "analysis/io/atomic_file.h"
 #include "analysis/io/import_options_json.h"
+#include "analysis/io/json_text.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -164,11 +165,10 @@ analysis::Result<ProjectState> parseProject(const QByteArray& text, const QStrin
     }
     // The parameters: strictly typed and range-checked before anything uses them.
     json parameters = json::object();
-    try {
-        const json whole = json::parse(text.toStdString());
-        if (whole.contains("parameters")) parameters = whole["parameters"];
-    } catch (const json::exception& parse) {
-        return parseError(name, 0, std::string("expected JSON: ") + parse.what());
+    {
+        auto whole = analysis::io::parseJsonText(text.toStdString(), name); // a number beyond a double (1e400) and the like
+        if (!whole) return whole.error();
+        if (whole->is_object() && whole->contains("parameters")) parameters = (*whole)["parameters"];
     }
     if (version == 1) parameters = upgradeVersion1(parameters);
     auto typed = analysis::pipeline::chainParametersFromJson(parameters, name);

@@ -26,7 +26,7 @@ ScrubBar::ScrubBar(QWidget* parent) : QWidget(parent)
 
 void ScrubBar::setDuration(double seconds)
 {
-    m_duration = seconds > 0.0 ? seconds : 1.0;
+    m_duration = std::isfinite(seconds) && seconds > 0.0 ? seconds : 1.0;
     update();
 }
 
@@ -55,6 +55,16 @@ int ScrubBar::xOfTime(double seconds) const
     return kMargin + int(std::lround(std::clamp(seconds / m_duration, 0.0, 1.0) * span));
 }
 
+double ScrubBar::tickSeconds() const
+{
+    const int span = std::max(1, width() - 2 * kMargin);
+    const double fewest = m_duration * kMinTickPixels / span; // seconds the closest two ticks may be
+    double step = 1.0;
+    for (int k = 0; step < fewest && std::isfinite(step); k = (k + 1) % 3)
+        step *= k == 1 ? 2.5 : 2.0; // 1, 2, 5, 10, 20, 50 ...
+    return step;
+}
+
 void ScrubBar::paintEvent(QPaintEvent*)
 {
     QPainter painter(this);
@@ -67,11 +77,14 @@ void ScrubBar::paintEvent(QPaintEvent*)
     painter.setBrush(palette().color(QPalette::Highlight));
     painter.drawRoundedRect(QRect(track.left(), track.top(), xOfTime(m_time) - track.left(), track.height()), 3, 3);
 
-    // Whole seconds as small ticks, phrase boundaries as tall orange ticks.
+    // Whole seconds (or every tickSeconds) as small ticks, every fifth taller; phrase boundaries
+    // as tall orange ticks. At most one tick per kMinTickPixels, whatever the take's span.
     painter.setPen(QPen(palette().color(QPalette::WindowText), 1));
-    for (int second = 0; second <= int(m_duration); ++second) {
-        const int x = xOfTime(second);
-        painter.drawLine(x, track.bottom() + 2, x, track.bottom() + (second % 5 == 0 ? 6 : 4));
+    const double step = tickSeconds();
+    const long ticks = long(std::min(m_duration / step, double(track.width() + 1)));
+    for (long tick = 0; tick <= ticks; ++tick) {
+        const int x = xOfTime(double(tick) * step);
+        painter.drawLine(x, track.bottom() + 2, x, track.bottom() + (tick % 5 == 0 ? 6 : 4));
     }
     for (std::size_t i = 0; i < m_boundaries.size(); ++i) {
         const bool marked = m_boundariesEditable && (int(i) == m_selected || int(i) == m_hovered);

@@ -48,6 +48,11 @@ public:
     double timeAtX(int x) const;
     /// The x pixel coordinate of `seconds`.
     int xOfTime(double seconds) const;
+    /// Seconds between two time ticks over the bar's width: 1 s, or the first of 2, 5, 10, 20,
+    /// 50, 100 ... s that keeps the ticks kMinTickPixels apart. The ticks follow the pixels, not
+    /// the span: a take of 1e8 s draws as many as one of 100 s on the same width.
+    double tickSeconds() const;
+    static constexpr int kMinTickPixels = 4;
 
     QSize sizeHint() const override { return {400, 34}; }
 

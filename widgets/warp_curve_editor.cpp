@@ -8,6 +8,7 @@
 #include <QPushButton>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 
 namespace bunraku::widgets {
@@ -87,12 +88,22 @@ void WarpCurveEditor::redraw()
 {
     QVector<double> x, y, px, py, ex, ey;
     if (m_curve.points.size() >= 2) {
+        // Four samples per output frame, but no more than the plot's pixels can show (a design
+        // warp reaching output frame 1e8 would ask for 4e8 samples); the points themselves are
+        // always samples, so no kink is cut off.
         const double last = m_curve.points.back().output;
-        const int samples = std::max(2, int(last * 4) + 1);
-        for (int i = 0; i < samples; ++i) {
-            const double output = last * i / (samples - 1);
+        const double pixels = std::max(100, m_plot->width());
+        const int samples = int(std::clamp(last * 4.0, 1.0, 4.0 * pixels)) + 1;
+        std::size_t next = 0; // the next curve point not yet sampled
+        const auto sample = [&](double output) {
             x << output;
             y << analysis::evaluateWarp(m_curve, output);
+        };
+        for (int i = 0; i < samples; ++i) {
+            const double output = last * i / (samples - 1);
+            for (; next < m_curve.points.size() && m_curve.points[next].output < output; ++next)
+                if (x.isEmpty() || m_curve.points[next].output > x.back()) sample(m_curve.points[next].output);
+            sample(output);
         }
         for (const auto& point : m_curve.points) {
             px << point.output;

@@ -1,6 +1,7 @@
 #include "analysis/body/body_description.h"
 
 #include "analysis/io/atomic_file.h"
+#include "analysis/io/json_text.h"
 
 #include <nlohmann/json.hpp>
 
@@ -213,12 +214,9 @@ Result<BodyDescription> parseBodyDescription(std::string_view jsonText, std::str
 {
     const std::string source(sourceName);
     const Walker walk(source);
-    json document;
-    try {
-        document = json::parse(jsonText);
-    } catch (const json::parse_error& error) {
-        return parseError(source, 0, std::string("not valid JSON (") + error.what() + ")");
-    }
+    auto parsed = io::parseJsonText(jsonText, source, "not valid JSON");
+    if (!parsed) return parsed.error();
+    const json document = std::move(parsed).value();
     if (!document.is_object()) return walk.fail("", "expected a JSON object with \"parts\"");
     BodyDescription body;
     body.source = source;

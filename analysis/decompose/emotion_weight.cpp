@@ -1,12 +1,13 @@
 #include "analysis/decompose/emotion_weight.h"
 
+#include "analysis/core/message_text.h"
 #include "analysis/skeleton/puppet_rig_fit.h"
 #include "analysis/skeleton/skeleton_resample.h"
 
 #include <algorithm>
 #include <cassert>
-#include <limits>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <sstream>
 
@@ -99,8 +100,9 @@ int findFunction(const Decomposition& decomposition, const std::string& function
 Error unknownFunction(const Decomposition& decomposition, const std::string& function)
 {
     std::string known;
-    for (const auto& f : decomposition.functions) known += (known.empty() ? "" : ", ") + f.function;
-    return makeError(ErrorCode::NotFound, "unknown function '" + function + "' (known: " + known + ")");
+    for (const auto& f : decomposition.functions) known += (known.empty() ? "" : ", ") + shortenedForMessage(f.function);
+    return makeError(ErrorCode::NotFound,
+                     "unknown function '" + shortenedForMessage(function) + "' (known: " + shortenedForMessage(known, 400) + ")");
 }
 
 } // namespace
@@ -129,8 +131,9 @@ Result<Take> weightEmotion(const Decomposition& decomposition, const std::string
     if (cell < 0) {
         std::string known;
         for (const auto& e : decomposition.emotions)
-            if (e.function == function) known += (known.empty() ? "" : ", ") + e.emotion;
-        return makeError(ErrorCode::NotFound, "function '" + function + "' has no emotion '" + emotion + "' (known: " + known + ")");
+            if (e.function == function) known += (known.empty() ? "" : ", ") + shortenedForMessage(e.emotion);
+        return makeError(ErrorCode::NotFound, "function '" + shortenedForMessage(function) + "' has no emotion '" +
+                                                  shortenedForMessage(emotion) + "' (known: " + shortenedForMessage(known, 400) + ")");
     }
     Eigen::MatrixXd coordinates;
     weightEmotionInto(decomposition, functionIndex, cell, weight, coordinates);

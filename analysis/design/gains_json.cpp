@@ -2,6 +2,7 @@
 #include "analysis/design/phrase_gains.h"
 
 #include "analysis/io/atomic_file.h"
+#include "analysis/io/json_text.h"
 
 #include <nlohmann/json.hpp>
 
@@ -94,12 +95,9 @@ Status writeGainsJson(const GainSet& gains, const std::filesystem::path& file)
 Result<GainSet> parseGainsJson(const std::string& text, const std::string& sourceName)
 {
     const GainsReader reader{sourceName};
-    json document;
-    try {
-        document = json::parse(text);
-    } catch (const json::exception& error) {
-        return parseError(sourceName, 0, std::string("expected a JSON gains document: ") + error.what());
-    }
+    auto parsed = io::parseJsonText(text, sourceName, "expected a JSON gains document");
+    if (!parsed) return parsed.error();
+    const json document = std::move(parsed).value();
     if (!document.is_object()) return reader.error("top level", "expected a JSON object with dofs and phrases");
     GainSet gains;
 

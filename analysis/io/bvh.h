@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace bunraku::analysis::io {
@@ -33,6 +34,7 @@ struct BvhJoint {
     std::vector<BvhChannel> channels; ///< in file order, 0 to 6 of them (usually 3 or 6)
     int firstChannel = 0;      ///< column of its first channel in BvhMotion::values
     bool endSite = false;
+    long offsetLine = 0;       ///< the file line of its OFFSET, for messages (0: none, or not read from text)
 };
 
 struct BvhSkeleton {
@@ -50,6 +52,12 @@ struct BvhMotion {
     /// frames x channels, rows = time, file units and degrees.
     Eigen::MatrixXd values;
     double frameTime = 0.0; ///< seconds
+    /// Where the rows are in the file, for messages: row r is on line `second + (r - first)` of
+    /// the last entry with `first <= r` (an entry starts the text and follows each blank line).
+    /// Empty for a motion not read from text.
+    std::vector<std::pair<Eigen::Index, long>> rowLines;
+    /// The file line of a row (0 when unknown).
+    long lineOfRow(Eigen::Index row) const;
 };
 
 struct BvhFile {
@@ -72,11 +80,18 @@ inline constexpr std::uintmax_t kMaxBvhFileBytes = std::uintmax_t(2) << 30;
 /// text can hold the rows `Frames` claims. The control is told the fraction of motion rows read
 /// and stops the parse (a Cancelled error) every few thousand rows when asked.
 Result<BvhFile> parseBvh(const std::string& text, const std::string& sourceName, const RunControl& control = {});
+/// Rotation channel values beyond valueLimit("deg") (+-1e9 deg) are refused with the line.
+/// Joint names must be UTF-8 text (they are written to JSON skeleton files).
 /// Reads a regular file of at most kMaxBvhFileBytes (a pipe or device is refused) and parses it.
 Result<BvhFile> readBvh(const std::filesystem::path& file, const RunControl& control = {});
 /// The hierarchy and only the first `frames` motion rows (fewer when the file has fewer; what
 /// follows them is not read): enough to map the parts or preview the first pose of a big file.
 Result<BvhFile> readBvhStart(const std::filesystem::path& file, Eigen::Index frames = 1);
+
+/// Refuses OFFSETs and position channel values whose length in cm (file units times
+/// `cmPerUnit`) is beyond valueLimit("cm") (+-1e7 cm), naming the file, line and joint: the
+/// length check parseBvh cannot make before the units are known.
+Status checkBvhLengths(const BvhFile& file, double cmPerUnit);
 
 /// How position channels of a joint combine with its OFFSET.
 enum class BvhPositionMode {

@@ -6,6 +6,7 @@
 #include "analysis/io/atomic_file.h"
 #include "analysis/io/bvh_export.h"
 #include "analysis/io/bvh_joint_map.h"
+#include "analysis/io/json_text.h"
 #include "analysis/io/text_scan.h"
 
 #include <nlohmann/json.hpp>
@@ -90,14 +91,9 @@ Result<JointMap> readJointMapJson(const std::filesystem::path& file, const Joint
 {
     auto text = readTextFile(file);
     if (!text) return text.error();
-    nlohmann::json document;
-    try {
-        document = nlohmann::json::parse(*text);
-    } catch (const nlohmann::json::parse_error& e) {
-        long line = 1;
-        for (std::size_t i = 0; i < std::min<std::size_t>(e.byte, text->size()); ++i) line += (*text)[i] == '\n' ? 1 : 0;
-        return parseError(file.string(), line, std::string("invalid JSON: ") + e.what());
-    }
+    auto parsed = parseJsonText(*text, file.string(), "invalid JSON");
+    if (!parsed) return parsed.error();
+    const nlohmann::json document = std::move(parsed).value();
     if (!document.is_object())
         return parseError(file.string(), 0, "expected a JSON object {\"head\": \"Joint\", \"shoulder\": ..., \"arm\": ..., \"hand\": ...}");
     JointMap map = base;
@@ -218,6 +214,7 @@ Result<std::shared_ptr<const SkeletalMotion>> bvhToSkeletalMotion(const BvhFile&
     const Eigen::Quaterniond world_R_file = bvhAxisChange(upAxis);
     const Eigen::Matrix3d C = world_R_file.toRotationMatrix();
     const double scale = bvhUnitScale(file, options);
+    if (auto lengths = checkBvhLengths(file, scale); !lengths) return lengths.error();
     const std::size_t slots = file.skeleton.joints.size();
     const Eigen::Index frames = file.motion.values.rows();
     const Eigen::Index width = file.motion.values.cols();
@@ -324,6 +321,7 @@ Result<std::shared_ptr<const SkeletalMotion>> bvhToSkeletalMotion(const BvhFile&
 Result<BvhPuppetImport> importBvhPuppet(const BvhFile& file, const BvhImportOptions& options, const RunControl& control)
 {
     if (auto ok = checkOptions(file, options); !ok) return ok.error();
+    if (auto lengths = checkBvhLengths(file, bvhUnitScale(file, options)); !lengths) return lengths.error(); // before mapping on them
     std::optional<JointMap> given = options.jointMap;
     if (!given && isWorkbenchExport(file)) given = JointMap{{"head", "shoulder", "arm", "hand"}};
     auto map = mapPuppetParts(file, given, PartMapOptions{options.side}, options);

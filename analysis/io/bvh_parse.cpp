@@ -4,8 +4,11 @@
 // matrix, whose size is checked against the bytes left in the file before it is allocated.
 #include "analysis/io/bvh.h"
 
+#include "analysis/core/take.h"
+#include "analysis/io/text_format.h"
 #include "analysis/io/text_scan.h"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -104,6 +107,8 @@ public:
                 open = true;
             }
             if (name.empty()) return err(line, std::string(keyword) + " needs a name");
+            if (!detail::isUtf8(name)) // the name goes into JSON skeleton files, which hold UTF-8 only
+                return err(line, std::string(keyword) + " name " + detail::quoted(name) + " is not UTF-8 text");
             if (auto error = addJoint(line, std::string(name), false, open)) return error;
             return std::nullopt;
         }
@@ -128,6 +133,7 @@ public:
                     return err(line, "OFFSET expects numbers, found " + detail::quoted(tokens[std::size_t(i) + 1]));
                 joint.offset[i] = parsed.value;
             }
+            joint.offsetLine = line.number; // lengths are checked once the units are known (checkBvhLengths)
             return std::nullopt;
         }
         if (keyword == "CHANNELS") {
@@ -202,16 +208,23 @@ bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' ||
 /// anywhere, nothing after the last row but blank lines.
 class MotionScanner {
 public:
-    MotionScanner(std::string_view text, std::size_t offset, long lineNumber, const std::string& source)
-        : m_begin(text.data()), m_p(text.data() + offset), m_end(text.data() + text.size()), m_line(lineNumber), m_source(source)
+    MotionScanner(std::string_view text, std::size_t offset, long lineNumber, const std::string& source, const BvhSkeleton& skeleton)
+        : m_begin(text.data()), m_p(text.data() + offset), m_end(text.data() + text.size()), m_line(lineNumber), m_source(source),
+          m_skeleton(skeleton)
     {
+        m_angle.assign(std::size_t(skeleton.channelCount), 0);
+        for (const BvhJoint& joint : skeleton.joints)
+            for (std::size_t k = 0; k < joint.channels.size(); ++k)
+                m_angle[std::size_t(joint.firstChannel) + k] = isPositionChannel(joint.channels[k]) ? 0 : 1;
     }
 
     /// Reads values.rows() rows; `whole`: the text must end after them (else the rest is not read).
     /// Every kRowsPerReport rows the control is asked whether to stop and told the rows' fraction.
-    std::optional<Error> scan(Eigen::MatrixXd& values, bool whole, const RunControl& control)
+    std::optional<Error> scan(Eigen::MatrixXd& values, std::vector<std::pair<Eigen::Index, long>>& rowLines, bool whole,
+                              const RunControl& control)
     {
         constexpr Eigen::Index kRowsPerReport = 4096;
+        const double angleLimit = valueLimit("deg");
         const Eigen::Index frames = values.rows();
         const Eigen::Index width = values.cols();
         for (Eigen::Index row = 0; row < frames; ++row) {
@@ -223,6 +236,7 @@ public:
             if (m_p == m_end)
                 return parseError(m_source, lastLine(), "expected " + std::to_string(frames) + " motion rows (Frames), found " +
                                                             std::to_string(row) + " before the end of the file");
+            if (rowLines.empty() || rowLines.back().second + (row - rowLines.back().first) != m_line) rowLines.emplace_back(row, m_line);
             for (Eigen::Index c = 0; c < width; ++c) {
                 while (m_p != m_end && (*m_p == ' ' || *m_p == '\t')) ++m_p;
                 if (m_p == m_end || *m_p == '\n' || *m_p == '\r')
@@ -230,6 +244,10 @@ public:
                                                             " channel values, found " + std::to_string(c));
                 double value = 0.0;
                 if (auto error = number(row, c, value)) return error;
+                if (m_angle[std::size_t(c)] && std::fabs(value) > angleLimit)
+                    return parseError(m_source, m_line, "frame " + std::to_string(row) + ", value " + std::to_string(c + 1) + " (" +
+                                                            channelName(c) + "): " + shortestNumber(value) + " deg is beyond +-" +
+                                                            detail::shortText(angleLimit) + " deg");
                 values(row, c) = value;
             }
             while (m_p != m_end && isBlank(*m_p)) ++m_p;
@@ -270,6 +288,15 @@ private:
     /// The number of the file's last line (a final line end starts no new line).
     long lastLine() const { return m_p != m_begin && m_p[-1] == '\n' ? m_line - 1 : m_line; }
 
+    /// "Joint Xrotation" for a column, for messages.
+    std::string channelName(Eigen::Index column) const
+    {
+        for (const BvhJoint& joint : m_skeleton.joints)
+            if (column >= joint.firstChannel && column < joint.firstChannel + Eigen::Index(joint.channels.size()))
+                return detail::quoted(joint.name) + " " + bvhChannelName(joint.channels[std::size_t(column - joint.firstChannel)]);
+        return "channel " + std::to_string(column + 1);
+    }
+
     /// The whitespace-delimited token at m_p, for messages.
     std::string_view token() const
     {
@@ -307,6 +334,8 @@ private:
     const char* m_end;
     long m_line;
     const std::string& m_source;
+    const BvhSkeleton& m_skeleton;
+    std::vector<char> m_angle; ///< per column: a rotation channel (degrees)
 };
 
 } // namespace
@@ -384,8 +413,8 @@ Result<BvhFile> parse(std::string_view text, const std::string& sourceName, std:
                               std::to_string(fit) + " rows of " + std::to_string(width) + " values");
     const long rows = rowLimit ? std::min(frames, *rowLimit) : frames;
     file.motion.values.resize(Eigen::Index(rows), Eigen::Index(width));
-    MotionScanner scanner(text, reader.offset(), timeLine.number + 1, sourceName);
-    if (auto error = scanner.scan(file.motion.values, !rowLimit, control)) return *error;
+    MotionScanner scanner(text, reader.offset(), timeLine.number + 1, sourceName, file.skeleton);
+    if (auto error = scanner.scan(file.motion.values, file.motion.rowLines, !rowLimit, control)) return *error;
     return file;
 }
 
@@ -422,6 +451,45 @@ Result<FileBytes> readBvhBytes(const std::filesystem::path& path)
 }
 
 } // namespace
+
+long BvhMotion::lineOfRow(Eigen::Index row) const
+{
+    const auto after = std::upper_bound(rowLines.begin(), rowLines.end(), row,
+                                        [](Eigen::Index r, const std::pair<Eigen::Index, long>& entry) { return r < entry.first; });
+    if (after == rowLines.begin()) return 0;
+    const auto& entry = *std::prev(after);
+    return entry.second + long(row - entry.first);
+}
+
+Status checkBvhLengths(const BvhFile& file, double cmPerUnit)
+{
+    const double limit = valueLimit("cm");
+    const auto beyond = [&](double value) { return !(std::fabs(value * cmPerUnit) <= limit); };
+    const auto length = [&](double value) {
+        return cmPerUnit == 1.0 ? detail::shortText(value) + " cm"
+                                : detail::shortText(value) + " file units (" + detail::shortText(value * cmPerUnit) + " cm)";
+    };
+    for (const BvhJoint& joint : file.skeleton.joints)
+        for (int i = 0; i < 3; ++i)
+            if (beyond(joint.offset[i]))
+                return parseError(file.source, joint.offsetLine,
+                                  "OFFSET of joint " + detail::quoted(joint.name) + ": " + length(joint.offset[i]) +
+                                      " is beyond +-" + detail::shortText(limit) + " cm");
+    const Eigen::MatrixXd& values = file.motion.values;
+    for (const BvhJoint& joint : file.skeleton.joints)
+        for (std::size_t k = 0; k < joint.channels.size(); ++k) {
+            if (!isPositionChannel(joint.channels[k])) continue;
+            const Eigen::Index column = joint.firstChannel + Eigen::Index(k);
+            for (Eigen::Index row = 0; row < values.rows(); ++row)
+                if (beyond(values(row, column)))
+                    return parseError(file.source, file.motion.lineOfRow(row),
+                                      "frame " + std::to_string(row) + ", value " + std::to_string(column + 1) + " (" +
+                                          detail::quoted(joint.name) + " " + bvhChannelName(joint.channels[k]) + "): " +
+                                          length(values(row, column)) + " is beyond +-" +
+                                          detail::shortText(limit) + " cm");
+        }
+    return okStatus();
+}
 
 Result<BvhFile> parseBvh(const std::string& text, const std::string& sourceName, const RunControl& control)
 {

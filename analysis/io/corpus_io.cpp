@@ -1,6 +1,7 @@
 #include "analysis/io/corpus_io.h"
 
 #include "analysis/io/atomic_file.h"
+#include "analysis/io/json_text.h"
 #include "analysis/io/skeleton_io.h"
 #include "analysis/io/staged_folder.h"
 #include "analysis/io/text_format.h"
@@ -24,13 +25,6 @@ std::string sanitise(const std::string& text)
 {
     const std::string safe = fileSafeLabel(text);
     return safe.empty() ? std::string("take") : safe;
-}
-
-/// 1-based line of a byte offset in text.
-long lineOfOffset(const std::string& text, std::size_t offset)
-{
-    offset = std::min(offset, text.size());
-    return 1 + long(std::count(text.begin(), text.begin() + std::ptrdiff_t(offset), '\n'));
 }
 
 struct ManifestReader {
@@ -122,14 +116,9 @@ bool isCorpusFolder(const fs::path& folder)
 Result<CorpusManifest> parseCorpusManifest(const std::string& text, const std::string& sourceName)
 {
     const ManifestReader reader{sourceName};
-    json manifest;
-    try {
-        manifest = json::parse(text);
-    } catch (const json::parse_error& e) {
-        return parseError(reader.file, lineOfOffset(text, e.byte), std::string("invalid JSON: ") + e.what());
-    } catch (const json::exception& e) { // a number out of range (1e400) and the like
-        return parseError(reader.file, 0, std::string("invalid JSON: ") + e.what());
-    }
+    auto parsed = parseJsonText(text, reader.file, "invalid JSON");
+    if (!parsed) return parsed.error();
+    const json manifest = std::move(parsed).value();
     if (!manifest.is_object()) return reader.error("top level", "expected a JSON object");
     auto format = stringField(reader, manifest, "format", "top level");
     if (!format) return format.error();

@@ -1,6 +1,7 @@
 #include "analysis/io/skeleton_io.h"
 
 #include "analysis/io/atomic_file.h"
+#include "analysis/io/json_text.h"
 #include "analysis/io/take_csv.h"
 #include "analysis/io/text_format.h"
 
@@ -229,7 +230,9 @@ std::string skeletonJson(const Skeleton& skeleton, const std::vector<int>& movin
                         {"joints", joints},
                         {"moving_joints", movingJoints},
                         {"parts", parts}};
-    return document.dump(1) + "\n";
+    // Joint names are UTF-8 (the BVH reader refuses others); the skeleton's name comes from a file
+    // name, which may not be: written with a replacement character rather than thrown.
+    return document.dump(1, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
 Result<std::pair<std::string, std::string>> formatSkeletalMotion(const SkeletalMotion& motion, double rateHz)
@@ -252,13 +255,9 @@ Result<std::shared_ptr<const SkeletalMotion>> readSkeletalMotion(const fs::path&
     auto text = readTextFile(skeletonFile);
     if (!text) return text.error();
     const Reader reader{skeletonFile.string()};
-    json document;
-    try {
-        document = json::parse(*text);
-    } catch (const json::parse_error& e) {
-        const long line = 1 + long(std::count(text->begin(), text->begin() + std::ptrdiff_t(std::min(e.byte, text->size())), '\n'));
-        return parseError(skeletonFile.string(), line, std::string("invalid JSON: ") + e.what());
-    }
+    auto parsed = parseJsonText(*text, skeletonFile.string(), "invalid JSON");
+    if (!parsed) return parsed.error();
+    const json document = std::move(parsed).value();
     auto motion = std::make_shared<SkeletalMotion>();
     auto skeleton = parseSkeleton(document, reader, *motion);
     if (!skeleton) return skeleton.error();

@@ -16,7 +16,8 @@ struct TextLine {
     std::string_view text;  ///< without the line end; trailing '\r' removed
 };
 
-/// Every line of `text` (a final line without '\n' included).
+/// Every line of `text` (a final line without '\n' included); a UTF-8 byte order mark at the
+/// start is skipped.
 std::vector<TextLine> splitLines(std::string_view text);
 /// Without leading and trailing spaces, tabs and '\r'.
 std::string_view trim(std::string_view text);
@@ -34,6 +35,9 @@ struct ParsedNumber {
 ParsedNumber parseNumber(std::string_view token);
 /// Parses the whole token as an int.
 std::optional<long> parseInteger(std::string_view token);
+
+/// True when `text` is well-formed UTF-8 (no overlong forms, surrogates or code points past U+10FFFF).
+bool isUtf8(std::string_view text);
 
 /// A number for messages: 6 significant digits (%g).
 std::string shortText(double value);

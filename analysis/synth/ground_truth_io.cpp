@@ -5,6 +5,7 @@
 
 #include "analysis/core/puppet_layout.h"
 #include "analysis/io/atomic_file.h"
+#include "analysis/io/json_text.h"
 #include "analysis/io/staged_folder.h"
 #include "analysis/io/text_format.h"
 
@@ -257,12 +258,9 @@ Result<DemoGroundTruth> readGroundTruth(const std::filesystem::path& folder)
     const fs::path manifestFile = folder / "truth.json";
     auto text = io::readTextFile(manifestFile, io::kDocumentLimitBytes);
     if (!text) return text.error();
-    json manifest;
-    try {
-        manifest = json::parse(*text);
-    } catch (const json::exception& e) {
-        return parseError(manifestFile.string(), 0, std::string("expected JSON: ") + e.what());
-    }
+    auto parsed = io::parseJsonText(*text, manifestFile.string());
+    if (!parsed) return parsed.error();
+    const json manifest = std::move(parsed).value();
     const auto channels = channelNames();
     DemoGroundTruth truth;
     std::string where = "manifest";

@@ -14,4 +14,9 @@ namespace bunraku::app::cli {
 /// Throws CliError naming the file and what was expected.
 analysis::pipeline::ChainParameters readChainParameters(const std::string& file);
 
+/// What a chain's error is about: "CORPUS", or "CORPUS with the parameters of FILE" when a
+/// parameters file was given (a value in its range may still fail at run time: a search band
+/// longer than the takes), so the message names the file to change.
+std::string chainSubject(const std::string& corpus, const std::string& parametersFile);
+
 } // namespace bunraku::app::cli

@@ -6,6 +6,7 @@
 #include <iostream>
 #include <new>
 #include <stdexcept>
+#include <string_view>
 
 namespace bunraku::app::cli {
 
@@ -23,6 +24,35 @@ std::string outOfMemoryMessage(int argc, char** argv)
     }
     return "out of memory while running `bunraku " + command + "`" + (inputs.empty() ? std::string() : " on " + inputs) +
            ": the input is larger than this machine can hold (or asks for more than its content justifies)";
+}
+
+/// The error as the one line printed: line breaks become spaces, and any run of more than 300
+/// characters without a space (a 1 MB label, a path of a 1 MB name) keeps its first 160 and last
+/// 100 characters around "...", so the line stays readable and still ends with the file name.
+std::string errorLine(const std::string& message)
+{
+    constexpr std::size_t kLongest = 300, kHead = 160, kTail = 100;
+    std::string line;
+    std::size_t start = 0;
+    while (start < message.size()) {
+        std::size_t end = message.find(' ', start);
+        if (end == std::string::npos) end = message.size();
+        std::string_view word(message.data() + start, end - start);
+        if (word.size() > kLongest) {
+            std::size_t head = kHead, tail = word.size() - kTail;
+            // never cut a UTF-8 character
+            while (head > 0 && (static_cast<unsigned char>(word[head]) & 0xC0) == 0x80) --head;
+            while (tail < word.size() && (static_cast<unsigned char>(word[tail]) & 0xC0) == 0x80) ++tail;
+            line.append(word.substr(0, head)).append("...").append(word.substr(tail));
+        } else {
+            line.append(word);
+        }
+        if (end < message.size()) line.push_back(' ');
+        start = end + 1;
+    }
+    for (char& c : line)
+        if (c == '\n' || c == '\r') c = ' ';
+    return line;
 }
 
 } // namespace
@@ -56,19 +86,19 @@ int runCli(int argc, char** argv)
     } catch (const CLI::CallForVersion& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
-        std::cerr << "bunraku: error: " << e.what() << "\n";
+        std::cerr << "bunraku: error: " << errorLine(e.what()) << "\n";
         return kExitUsage;
     } catch (const CliError& e) {
-        std::cerr << "bunraku: error: " << e.what() << "\n";
+        std::cerr << "bunraku: error: " << errorLine(e.what()) << "\n";
         return e.exitCode;
     } catch (const std::bad_alloc&) {
-        std::cerr << "bunraku: error: " << outOfMemoryMessage(argc, argv) << "\n";
+        std::cerr << "bunraku: error: " << errorLine(outOfMemoryMessage(argc, argv)) << "\n";
         return kExitBadInput;
     } catch (const std::length_error&) {
-        std::cerr << "bunraku: error: " << outOfMemoryMessage(argc, argv) << "\n";
+        std::cerr << "bunraku: error: " << errorLine(outOfMemoryMessage(argc, argv)) << "\n";
         return kExitBadInput;
     } catch (const std::exception& e) {
-        std::cerr << "bunraku: error: " << e.what() << "\n";
+        std::cerr << "bunraku: error: " << errorLine(e.what()) << "\n";
         return kExitBadInput;
     }
     return kExitOk;

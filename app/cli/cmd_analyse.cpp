@@ -64,7 +64,7 @@ void runAnalyse(const AnalyseArguments& arguments)
         }
     };
     auto chain = pl::runChain(corpus, parameters, nullptr, options);
-    if (!chain) throw CliError(arguments.corpus + ": " + chain.error().message);
+    if (!chain) throw CliError(chainSubject(arguments.corpus, arguments.parameters) + ": " + chain.error().message);
     std::vector<rp::OutputFile> files = unwrap(rp::analysisDataFiles(*chain, parameters));
     rp::ReportOptions report;
     report.title = "Bunraku motion analysis: " + (corpus.corpus->name.empty() ? arguments.corpus : corpus.corpus->name);

@@ -95,7 +95,8 @@ pipeline::ChainParameters chainParameters(const ChainArgs& args)
         parameters.preprocess.pad = parameters.preprocess.alignStart = parameters.preprocess.alignHeading =
             parameters.preprocess.alignPosition = false;
     if (args.pad) parameters.preprocess.pad = true;
-    if (auto valid = pipeline::validate(parameters); !valid) throw CliError(args.corpus + ": " + valid.error().message);
+    if (auto valid = pipeline::validate(parameters); !valid)
+        throw CliError(chainSubject(args.corpus, args.parameters) + ": " + valid.error().message);
     return parameters;
 }
 
@@ -108,7 +109,7 @@ ChainOutcome decomposeChain(const ChainArgs& args)
     const pipeline::ChainKeys keys = pipeline::chainKeys(out.corpus.key, out.parameters);
     const RunControl control{{}, {}, resolveThreads(0)}; // the workbench's thread count; the same bits for any
     auto failed = [&](pipeline::Stage stage, const Error& error) {
-        return CliError(args.corpus + ": " + pipeline::stageTitle(stage) + ": " + error.message);
+        return CliError(chainSubject(args.corpus, args.parameters) + ": " + pipeline::stageTitle(stage) + ": " + error.message);
     };
     auto preprocessed = pipeline::preprocessStage(out.corpus, out.parameters.preprocess, nullptr, control);
     if (!preprocessed) throw failed(pipeline::Stage::Preprocess, preprocessed.error());

@@ -75,6 +75,7 @@ Loaded load(const std::string& pathText, const ImportArguments& arguments, bool 
         loaded.bvh = std::make_unique<io::BvhFile>(unwrap(io::readBvh(path)));
         loaded.units = io::guessBvhUnits(*loaded.bvh, options.bvh.upAxis);
         loaded.cmPerUnit = io::bvhUnitScale(*loaded.bvh, options.bvh);
+        unwrap(io::checkBvhLengths(*loaded.bvh, loaded.cmPerUnit)); // `info` too: it prints the offsets
         loaded.upAxis = io::resolveUpAxis(*loaded.bvh, options.bvh.upAxis);
         if (options.bvhLayout == io::BvhTakeLayout::AllJoints) {
             loaded.corpus.takes.push_back(unwrap(io::bvhToJointTake(*loaded.bvh, options.bvh)));

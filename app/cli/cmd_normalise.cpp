@@ -3,6 +3,7 @@
 #include "app/cli/take_output.h"
 #include "app/cli/output_guard.h"
 
+#include "analysis/core/message_text.h"
 #include "analysis/io/corpus_io.h"
 #include "analysis/io/staged_folder.h"
 #include "analysis/io/take_csv.h"
@@ -171,9 +172,10 @@ void runNormalise(const NormaliseArguments& arguments)
         std::string cells;
         for (const auto& f : corpus.functions())
             for (const auto& e : corpus.emotions())
-                if (!corpus.cell(f, e).empty()) cells += (cells.empty() ? "" : ", ") + f + "/" + e;
-        throw CliError("no takes for " + arguments.function + "/" + arguments.emotion + " in " + arguments.corpus
-                       + " (cells: " + cells + ")");
+                if (!corpus.cell(f, e).empty())
+                    cells += (cells.empty() ? "" : ", ") + an::shortenedForMessage(f) + "/" + an::shortenedForMessage(e);
+        throw CliError("no takes for " + an::shortenedForMessage(arguments.function) + "/" + an::shortenedForMessage(arguments.emotion) +
+                       " in " + arguments.corpus + " (cells: " + an::shortenedForMessage(cells, 400) + ")");
     }
     // The pipeline's normalise stage on this cell alone.
     an::Corpus cellCorpus = corpus;

@@ -4,6 +4,7 @@
 #include "app/cli/output_guard.h"
 
 #include "analysis/io/atomic_file.h"
+#include "analysis/io/json_text.h"
 #include "analysis/io/text_format.h"
 #include "analysis/report/svg_plot.h"
 
@@ -57,7 +58,7 @@ Row readRow(const std::string& folder)
     Row row;
     row.folder = folder;
     try {
-        const json summary = json::parse(text);
+        const json summary = unwrap(analysis::io::parseJsonText(text, file.string()));
         row.corpus = summary.at("corpus").get<std::string>();
         row.takes = summary.at("takes").get<std::size_t>();
         row.cells = summary.at("cells").size();
@@ -78,7 +79,7 @@ Row readRow(const std::string& folder)
             row.designError = number(json(sum / double(axes.size())));
         }
     } catch (const json::exception& error) {
-        throw CliError(file.string() + ": expected the summary.json of `bunraku analyse`: " + error.what());
+        throw CliError(file.string() + ": expected the summary.json of `bunraku analyse`: " + analysis::io::jsonErrorReason(error));
     }
     if (row.corpus.empty()) row.corpus = fs::path(folder).lexically_normal().filename().string();
     return row;

@@ -2,6 +2,9 @@
 
 #include "app/cli/cli.h"
 
+#include "analysis/io/atomic_file.h"
+#include "analysis/io/corpus_io.h"
+
 #include <filesystem>
 #include <system_error>
 
@@ -36,6 +39,23 @@ bool sameFile(const fs::path& a, const fs::path& b)
     return resolved(a) == resolved(b);
 }
 
+/// The files a command reading the corpus folder `folder` reads: corpus.json and the take,
+/// skeleton and motion files it names. A manifest that does not parse gives corpus.json alone
+/// (reading the corpus then fails before anything is written).
+std::vector<std::string> corpusMemberFiles(const std::string& folder)
+{
+    const fs::path manifestPath = fs::path(folder) / "corpus.json";
+    std::vector<std::string> files{manifestPath.string()};
+    auto text = analysis::io::readTextFile(manifestPath, analysis::io::kDocumentLimitBytes);
+    if (!text) return files;
+    auto manifest = analysis::io::parseCorpusManifest(*text, manifestPath.string());
+    if (!manifest) return files;
+    for (const auto& entry : manifest->takes)
+        for (const std::string* name : {&entry.file, &entry.skeleton, &entry.motion})
+            if (!name->empty()) files.push_back((fs::path(folder) / *name).string());
+    return files;
+}
+
 } // namespace
 
 void refuseOutputOverInputs(const std::string& output, OutputKind kind, const std::vector<std::string>& inputs,
@@ -49,6 +69,12 @@ void refuseOutputOverInputs(const std::string& output, OutputKind kind, const st
         if (sameFile(output, input))
             throw CliError(output + ": " + option + " is the input " + input +
                            ", which writing would destroy: choose another output");
+        // A corpus's member files are inputs too: `normalise C -o C/<take>.csv` would overwrite a take.
+        if (analysis::io::isCorpusFolder(input))
+            for (const std::string& member : corpusMemberFiles(input))
+                if (sameFile(output, member))
+                    throw CliError(output + ": " + option + " is the file " + member + " of the input corpus " + input +
+                                   ", which writing would destroy: choose another output");
         if (kind == OutputKind::Folder && within(in, out))
             throw CliError(output + ": " + option + " is a folder holding the input " + input +
                            ", which replacing it would destroy: choose another output folder");

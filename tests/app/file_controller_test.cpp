@@ -21,7 +21,10 @@
 #include <QFile>
 #include <QFileInfo>
 
+#include <filesystem>
 #include <fstream>
+
+#include <sys/stat.h>
 
 using namespace bunraku;
 using app::TakeSlot;
@@ -280,4 +283,54 @@ TEST_CASE("projects with out-of-range parameters, take ids, times or view values
     REQUIRE(p.design.gain(1, 2));
     CHECK(p.design.gain(1, 2)->g1 == 2.0);
     CHECK(p.decompose.method == analysis::pipeline::DecomposeMethod::LeastSquares); // as version 1 decomposed
+}
+
+TEST_CASE("a project whose imported takes cannot be read opens saying which takes and why", "[app][files]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    const auto dir = test::scratchDir("project-unreadable-takes");
+    const std::string fifo = (dir / "fifo.csv").string();
+    std::filesystem::remove(fifo);
+    REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+    {
+        std::ofstream out(dir / "damaged.bvh");
+        out << "HIERARCHY\nROOT Hips\n{\n  OFFSET 0 0 zero\n}\n";
+    }
+    const QString file = QString::fromStdString((dir / "p.bunraku.json").string());
+    {
+        std::ofstream out(file.toStdString());
+        out << R"({"format": "bunraku-project", "version": 2, "corpus": "demo", "imported": [)"
+            << R"({"path": "/dev/zero", "label": "zero"}, {"path": ")" << fifo << R"(", "label": "fifo"}, )"
+            << R"({"path": ")" << (dir / "missing.bvh").string() << R"(", "label": "missing"}, )"
+            << R"({"path": ")" << (dir / "damaged.bvh").string() << R"(", "label": "damaged"}]})";
+    }
+    QStringList messages;
+    QObject::connect(&window->files(), &app::FileController::statusMessage, [&](const QString& m) { messages.append(m); });
+    REQUIRE(window->files().openProject(file)); // the corpus and the rest of the project open
+    REQUIRE_FALSE(messages.isEmpty());
+    const QString last = messages.back();
+    INFO(last.toStdString());
+    CHECK(last.contains(QStringLiteral("p.bunraku.json")));
+    CHECK(last.contains(QStringLiteral("without 4")));
+    for (const char* named : {"'zero'", "/dev/zero", "'fifo'", "fifo.csv", "'missing'", "missing.bvh", "'damaged'", "damaged.bvh:4"})
+        CHECK(last.contains(QString::fromUtf8(named)));
+    CHECK(importedTakes(window->document()).empty());
+    std::filesystem::remove(fifo);
+}
+
+TEST_CASE("a project holding a number beyond a double is refused naming the file and line", "[app][files]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    const QString file = scratchFile("project-1e400", "huge.bunraku.json");
+    {
+        std::ofstream out(file.toStdString());
+        out << "{\"format\": \"bunraku-project\", \"version\": 2, \"corpus\": \"demo\",\n"
+               "\"parameters\": {\"normalise\": {\"tau\": 1e400}}}\n";
+    }
+    REQUIRE_FALSE(window->files().openProject(file));
+    INFO(window->files().lastError().toStdString());
+    CHECK(window->files().lastError().contains(QStringLiteral("huge.bunraku.json:2")));
+    CHECK(window->files().lastError().contains(QStringLiteral("1e400")));
 }

@@ -289,6 +289,33 @@ TEST_CASE("a corpus, project or take that cannot be read is an error in the work
     }
     REQUIRE_FALSE(window->files().openCorpusFolder(QString::fromStdString((dir / "corpus").string())));
     REQUIRE(window->files().lastError().contains(QStringLiteral("corpus.json")));
+    // A take's skeleton file holding an offset of 1e400 (used to abort with exit 134).
+    {
+        analysis::io::ImportOptions allJoints;
+        allJoints.bvhLayout = analysis::io::BvhTakeLayout::AllJoints;
+        auto joints = analysis::io::readTakeFile(test::sourceDir() / "tests" / "data" / "io" / "two_joint_chain.bvh", allJoints);
+        REQUIRE(joints.ok());
+        joints->labels = analysis::TakeLabels{"greeting", "none", 1, ""};
+        analysis::Corpus corpus;
+        corpus.rateHz = joints->rateHz;
+        corpus.takes.push_back(*joints);
+        REQUIRE(analysis::io::writeCorpus(corpus, dir / "skeletal").ok());
+        const auto skeleton = dir / "skeletal" / "greeting_none_1.skeleton.json";
+        std::string text;
+        {
+            std::ifstream in(skeleton);
+            text.assign(std::istreambuf_iterator<char>(in), {});
+        }
+        const auto at = text.find("10.0");
+        REQUIRE(at != std::string::npos);
+        text.replace(at, 4, "1e400");
+        {
+            std::ofstream out(skeleton);
+            out << text;
+        }
+        REQUIRE_FALSE(window->files().openCorpusFolder(QString::fromStdString((dir / "skeletal").string())));
+        REQUIRE(window->files().lastError().contains(QStringLiteral("greeting_none_1.skeleton.json:")));
+    }
     REQUIRE_FALSE(window->files().openProject(QStringLiteral("/dev/zero")));
     REQUIRE(window->files().lastError().contains(QStringLiteral("/dev/zero")));
     std::filesystem::create_symlink("/dev/urandom", dir / "noise.csv");

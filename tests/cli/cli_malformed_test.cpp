@@ -2,10 +2,13 @@
 // names the file (and the line where there is one), a non-zero exit, and never a crash or hang.
 #include "tests/cli/cli_files.h"
 #include "tests/cli/cli_runner.h"
+#include "tests/support/bvh_fixtures.h"
 #include "tests/support/test_paths.h"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
+
+#include <algorithm>
 
 using bunraku::test::isOneLineError;
 using bunraku::test::runBunraku;
@@ -56,6 +59,12 @@ TEST_CASE("bunraku info and convert reject malformed take files with one line na
         {"empty.csv", "", "empty.csv"},
         {"junk.csv", junk, "junk.csv:"},
         {"nan.txt", "1 1 2 3 4 5 nan\n", "nan.txt:1"},
+        // lengths beyond +-1e7 cm and angles beyond +-1e9 deg (docs/FORMATS.md, Value limits)
+        {"offset-1e308.bvh", replaced(kBvh, "OFFSET 0 10 0", "OFFSET 0 1e308 0"), "offset-1e308.bvh:8"},
+        {"position-1e308.bvh", replaced(kBvh, "1 2 3 10 20 30", "1e308 2 3 10 20 30"), "position-1e308.bvh:20"},
+        {"angle-minus-1e308.bvh", replaced(kBvh, "1 2 3 10 20 30", "1 2 3 -1e308 20 30"), "angle-minus-1e308.bvh:20"},
+        {"angle-1e12.bvh", replaced(kBvh, "1 2 3 10 20 30 5", "1 2 3 10 20 30 1e12"), "angle-1e12.bvh:20"},
+        {"angle-1e9-plus-1.bvh", replaced(kBvh, "1 2 3 10 20 30", "1 2 3 10 1000000001 30"), "angle-1e9-plus-1.bvh:20"},
     };
     for (const auto& input : inputs) {
         const auto file = writeText(dir / input.name, input.content);
@@ -122,6 +131,107 @@ TEST_CASE("corpus commands reject a manifest pointing to missing or inconsistent
     }
     CHECK_FALSE(std::filesystem::exists(out));
     CHECK_FALSE(std::filesystem::exists(dir / "e.csv"));
+}
+
+TEST_CASE("a JSON input holding 1e400 or ill-formed UTF-8 is one error line naming the file and line", "[cli]")
+{
+    const auto dir = bunraku::test::scratchDir("cli-json-numbers");
+    // A corpus whose takes keep their skeletons (read from BVH).
+    std::filesystem::create_directories(dir / "in");
+    const auto families = bunraku::test::bvhFamilies();
+    for (const std::string name : {"wave_calm_1", "wave_calm_2"})
+        writeText(dir / "in" / (name + ".bvh"), bunraku::test::fixtureBvh(families[4]));
+    const auto corpus = dir / "c";
+    REQUIRE(runBunraku({"corpus", (dir / "in").string(), "-o", corpus.string()}).exitCode == 0);
+    const auto skeleton = corpus / "wave_calm_1.skeleton.json";
+    const std::string original = bunraku::test::readTextFile(skeleton);
+    const auto offset = original.find("\"offset\": [\n    ");
+    REQUIRE(offset != std::string::npos);
+    const long offsetLine = 2 + long(std::count(original.begin(), original.begin() + std::ptrdiff_t(offset), '\n'));
+    const auto name = original.find("\"name\": \"");
+    REQUIRE(name != std::string::npos);
+    const long nameLine = 1 + long(std::count(original.begin(), original.begin() + std::ptrdiff_t(name), '\n'));
+    const auto take = corpus / "wave_calm_1.csv";
+    const std::vector<std::pair<std::string, std::string>> skeletons = {
+        {std::string(original).insert(offset + 16, "1e400,\n    "), "wave_calm_1.skeleton.json:" + std::to_string(offsetLine)},
+        {std::string(original).insert(name + 9, "\xff"), "wave_calm_1.skeleton.json:" + std::to_string(nameLine)},
+    };
+    for (const auto& [text, location] : skeletons) {
+        writeText(skeleton, text);
+        const auto run = runBunraku({"info", corpus.string()});
+        INFO(run.err);
+        CHECK(isOneLineError(run.exitCode, run.err)); // not an abort
+        CHECK(run.err.find(location) != std::string::npos);
+        CHECK(run.err.find('\xff') == std::string::npos);
+    }
+    writeText(skeleton, original);
+    // parameters, a body description, a BVH joint map
+    const auto parameters = writeText(dir / "p.json", "{\"normalise\":\n {\"tau\": 1e400}}");
+    const auto body = writeText(dir / "b.json", "{\"parts\": [\n{\"x\": 1e400}]}");
+    const auto map = writeText(dir / "jm.json", "{\"head\":\n \"\xff\"}");
+    const std::vector<std::pair<std::vector<std::string>, std::string>> commands = {
+        {{"decompose", corpus.string(), "--parameters", parameters.string(), "-o", (dir / "out").string()}, "p.json:2"},
+        {{"analyse", corpus.string(), "--parameters", parameters.string(), "-o", (dir / "out").string()}, "p.json:2"},
+        {{"axis", take.string(), "--body", body.string(), "-o", (dir / "a.csv").string()}, "b.json:2"},
+        {{"info", (dir / "in" / "wave_calm_1.bvh").string(), "--joint-map", map.string()}, "jm.json:2"},
+    };
+    for (const auto& [command, location] : commands) {
+        const auto run = runBunraku(command);
+        INFO(command.front() << ": " << run.err);
+        CHECK(isOneLineError(run.exitCode, run.err));
+        CHECK(run.err.find(location) != std::string::npos);
+        CHECK(run.err.find("json.exception") == std::string::npos);
+    }
+    CHECK_FALSE(std::filesystem::exists(dir / "out"));
+}
+
+TEST_CASE("parameters in their range that fail at run time name the parameters file", "[cli]")
+{
+    const auto dir = bunraku::test::scratchDir("cli-parameters-run-time");
+    const auto corpus = dir / "corpus";
+    REQUIRE(runBunraku({"demo", "-o", corpus.string()}).exitCode == 0);
+    const std::vector<std::pair<std::string, std::string>> files = {
+        {"band.json", "{\"normalise\": {\"searchBand\": 100000}}"},
+        {"scale.json", "{\"normalise\": {\"maxScale\": 256}}"},
+        {"m.json", "{\"decompose\": {\"M\": 1000}}"},
+    };
+    for (const auto& [name, text] : files) {
+        const auto parameters = writeText(dir / name, text);
+        for (const std::string command : {"decompose", "analyse"}) {
+            const auto run = runBunraku({command, corpus.string(), "--parameters", parameters.string(), "-o", (dir / "out").string()});
+            INFO(command << " " << name << ": " << run.err);
+            CHECK(isOneLineError(run.exitCode, run.err));
+            CHECK(run.err.find(corpus.string()) != std::string::npos);
+            CHECK(run.err.find(parameters.string()) != std::string::npos);
+        }
+    }
+    CHECK_FALSE(std::filesystem::exists(dir / "out"));
+}
+
+TEST_CASE("a 1 MB label or file name gives an error line of at most a few hundred characters", "[cli]")
+{
+    const auto dir = bunraku::test::scratchDir("cli-long-label");
+    const auto corpus = dir / "corpus";
+    REQUIRE(runBunraku({"demo", "-o", corpus.string()}).exitCode == 0);
+    std::filesystem::remove_all(corpus / "truth");
+    auto manifest = nlohmann::json::parse(bunraku::test::readTextFile(corpus / "corpus.json"));
+    const std::string label(1'000'000, 'g');
+    for (auto& take : manifest["takes"])
+        if (take["function"] == "greeting") take["function"] = label;
+    writeText(corpus / "corpus.json", manifest.dump(1));
+    const std::vector<std::vector<std::string>> commands = {
+        {"normalise", corpus.string(), "--function", "greeting", "--emotion", "none", "-o", (dir / "n").string()},
+        {"emotion", corpus.string(), "--pad", "--method", "ls", "--function", "greeting", "--emotion", "none", "--weight", "1", "-o",
+         (dir / "e.csv").string()},
+        {"preprocess", corpus.string(), "-o", (dir / "p").string()}, // a take file named after the label: too long a name
+    };
+    for (const auto& command : commands) {
+        const auto run = runBunraku(command);
+        INFO(command.front() << ": " << run.err.substr(0, 400));
+        CHECK(isOneLineError(run.exitCode, run.err));
+        CHECK(run.err.size() < 1000);
+        CHECK(run.err.find("...") != std::string::npos);
+    }
 }
 
 TEST_CASE("decompose and emotion reject bad options with one line and write nothing", "[cli]")

@@ -70,6 +70,13 @@ TEST_CASE("an output equal to an input, or a folder holding one, is refused and 
         {"preprocess", corpus.string(), "-o", corpus.string()},
         {"normalise", corpus.string(), "--function", "greeting", "--emotion", "none", "-o", corpus.string()},
         {"decompose", corpus.string(), "--pad", "-o", dir.string()},
+        // the files of an input corpus are inputs too
+        {"normalise", corpus.string(), "--function", "greeting", "--emotion", "none", "-o",
+         (corpus / "greeting_none_2.csv").string()},
+        {"normalise", corpus.string(), "--function", "greeting", "--emotion", "none", "--reference", "average", "-o",
+         (corpus / "greeting_friendly_1.csv").string()},
+        {"emotion", corpus.string(), "--pad", "--function", "greeting", "--emotion", "hostile", "--weight", "1", "-o",
+         (corpus / "." / "greeting_hostile_1.csv").string()},
     };
     for (const auto& arguments : commands) {
         const auto run = runBunraku(arguments);

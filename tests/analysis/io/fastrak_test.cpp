@@ -84,6 +84,16 @@ TEST_CASE("malformed fastrak files give errors naming the file and line")
     }
 }
 
+TEST_CASE("a fastrak file starting with a UTF-8 byte order mark reads as without it")
+{
+    const std::string rows = "1 10 0 0 0 0 0\n2 0 10 0 0 0 0\n3 0 0 10 0 0 0\n4 0 0 0 10 0 0\n";
+    auto plain = parseFastrak(rows, "f.txt");
+    auto marked = parseFastrak("\xEF\xBB\xBF" + rows, "f.txt");
+    REQUIRE(plain.ok());
+    REQUIRE(marked.ok());
+    CHECK(marked->values == plain->values);
+}
+
 TEST_CASE("the take reader refuses unknown extensions with a clear message")
 {
     auto take = readTakeFile("/tmp/some.xyz");
@@ -112,7 +122,8 @@ TEST_CASE("fastrak and bvh values too large for the pose maths are errors, not N
     options.upAxis = BvhUpAxis::Z;
     auto puppet = bvhToPuppetTake(*file, options);
     REQUIRE_FALSE(puppet.ok());
-    CHECK_THAT(puppet.error().message, Contains("big.bvh") && Contains("overflow"));
+    // refused at the OFFSET's line before any pose is computed (checkBvhLengths)
+    CHECK_THAT(puppet.error().message, Contains("big.bvh:8") && Contains("OFFSET") && Contains("beyond"));
 }
 
 TEST_CASE("the take writer picks csv or bvh by extension and refuses others")

@@ -2,7 +2,10 @@
 // take can hold, a corpus's takes at the corpus's rate, numbers JSON cannot hold; and names that
 // need quoting in a CSV header read back unchanged.
 #include "analysis/core/puppet_layout.h"
+#include "analysis/io/bvh.h"
+#include "analysis/io/bvh_import.h"
 #include "analysis/io/corpus_io.h"
+#include "analysis/io/skeleton_io.h"
 #include "analysis/io/fastrak.h"
 #include "analysis/io/import_options_json.h"
 #include "analysis/io/take_csv.h"
@@ -77,6 +80,126 @@ TEST_CASE("positions and angles beyond what a take can hold are refused at parse
     Take take = twoTakeCorpus().takes[0];
     take.values(2, 3) = 1e300;
     CHECK_THAT(validateTake(take).error().message, Contains("frame 2") && Contains("beyond"));
+}
+
+namespace {
+
+/// tests/data/io/two_joint_chain.bvh with `from` replaced by `to` (the Elbow's OFFSET is line 8,
+/// the two motion rows lines 19 and 20).
+std::string chainBvh(const std::string& from = "", const std::string& to = "")
+{
+    std::string text = bunraku::test::fileBytes(bunraku::test::ioDataDir() / "two_joint_chain.bvh");
+    if (!from.empty()) {
+        const auto at = text.find(from);
+        REQUIRE(at != std::string::npos);
+        text.replace(at, from.size(), to);
+    }
+    return text;
+}
+
+} // namespace
+
+TEST_CASE("BVH offsets and positions beyond 1e7 cm after the unit scale are refused with the line", "[io][limits]")
+{
+    auto offset = parseBvh(chainBvh("OFFSET 10 0 0", "OFFSET 1e308 0 0"), "o.bvh");
+    REQUIRE(offset.ok());
+    const auto lengths = checkBvhLengths(*offset, 1.0);
+    REQUIRE_FALSE(lengths.ok());
+    CHECK_THAT(lengths.error().message, Contains("o.bvh:8") && Contains("OFFSET") && Contains("Elbow") && Contains("beyond"));
+    // every reader of BVH takes checks them
+    auto joints = bvhToJointTake(*offset, BvhImportOptions{});
+    REQUIRE_FALSE(joints.ok());
+    CHECK_THAT(joints.error().message, Contains("o.bvh:8"));
+
+    auto position = parseBvh(chainBvh("1.0e1 0 0 90", "1e308 0 0 90"), "p.bvh");
+    REQUIRE(position.ok());
+    CHECK_THAT(checkBvhLengths(*position, 1.0).error().message, Contains("p.bvh:20") && Contains("'Base' Xposition"));
+    // a blank line before the row moves it to line 21
+    auto moved = parseBvh(chainBvh("1.0e1 0 0 90", "\n1e308 0 0 90"), "m.bvh");
+    REQUIRE(moved.ok());
+    CHECK_THAT(checkBvhLengths(*moved, 1.0).error().message, Contains("m.bvh:21"));
+
+    // after the unit scale: 2e6 is 2e6 cm, or 2e8 cm in metres
+    auto far = parseBvh(chainBvh("1.0e1 0 0 90", "2e6 0 0 90"), "f.bvh");
+    REQUIRE(far.ok());
+    CHECK(checkBvhLengths(*far, 1.0).ok());
+    CHECK_THAT(checkBvhLengths(*far, 100.0).error().message, Contains("f.bvh:20") && Contains("2e+08 cm"));
+    BvhImportOptions metres;
+    metres.guessUnits = false;
+    metres.unitScale = 100.0;
+    CHECK_FALSE(bvhToJointTake(*far, metres).ok());
+    metres.unitScale = 1.0;
+    CHECK(bvhToJointTake(*far, metres).ok());
+}
+
+TEST_CASE("BVH angles beyond 1e9 deg are refused at parse time with the line", "[io][limits]")
+{
+    for (const std::string angle : {"-1e308", "1e12", "1000000001"}) {
+        auto parsed = parseBvh(chainBvh("1.0e1 0 0 90 0 0 90 0 0", "1.0e1 0 0 90 0 0 " + angle + " 0 0"), "a.bvh");
+        INFO(angle);
+        REQUIRE_FALSE(parsed.ok());
+        CHECK_THAT(parsed.error().message, Contains("a.bvh:20") && Contains("'Elbow' Zrotation") && Contains("beyond +-1e+09 deg"));
+    }
+    CHECK(parseBvh(chainBvh("1.0e1 0 0 90 0 0 90 0 0", "1.0e1 0 0 90 0 0 -1000000000 0 0"), "a.bvh").ok());
+}
+
+TEST_CASE("a BVH joint name that is not UTF-8 is refused with the line", "[io][limits]")
+{
+    auto parsed = parseBvh(chainBvh("JOINT Elbow", "JOINT El\xff" "bow"), "n.bvh");
+    REQUIRE_FALSE(parsed.ok());
+    CHECK_THAT(parsed.error().message, Contains("n.bvh:6") && Contains("\\xff") && Contains("UTF-8"));
+    CHECK(parseBvh(chainBvh("JOINT Elbow", "JOINT Ell\xc3\xa9" "bow"), "n.bvh").ok()); // UTF-8 names are fine
+}
+
+TEST_CASE("a skeleton file with a number JSON cannot hold or ill-formed UTF-8 is an error naming the file", "[io][limits]")
+{
+    const auto dir = bunraku::test::scratchDir("limits-skeleton-json");
+    auto bvh = parseBvh(chainBvh(), "chain.bvh");
+    REQUIRE(bvh.ok());
+    auto take = bvhToJointTake(*bvh, BvhImportOptions{});
+    REQUIRE(take.ok());
+    take->labels = TakeLabels{"greeting", "none", 1, ""};
+    Corpus corpus;
+    corpus.rateHz = take->rateHz;
+    corpus.takes.push_back(*take);
+    REQUIRE(writeCorpus(corpus, dir / "c").ok());
+    const fs::path skeleton = dir / "c" / "greeting_none_1.skeleton.json";
+    const std::string original = bunraku::test::fileBytes(skeleton);
+    REQUIRE(readCorpus(dir / "c").ok());
+    const auto replaced = [&](const std::string& from, const std::string& to) {
+        std::string text = original;
+        const auto at = text.find(from);
+        REQUIRE(at != std::string::npos);
+        text.replace(at, from.size(), to);
+        return text;
+    };
+    const std::vector<std::string> broken = {
+        replaced("\"Elbow\"", "\"El\xff" "bow\""),
+        replaced("\"offset\": [\n    0.0,\n    10.0", "\"offset\": [\n    0.0,\n    1e400"),
+    };
+    for (const std::string& text : broken) {
+        bunraku::test::writeText(skeleton, text);
+        const auto read = readCorpus(dir / "c");
+        REQUIRE_FALSE(read.ok());
+        INFO(read.error().message);
+        CHECK_THAT(read.error().message, Contains("greeting_none_1.skeleton.json:"));
+        CHECK(read.error().message.find('\n') == std::string::npos);
+        CHECK(read.error().message.find('\xff') == std::string::npos); // bytes written as \xff
+    }
+    // a skeleton named after a file whose name is not UTF-8 is written (the name with U+FFFD)
+    auto named = parseBvh(chainBvh(), (dir / "\xff.bvh").string());
+    REQUIRE(named.ok());
+    auto namedTake = bvhToJointTake(*named, BvhImportOptions{});
+    REQUIRE(namedTake.ok());
+    namedTake->labels = TakeLabels{"greeting", "none", 1, ""};
+    corpus.takes = {*namedTake};
+    REQUIRE(writeCorpus(corpus, dir / "n").ok());
+    REQUIRE(readCorpus(dir / "n").ok());
+    // the BVH part map file too
+    const fs::path map = bunraku::test::writeText(dir / "map.json", "{\"head\": 1e400}");
+    const auto joints = readJointMapJson(map);
+    REQUIRE_FALSE(joints.ok());
+    CHECK_THAT(joints.error().message, Contains("map.json:1") && Contains("1e400"));
 }
 
 TEST_CASE("channel names holding separators or quotes survive a CSV round trip", "[io][limits]")

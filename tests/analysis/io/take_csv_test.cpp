@@ -37,6 +37,20 @@ TEST_CASE("csv reader accepts semicolons, CRLF, comments and blank lines")
     CHECK(take->values(2, 1) == -170.0);
 }
 
+TEST_CASE("a UTF-8 byte order mark before the header is skipped")
+{
+    auto take = parseTakeCsv("\xEF\xBB\xBFtime_s,head.x\n0,1\n0.2,2\n", "bom.csv");
+    REQUIRE(take.ok());
+    REQUIRE(take->channelCount() == 1);
+    CHECK(take->channels[0] == Channel{"head", "x", "cm"});
+    CHECK(take->values(1, 0) == 2.0);
+    CHECK(take->rateHz == Approx(5.0));
+    // only at the start of the file: elsewhere it is a byte of a field
+    auto inside = parseTakeCsv("time_s,head.x\n\xEF\xBB\xBF" "0,1\n", "bom.csv");
+    REQUIRE_FALSE(inside.ok());
+    CHECK_THAT(inside.error().message, Contains("bom.csv:2"));
+}
+
 TEST_CASE("csv reader detects comma and tab separators")
 {
     const std::string separator = GENERATE(std::string(","), std::string("\t"));
