@@ -285,7 +285,8 @@ void AnalysisController::synthesiseWeighted()
                               .arg(QString::fromStdString(function), QString::fromStdString(emotion))
                               .arg(weight, 0, 'f', 2)
                               .arg(decompositionText(*m_decomposed));
-    m_document.setLiveTake(QStringLiteral("weighted"), label, m_weighted);
+    // As published: the weighted body's motion (Document::setLiveTake).
+    m_weighted = m_document.setLiveTake(QStringLiteral("weighted"), label, m_weighted);
     emit weightedChanged();
 }
 

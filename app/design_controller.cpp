@@ -362,7 +362,7 @@ void DesignController::redesign()
     motion.take.labels.source = "designed";
     m_designed = std::make_shared<const analysis::Take>(std::move(motion.take));
     m_lastMilliseconds = double(clock.nsecsElapsed()) / 1e6;
-    m_document.setLiveTake(QStringLiteral("designed"), designedLabel(), m_designed, kFunctionalId);
+    m_designed = m_document.setLiveTake(QStringLiteral("designed"), designedLabel(), m_designed, kFunctionalId);
     emit designed();
 }
 

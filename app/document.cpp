@@ -96,16 +96,22 @@ TakePointer Document::ghostOf(const QString& id) const
     return derived.ghostId.isEmpty() ? derived.perChannelGhost : take(derived.ghostId);
 }
 
-void Document::setLiveTake(const QString& name, const QString& label, TakePointer take, const QString& ghostId)
+TakePointer Document::perChannelGhostOf(const QString& id) const
+{
+    const int index = indexOfDerived(id);
+    return index < 0 ? nullptr : m_derived[std::size_t(index)].perChannelGhost;
+}
+
+TakePointer Document::setLiveTake(const QString& name, const QString& label, TakePointer take, const QString& ghostId)
 {
     const QString id = QStringLiteral("live/") + name;
     const int index = indexOfDerived(id);
     if (!take) {
-        if (index < 0) return;
+        if (index < 0) return nullptr;
         m_derived.erase(m_derived.begin() + index);
         if (m_selected[1] == id) selectTake(TakeSlot::B, QString());
         emit derivedTakesChanged();
-        return;
+        return nullptr;
     }
     // One motion: the figure, the graphs and every export show the body's.
     TakePointer perChannelGhost;
@@ -122,7 +128,7 @@ void Document::setLiveTake(const QString& name, const QString& label, TakePointe
     }
     if (index >= 0) {
         const bool relabelled = m_derived[std::size_t(index)].label != label;
-        m_derived[std::size_t(index)].take = std::move(take);
+        m_derived[std::size_t(index)].take = take;
         m_derived[std::size_t(index)].label = label;
         m_derived[std::size_t(index)].ghostId = ghostId;
         m_derived[std::size_t(index)].perChannelGhost = std::move(perChannelGhost);
@@ -130,10 +136,11 @@ void Document::setLiveTake(const QString& name, const QString& label, TakePointe
         emit takeChanged(id);
         for (int slot = 0; slot < 2; ++slot)
             if (m_selected[slot] == id) emit selectionChanged(TakeSlot(slot));
-        return;
+        return take;
     }
-    m_derived.push_back(DerivedTake{id, label, std::move(take), QString(), ghostId, nullptr, std::move(perChannelGhost)});
+    m_derived.push_back(DerivedTake{id, label, take, QString(), ghostId, nullptr, std::move(perChannelGhost)});
     emit derivedTakesChanged();
+    return take;
 }
 
 void Document::restoreParameters(const AnalysisParameters& values)

@@ -109,10 +109,13 @@ public:
     /// the parameters. A result with a skeleton is published as its body moves
     /// (analysis::bodyMotion: one motion for the figure, the graphs and exports), its per-channel
     /// result kept as perChannelGhost.
-    void setLiveTake(const QString& name, const QString& label, TakePointer take, const QString& ghostId = {});
+    /// Returns the take as published (null when removed).
+    TakePointer setLiveTake(const QString& name, const QString& label, TakePointer take, const QString& ghostId = {});
     /// The take drawn as a ghost behind `id` (a live result's original, else its per-channel
     /// result), null when none.
     TakePointer ghostOf(const QString& id) const;
+    /// A live result's per-channel (thesis) result when it is shown as its body, null otherwise.
+    TakePointer perChannelGhostOf(const QString& id) const;
 
     /// Replaces every parameter (loading a project): not undoable, clears the undo stack.
     void restoreParameters(const AnalysisParameters& values);

@@ -49,7 +49,8 @@ bool ExportController::exportTake(TakeSlot slot, const QString& file)
     }
     m_lastError.clear();
     QString message = tr("Exported take %1 (%2) to %3").arg(slotName(slot), label, file);
-    m_lastNote = QString::fromStdString(render::takeExportNote(*take, std::filesystem::path(file.toStdString())));
+    const TakePointer perChannel = m_document.perChannelGhostOf(m_document.selectedId(slot));
+    m_lastNote = QString::fromStdString(render::takeExportNote(*take, std::filesystem::path(file.toStdString()), perChannel.get()));
     if (!m_lastNote.isEmpty()) message += QStringLiteral(": ") + m_lastNote;
     emit statusMessage(message);
     return true;

@@ -81,12 +81,13 @@ analysis::Result<ExportRig> puppetRig(const analysis::BodyDescription& body, con
     return rig;
 }
 
-std::string takeExportNote(const analysis::Take& take, const std::filesystem::path& file)
+std::string takeExportNote(const analysis::Take& take, const std::filesystem::path& file, const analysis::Take* perChannel)
 {
     if (takeExportFormat(file) == TakeExportFormat::Unknown) return {};
     const auto body = analysis::bodyMotion(take);
-    if (!body.perChannel) return {};
-    const auto distance = analysis::perChannelDistance(body.take, *body.perChannel);
+    const Eigen::MatrixXd* ghost = body.perChannel ? body.perChannel.get() : perChannel ? &perChannel->values : nullptr;
+    if (!ghost) return {};
+    const auto distance = analysis::perChannelDistance(body.take, *ghost);
     if (!distance || (distance->maxPositionCm < analysis::kSkeletonGapNoticeCm && distance->maxAngleDeg < analysis::kSkeletonGapNoticeDeg))
         return {};
     char by[160];

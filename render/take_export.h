@@ -41,11 +41,11 @@ ExportRig skeletonRig(const std::shared_ptr<const analysis::SkeletalMotion>& mot
 /// mesh. Errors when the take cannot drive the body (bindBody).
 analysis::Result<ExportRig> puppetRig(const analysis::BodyDescription& body, const analysis::Take& take);
 
-/// What a user must know about writing `take` to `file`: for a take whose skeleton and 24
-/// channels differ (a derived take: analysis::noticeableSkeletonGap) which of the two the file
-/// holds - .bvh and .glb the skeleton's motion, .csv the channels - and by how much the other
-/// differs; empty when they agree or the take has no skeleton.
-std::string takeExportNote(const analysis::Take& take, const std::filesystem::path& file);
+/// What a user must know about writing `take` to `file`: every format holds the take as one body
+/// moves (analysis::bodyTake), and how far the thesis's per-channel result is from it - the
+/// take's own values when they are not its body's, else `perChannel` (the per-channel result a
+/// body take was made from, e.g. the workbench's ghost); empty when there is nothing to say.
+std::string takeExportNote(const analysis::Take& take, const std::filesystem::path& file, const analysis::Take* perChannel = nullptr);
 
 /// Writes the take by extension (atomic); the error names the file. `name` names a .glb's
 /// animation and scene (the workbench passes the take's label as listed); empty: the take's

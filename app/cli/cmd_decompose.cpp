@@ -406,6 +406,7 @@ struct EmotionArgs {
     std::string emotion;
     double weight = 1.0;
     std::string output;
+    bool perChannel = false;
     bool json = false;
 };
 
@@ -418,9 +419,14 @@ void runEmotion(const EmotionArgs& args)
     const Take take = aboutCorpus(args.chain.corpus, [&] {
         return unwrap(pipeline::weightedTake(*chain.decomposed, args.function, args.emotion, args.weight));
     });
-    writeTakeOutput(take, args.output);
+    // One body: the file holds the weighted skeleton's motion; --per-channel writes the thesis's
+    // x = y + a z channel by channel instead (no skeleton).
+    Take written = take;
+    if (args.perChannel) written.skeleton = nullptr;
+    writeTakeOutput(written, args.output);
     nlohmann::json summary = chainSummary(chain);
     summary["corpus"] = args.chain.corpus;
+    summary["motion"] = args.perChannel || !take.skeleton ? "per-channel" : "body";
     summary["function"] = args.function;
     summary["emotion"] = args.emotion;
     summary["weight"] = args.weight;
@@ -438,7 +444,7 @@ void runEmotion(const EmotionArgs& args)
     if (summary.contains("M")) std::cout << ", M = " << summary["M"].get<int>();
     std::cout << ")\n";
     if (summary["method"] != summary["method_requested"]) std::cout << summary["method_note"].get<std::string>() << "\n";
-    if (!take.skeleton) std::cout << "the take has no skeleton: " << args.output << " holds the puppet's parts\n";
+    if (!written.skeleton) std::cout << args.output << " holds the per-channel result on the puppet's parts (no skeleton)\n";
 }
 
 struct ExperimentArgs {
@@ -576,7 +582,12 @@ void addDecompositionCommands(CommandSet& commands)
     emo->add_option("--function", emotionArgs->function, "Function label, e.g. greeting")->required();
     emo->add_option("--emotion", emotionArgs->emotion, "Emotion label, e.g. friendly")->required();
     emo->add_option("--weight", emotionArgs->weight, "Emotion weight a in [0, 3] (1 = as performed)")->required();
-    emo->add_option("-o,--output", emotionArgs->output, "Output take (.bvh, .glb or .csv)")->required()->type_name("FILE");
+    emo->add_option("-o,--output", emotionArgs->output, "Output take (.bvh, .glb or .csv): the weighted body's motion")
+        ->required()
+        ->type_name("FILE");
+    emo->add_flag("--per-channel", emotionArgs->perChannel,
+                  "Write the thesis's per-channel x = y + a z (each channel on its own, the puppet's parts, no skeleton) instead of "
+                  "the weighted body's motion");
     emo->add_flag("--json", emotionArgs->json, "Print a JSON summary");
     emo->callback([emotionArgs] { runEmotion(*emotionArgs); });
 

@@ -15,6 +15,7 @@
 #include "analysis/normalise/variance_families.h"
 #include "analysis/pipeline/stages.h"
 #include "analysis/preprocess/preprocess.h"
+#include "analysis/skeleton/puppet_rig_fit.h"
 #include "analysis/synth/demo_corpus.h"
 #include "analysis/synth/demo_corpus_io.h"
 
@@ -242,8 +243,9 @@ void runNormalise(const NormaliseArguments& arguments)
         writeText(stem + "_correspondence.csv", csv.str());
         files.push_back(stem + "_normalised.csv");
         files.push_back(stem + "_correspondence.csv");
-        // A take with a skeleton (a BVH corpus): also on the performer's skeleton.
-        if (normalised[k].normalised.skeleton) {
+        // A take with a performer's skeleton (a BVH corpus): also on that skeleton (not the
+        // puppet's fitted rig, which the CSV's channels already pose).
+        if (normalised[k].normalised.skeleton && !analysis::isPuppetRig(*normalised[k].normalised.skeleton->skeleton)) {
             writeTakeIntoFolder(normalised[k].normalised, staged, stem + "_normalised.bvh");
             files.push_back(stem + "_normalised.bvh");
         }

@@ -17,6 +17,8 @@
 #include "tests/analysis/io/io_test_support.h"
 #include "tests/support/bvh_fixtures.h"
 
+#include "analysis/core/skeleton_take.h"
+
 #include <catch2/catch.hpp>
 
 #include <QComboBox>
@@ -72,7 +74,10 @@ TEST_CASE("the normalised take's label names its take, reference and parameters,
     const auto cell = window->analysis().normalised()->cell("greeting", "none");
     REQUIRE(cell != nullptr);
     const auto position = std::find(cell->takeIndices.begin(), cell->takeIndices.end(), 1) - cell->takeIndices.begin();
-    CHECK(document.take(QStringLiteral("live/normalised"))->values == cell->normalisations[std::size_t(position)].normalised.values);
+    // shown as its body (the per-channel result beside it)
+    CHECK(document.take(QStringLiteral("live/normalised"))->values ==
+          analysis::bodyTake(cell->normalisations[std::size_t(position)].normalised).values);
+    CHECK(document.perChannelGhostOf(QStringLiteral("live/normalised"))->values == cell->normalisations[std::size_t(position)].normalised.values);
 
     // Another tau: once recomputed, the label says tau 5 (and the window title too, with it shown).
     document.selectTake(TakeSlot::A, QStringLiteral("live/normalised"));

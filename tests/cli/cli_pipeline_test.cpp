@@ -116,7 +116,7 @@ TEST_CASE("demo, preprocess and least-squares decompose run end to end against t
     }
 }
 
-TEST_CASE("bunraku emotion with weight 0 gives y and with weight 1 gives y + z", "[cli]")
+TEST_CASE("bunraku emotion --per-channel with weight 0 gives y and with weight 1 gives y + z", "[cli]")
 {
     const auto dir = bunraku::test::scratchDir("cli-emotion");
     const auto demo = dir / "demo", out = dir / "ls";
@@ -125,7 +125,7 @@ TEST_CASE("bunraku emotion with weight 0 gives y and with weight 1 gives y + z",
     const auto zero = dir / "a0.csv", one = dir / "a1.csv";
     for (const auto& [weight, file] : {std::pair{"0", zero}, std::pair{"1", one}}) {
         const auto run = runBunraku({"emotion", demo.string(), "--pad", "--method", "ls", "--function", "serving-tea", "--emotion", "hostile",
-                                     "--weight", weight, "-o", file.string()});
+                                     "--weight", weight, "--per-channel", "-o", file.string()});
         INFO(run.err);
         REQUIRE(run.exitCode == 0);
     }
