@@ -219,10 +219,10 @@ QStringList AnalysisController::weightableEmotions() const
 QString AnalysisController::normaliseParametersText(const pl::NormaliseParameters& parameters)
 {
     QString text = tr("tau %1, T_cmp %2, scales 1-%3").arg(parameters.tau).arg(parameters.searchBand).arg(parameters.maxScale);
-    const pl::NormaliseParameters thesis;
-    if (parameters.coupling != thesis.coupling) text += tr(", coupling %1").arg(QString::fromStdString(parameters.coupling));
-    if (parameters.path != thesis.path) text += tr(", %1 path").arg(QString::fromStdString(pl::pathName(parameters.path)));
-    return text;
+    const pl::NormaliseParameters defaults;
+    if (parameters.coupling != defaults.coupling) text += tr(", coupling %1").arg(QString::fromStdString(parameters.coupling));
+    // Always named: the default (optimal) is not the thesis's (greedy), so neither goes without saying.
+    return text + tr(", %1 path").arg(QString::fromStdString(pl::pathName(parameters.path)));
 }
 
 QString AnalysisController::decompositionText(const pl::DecomposeOutput& decomposed)

@@ -57,8 +57,8 @@ public:
 
     /// The normalise parameters the current normalise result was computed with.
     const analysis::pipeline::NormaliseParameters& normalisedParameters() const { return m_normalisedParameters; }
-    /// "tau 4, T_cmp 20, scales 1-16" (and the coupling and path when not the thesis's): what a
-    /// normalised take's label and the panel name.
+    /// "tau 4, T_cmp 20, scales 1-16, optimal path" (and the coupling when not the default): what
+    /// a normalised take's label and the panel name.
     static QString normaliseParametersText(const analysis::pipeline::NormaliseParameters& parameters);
     /// "least squares" / "KM2O, M = 2 (chosen by P)": the method of a decomposition.
     static QString decompositionText(const analysis::pipeline::DecomposeOutput& decomposed);

@@ -103,7 +103,7 @@ QString describeProjectFile(const QString& file)
                                                                    : QObject::tr("corpus %1").arg(state->corpus);
     QStringList parts{corpus};
     if (!state->imported.isEmpty()) parts << QObject::tr("%n imported take(s)", nullptr, int(state->imported.size()));
-    // Which parts of the analysis were edited (against the thesis's defaults).
+    // Which parts of the analysis were edited (against the defaults).
     const int sections = changedSections(state->parameters, AnalysisParameters{});
     const std::pair<int, const char*> names[] = {
         {kPreprocessSection, "preprocessing"}, {kNormaliseSection, "normalisation"}, {kDecomposeSection, "decomposition"},

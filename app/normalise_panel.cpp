@@ -79,14 +79,15 @@ NormalisePanel::NormalisePanel(Document& document, AnalysisController& analysis,
     for (const auto& name : analysis::couplingPresetNames()) m_coupling->addItem(QString::fromStdString(name));
     m_path = new QComboBox(this);
     m_path->setObjectName("normalisePath");
+    m_path->addItem(tr("optimal (DP)"), QStringLiteral("optimal")); // the default (pl::NormaliseParameters::path)
     m_path->addItem(tr("greedy (thesis)"), QStringLiteral("greedy"));
-    m_path->addItem(tr("optimal (DP)"), QStringLiteral("optimal"));
     m_reference->setToolTip(tr("The take every take of the cell is normalised to"));
     m_tau->setDescription(tr("tau: half window of the wavelet shape comparison (thesis 3.5.2: 4)."));
     m_band->setDescription(tr("T_cmp: search band around the reference frame (thesis: 20)."));
     m_scales->setDescription(tr("Largest wavelet scale: scales 1..max (thesis: 16)."));
     m_coupling->setToolTip(tr("Which channels share one time correspondence (thesis eq. 3.29): a preset or a spec"));
-    m_path->setToolTip(tr("The correspondence path: the thesis's greedy scan (3.5.3) or the optimal monotone path"));
+    m_path->setToolTip(tr("The correspondence path: the optimal monotone path (the default: on real takes the greedy scan "
+                          "can lock onto the next cycle of a repeated gesture) or the thesis's greedy scan (3.5.3)"));
     m_summary = new QLabel(this);
     m_summary->setObjectName("normaliseSummary");
     m_summary->setWordWrap(true);

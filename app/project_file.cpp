@@ -40,10 +40,12 @@ long lineOfOffset(const QByteArray& text, int offset) { return 1 + long(text.lef
 
 /// Version 1's flat parameters ("normalise.tau": 4, "design.gains": {"p/d": [g0, g1]}, ...) in
 /// version 2's typed layout. Version 1 decomposed the preprocessed takes, by least squares
-/// unless the project chose KM2O.
+/// unless the project chose KM2O. It stored only the values that differed from the defaults of
+/// its day, when the path defaulted to the greedy scan: a version-1 project without
+/// "normalise.path" meant greedy and keeps it (version 2 writes every parameter, the path too).
 json upgradeVersion1(const json& flat)
 {
-    json p = {{"decompose", {{"input", "preprocessed"}, {"method", "least-squares"}}}};
+    json p = {{"decompose", {{"input", "preprocessed"}, {"method", "least-squares"}}}, {"normalise", {{"path", "greedy"}}}};
     if (!flat.is_object()) return p;
     auto copy = [&](const char* from, const char* section, const char* key) {
         if (flat.contains(from)) p[section][key] = flat[from];

@@ -2,7 +2,10 @@
 /// The chain's parameters as JSON: the "parameters" object of a project file and the file of
 /// `bunraku analyse --parameters`. Reading is strict: every key known, every value of its type
 /// and inside its range (checked before anything is allocated from it), errors naming the file,
-/// the parameter and what was expected. Missing keys keep their defaults. Format: docs/FORMATS.md.
+/// the parameter and what was expected. Missing keys keep their defaults - "normalise"."path" too,
+/// which is "optimal" since the default changed (a version-1 project, which stored only what
+/// differed from the defaults of its day, is upgraded to "greedy": app/project_file.cpp; every
+/// toJson writes the key). Format: docs/FORMATS.md.
 ///
 /// {"preprocess": {"pad", "unwrap", "alignStart", "alignHeading", "alignPosition", "positionAlignment", "referenceTake"},
 ///  "normalise": {"tau", "searchBand", "maxScale", "coupling", "path": "greedy"|"optimal",

@@ -10,7 +10,7 @@
 
 namespace bunraku::app::cli {
 
-/// The thesis's defaults for an empty name; else the file's parameters (strictly validated).
+/// The defaults (the thesis's, but for normalisation's optimal path) for an empty name; else the file's parameters (strictly validated).
 /// Throws CliError naming the file and what was expected.
 analysis::pipeline::ChainParameters readChainParameters(const std::string& file);
 

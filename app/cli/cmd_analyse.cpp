@@ -113,7 +113,8 @@ void addAnalyseCommands(CommandSet& commands)
     command->add_option("CORPUS", arguments->corpus, "Corpus folder (corpus.json), or 'demo' for the embedded demo corpus")->required();
     command->add_option("-o,--output", arguments->output, "Output folder")->required()->type_name("DIR");
     command->add_option("--parameters", arguments->parameters,
-                        "JSON file of the chain's parameters (docs/FORMATS.md), or a project file; default the thesis's")
+                        "JSON file of the chain's parameters (docs/FORMATS.md), or a project file; default the thesis's, but "
+                        "for normalisation's optimal path")
         ->type_name("FILE");
     command->add_option("--threads", arguments->threads,
                         "Threads for the stages that split into cells and channels, 0 = one per hardware thread; the results are "

@@ -53,6 +53,7 @@ void runApproximation(const ApproximationArguments& arguments)
 {
     const pl::CorpusInput corpus = unwrap(pl::importCorpus(arguments.corpus));
     pl::ChainParameters parameters;
+    parameters.normalise.path = an::PathMethod::Greedy; // the thesis's scan (3.5.3), not the workbench's default
     parameters.axis.maxScale = arguments.maxScale;
     unwrap(pl::validate(parameters.axis));
     // The workbench's own stages: preprocess (2.2), normalise with average takes (3.7), axes,

@@ -535,7 +535,7 @@ void addChainOptions(CLI::App* command, ChainArgs& args)
     command->add_option("corpus", args.corpus, "Corpus folder (corpus.json), or 'demo' for the embedded demo corpus")->required();
     command->add_option("--parameters", args.parameters,
                         "JSON file of the chain's parameters (docs/FORMATS.md, as `bunraku analyse`), or a project file; "
-                        "default the thesis's")
+                        "default the thesis's, but for normalisation's optimal path")
         ->type_name("FILE");
     command->add_option("--input", args.input,
                         "Takes decomposed: normalised (thesis 4.1: after 2.2 and chapter 3, default) or preprocessed (2.2 only)")

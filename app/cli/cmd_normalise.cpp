@@ -13,6 +13,7 @@
 #include "analysis/normalise/truth_experiment.h"
 #include "analysis/normalise/variance_evaluation.h"
 #include "analysis/normalise/variance_families.h"
+#include "analysis/pipeline/parameters_json.h"
 #include "analysis/pipeline/stages.h"
 #include "analysis/preprocess/preprocess.h"
 #include "analysis/skeleton/puppet_rig_fit.h"
@@ -36,7 +37,7 @@ struct MatchArguments {
     int tcmp = 20;
     std::string scales = "1:16";
     std::string coupling = "method2";
-    std::string path = "greedy";
+    std::string path = pl::pathName(pl::NormaliseParameters{}.path); // optimal; "greedy" = thesis 3.5.3
     std::string weighting = "none";
     std::string level = "first-frame";
     std::string timeScale = "auto";
@@ -115,7 +116,8 @@ void addMatchOptions(CLI::App* command, MatchArguments& arguments)
                         "Channels sharing one correspondence: independent, method1, method2, per-part, per-coordinate, "
                         "all, or sets like arm.x+hand.x;head.x+shoulder.x")
         ->capture_default_str();
-    command->add_option("--path", arguments.path, "Correspondence path: greedy (thesis scan) or optimal (dynamic programming)")
+    command->add_option("--path", arguments.path,
+                        "Correspondence path: optimal (the least-cost monotone path, default) or greedy (the thesis's scan, 3.5.3)")
         ->check(CLI::IsMember({"greedy", "optimal"}))
         ->capture_default_str();
     command->add_option("--weighting", arguments.weighting, "Channel weighting: none or standardise")

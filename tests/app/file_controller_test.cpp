@@ -13,8 +13,11 @@
 #include "analysis/core/pose.h"
 #include "analysis/core/puppet_layout.h"
 #include "analysis/io/take_csv.h"
+#include "analysis/pipeline/parameters_json.h"
+#include "app/project_file.h"
 
 #include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
 
 #include <QComboBox>
 
@@ -333,4 +336,38 @@ TEST_CASE("a project holding a number beyond a double is refused naming the file
     INFO(window->files().lastError().toStdString());
     CHECK(window->files().lastError().contains(QStringLiteral("huge.bunraku.json:2")));
     CHECK(window->files().lastError().contains(QStringLiteral("1e400")));
+}
+
+TEST_CASE("projects keep their stored path: version 1 without one meant greedy, version 2 always stores it", "[app][files]")
+{
+    using analysis::PathMethod;
+    const auto parsed = [](const std::string& text) {
+        auto state = app::parseProject(QByteArray::fromStdString(text), QStringLiteral("old.bunraku.json"));
+        REQUIRE(state.ok());
+        return state->parameters.normalise.path;
+    };
+    // Version 1 stored only what differed from the defaults of its day (the greedy scan).
+    CHECK(parsed(R"({"format": "bunraku-project", "version": 1, "corpus": "demo", "parameters": {"normalise.tau": 6}})") == PathMethod::Greedy);
+    CHECK(parsed(R"({"format": "bunraku-project", "version": 1, "corpus": "demo"})") == PathMethod::Greedy);
+    CHECK(parsed(R"({"format": "bunraku-project", "version": 1, "corpus": "demo", "parameters": {"normalise.path": "optimal"}})") ==
+          PathMethod::Optimal);
+    // Version 2 writes every parameter: a saved project keeps either choice ...
+    for (const PathMethod path : {PathMethod::Greedy, PathMethod::Optimal}) {
+        app::ProjectState state;
+        state.corpus = QStringLiteral("demo");
+        state.parameters.normalise.path = path;
+        const QString file = scratchFile("stored-path", "p.bunraku.json");
+        REQUIRE(app::writeProject(state, file));
+        QFile saved(file);
+        REQUIRE(saved.open(QIODevice::ReadOnly));
+        const QByteArray text = saved.readAll();
+        const auto stored = nlohmann::json::parse(text.toStdString())["parameters"]["normalise"];
+        REQUIRE(stored.contains("path"));
+        CHECK(stored["path"] == analysis::pipeline::pathName(path));
+        CHECK(parsed(text.toStdString()) == path);
+    }
+    // ... and one written by hand without a path gets today's default, the optimal path.
+    CHECK(parsed(R"({"format": "bunraku-project", "version": 2, "corpus": "demo", "parameters": {"normalise": {"tau": 6}}})") ==
+          PathMethod::Optimal);
+    CHECK(analysis::pipeline::NormaliseParameters{}.path == PathMethod::Optimal);
 }

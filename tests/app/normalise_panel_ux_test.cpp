@@ -153,7 +153,7 @@ TEST_CASE("the normalisation panel's table, legend and summary say what was comp
         CHECK(plot->graph(k)->name() == QString::fromStdString(cell->variance.takeNames[std::size_t(k)]));
     // The summary names the reference and the parameters.
     CHECK(panel->summaryText().contains(QString::fromStdString(cell->referenceName).toHtmlEscaped()));
-    CHECK(panel->summaryText().contains(QStringLiteral("tau 4, T_cmp 20, scales 1-16")));
+    CHECK(panel->summaryText().contains(QStringLiteral("tau 4, T_cmp 20, scales 1-16, optimal path")));
 }
 
 TEST_CASE("limits are in the tool tips and are the project's: 200000 typed into T_cmp becomes 100000 and the status bar says so",

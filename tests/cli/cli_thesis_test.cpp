@@ -103,3 +103,41 @@ TEST_CASE("the ARMA table carries Table 4.1's MA convention beside the invertibl
     const std::string table = bunraku::test::readTextFile(dir / "out" / "arma_table.csv");
     CHECK(table.rfind("channel,function,emotion,takes,a1,a2,b0,b1,b2,b0_thesis,b1_thesis,b2_thesis,innovation_variance,fpe\n", 0) == 0);
 }
+
+TEST_CASE("the thesis's greedy scan, one option away, keeps the demo corpus's numbers of before the default changed", "[cli][thesis]")
+{
+    // Thesis 3.8 variance (24 channels, summed over the cell's takes) of every demo cell
+    // normalised to its suggested take with --path greedy, as the default gave them until the
+    // optimal path became the default (2026-11-28); the optimal path's beside them.
+    struct Cell {
+        const char* function;
+        const char* emotion;
+        double raw, greedy, optimal;
+    };
+    const Cell cells[] = {
+        {"greeting", "none", 16721.22595236933, 3530.154017408794, 3530.154017408794},
+        {"greeting", "friendly", 67527.54477767594, 6160.001630269756, 6160.038775091585},
+        {"greeting", "hostile", 6956.61880610132, 1882.1064540262673, 1757.6393099947072},
+        {"serving-tea", "none", 17421.86427537705, 6417.415714980331, 6149.094911637249},
+        {"serving-tea", "friendly", 61501.84725489264, 9655.872034894594, 9379.095450496323},
+        {"serving-tea", "hostile", 12621.868785337647, 3018.0105813713485, 3008.345798388381},
+    };
+    const auto dir = bunraku::test::scratchDir("cli-greedy-demo");
+    REQUIRE(runBunraku({"demo", "-o", (dir / "demo").string(), "--json"}).exitCode == 0);
+    for (const Cell& cell : cells) {
+        for (const std::string path : {"greedy", "optimal", ""}) {
+            INFO(cell.function << "/" << cell.emotion << " --path " << (path.empty() ? "(default)" : path));
+            std::vector<std::string> arguments{"normalise", (dir / "demo").string(), "--function", cell.function, "--emotion", cell.emotion,
+                                               "-o", (dir / (std::string(cell.function) + cell.emotion + path)).string(), "--json"};
+            if (!path.empty()) arguments.insert(arguments.end(), {"--path", path});
+            const auto run = runBunraku(arguments);
+            INFO(run.err);
+            REQUIRE(run.exitCode == 0);
+            const auto summary = nlohmann::json::parse(run.out);
+            const double expected = path == "greedy" ? cell.greedy : cell.optimal; // the default: optimal
+            CHECK(summary.at("path") == (path.empty() ? "optimal" : path));
+            CHECK(summary.at("variance_raw_total").get<double>() == Approx(cell.raw).epsilon(1e-12));
+            CHECK(summary.at("variance_normalised_total").get<double>() == Approx(expected).epsilon(1e-12));
+        }
+    }
+}

@@ -17,9 +17,14 @@ std::string errorOf(const json& parameters)
 
 } // namespace
 
-TEST_CASE("the chain's defaults are the thesis's: normalised takes into KM2O with M chosen by P", "[pipeline][parameters]")
+TEST_CASE("the chain's defaults are the thesis's but the normalisation path: normalised takes into KM2O with M chosen by P",
+          "[pipeline][parameters]")
 {
     const ChainParameters defaults;
+    // The optimal path, not the thesis's greedy scan (docs/NORMALISATION.md, "Real takes").
+    CHECK(defaults.normalise.path == PathMethod::Optimal);
+    CHECK(defaults.normalise.options().match.path == PathMethod::Optimal);
+    CHECK(defaults.normalise.reference == ReferenceChoice{}); // the suggested take (3.6.1)
     CHECK(defaults.normalise.tau == 4);
     CHECK(defaults.normalise.searchBand == 20);
     CHECK(defaults.normalise.maxScale == 16);
@@ -35,7 +40,7 @@ TEST_CASE("parameters written as JSON read back equal", "[pipeline][parameters]"
 {
     ChainParameters p;
     p.normalise.tau = 6;
-    p.normalise.path = PathMethod::Optimal;
+    p.normalise.path = PathMethod::Greedy; // not the default: written and read back
     p.normalise.reference = {ReferenceKind::Average, 0};
     p.normalise.cellReferences["greeting/none"] = {ReferenceKind::Take, 4};
     p.decompose.method = DecomposeMethod::LeastSquares;
@@ -51,6 +56,22 @@ TEST_CASE("parameters written as JSON read back equal", "[pipeline][parameters]"
     REQUIRE(read.ok());
     CHECK(*read == p);
     CHECK(read->design.gains.front().phrase == 0); // kept sorted
+}
+
+TEST_CASE("every written parameter file names the path; a file without one gets the default, the optimal path",
+          "[pipeline][parameters]")
+{
+    for (const PathMethod path : {PathMethod::Greedy, PathMethod::Optimal}) {
+        ChainParameters p;
+        p.normalise.path = path;
+        const json written = toJson(p);
+        REQUIRE(written.at("normalise").contains("path"));
+        CHECK(written.at("normalise").at("path") == pathName(path));
+        CHECK(chainParametersFromJson(written, "p.json")->normalise.path == path);
+    }
+    CHECK(chainParametersFromJson(json::object(), "p.json")->normalise.path == PathMethod::Optimal);
+    CHECK(chainParametersFromJson({{"normalise", {{"tau", 6}}}}, "p.json")->normalise.path == PathMethod::Optimal);
+    CHECK(chainParametersFromJson({{"normalise", {{"path", "greedy"}}}}, "p.json")->normalise.path == PathMethod::Greedy);
 }
 
 TEST_CASE("out-of-range parameters are refused naming the parameter, never used", "[pipeline][parameters]")
