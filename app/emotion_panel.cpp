@@ -45,7 +45,8 @@ EmotionPanel::EmotionPanel(Document& document, AnalysisController& analysis, QWi
     m_method->setToolTip(tr("Decomposition of the corpus into function and emotion components"));
     m_order = new widgets::BoundedSpinBox(this);
     m_order->setObjectName("emotionOrder");
-    m_order->setRange(0, analysis::pipeline::kMaxCorrelationLength); // what projects and the command line accept
+    // At most M_max of the corpus's shortest take, the largest M KM2O accepts (showParameters).
+    m_order->setRange(0, pl::usableCorrelationLength(m_document.corpus()));
     m_order->setSpecialValueText(tr("chosen by P (4.4.4)"));
     m_order->setDescription(tr("KM2O correlation length M; 0 chooses it by the relative error P over 1..M_max as thesis "
                                "4.4.4 (which found M = 2); must not exceed M_max = floor(3 sqrt(T + 1)) - 1 for T frames."));
@@ -161,6 +162,7 @@ void EmotionPanel::showParameters()
     const pl::DecomposeParameters& p = m_document.parameters().decompose;
     m_input->setCurrentIndex(std::max(0, m_input->findData(QString::fromStdString(pl::inputName(p.input)))));
     m_method->setCurrentIndex(std::max(0, m_method->findData(QString::fromStdString(pl::methodName(p.method)))));
+    m_order->setLimits(0, pl::usableCorrelationLength(m_document.corpus()));
     m_order->setValue(p.correlationLength);
     m_order->setEnabled(p.method == pl::DecomposeMethod::Km2o);
     const QSignalBlocker blockWeight(m_weight);
