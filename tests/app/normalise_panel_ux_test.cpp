@@ -15,6 +15,7 @@
 #include <qcustomplot.h>
 
 #include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QSpinBox>
 #include <QLabel>
 #include <QLineEdit>
@@ -225,6 +226,15 @@ TEST_CASE("each analysis dock control at its maximum gives a value the analysis 
         INFO(scheduler.error(control.slot).toStdString());
         CHECK(scheduler.state(control.slot) == app::SlotState::Finished);
     }
+    // The emotion weight's number field at its maximum: a weighted take.
+    document.restoreParameters(defaults);
+    auto* weight = window->emotionPanel()->weightBox();
+    weight->setValue(weight->maximum());
+    CHECK(document.parameters().design.emotionWeight == weight->maximum());
+    CHECK(analysis::pipeline::validate(document.parameters()).ok());
+    REQUIRE(idle(*window));
+    CHECK(window->analysis().weightError().isEmpty());
+    CHECK(window->emotionPanel()->weightedTake());
 }
 
 TEST_CASE("undo steps are named after the value they set", "[app][normalise][undo]")
