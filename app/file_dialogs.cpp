@@ -66,7 +66,8 @@ QString suggestedFileName(const Document& document, const QString& suffix, NameP
 {
     const QString source = document.corpusSource();
     QString name = source == QStringLiteral("demo") ? QStringLiteral("demo") : QFileInfo(source).fileName();
-    const QString take = document.takeLabel(document.selectedId(parts == NameParts::CorpusAndTakeB ? TakeSlot::B : TakeSlot::A));
+    // The take's short name, never a live result's recipe.
+    const QString take = document.takeName(document.selectedId(parts == NameParts::CorpusAndTakeB ? TakeSlot::B : TakeSlot::A));
     if (!take.isEmpty() && parts != NameParts::Corpus) name += QLatin1Char('-') + take;
     // Letters, digits, '.', '_' and '-' only; runs of anything else become one '-'.
     static const QRegularExpression unsafe(QStringLiteral("[^A-Za-z0-9._-]+"));

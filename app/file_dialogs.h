@@ -34,7 +34,8 @@ void rememberFolder(FilePurpose purpose, const QString& path);
 /// What a suggested name is made of.
 enum class NameParts { CorpusAndTakeA, CorpusAndTakeB, Corpus };
 /// A file name (without folder) for what the document shows: the corpus ("demo" or the corpus
-/// folder's name) and take A's (or B's) label, made safe for file systems, then `suffix` (".png").
+/// folder's name) and take A's (or B's) name (Document::takeName), made safe for file
+/// systems, then `suffix` (".png").
 QString suggestedFileName(const Document& document, const QString& suffix, NameParts parts = NameParts::CorpusAndTakeA);
 
 /// Replaces the dialogs (null restores them).

@@ -225,7 +225,7 @@ TEST_CASE("the designed take's label names its warp, gains and phrases, and the 
     REQUIRE(QTest::qWaitFor([&] { return axisNames(designed); }, 60000));
     CHECK_FALSE(listed(axis).contains(QStringLiteral("/0")));
     CHECK(int(document.take(axis)->frameCount()) == int(document.take(designed)->frameCount()));
-    // Exported as glTF, its animation is named as the take is listed.
+    // Exported as glTF, the recipe it is listed with is in the file (its description).
     const auto dir = test::scratchDir("designed-labels");
     REQUIRE(window->exports().exportTake(TakeSlot::A, QString::fromStdString((dir / "designed.glb").string())));
     const std::string glb = test::fileBytes(dir / "designed.glb");
