@@ -120,7 +120,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_document(new Do
     m_progress->setVisible(false);
     m_stages = new QLabel(this);
     m_stages->setObjectName("stageStatus");
+    // Which takes the views show, always in sight (the title bar may be hidden or cut).
+    m_shownTakes = new QLabel(this);
+    m_shownTakes->setObjectName("shownTakes");
     statusBar()->addWidget(m_status, 1);
+    statusBar()->addPermanentWidget(m_shownTakes);
     statusBar()->addPermanentWidget(m_stages);
     statusBar()->addPermanentWidget(m_progress);
     createViews();
@@ -395,6 +399,14 @@ void MainWindow::updateTitle()
     if (!m_document->selectedId(TakeSlot::B).isEmpty())
         shown += tr(" vs ") + m_document->takeLabel(m_document->selectedId(TakeSlot::B));
     setWindowTitle(tr("%1 - %2 [*] - Bunraku Motion Workbench").arg(source.isEmpty() ? tr("no corpus") : source, shown));
+    // A long derived take's name is elided here (in full in the tool tip and the title).
+    const auto named = [this](TakeSlot slot) {
+        return fontMetrics().elidedText(m_document->takeLabel(m_document->selectedId(slot)), Qt::ElideRight, 320);
+    };
+    QString takes = tr("A: %1").arg(named(TakeSlot::A));
+    if (!m_document->selectedId(TakeSlot::B).isEmpty()) takes += QStringLiteral("   ") + tr("B: %1").arg(named(TakeSlot::B));
+    m_shownTakes->setText(takes);
+    m_shownTakes->setToolTip(tr("The takes the 3D view, the graphs and the inspector show: %1").arg(shown));
     setWindowModified(!m_document->undoStack()->isClean());
 }
 

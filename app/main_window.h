@@ -72,6 +72,9 @@ public:
     void saveLayout() const;
     /// The status bar's text of the analysis stages (running stages with their progress).
     QString stageStatusText() const;
+    /// The status bar's names of the takes shown: "A: greeting/friendly/2", then
+    /// "  B: ..." when B is shown; kept current as takes are chosen or renamed.
+    QLabel* shownTakesLabel() const { return m_shownTakes; }
     /// File > Export Report: the analysis report of the open corpus (HTML) written to `file`;
     /// false (and a status message) on error.
     bool exportReport(const QString& file);
@@ -132,6 +135,7 @@ private:
     QProgressBar* m_progress = nullptr;
     QLabel* m_status = nullptr;
     QLabel* m_stages = nullptr;
+    QLabel* m_shownTakes = nullptr;
     SideColumns* m_columns = nullptr;
     std::map<int, QString> m_failures; ///< per analysis slot: its failure shown in the status bar
 };

@@ -1,14 +1,17 @@
-// The main window as it first meets the user: it fits the screen whatever --window-size asks.
+// The main window as it first meets the user: it fits the screen whatever --window-size asks;
+// it names the takes it shows outside the title bar.
 #include "tests/app/app_test_support.h"
 
 #include "app/window_placement.h"
 
 #include <catch2/catch.hpp>
 
+#include <QLabel>
 #include <QScreen>
 #include <QStatusBar>
 
 using namespace bunraku;
+using app::TakeSlot;
 
 TEST_CASE("a window size as large as the screen keeps the window and its status bar inside the available screen", "[app][window]")
 {
@@ -38,4 +41,29 @@ TEST_CASE("a window size as large as the screen keeps the window and its status 
     CHECK(inside.contains(window.frameGeometry()));
     const QRect statusBar(window.statusBar()->mapToGlobal(QPoint(0, 0)), window.statusBar()->size());
     CHECK(inside.contains(statusBar));
+}
+
+TEST_CASE("the main window names take A and take B where they are seen, kept current", "[app][window]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    auto& document = window->document();
+    QLabel* shown = window->shownTakesLabel();
+    REQUIRE(shown != nullptr);
+    CHECK(shown->isVisible());
+    CHECK(window->statusBar()->isAncestorOf(shown));
+    CHECK(shown->text() == QStringLiteral("A: ") + QString::fromStdString(document.selectedTake(TakeSlot::A)->displayName()));
+    document.selectTake(TakeSlot::A, app::Document::corpusTakeId(3));
+    document.selectTake(TakeSlot::B, app::Document::corpusTakeId(7));
+    const QString a = QString::fromStdString(document.corpus().takes[3].displayName());
+    const QString b = QString::fromStdString(document.corpus().takes[7].displayName());
+    CHECK(shown->text() == QStringLiteral("A: %1   B: %2").arg(a, b));
+    // Inside the window, not cut (once the status bar has laid out the longer text).
+    QCoreApplication::sendPostedEvents();
+    QCoreApplication::processEvents();
+    const QRect inWindow(shown->mapTo(window.get(), QPoint(0, 0)), shown->size());
+    CHECK(window->rect().contains(inWindow));
+    CHECK(shown->width() >= shown->fontMetrics().horizontalAdvance(shown->text()));
+    document.selectTake(TakeSlot::B, QString());
+    CHECK(shown->text() == QStringLiteral("A: ") + a);
 }
