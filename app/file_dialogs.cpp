@@ -7,6 +7,7 @@
 #include <QFileInfo>
 #include <QRegularExpression>
 #include <QSettings>
+#include <QStandardPaths>
 
 namespace bunraku::app {
 
@@ -28,6 +29,7 @@ QString purposeKey(FilePurpose purpose)
 {
     switch (purpose) {
     case FilePurpose::Corpus: return QStringLiteral("folders/corpus");
+    case FilePurpose::NewCorpus: return QStringLiteral("folders/newCorpus");
     case FilePurpose::Project: return QStringLiteral("folders/project");
     case FilePurpose::ImportTake: return QStringLiteral("folders/import");
     case FilePurpose::ExportTake: return QStringLiteral("folders/exportTake");
@@ -43,6 +45,26 @@ QString rememberedPurposeFolder(FilePurpose purpose)
 {
     const QString folder = QSettings().value(purposeKey(purpose)).toString();
     return existingFolder(folder) ? folder : QString();
+}
+
+QString workbenchFolder(FilePurpose purpose)
+{
+    QString documents = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+    if (documents.isEmpty()) documents = QDir::homePath();
+    const QString root = QDir(documents).filePath(QStringLiteral("Bunraku"));
+    switch (purpose) {
+    case FilePurpose::Corpus:
+    case FilePurpose::NewCorpus: return QDir(root).filePath(QStringLiteral("corpora"));
+    default: return root;
+    }
+}
+
+QString unusedFolder(const QString& parent, const QString& name)
+{
+    const QDir dir(parent);
+    QString candidate = dir.filePath(name);
+    for (int n = 2; QFileInfo::exists(candidate); ++n) candidate = dir.filePath(name + QLatin1Char('-') + QString::number(n));
+    return candidate;
 }
 
 QString rememberedFolder(FilePurpose purpose, const QString& projectFile)
