@@ -1,8 +1,13 @@
 // The main window as it first meets the user: it fits the screen whatever --window-size asks;
-// it names the takes it shows outside the title bar.
+// it names the takes it shows outside the title bar; an action's status message goes after a
+// while or when the next one comes, and a long one is cut at the window's edge, not beyond it.
 #include "tests/app/app_test_support.h"
 
+#include "app/export_controller.h"
 #include "app/window_placement.h"
+
+#include "widgets/clock.h"
+#include "widgets/elided_label.h"
 
 #include <catch2/catch.hpp>
 
@@ -66,4 +71,64 @@ TEST_CASE("the main window names take A and take B where they are seen, kept cur
     CHECK(shown->width() >= shown->fontMetrics().horizontalAdvance(shown->text()));
     document.selectTake(TakeSlot::B, QString());
     CHECK(shown->text() == QStringLiteral("A: ") + a);
+}
+
+TEST_CASE("an action's status message goes after a while or when the next comes, and a long one is cut at the window's edge",
+          "[app][window][status]")
+{
+    widgets::ManualClock clock; // outlives the window, whose timer runs on it
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    auto* line = window->statusLine();
+    REQUIRE(line != nullptr);
+    window->setStatusClock(&clock);
+    const int timeout = window->statusTimeout();
+    CHECK(timeout >= 5000);
+    CHECK(timeout <= 30000);
+    // "Made the corpus..." stayed until the next message, however long after.
+    window->showStatus(QStringLiteral("Made the corpus /tmp/corpus from 6 files"));
+    CHECK(line->text() == QStringLiteral("Made the corpus /tmp/corpus from 6 files"));
+    clock.advance(timeout - 1);
+    CHECK_FALSE(line->text().isEmpty());
+    clock.advance(1);
+    CHECK(line->text().isEmpty());
+
+    // Replaced by the next message, which keeps its own time.
+    window->showStatus(QStringLiteral("first"));
+    clock.advance(timeout / 2);
+    window->showStatus(QStringLiteral("second"));
+    CHECK(line->text() == QStringLiteral("second"));
+    clock.advance(timeout - 1);
+    CHECK(line->text() == QStringLiteral("second"));
+    clock.advance(1);
+    CHECK(line->text().isEmpty());
+    // A stage's failure is not an action's message: it stays until the stage runs again (a
+    // project's largest scale that does not fit the demo's takes).
+    REQUIRE(test::waitUntilIdle(*window));
+    app::AnalysisParameters parameters = window->document().parameters();
+    parameters.normalise.maxScale = 200;
+    window->document().restoreParameters(parameters);
+    REQUIRE(QTest::qWaitFor(
+        [&] { return window->analysis().scheduler().state(app::AnalysisController::kNormaliseSlot) == app::SlotState::Failed; }, 60000));
+    REQUIRE(line->text().contains(QStringLiteral("failed")));
+    clock.advance(2 * timeout);
+    CHECK(line->text().contains(QStringLiteral("failed")));
+
+    // A message longer than the window: the window keeps its width, the line ends inside it with
+    // an ellipsis, and its tool tip holds the whole message.
+    const int width = window->width();
+    const QString longMessage = QStringLiteral("Exported take A to ") + QString(400, QLatin1Char('x')) + QStringLiteral(".glb");
+    window->showStatus(longMessage);
+    QCoreApplication::processEvents();
+    CHECK(window->width() == width);
+    const QRect inWindow(line->mapTo(window.get(), QPoint(0, 0)), line->size());
+    CHECK(inWindow.right() <= window->rect().right());
+    CHECK(line->shownText() != longMessage);
+    CHECK(line->shownText().endsWith(QChar(0x2026)));
+    CHECK(line->fontMetrics().horizontalAdvance(line->shownText()) <= line->contentsRect().width());
+    CHECK(line->toolTip() == longMessage);
+    // The permanent parts of the status bar stay in sight.
+    CHECK(window->shownTakesLabel()->isVisible());
+    const QRect takes(window->shownTakesLabel()->mapTo(window.get(), QPoint(0, 0)), window->shownTakesLabel()->size());
+    CHECK(window->rect().contains(takes));
 }
