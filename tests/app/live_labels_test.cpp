@@ -143,7 +143,12 @@ TEST_CASE("a stage's error leaves the status bar once the parameter is fixed", "
     REQUIRE(window);
     REQUIRE(idle(*window));
     auto* panel = window->emotionPanel();
-    panel->orderBox()->setValue(40); // above M_max for the demo's 102 frames
+    // Above M_max for the demo's 102 frames: the dock cannot set it (its limit is M_max), a
+    // project can.
+    CHECK(panel->orderBox()->maximum() < 40);
+    app::AnalysisParameters parameters = window->document().parameters();
+    parameters.decompose.correlationLength = 40;
+    window->document().restoreParameters(parameters);
     REQUIRE(QTest::qWaitFor([&] { return statusText(*window).contains(QStringLiteral("Decomposition failed")); }, 120000));
     CHECK(panel->statusText().contains(QStringLiteral("cannot be decomposed")));
     panel->orderBox()->setValue(2);
