@@ -1,8 +1,11 @@
 #include "app/window_placement.h"
 
 #include <QApplication>
+#include <QEvent>
+#include <QPointer>
 #include <QScreen>
 #include <QWidget>
+#include <QWindow>
 
 #include <algorithm>
 
@@ -31,6 +34,32 @@ void keepInside(QWidget& window)
     if (fitted.topLeft() != frame.topLeft()) window.move(fitted.topLeft()); // move() places the frame
 }
 
+/// The window manager frames a window after it is shown (on X11, asynchronously): its title bar
+/// is known at the first expose. Keeps the window inside then, once, and goes.
+class KeepInsideOnExpose : public QObject {
+public:
+    /// `window` has its platform window (windowHandle()), which receives the expose events.
+    explicit KeepInsideOnExpose(QWidget& window) : QObject(&window), m_window(&window), m_handle(window.windowHandle())
+    {
+        if (m_handle) m_handle->installEventFilter(this);
+    }
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override
+    {
+        if (watched == m_handle && event->type() == QEvent::Expose && m_window) {
+            m_handle->removeEventFilter(this);
+            keepInside(*m_window);
+            deleteLater();
+        }
+        return false;
+    }
+
+private:
+    QPointer<QWidget> m_window;
+    QPointer<QWindow> m_handle;
+};
+
 } // namespace
 
 void showInsideScreen(QWidget& window, QSize requested)
@@ -46,6 +75,8 @@ void showInsideScreen(QWidget& window, QSize requested)
     } else {
         window.resize(size);
     }
+    window.winId(); // the platform window, to watch its first expose
+    new KeepInsideOnExpose(window);
     window.show();
     keepInside(window);
 }
