@@ -77,6 +77,8 @@ TEST_CASE("every numeric option of the analysis states its range in --help: the 
         text << "in [" << low << " - " << high << "]";
         return text.str();
     };
+    // An existing folder for the commands whose corpus must exist (the option is refused first).
+    const std::string folder = bunraku::test::scratchDir("cli-help-ranges").string();
     const std::vector<Option> options = {
         {{"normalise"}, "--tau", in(0, pl::kMaxTau), std::to_string(pl::kMaxTau + 1)},
         {{"normalise"}, "--tcmp", in(0, pl::kMaxSearchBand), std::to_string(pl::kMaxSearchBand + 1)},
@@ -103,7 +105,8 @@ TEST_CASE("every numeric option of the analysis states its range in --help: the 
         CHECK(found.find(option.range) != std::string::npos);
         // A value past the range is refused by the option, naming it, before any work.
         std::vector<std::string> beyond = option.command;
-        for (const std::string& word : {std::string("demo"), option.option, option.beyond}) beyond.push_back(word);
+        const std::string corpus = option.command.front() == "normalise" ? folder : std::string("demo");
+        for (const std::string& word : {corpus, option.option, option.beyond}) beyond.push_back(word);
         const auto refused = runBunraku(beyond);
         INFO(refused.err);
         CHECK(refused.exitCode == 2);
