@@ -56,6 +56,15 @@ QString Document::takeLabel(const QString& id) const
     return index < 0 ? QString() : m_derived[std::size_t(index)].label;
 }
 
+QString Document::takeName(const QString& id) const
+{
+    if (!id.startsWith(QStringLiteral("live/"))) return takeLabel(id);
+    const QString kind = id.mid(5);
+    const TakePointer found = take(id);
+    if (!found || found->labels.function.empty()) return kind;
+    return QString::fromStdString(found->labels.function) + QLatin1Char(' ') + kind;
+}
+
 void Document::selectTake(TakeSlot slot, const QString& id)
 {
     if (m_selected[int(slot)] == id) return;

@@ -84,8 +84,13 @@ public:
     static QString corpusTakeId(std::size_t index);
     /// The take with `id` (corpus or derived), null when unknown.
     TakePointer take(const QString& id) const;
-    /// The label the user sees for `id`.
+    /// The label the user sees for `id` (a live result's recipe: "designed from bow functional
+    /// (warp: 15 of 18 points moved; ...)").
     QString takeLabel(const QString& id) const;
+    /// A short name for `id` that stays while the take is edited, for file names and the names
+    /// inside exported files: a corpus take's "greeting/friendly/2", an imported take's label, a
+    /// live result's kind after its function ("bow designed", or "designed" without one).
+    QString takeName(const QString& id) const;
     const std::vector<DerivedTake>& derivedTakes() const { return m_derived; }
 
     /// Shows the take `id` (empty: none, allowed for B only) in `slot`. View state.

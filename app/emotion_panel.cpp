@@ -14,6 +14,8 @@
 #include "analysis/pipeline/parameters_json.h"
 
 #include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QHBoxLayout>
 #include <QFormLayout>
 #include <QLabel>
 #include <QPushButton>
@@ -45,7 +47,8 @@ EmotionPanel::EmotionPanel(Document& document, AnalysisController& analysis, QWi
     m_method->setToolTip(tr("Decomposition of the corpus into function and emotion components"));
     m_order = new widgets::BoundedSpinBox(this);
     m_order->setObjectName("emotionOrder");
-    m_order->setRange(0, analysis::pipeline::kMaxCorrelationLength); // what projects and the command line accept
+    // At most M_max of the corpus's shortest take, the largest M KM2O accepts (showParameters).
+    m_order->setRange(0, pl::usableCorrelationLength(m_document.corpus()));
     m_order->setSpecialValueText(tr("chosen by P (4.4.4)"));
     m_order->setDescription(tr("KM2O correlation length M; 0 chooses it by the relative error P over 1..M_max as thesis "
                                "4.4.4 (which found M = 2); must not exceed M_max = floor(3 sqrt(T + 1)) - 1 for T frames."));
@@ -61,6 +64,14 @@ EmotionPanel::EmotionPanel(Document& document, AnalysisController& analysis, QWi
                             "From %1 to %2.")
                              .arg(analysis::kMinEmotionWeight, 0, 'f', 2)
                              .arg(analysis::kMaxEmotionWeight, 0, 'f', 2));
+    m_weightBox = new QDoubleSpinBox(this);
+    m_weightBox->setObjectName("emotionWeightValue");
+    m_weightBox->setRange(analysis::kMinEmotionWeight, analysis::kMaxEmotionWeight);
+    m_weightBox->setDecimals(2);
+    m_weightBox->setSingleStep(0.05);
+    m_weightBox->setValue(1.0);
+    m_weightBox->setKeyboardTracking(false); // a typed value applies on Enter: "2.5" never applies 2 on the way
+    m_weightBox->setToolTip(m_weight->toolTip());
     m_label = new QLabel(tr("Decomposing the corpus..."), this);
     m_label->setObjectName("emotionSummary");
     m_label->setWordWrap(true);
@@ -70,7 +81,10 @@ EmotionPanel::EmotionPanel(Document& document, AnalysisController& analysis, QWi
     form->addRow(tr("Method"), m_method);
     form->addRow(tr("Correlation length M"), m_order);
     form->addRow(tr("Emotion z of"), m_emotion);
-    form->addRow(tr("Emotion weight a"), m_weight);
+    auto* weightRow = new QHBoxLayout;
+    weightRow->addWidget(m_weight, 1);
+    weightRow->addWidget(m_weightBox);
+    form->addRow(tr("Emotion weight a"), weightRow);
     form->setRowWrapPolicy(QFormLayout::WrapLongRows);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
@@ -84,6 +98,9 @@ EmotionPanel::EmotionPanel(Document& document, AnalysisController& analysis, QWi
     connect(m_weight, &QSlider::sliderReleased, &document, &Document::endInteraction);
     // A drag is one interaction; keyboard and wheel steps of the slider merge as steps.
     connect(m_weight, &QSlider::valueChanged, this, [this](int position) { setEmotionWeight(m_document, position / kSliderScale); });
+    // The spin box's steps merge as the slider's and M's do, until it loses the focus.
+    connect(m_weightBox, &QDoubleSpinBox::valueChanged, this, [this](double weight) { setEmotionWeight(m_document, weight); });
+    endSeriesWhenEdited(m_weightBox, [this] { m_document.endStepSeries(); });
     connect(m_input, &QComboBox::currentIndexChanged, this, [this](int index) {
         const bool normalised = m_input->itemData(index).toString() == QStringLiteral("normalised");
         changeStageParameters(
@@ -161,10 +178,14 @@ void EmotionPanel::showParameters()
     const pl::DecomposeParameters& p = m_document.parameters().decompose;
     m_input->setCurrentIndex(std::max(0, m_input->findData(QString::fromStdString(pl::inputName(p.input)))));
     m_method->setCurrentIndex(std::max(0, m_method->findData(QString::fromStdString(pl::methodName(p.method)))));
+    m_order->setLimits(0, pl::usableCorrelationLength(m_document.corpus()));
     m_order->setValue(p.correlationLength);
     m_order->setEnabled(p.method == pl::DecomposeMethod::Km2o);
     const QSignalBlocker blockWeight(m_weight);
-    if (!m_weight->isSliderDown()) m_weight->setValue(int(std::lround(m_document.parameters().design.emotionWeight * kSliderScale)));
+    const QSignalBlocker blockWeightBox(m_weightBox);
+    const double weight = m_document.parameters().design.emotionWeight;
+    if (!m_weight->isSliderDown()) m_weight->setValue(int(std::lround(weight * kSliderScale)));
+    m_weightBox->setValue(weight);
 }
 
 void EmotionPanel::showResult()

@@ -5,8 +5,10 @@
 /// relative error P over 1..M_max as 4.4.4 does) are undoable parameters; a change re-decomposes
 /// in the background. The emotion weight a (thesis eq. 4.45, x = y + a z) is a slider; the
 /// AnalysisController re-synthesises the weighted take of take A's cell on every step (a few
-/// microseconds) as the live take "weighted", so it plays as you drag. A drag is one undo step,
-/// and so are consecutive steps of M or of the slider by arrows, keys or wheel. The text names
+/// microseconds) as the live take "weighted", so it plays as you drag; a spin box beside it
+/// shows a and takes a typed value (2.00 exactly, where a drag lands on 2.03). A drag is one
+/// undo step, and so are consecutive steps of M, of the slider or of the weight's spin box by
+/// arrows, keys or wheel. The text names
 /// the weighted cell, a, the method and M the shown result was computed with; a picker chooses
 /// the emotion a neutral take is weighted against.
 
@@ -19,6 +21,7 @@
 #include <QWidget>
 
 class QComboBox;
+class QDoubleSpinBox;
 class QLabel;
 class QSlider;
 class QSpinBox;
@@ -33,6 +36,8 @@ public:
     EmotionPanel(Document& document, AnalysisController& analysis, QWidget* parent = nullptr);
 
     QSlider* weightSlider() const { return m_weight; }
+    /// The emotion weight a as a number, beside the slider.
+    QDoubleSpinBox* weightBox() const { return m_weightBox; }
     QComboBox* methodBox() const { return m_method; }
     QComboBox* inputBox() const { return m_input; }
     widgets::BoundedSpinBox* orderBox() const { return m_order; }
@@ -68,6 +73,7 @@ private:
     widgets::BoundedSpinBox* m_order = nullptr;
     QComboBox* m_emotion = nullptr;
     QSlider* m_weight = nullptr;
+    QDoubleSpinBox* m_weightBox = nullptr;
     QLabel* m_label = nullptr;
 };
 

@@ -39,10 +39,13 @@ bool ExportController::exportTake(TakeSlot slot, const QString& file)
         report(tr("Nothing to export: no take is shown as %1.").arg(slotName(slot)));
         return false;
     }
-    // A .glb's animation is named as the take is listed ("designed from ...", an imported file's name).
-    const QString label = m_document.takeLabel(m_document.selectedId(slot));
-    const auto status =
-        render::exportTake(*take, analysis::defaultBodyDescription(), std::filesystem::path(file.toStdString()), label.toStdString());
+    // Names inside the file are short and stable (the take's name: "bow designed"); the recipe
+    // a live result is listed with goes into the file's metadata.
+    const QString id = m_document.selectedId(slot);
+    const QString label = m_document.takeLabel(id);
+    const QString name = m_document.takeName(id);
+    const auto status = render::exportTake(*take, analysis::defaultBodyDescription(), std::filesystem::path(file.toStdString()),
+                                           name.toStdString(), label != name ? label.toStdString() : std::string());
     if (!status) {
         report(tr("Cannot export take %1: %2").arg(slotName(slot), QString::fromStdString(status.error().message)));
         return false;
@@ -62,7 +65,8 @@ void ExportController::chooseAndExport(TakeSlot slot)
     const QString glb = tr("glTF binary (*.glb)");
     const QString csv = tr("CSV take (*.csv)");
     QString filter = bvh;
-    // In the folder last exported to, named after the corpus and the take ("demo-greeting-none-2.bvh").
+    // In the folder last exported to, named after the corpus and the take's name ("demo-greeting-none-2.bvh",
+    // "demo-bow-designed.bvh").
     const QString name = suggestedFileName(m_document, QStringLiteral(".bvh"),
                                            slot == TakeSlot::A ? NameParts::CorpusAndTakeA : NameParts::CorpusAndTakeB);
     QString file = chooseSaveFile(m_window, FilePurpose::ExportTake, tr("Export take %1").arg(slotName(slot)), name,

@@ -277,6 +277,7 @@ void FileController::chooseFilesForCorpus(const QStringList& inputs)
         m_lastError.clear();
         if (createCorpusFromFiles(asking.sources(), asking.buildOptions(), folder)) {
             rememberFolder(FilePurpose::Corpus, QFileInfo(folder).absoluteFilePath());
+            rememberFolder(FilePurpose::NewCorpus, QFileInfo(folder).absoluteFilePath());
             return true;
         }
         asking.showCreateError(m_lastError.isEmpty() ? tr("cancelled; nothing was written") : m_lastError);

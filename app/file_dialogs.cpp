@@ -7,6 +7,7 @@
 #include <QFileInfo>
 #include <QRegularExpression>
 #include <QSettings>
+#include <QStandardPaths>
 
 namespace bunraku::app {
 
@@ -28,6 +29,7 @@ QString purposeKey(FilePurpose purpose)
 {
     switch (purpose) {
     case FilePurpose::Corpus: return QStringLiteral("folders/corpus");
+    case FilePurpose::NewCorpus: return QStringLiteral("folders/newCorpus");
     case FilePurpose::Project: return QStringLiteral("folders/project");
     case FilePurpose::ImportTake: return QStringLiteral("folders/import");
     case FilePurpose::ExportTake: return QStringLiteral("folders/exportTake");
@@ -43,6 +45,26 @@ QString rememberedPurposeFolder(FilePurpose purpose)
 {
     const QString folder = QSettings().value(purposeKey(purpose)).toString();
     return existingFolder(folder) ? folder : QString();
+}
+
+QString workbenchFolder(FilePurpose purpose)
+{
+    QString documents = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+    if (documents.isEmpty()) documents = QDir::homePath();
+    const QString root = QDir(documents).filePath(QStringLiteral("Bunraku"));
+    switch (purpose) {
+    case FilePurpose::Corpus:
+    case FilePurpose::NewCorpus: return QDir(root).filePath(QStringLiteral("corpora"));
+    default: return root;
+    }
+}
+
+QString unusedFolder(const QString& parent, const QString& name)
+{
+    const QDir dir(parent);
+    QString candidate = dir.filePath(name);
+    for (int n = 2; QFileInfo::exists(candidate); ++n) candidate = dir.filePath(name + QLatin1Char('-') + QString::number(n));
+    return candidate;
 }
 
 QString rememberedFolder(FilePurpose purpose, const QString& projectFile)
@@ -66,7 +88,8 @@ QString suggestedFileName(const Document& document, const QString& suffix, NameP
 {
     const QString source = document.corpusSource();
     QString name = source == QStringLiteral("demo") ? QStringLiteral("demo") : QFileInfo(source).fileName();
-    const QString take = document.takeLabel(document.selectedId(parts == NameParts::CorpusAndTakeB ? TakeSlot::B : TakeSlot::A));
+    // The take's short name, never a live result's recipe.
+    const QString take = document.takeName(document.selectedId(parts == NameParts::CorpusAndTakeB ? TakeSlot::B : TakeSlot::A));
     if (!take.isEmpty() && parts != NameParts::Corpus) name += QLatin1Char('-') + take;
     // Letters, digits, '.', '_' and '-' only; runs of anything else become one '-'.
     static const QRegularExpression unsafe(QStringLiteral("[^A-Za-z0-9._-]+"));

@@ -18,7 +18,9 @@ namespace bunraku::app {
 
 class Document;
 
-enum class FilePurpose { Corpus, Project, ImportTake, ExportTake, Screenshot, Report, Video, VideoFrames };
+/// NewCorpus: where File > New Corpus from Files writes corpora (not where corpora are opened
+/// from: that is often the user's data folder, never the place to write into).
+enum class FilePurpose { Corpus, NewCorpus, Project, ImportTake, ExportTake, Screenshot, Report, Video, VideoFrames };
 
 /// The settings key of a purpose's folder: "folders/screenshot".
 QString purposeKey(FilePurpose purpose);
@@ -27,6 +29,11 @@ QString purposeKey(FilePurpose purpose);
 QString rememberedFolder(FilePurpose purpose, const QString& projectFile = {});
 /// The folder last chosen for `purpose` itself (no fallback), empty when none exists.
 QString rememberedPurposeFolder(FilePurpose purpose);
+/// The workbench's own folder for what it writes for `purpose` when the person has chosen none
+/// yet: "<Documents>/Bunraku/corpora" for NewCorpus (it need not exist yet).
+QString workbenchFolder(FilePurpose purpose);
+/// A name for a new folder in `parent` that does not exist yet: `name`, else "name-2", "name-3"...
+QString unusedFolder(const QString& parent, const QString& name);
 /// Remembers the folder holding `path` (a file, or a chosen folder: its parent, where its
 /// siblings are) for `purpose` and as the last folder of all.
 void rememberFolder(FilePurpose purpose, const QString& path);
@@ -34,7 +41,8 @@ void rememberFolder(FilePurpose purpose, const QString& path);
 /// What a suggested name is made of.
 enum class NameParts { CorpusAndTakeA, CorpusAndTakeB, Corpus };
 /// A file name (without folder) for what the document shows: the corpus ("demo" or the corpus
-/// folder's name) and take A's (or B's) label, made safe for file systems, then `suffix` (".png").
+/// folder's name) and take A's (or B's) name (Document::takeName), made safe for file
+/// systems, then `suffix` (".png").
 QString suggestedFileName(const Document& document, const QString& suffix, NameParts parts = NameParts::CorpusAndTakeA);
 
 /// Replaces the dialogs (null restores them).

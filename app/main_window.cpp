@@ -21,7 +21,9 @@
 #include "app/export_controller.h"
 #include "app/viewport_panel.h"
 
+#include "widgets/clock.h"
 #include "widgets/corpus_browser.h"
+#include "widgets/elided_label.h"
 #include "widgets/graph_panel.h"
 #include "widgets/inspector_widget.h"
 #include "widgets/scrub_bar.h"
@@ -62,6 +64,9 @@ namespace {
 const QString kGeometryKey = QStringLiteral("window/geometry");
 const QString kStateKey = QStringLiteral("window/state");
 constexpr int kLayoutVersion = 1;
+/// How long an action's message stays in the status bar (Qt's own status tips go at once; a
+/// message naming a written file needs the time to be read).
+constexpr int kStatusTimeoutMs = 12000;
 
 /// Corpus takes then derived takes, as the browser lists them.
 std::vector<widgets::BrowserEntry> browserEntries(const Document& document)
@@ -113,24 +118,34 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_document(new Do
     m_exports = new ExportController(*m_document, this);
     m_files->setViewStateHooks([this] { return viewState(); }, [this](const QVariantMap& state) { restoreViewState(state); });
     m_playback = new PlaybackController(*m_document, this);
-    m_status = new QLabel(this);
+    m_status = new widgets::ElidedLabel(this);
+    m_status->setObjectName("statusMessage");
+    m_statusTimer = new widgets::ClockTimer(this);
+    m_statusTimer->setInterval(kStatusTimeoutMs);
+    connect(m_statusTimer, &widgets::ClockTimer::timeout, this, [this] {
+        if (m_status->text() == m_transientStatus) m_status->clear();
+    });
     m_progress = new QProgressBar(this);
     m_progress->setRange(0, 1000);
     m_progress->setMaximumWidth(180);
     m_progress->setVisible(false);
     m_stages = new QLabel(this);
     m_stages->setObjectName("stageStatus");
+    // Which takes the views show, always in sight (the title bar may be hidden or cut).
+    m_shownTakes = new QLabel(this);
+    m_shownTakes->setObjectName("shownTakes");
     statusBar()->addWidget(m_status, 1);
+    statusBar()->addPermanentWidget(m_shownTakes);
     statusBar()->addPermanentWidget(m_stages);
     statusBar()->addPermanentWidget(m_progress);
     createViews();
     createMenus();
     connectDocument();
 
-    connect(m_files, &FileController::statusMessage, this, [this](const QString& message) { m_status->setText(message); });
-    connect(m_exports, &ExportController::statusMessage, this, [this](const QString& message) { m_status->setText(message); });
-    connect(m_normalisePanel, &NormalisePanel::statusMessage, m_status, &QLabel::setText);
-    connect(m_emotionPanel, &EmotionPanel::statusMessage, m_status, &QLabel::setText);
+    connect(m_files, &FileController::statusMessage, this, &MainWindow::showStatus);
+    connect(m_exports, &ExportController::statusMessage, this, &MainWindow::showStatus);
+    connect(m_normalisePanel, &NormalisePanel::statusMessage, this, &MainWindow::showStatus);
+    connect(m_emotionPanel, &EmotionPanel::statusMessage, this, &MainWindow::showStatus);
     new FocusReturn(this);
     m_columns = new SideColumns(this);
 
@@ -243,10 +258,10 @@ void MainWindow::createMenus()
     report->setObjectName("exportReportAction");
     report->setToolTip(tr("The analysis report of the open corpus as one HTML file (figures and tables, the thesis's values beside)"));
     m_viewVideo = new ViewVideoController(*m_document, *m_playback, *m_viewportPanel, *m_files, this);
-    connect(m_viewVideo, &ViewVideoController::message, m_status, &QLabel::setText);
+    connect(m_viewVideo, &ViewVideoController::message, this, &MainWindow::showStatus);
     file->addAction(m_viewVideo->action());
     m_multimodal = new MultimodalExportController(*m_document, *m_graphs, *m_viewportPanel, this);
-    connect(m_multimodal, &MultimodalExportController::message, m_status, &QLabel::setText);
+    connect(m_multimodal, &MultimodalExportController::message, this, &MainWindow::showStatus);
     file->addAction(m_multimodal->action());
     file->addSeparator();
     auto* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
@@ -341,10 +356,22 @@ void MainWindow::connectDocument()
     connect(m_design, &DesignController::designed, this, &MainWindow::refreshBoundaries);
     connect(m_viewportPanel, &ViewportPanel::partPicked, m_graphs, &widgets::GraphPanel::selectPart);
     connect(m_viewportPanel, &ViewportPanel::bonePicked, this, [this](int slot, const QString& joint, const QString& part) {
-        m_status->setText(part.isEmpty() ? tr("Bone %1 of take %2").arg(joint, slot == 0 ? QStringLiteral("A") : QStringLiteral("B"))
+        showStatus(part.isEmpty() ? tr("Bone %1 of take %2").arg(joint, slot == 0 ? QStringLiteral("A") : QStringLiteral("B"))
                                          : tr("Bone %1 of take %2 (drives the %3)").arg(joint, slot == 0 ? QStringLiteral("A") : QStringLiteral("B"), part));
     });
 }
+
+void MainWindow::showStatus(const QString& message)
+{
+    m_transientStatus = message;
+    m_status->setText(message);
+    m_status->setToolTip(m_status->shownText() == message ? QString() : message);
+    m_statusTimer->start();
+}
+
+int MainWindow::statusTimeout() const { return m_statusTimer->interval(); }
+
+void MainWindow::setStatusClock(widgets::Clock* clock) { m_statusTimer->setClock(clock); }
 
 void MainWindow::refreshEntries()
 {
@@ -395,6 +422,14 @@ void MainWindow::updateTitle()
     if (!m_document->selectedId(TakeSlot::B).isEmpty())
         shown += tr(" vs ") + m_document->takeLabel(m_document->selectedId(TakeSlot::B));
     setWindowTitle(tr("%1 - %2 [*] - Bunraku Motion Workbench").arg(source.isEmpty() ? tr("no corpus") : source, shown));
+    // A long derived take's name is elided here (in full in the tool tip and the title).
+    const auto named = [this](TakeSlot slot) {
+        return fontMetrics().elidedText(m_document->takeLabel(m_document->selectedId(slot)), Qt::ElideRight, 320);
+    };
+    QString takes = tr("A: %1").arg(named(TakeSlot::A));
+    if (!m_document->selectedId(TakeSlot::B).isEmpty()) takes += QStringLiteral("   ") + tr("B: %1").arg(named(TakeSlot::B));
+    m_shownTakes->setText(takes);
+    m_shownTakes->setToolTip(tr("The takes the 3D view, the graphs and the inspector show: %1").arg(shown));
     setWindowModified(!m_document->undoStack()->isClean());
 }
 
@@ -450,10 +485,10 @@ bool MainWindow::exportReport(const QString& file)
 {
     const auto status = m_analysis->exportReport(std::filesystem::path(file.toStdString()));
     if (!status) {
-        m_status->setText(tr("Cannot export the report: %1").arg(QString::fromStdString(status.error().message)));
+        showStatus(tr("Cannot export the report: %1").arg(QString::fromStdString(status.error().message)));
         return false;
     }
-    m_status->setText(tr("Wrote the report %1").arg(file));
+    showStatus(tr("Wrote the report %1").arg(file));
     return true;
 }
 
@@ -471,10 +506,10 @@ bool MainWindow::saveScreenshot(const QString& file, QWidget* widget)
 {
     const QPixmap image = (widget ? widget : this)->grab();
     if (const auto saved = saveImageAtomically(image.toImage(), file); !saved) {
-        m_status->setText(tr("Cannot write the screenshot %1").arg(QString::fromStdString(saved.error().message)));
+        showStatus(tr("Cannot write the screenshot %1").arg(QString::fromStdString(saved.error().message)));
         return false;
     }
-    m_status->setText(tr("Saved screenshot %1").arg(file));
+    showStatus(tr("Saved screenshot %1").arg(file));
     return true;
 }
 

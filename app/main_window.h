@@ -18,7 +18,10 @@ class QLabel;
 class QProgressBar;
 
 namespace bunraku::widgets {
+class Clock;
+class ClockTimer;
 class CorpusBrowser;
+class ElidedLabel;
 class GraphPanel;
 class InspectorWidget;
 class TimelineWidget;
@@ -72,6 +75,21 @@ public:
     void saveLayout() const;
     /// The status bar's text of the analysis stages (running stages with their progress).
     QString stageStatusText() const;
+    /// The status bar's names of the takes shown: "A: greeting/friendly/2", then
+    /// "  B: ..." when B is shown; kept current as takes are chosen or renamed.
+    QLabel* shownTakesLabel() const { return m_shownTakes; }
+    /// The status bar's message line: one message at a time, a newer one replacing it; an
+    /// action's message goes after statusTimeout() (a stage's failure stays until the stage runs
+    /// again). Cut with an ellipsis at the window's edge, whole in its tool tip.
+    widgets::ElidedLabel* statusLine() const { return m_status; }
+    /// Shows an action's message (export, screenshot, a clamped value...) until the next one or
+    /// the time out.
+    void showStatus(const QString& message);
+    /// Milliseconds an action's message stays.
+    int statusTimeout() const;
+    /// The clock the message's time-out runs on (the steady clock by default; tests inject a
+    /// widgets::ManualClock).
+    void setStatusClock(widgets::Clock* clock);
     /// File > Export Report: the analysis report of the open corpus (HTML) written to `file`;
     /// false (and a status message) on error.
     bool exportReport(const QString& file);
@@ -130,8 +148,11 @@ private:
     QByteArray m_defaultState;
     QMenu* m_viewMenu = nullptr;
     QProgressBar* m_progress = nullptr;
-    QLabel* m_status = nullptr;
+    widgets::ElidedLabel* m_status = nullptr;
+    widgets::ClockTimer* m_statusTimer = nullptr;
+    QString m_transientStatus; ///< the action's message the timer clears (not a stage failure)
     QLabel* m_stages = nullptr;
+    QLabel* m_shownTakes = nullptr;
     SideColumns* m_columns = nullptr;
     std::map<int, QString> m_failures; ///< per analysis slot: its failure shown in the status bar
 };

@@ -185,12 +185,11 @@ void NewCorpusDialog::addInputs(const QStringList& paths)
     }
     m_filling = false;
     if (m_output->text().isEmpty() && !m_files.empty()) {
-        // In the folder corpora were last opened or made in, else beside the files (where shared,
-        // read-only data often is).
-        const QString remembered = rememberedPurposeFolder(FilePurpose::Corpus);
-        m_output->setText(remembered.isEmpty()
-                              ? QString::fromStdString((std::filesystem::absolute(m_files.front()).lexically_normal().parent_path() / "corpus").string())
-                              : QDir(remembered).filePath(QStringLiteral("corpus")));
+        // In the folder corpora were last made in, else the workbench's own: never beside the
+        // files (the person's data folder, often shared and read-only).
+        const QString remembered = rememberedPurposeFolder(FilePurpose::NewCorpus);
+        m_output->setText(unusedFolder(remembered.isEmpty() ? workbenchFolder(FilePurpose::NewCorpus) : remembered,
+                                       QStringLiteral("corpus")));
     }
     relabel();
     remap();

@@ -62,8 +62,9 @@ NormalisePanel::NormalisePanel(Document& document, AnalysisController& analysis,
     m_reference->setObjectName("normaliseReference");
     m_tau = new widgets::BoundedSpinBox(this);
     m_tau->setObjectName("normaliseTau");
-    // The limits every parameter is validated against (projects, the command line): the panel can
-    // show every valid value.
+    // The limits the analysis accepts (stage_parameters.h, the one table the command line and
+    // project files use too): a control at its maximum gives a value the stages run with. The
+    // largest scale is also bounded by the corpus's shortest take (refreshControls).
     m_tau->setRange(0, analysis::pipeline::kMaxTau);
     m_tau->setSuffix(tr(" frames"));
     m_band = new widgets::BoundedSpinBox(this);
@@ -234,6 +235,8 @@ void NormalisePanel::refreshControls()
             m_reference->addItem(tr("take %1").arg(take->labels.takeIndex), QString::number(take->labels.takeIndex));
         m_reference->setCurrentIndex(std::max(0, m_reference->findData(referenceData(parameters.referenceFor(function, emotion)))));
     }
+    // Scales past the shortest take's largest scale do not fit it: the analysis refuses them.
+    m_scales->setLimits(1, pl::usableMaxScale(m_document.corpus()));
     m_tau->setValue(parameters.tau);
     m_band->setValue(parameters.searchBand);
     m_scales->setValue(parameters.maxScale);

@@ -8,6 +8,7 @@
 #include "app/main_window.h"
 #include "app/screenshot_run.h"
 #include "app/viewport_panel.h"
+#include "app/window_placement.h"
 #include "render/scene.h"
 
 #include <QApplication>
@@ -130,8 +131,8 @@ int runWorkbench(int argc, char** argv)
         std::fprintf(stderr, "bunraku-workbench: %s\n", qPrintable(error));
         return 1;
     }
-    if (size.isValid()) window.resize(size);
-    window.show();
+    // Inside the available screen area, whatever --window-size asks for.
+    showInsideScreen(window, size);
     if (!raiseRequestedDock(window, parser, optionError)) {
         std::fprintf(stderr, "bunraku-workbench: %s\n", qPrintable(optionError));
         return 2;

@@ -3,6 +3,7 @@
 #include "analysis/body/body_pose.h"
 #include "analysis/core/skeleton_take.h"
 #include "analysis/skeleton/puppet_rig_fit.h"
+#include "analysis/io/take_csv.h"
 #include "analysis/io/take_reader.h"
 #include "render/puppet_geometry.h"
 #include "render/skeleton_geometry.h"
@@ -98,12 +99,12 @@ std::string takeExportNote(const analysis::Take& take, const std::filesystem::pa
 }
 
 analysis::Status exportTake(const analysis::Take& take, const analysis::BodyDescription& body, const std::filesystem::path& file,
-                            const std::string& name)
+                            const std::string& name, const std::string& description)
 {
     // One motion: every format holds the body's (analysis::bodyTake), as the view and graphs show it.
     const analysis::Take shown = analysis::bodyTake(take);
     switch (takeExportFormat(file)) {
-    case TakeExportFormat::Csv:
+    case TakeExportFormat::Csv: return analysis::io::writeTakeCsv(shown, file, description);
     case TakeExportFormat::Bvh: return analysis::io::writeTakeFile(shown, file);
     case TakeExportFormat::Glb: {
         if (auto valid = analysis::validateTake(shown); !valid)
@@ -121,6 +122,7 @@ analysis::Status exportTake(const analysis::Take& take, const analysis::BodyDesc
         }
         analysis::io::GltfExportOptions options;
         options.name = name.empty() ? shown.displayName() : name;
+        options.description = description;
         return analysis::io::writeSkeletalGlb(*rig.motion, shown.rateHz, rig.meshes, file, options);
     }
     case TakeExportFormat::Unknown: break;

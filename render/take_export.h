@@ -48,9 +48,12 @@ analysis::Result<ExportRig> puppetRig(const analysis::BodyDescription& body, con
 std::string takeExportNote(const analysis::Take& take, const std::filesystem::path& file, const analysis::Take* perChannel = nullptr);
 
 /// Writes the take by extension (atomic); the error names the file. `name` names a .glb's
-/// animation and scene (the workbench passes the take's label as listed); empty: the take's
-/// displayName().
+/// animation, scene and mesh: short and stable (the workbench passes the take's name, e.g.
+/// "bow designed"); empty: the take's displayName(). `description` (a derived take's recipe)
+/// is kept in the file's metadata where its reader allows: a .glb's scene and animation
+/// `extras.description`, a .csv's `#` comment lines; a .bvh has none (the BVH reader takes no
+/// comments).
 analysis::Status exportTake(const analysis::Take& take, const analysis::BodyDescription& body, const std::filesystem::path& file,
-                            const std::string& name = {});
+                            const std::string& name = {}, const std::string& description = {});
 
 } // namespace bunraku::render

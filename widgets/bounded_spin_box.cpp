@@ -39,6 +39,12 @@ QString BoundedSpinBox::limitsText() const
     return tr("From %1 to %2%3.").arg(minimum()).arg(maximum()).arg(suffix());
 }
 
+void BoundedSpinBox::setLimits(int minimum, int maximum)
+{
+    setRange(minimum, maximum);
+    updateToolTip();
+}
+
 void BoundedSpinBox::updateToolTip()
 {
     setToolTip(m_description.isEmpty() ? limitsText() : m_description + QLatin1Char(' ') + limitsText());

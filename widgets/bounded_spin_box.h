@@ -21,6 +21,8 @@ public:
     QString description() const { return m_description; }
     /// The limits as the tool tip states them: "From 1 to 60 frames."
     QString limitsText() const;
+    /// setRange, the tool tip following (limits that depend on the data: a corpus's takes).
+    void setLimits(int minimum, int maximum);
 
 signals:
     /// A typed value outside the limits was replaced by the nearest limit.

@@ -274,6 +274,8 @@ Result<std::string> skeletalMotionToGlb(const SkeletalMotion& motion, double rat
         }
         addChannel(nodeOf[j], "translation", translations, TINYGLTF_TYPE_VEC3);
     }
+    if (!options.description.empty())
+        animation.extras = tinygltf::Value(tinygltf::Value::Object{{"description", tinygltf::Value(options.description)}});
     model.animations.push_back(animation);
     buffer.finish();
 
@@ -282,6 +284,8 @@ Result<std::string> skeletalMotionToGlb(const SkeletalMotion& motion, double rat
     for (std::size_t j = 0; j < slots; ++j)
         if (nodeOf[j] >= 0 && skeleton.joints[j].parent < 0) scene.nodes.push_back(nodeOf[j]);
     scene.nodes.push_back(meshNodeIndex);
+    if (!options.description.empty())
+        scene.extras = tinygltf::Value(tinygltf::Value::Object{{"description", tinygltf::Value(options.description)}});
     model.scenes.push_back(scene);
     model.defaultScene = 0;
 

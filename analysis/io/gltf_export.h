@@ -28,7 +28,11 @@ struct JointMesh {
 };
 
 struct GltfExportOptions {
-    std::string name = "take";  ///< the animation's and the scene's name
+    /// The animation's, the scene's and the mesh's name: short (Blender cuts names at 63 bytes).
+    std::string name = "take";
+    /// How the take was made (a derived take's recipe), kept as `extras.description` of the scene
+    /// and the animation; none when empty.
+    std::string description;
     std::string generator = "Bunraku Motion Workbench";
 };
 

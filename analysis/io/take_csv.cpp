@@ -251,9 +251,19 @@ Result<Take> readTakeCsv(const std::filesystem::path& file, const TakeCsvOptions
     return parseTakeCsv(*text, file.string(), options);
 }
 
-std::string formatTakeCsv(const Take& take)
+std::string formatTakeCsv(const Take& take, const std::string& comment)
 {
-    std::string out = "time_s";
+    std::string out;
+    if (!comment.empty()) {
+        std::size_t start = 0;
+        while (start <= comment.size()) {
+            const std::size_t end = std::min(comment.find_first_of("\r\n", start), comment.size());
+            out += "# " + comment.substr(start, end - start) + "\n";
+            start = end + 1;
+            if (end < comment.size() && comment[end] == '\r' && start < comment.size() && comment[start] == '\n') ++start;
+        }
+    }
+    out += "time_s";
     for (const auto& channel : take.channels) {
         out += ',';
         appendHeaderName(out, channel.name());
@@ -270,14 +280,14 @@ std::string formatTakeCsv(const Take& take)
     return out;
 }
 
-Status writeTakeCsv(const Take& take, const std::filesystem::path& file)
+Status writeTakeCsv(const Take& take, const std::filesystem::path& file, const std::string& comment)
 {
     if (auto valid = validateTake(take); !valid) return makeError(valid.error().code, file.string() + ": " + valid.error().message);
     for (const auto& channel : take.channels)
         if (channel.name().find_first_of("\r\n") != std::string::npos)
             return makeError(ErrorCode::InvalidArgument, file.string() + ": channel " + detail::quoted(channel.name()) +
                                                              " has a line break in its name, which CSV cannot hold");
-    return writeFileAtomically(file, formatTakeCsv(take));
+    return writeFileAtomically(file, formatTakeCsv(take, comment));
 }
 
 } // namespace bunraku::analysis::io

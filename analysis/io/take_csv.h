@@ -33,8 +33,10 @@ Result<Take> readTakeCsv(const std::filesystem::path& file, const TakeCsvOptions
 /// Parses CSV text; `sourceName` is used in error messages.
 Result<Take> parseTakeCsv(const std::string& text, const std::string& sourceName, const TakeCsvOptions& options = {});
 /// CSV text of a take: header `time_s,part.dof,...`, one row per frame, full double precision.
-std::string formatTakeCsv(const Take& take);
+/// `comment` (e.g. how a derived take was made), when not empty, opens the file as `#` lines,
+/// one per line of it: the reader skips them.
+std::string formatTakeCsv(const Take& take, const std::string& comment = {});
 /// Writes the take atomically; rejects non-finite values (validateTake) before writing anything.
-Status writeTakeCsv(const Take& take, const std::filesystem::path& file);
+Status writeTakeCsv(const Take& take, const std::filesystem::path& file, const std::string& comment = {});
 
 } // namespace bunraku::analysis::io

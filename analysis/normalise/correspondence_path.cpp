@@ -42,7 +42,7 @@ PathBuilder::PathBuilder(int searchBand, Eigen::Index referenceFrames, Eigen::In
       m_optimal(method == PathMethod::Optimal)
 {
     const bool optimal = m_optimal;
-    assert(searchBand >= 0 && searchBand <= 16000);
+    assert(searchBand >= 0 && searchBand <= kMaxSearchBand);
     const std::size_t width = std::size_t(2 * searchBand + 1);
     if (optimal) {
         m_segment = detail::dpSegment(width);

@@ -201,9 +201,9 @@ Result<MatchResult> matchSelected(const Features& reference, const Features& sam
                                   const FeatureMatchOptions& options, const RunControl& control)
 {
     if (options.tau < 0) return makeError(ErrorCode::InvalidArgument, "matching: tau must be >= 0, got " + std::to_string(options.tau));
-    if (options.searchBand < 0 || options.searchBand > 16000)
-        return makeError(ErrorCode::InvalidArgument,
-                         "matching: the search band T_cmp must be in 0..16000 frames, got " + std::to_string(options.searchBand));
+    if (options.searchBand < 0 || options.searchBand > kMaxSearchBand)
+        return makeError(ErrorCode::InvalidArgument, "matching: the search band T_cmp must be in 0.." + std::to_string(kMaxSearchBand)
+                                                         + " frames, got " + std::to_string(options.searchBand));
     if (reference.rows() == 0 || sample.rows() == 0) return makeError(ErrorCode::InvalidArgument, "matching: a take has no frames");
     if (reference.cols() == 0 || reference.cols() != sample.cols())
         return makeError(ErrorCode::InvalidArgument, "matching: reference and sample must have the same (non-zero) number of features, got "

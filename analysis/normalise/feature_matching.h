@@ -31,7 +31,7 @@ struct FeatureMatchOptions {
 
 /// Window indices beyond either end replicate the edge frame (the thesis leaves the ends
 /// open; replicating keeps every window full without inventing motion). InvalidArgument for
-/// tau < 0, searchBand < 0 or > 16000, empty or mismatched features, a reference longer than
+/// tau < 0, searchBand outside 0..kMaxSearchBand, empty or mismatched features, a reference longer than
 /// the sample plus the band (no admissible path); Cancelled via control.
 Result<MatchResult> matchFeatures(const FeatureMatrix& reference, const FeatureMatrix& sample,
                                   const FeatureMatchOptions& options, const RunControl& control = {});

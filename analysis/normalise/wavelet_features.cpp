@@ -12,8 +12,9 @@ namespace bunraku::analysis {
 Status validateMatchOptions(const MatchOptions& options, Eigen::Index referenceFrames, Eigen::Index sampleFrames)
 {
     if (options.tau < 0) return makeError(ErrorCode::InvalidArgument, "matching: tau must be >= 0, got " + std::to_string(options.tau));
-    if (options.searchBand < 0)
-        return makeError(ErrorCode::InvalidArgument, "matching: the search band T_cmp must be >= 0, got " + std::to_string(options.searchBand));
+    if (options.searchBand < 0 || options.searchBand > kMaxSearchBand)
+        return makeError(ErrorCode::InvalidArgument, "matching: the search band T_cmp must be in 0.." + std::to_string(kMaxSearchBand)
+                                                         + " frames, got " + std::to_string(options.searchBand));
     if (options.scales.empty()) return makeError(ErrorCode::InvalidArgument, "matching: no wavelet scales given");
     if (!(options.approximationWeight >= 0.0) || !std::isfinite(options.approximationWeight)) {
         std::ostringstream message;

@@ -50,6 +50,11 @@ enum class TimeScaling {
     Global,
 };
 
+/// The largest search band T_cmp the matcher takes, frames: the band's width 2 T_cmp + 1 sizes
+/// every row of costs and back-pointers. The one limit of T_cmp: the pipeline's parameters, the
+/// workbench's controls and the command line's options take it from here.
+inline constexpr int kMaxSearchBand = 16000;
+
 /// TimeScaling::Auto scales when |N_ref - N_smp| > kAutoScalingBand * T_cmp.
 inline constexpr double kAutoScalingBand = 0.5;
 
@@ -90,7 +95,7 @@ MatchResult unscaledMatch(MatchResult match, double scale, Eigen::Index sampleFr
 /// in the same order; the frame counts may differ by any amount: see TimeScaling), all
 /// channels sharing one correspondence.
 /// Window indices beyond either end replicate the edge frame. InvalidArgument for tau < 0,
-/// searchBand < 0, empty scales, a scale whose filter is longer than either signal
+/// searchBand outside 0..kMaxSearchBand, empty scales, a scale whose filter is longer than either signal
 /// (largestScale), channel counts that differ, NaN; Cancelled via control.
 Result<MatchResult> matchChannels(const Eigen::MatrixXd& reference, const Eigen::MatrixXd& sample,
                                   const MatchOptions& options = {}, const RunControl& control = {});

@@ -1,6 +1,8 @@
 #include "analysis/pipeline/stage_parameters.h"
 
 #include "analysis/decompose/emotion_weight.h"
+#include "analysis/decompose/km2o.h"
+#include "analysis/wavelet/cwt.h"
 #include "analysis/normalise/coupling.h"
 
 #include <algorithm>
@@ -130,6 +132,32 @@ bool DesignEdits::operator==(const DesignEdits& other) const
     const bool sameWarp = warp.has_value() == other.warp.has_value() &&
                           (!warp || (warp->points == other.warp->points && warp->outputFrames == other.warp->outputFrames));
     return emotionWeight == other.emotionWeight && sameWarp && gains == other.gains && boundaries == other.boundaries;
+}
+
+namespace {
+
+/// Frames of the shortest take of `corpus`, none without takes.
+std::optional<Eigen::Index> shortestTake(const Corpus& corpus)
+{
+    std::optional<Eigen::Index> frames;
+    for (const Take& take : corpus.takes) frames = std::min(frames.value_or(take.frameCount()), take.frameCount());
+    return frames;
+}
+
+} // namespace
+
+int usableMaxScale(const Corpus& corpus)
+{
+    const auto frames = shortestTake(corpus);
+    if (!frames) return kMaxScale;
+    return std::clamp(largestScale(CwtOptions{}.wavelet, *frames), 1, kMaxScale);
+}
+
+int usableCorrelationLength(const Corpus& corpus)
+{
+    const auto frames = shortestTake(corpus);
+    if (!frames) return kMaxCorrelationLength;
+    return std::clamp(maxCorrelationLength(*frames), 0, kMaxCorrelationLength);
 }
 
 Status validate(const PreprocessParameters& p)

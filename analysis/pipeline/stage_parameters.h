@@ -8,6 +8,7 @@
 /// design / emotion weight (4.5, 5.5).
 
 #include "analysis/axis/inertia_axis.h"
+#include "analysis/core/corpus.h"
 #include "analysis/core/result.h"
 #include "analysis/design/motion_design.h"
 #include "analysis/design/warp_curve.h"
@@ -175,9 +176,12 @@ struct ChainParameters {
 };
 
 // Limits checked by validation (and by the project file and command line before anything is
-// allocated from a value).
+// allocated from a value): the one table of them. Each is one the analysis accepts all the way
+// down (a control or option at its maximum gives a value the stages run with); the workbench's
+// spin boxes and the command line's options take their ranges from here.
 inline constexpr int kMaxTau = 200;
-inline constexpr int kMaxSearchBand = 100000;
+/// T_cmp: the matcher's own limit (analysis/normalise/wavelet_matching.h).
+inline constexpr int kMaxSearchBand = analysis::kMaxSearchBand;
 inline constexpr int kMaxScale = 256;
 inline constexpr int kMaxTakeIndex = 1000000;
 inline constexpr int kMaxCorrelationLength = 1000;
@@ -195,6 +199,16 @@ inline constexpr std::size_t kMaxGainEdits = 100000;
 /// Frames a warp may reach (output and source): 10^8 frames, over 5 hours at 5 kHz.
 inline constexpr double kMaxWarpFrame = 1e8;
 inline constexpr double kMaxGain = 1e6;
+
+/// The largest NormaliseParameters::maxScale the normalisation accepts on `corpus`: the largest
+/// scale whose wavelet (sym3) fits its shortest take (thesis 5.3.2: 21 for 106 frames), at most
+/// kMaxScale; kMaxScale for a corpus without takes. Takes are matched at their length or
+/// longer (padding, a global time scale to the reference's length), so every scale up to it fits.
+int usableMaxScale(const Corpus& corpus);
+/// The largest DecomposeParameters::correlationLength KM2O accepts on `corpus`: M_max of its
+/// shortest take (thesis eq. 4.30: floor(3 sqrt(T + 1)) - 1), at most kMaxCorrelationLength;
+/// kMaxCorrelationLength for a corpus without takes.
+int usableCorrelationLength(const Corpus& corpus);
 
 /// InvalidArgument naming the parameter ("normalise.maxScale"), its range and the value.
 Status validate(const PreprocessParameters& parameters);

@@ -14,6 +14,7 @@
 #include "analysis/io/corpus_io.h"
 #include "analysis/io/take_csv.h"
 #include "analysis/io/take_reader.h"
+#include "analysis/pipeline/stage_parameters.h"
 #include "analysis/synth/demo_corpus.h"
 #include "analysis/synth/demo_corpus_io.h"
 
@@ -27,6 +28,7 @@ namespace bunraku::app::cli {
 namespace {
 
 namespace an = bunraku::analysis;
+namespace pl = bunraku::analysis::pipeline;
 
 /// Options every chapter-5 command shares: which body and how its axis x is chosen.
 struct AxisArguments {
@@ -43,7 +45,7 @@ void addAxisOptions(CLI::App* command, AxisArguments& arguments)
                         "Axis x: 'shoulder' (the shoulder's facing, default) or 'principal' (thesis-literal principal axis)")
         ->check(CLI::IsMember({"shoulder", "principal"}));
     command->add_option("--spacing", arguments.spacing, "Mass point lattice step, cm (default 1)")
-        ->check(CLI::PositiveNumber);
+        ->check(CLI::Range(pl::kMinMassSpacing, pl::kMaxMassSpacing));
 }
 
 an::AxisOptions axisOptions(const AxisArguments& arguments)
@@ -135,11 +137,13 @@ struct PhaseArguments {
 
 void addPhaseOptions(CLI::App* command, PhaseArguments& arguments)
 {
-    command->add_option("--tau", arguments.tau, "Half window tau, frames (default 4)")->check(CLI::NonNegativeNumber);
-    command->add_option("--tcmp", arguments.tcmp, "Search band T_cmp, frames (default 30)")->check(CLI::NonNegativeNumber);
-    command->add_option("--max-scale", arguments.maxScale, "Scales 1..N (default 16)")->check(CLI::PositiveNumber);
+    // Ranges from the analysis's table of limits (stage_parameters.h), stated by --help.
+    command->add_option("--tau", arguments.tau, "Half window tau, frames (default 4)")->check(CLI::Range(0, pl::kMaxTau));
+    command->add_option("--tcmp", arguments.tcmp, "Search band T_cmp, frames (default 30)")
+        ->check(CLI::Range(0, pl::kMaxSearchBand));
+    command->add_option("--max-scale", arguments.maxScale, "Scales 1..N (default 16)")->check(CLI::Range(1, pl::kMaxScale));
     command->add_option("--weight", arguments.approximationWeight, "Approximation weight M (default 8)")
-        ->check(CLI::NonNegativeNumber);
+        ->check(CLI::Range(0.0, pl::kMaxApproximationWeight));
     command->add_option("--path", arguments.path, "greedy (thesis, default) or optimal")
         ->check(CLI::IsMember({"greedy", "optimal"}));
     command->add_option("--weighting", arguments.weighting, "none (thesis, default) or standardise")
@@ -149,7 +153,7 @@ void addPhaseOptions(CLI::App* command, PhaseArguments& arguments)
                         "or none (eq. 5.16 read literally)")
         ->check(CLI::IsMember({"none", "first-frame"}));
     command->add_option("--control-spacing", arguments.spacing, "Frames between warp control points (default 8)")
-        ->check(CLI::PositiveNumber);
+        ->check(CLI::Range(1, pl::kMaxControlSpacing));
     command->add_option("--time-scale", arguments.timeScale,
                         "Takes of other lengths: auto (default: a global time scale first when the lengths differ by more "
                         "than half of T_cmp), global (always) or none (the band alone)")

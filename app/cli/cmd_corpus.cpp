@@ -103,7 +103,7 @@ void addCorpusCommands(CommandSet& commands)
         ->capture_default_str();
     command->add_option("--neutral", arguments->neutral, "The emotion label meaning 'no emotion' (default: neutral, normal or none)");
     command->add_option("--name", arguments->name, "The corpus's name (default: the output folder's name)");
-    command->add_option("--resample", arguments->resampleHz, "Rate of the corpus in Hz (default: the rate most files have)");
+    command->add_option("--resample", arguments->resampleHz, "Rate of the corpus in Hz, in (0, 1000000] (default: the rate most files have)");
     command->add_flag("--json", arguments->json, "Print a machine-readable summary");
     addImportOptions(command, arguments->import);
     command->callback([arguments] { runCorpus(*arguments); });

@@ -542,7 +542,10 @@ void addChainOptions(CLI::App* command, ChainArgs& args)
         ->check(CLI::IsMember({"normalised", "preprocessed"}));
     command->add_option("--method", args.method, "km2o (KM2O-Langevin, 4.4.4; default) or ls (least squares, 4.3.1)")
         ->check(CLI::IsMember({"ls", "km2o"}));
-    command->add_option("--M", args.correlationLength, "KM2O correlation length M (1..M_max); default: chosen by P (4.4.4)");
+    command->add_option("--M", args.correlationLength,
+                        "KM2O correlation length M, at most M_max = floor(3 sqrt(T + 1)) - 1 for takes of T + 1 frames; "
+                        "0 or not given: chosen by P (4.4.4)")
+        ->check(CLI::Range(0, analysis::pipeline::kMaxCorrelationLength));
     command->add_flag("--no-preprocess", args.noPreprocess,
                       "Skip thesis 2.2's padding and alignments (angles are still unwrapped), as `bunraku normalise "
                       "--no-preprocess`");
@@ -567,10 +570,10 @@ void addDecompositionCommands(CommandSet& commands)
     dec->add_option("--arma-search", decomposeArgs->armaSearch, "ARMA orders tried per take: equal ((n,n)) or all ((p,q))")
         ->check(CLI::IsMember({"equal", "all"}));
     dec->add_option("--arma-max-order", decomposeArgs->armaMaxOrder, "Largest ARMA order for FPE selection")
-        ->check(CLI::Range(0, 4));
+        ->check(CLI::Range(0, analysis::pipeline::kMaxArmaOrder));
     dec->add_option("--arma-table", decomposeArgs->armaTableOrder, "ARMA(p,q) averaged per cell (Table 4.1), each 0..4")
         ->expected(2)
-        ->check(CLI::Range(0, 4));
+        ->check(CLI::Range(0, analysis::pipeline::kMaxArmaOrder));
     dec->add_flag("--json", decomposeArgs->json, "Print a JSON summary");
     dec->callback([decomposeArgs] { runDecompose(*decomposeArgs); });
 
@@ -581,7 +584,9 @@ void addDecompositionCommands(CommandSet& commands)
     addChainOptions(emo, emotionArgs->chain);
     emo->add_option("--function", emotionArgs->function, "Function label, e.g. greeting")->required();
     emo->add_option("--emotion", emotionArgs->emotion, "Emotion label, e.g. friendly")->required();
-    emo->add_option("--weight", emotionArgs->weight, "Emotion weight a in [0, 3] (1 = as performed)")->required();
+    emo->add_option("--weight", emotionArgs->weight, "Emotion weight a (1 = as performed)")
+        ->check(CLI::Range(analysis::kMinEmotionWeight, analysis::kMaxEmotionWeight))
+        ->required();
     emo->add_option("-o,--output", emotionArgs->output, "Output take (.bvh, .glb or .csv): the weighted body's motion")
         ->required()
         ->type_name("FILE");

@@ -10,6 +10,7 @@
 #include "analysis/io/corpus_io.h"
 #include "analysis/io/take_reader.h"
 #include "analysis/io/text_format.h"
+#include "analysis/pipeline/stage_parameters.h"
 #include "analysis/preprocess/preprocess.h"
 #include "analysis/skeleton/puppet_rig_fit.h"
 #include "analysis/synth/demo_corpus_io.h"
@@ -487,7 +488,7 @@ void addIoCommands(CommandSet& commands)
             ->check(CLI::IsMember({"onset", "xcorr"}))
             ->capture_default_str();
         preprocess->add_option("--reference-take", arguments->referenceTake, "Take index of each cell's time reference; 0 = automatic (median onset among the longest takes)")
-            ->check(CLI::Range(0, 1000000))
+            ->check(CLI::Range(0, analysis::pipeline::kMaxTakeIndex))
             ->capture_default_str();
         preprocess->add_option("--max-shift", arguments->maxShift, "Largest shift in frames tried by xcorr")
             ->check(CLI::Range(0, 1000000))

@@ -108,8 +108,13 @@ an::NormaliseOptions normaliseOptions(const MatchArguments& arguments)
 
 void addMatchOptions(CLI::App* command, MatchArguments& arguments)
 {
-    command->add_option("--tau", arguments.tau, "Half window tau, frames (thesis 3.5.2)")->capture_default_str();
-    command->add_option("--tcmp", arguments.tcmp, "Search band T_cmp, frames (thesis 3.5.1)")->capture_default_str();
+    // Ranges from the analysis's table of limits (stage_parameters.h), stated by --help.
+    command->add_option("--tau", arguments.tau, "Half window tau, frames (thesis 3.5.2)")
+        ->check(CLI::Range(0, pl::kMaxTau))
+        ->capture_default_str();
+    command->add_option("--tcmp", arguments.tcmp, "Search band T_cmp, frames (thesis 3.5.1)")
+        ->check(CLI::Range(0, pl::kMaxSearchBand))
+        ->capture_default_str();
     command->add_option("--scales", arguments.scales, "Wavelet scales: FIRST:LAST, FIRST:STEP:LAST or a comma list")
         ->capture_default_str();
     command->add_option("--coupling", arguments.coupling,
@@ -128,6 +133,7 @@ void addMatchOptions(CLI::App* command, MatchArguments& arguments)
         ->capture_default_str();
     command->add_option("--approximation-weight", arguments.approximationWeight,
                         "Weight M of the approximation term (thesis eq. 5.17; 0 = off)")
+        ->check(CLI::Range(0.0, pl::kMaxApproximationWeight))
         ->capture_default_str();
 }
 
@@ -476,8 +482,10 @@ void addNormalisationCommands(CommandSet& commands)
         command->add_option("--emotion", arguments->emotion, "Emotion label, e.g. none")->required();
         command->add_option("--reference", arguments->reference,
                             "Reference: a take index, or 'average' (thesis 3.7); default the suggested take (3.6.1)");
-        command->add_option("--exclude", arguments->exclude, "Take index left out of the average (e.g. the outlier: 4ave)");
-        command->add_option("--base", arguments->base, "Base take of the average (default the suggested reference)");
+        command->add_option("--exclude", arguments->exclude, "Take index left out of the average (e.g. the outlier: 4ave)")
+            ->check(CLI::Range(1, pl::kMaxTakeIndex));
+        command->add_option("--base", arguments->base, "Base take of the average (0, the default: the suggested reference)")
+            ->check(CLI::Range(0, pl::kMaxTakeIndex));
         command->add_option("-o,--output", arguments->output,
                             "Output folder; or a take file (.bvh, .glb, .csv): the reference alone (the average take with "
                             "--reference average)")

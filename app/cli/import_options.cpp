@@ -27,7 +27,7 @@ void addImportOptions(CLI::App* command, ImportArguments& arguments, bool withLa
         ->capture_default_str();
     if (withLayout)
         command->add_flag("--all-joints", arguments.allJoints, "BVH: keep every joint (6 channels each) instead of the 4 puppet parts");
-    command->add_option("--rate", arguments.rateHz, "Sample rate in Hz (CSV without time_s; FASTRAK, default 5)");
+    command->add_option("--rate", arguments.rateHz, "Sample rate in Hz, in (0, 1000000] (CSV without time_s; FASTRAK, default 5)");
     command->add_option("--fastrak-units", arguments.fastrakUnits, "FASTRAK position unit: cm or in")
         ->check(CLI::IsMember({"cm", "in"}))
         ->capture_default_str();

@@ -8,6 +8,7 @@
 #include "app/normalise_panel.h"
 
 #include "analysis/core/angle_channels.h"
+#include "analysis/decompose/emotion_weight.h"
 #include "tests/support/test_paths.h"
 
 #include "analysis/core/skeleton_take.h"
@@ -15,6 +16,7 @@
 #include <catch2/catch.hpp>
 
 #include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QLabel>
 #include <QPushButton>
 #include <QSlider>
@@ -118,6 +120,57 @@ TEST_CASE("the emotion weight slider re-synthesises y + a z live as one undo ste
     document.undoStack()->undo(); // back to a = 1
     REQUIRE(slider->value() == 100);
     REQUIRE((perChannel()->values - atOne).cwiseAbs().maxCoeff() < 1e-12);
+}
+
+TEST_CASE("the emotion weight has a number field beside its slider: 2 typed is a = 2.00, and its steps are one undo step",
+          "[app][emotion][undo]")
+{
+    // A drag of the slider alone lands on 2.03, never 2.00.
+    auto window = windowWithWeightedFriendlyTake();
+    REQUIRE(window);
+    auto& document = window->document();
+    qint64 now = 0;
+    document.setClock([&now] { return now; });
+    auto* panel = window->emotionPanel();
+    auto* box = panel->weightBox();
+    REQUIRE(box != nullptr);
+    CHECK(box->isVisibleTo(window.get()));
+    // Beside the slider, in its row.
+    const QPoint boxAt = box->mapTo(window.get(), QPoint(0, box->height() / 2));
+    const QPoint sliderAt = panel->weightSlider()->mapTo(window.get(), QPoint(0, panel->weightSlider()->height() / 2));
+    CHECK(std::abs(boxAt.y() - sliderAt.y()) < box->height());
+    CHECK(boxAt.x() > sliderAt.x());
+    CHECK(box->minimum() == analysis::kMinEmotionWeight);
+    CHECK(box->maximum() == analysis::kMaxEmotionWeight);
+    CHECK(box->value() == 1.0);
+
+    // Typed, applied on Enter: exactly 2, one undo step, the slider follows.
+    box->setFocus();
+    box->selectAll();
+    QTest::keyClicks(box, QStringLiteral("2"));
+    QTest::keyClick(box, Qt::Key_Return);
+    CHECK(document.parameters().design.emotionWeight == 2.0);
+    CHECK(panel->weightSlider()->value() == 200);
+    CHECK(document.undoStack()->count() == 1);
+    REQUIRE(QTest::qWaitFor([&] { return panel->weightedTake() && panel->statusText().contains(QStringLiteral("a = 2.00")); }, 60000));
+
+    // Arrow steps in one series merge into one undo step, as the Normalisation dock's boxes do.
+    for (int step = 0; step < 4; ++step) {
+        QTest::keyClick(box, Qt::Key_Down);
+        now += 100;
+    }
+    CHECK(document.parameters().design.emotionWeight == Approx(1.8));
+    CHECK(document.undoStack()->count() == 2);
+    document.undoStack()->undo();
+    CHECK(document.parameters().design.emotionWeight == 2.0);
+    CHECK(box->value() == 2.0);
+    CHECK(panel->weightSlider()->value() == 200);
+    document.undoStack()->undo();
+    CHECK(box->value() == 1.0);
+    CHECK(panel->weightSlider()->value() == 100);
+    // The slider moved shows in the box.
+    panel->weightSlider()->setValue(150);
+    CHECK(box->value() == 1.5);
 }
 
 TEST_CASE("Show weighted as A shows the weighted take, which follows the weight while shown", "[app][emotion]")

@@ -5,6 +5,7 @@
 
 #include "app/design_controller.h"
 #include "app/export_controller.h"
+#include "app/file_dialogs.h"
 #include "app/viewport_panel.h"
 #include "analysis/core/skeleton.h"
 #include "analysis/io/bvh.h"
@@ -26,8 +27,12 @@
 #include <QTest>
 
 #include <algorithm>
+#include <cstdint>
+#include <cstring>
 #include <fstream>
 #include <iterator>
+
+#include <nlohmann/json.hpp>
 
 using namespace bunraku;
 using app::TakeSlot;
@@ -51,7 +56,67 @@ bool showBandaiTakes(app::MainWindow& window)
     return true;
 }
 
+/// The JSON chunk of a .glb (glTF 2.0 binary: a 12-byte header, then the JSON chunk).
+nlohmann::json glbJson(const std::filesystem::path& file)
+{
+    const std::string bytes = bunraku::test::fileBytes(file);
+    if (bytes.size() < 20 || bytes.compare(0, 4, "glTF") != 0 || bytes.compare(16, 4, "JSON") != 0) return {};
+    std::uint32_t length = 0;
+    std::memcpy(&length, bytes.data() + 12, 4);
+    return nlohmann::json::parse(bytes.substr(20, length));
+}
+
 } // namespace
+
+TEST_CASE("an exported designed take is named short and stable, its recipe kept in the file's metadata", "[app][export][design]")
+{
+    // The .glb's mesh and animation were a 63-character cut of the recipe ("designed from bow
+    // functional (warp: 15 of 18 points moved; 20 p"), and so was the suggested file name.
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    REQUIRE(QTest::qWaitFor([&] { return window->design().designedTake() && !window->analysis().scheduler().busy(); }, 120000));
+    auto& document = window->document();
+    document.selectTake(TakeSlot::A, QStringLiteral("live/designed"));
+    const QString recipe = document.takeLabel(QStringLiteral("live/designed"));
+    const QString name = document.takeName(QStringLiteral("live/designed"));
+    REQUIRE(recipe.startsWith(QStringLiteral("designed from ")));
+    CHECK(recipe.size() > 63);
+    const std::string function = window->design().designedTake()->labels.function;
+    CHECK(name == (function.empty() ? QStringLiteral("designed") : QString::fromStdString(function) + QStringLiteral(" designed")));
+
+    // The suggested file name is the corpus and the take's name.
+    const QString suggested = app::suggestedFileName(document, QStringLiteral(".glb"), app::NameParts::CorpusAndTakeA);
+    CHECK(suggested == QStringLiteral("demo-") + QString(name).replace(QLatin1Char(' '), QLatin1Char('-')) + QStringLiteral(".glb"));
+
+    const auto dir = test::scratchDir("export_names");
+    REQUIRE(window->exports().exportTake(TakeSlot::A, QString::fromStdString((dir / "designed.glb").string())));
+    const auto gltf = glbJson(dir / "designed.glb");
+    REQUIRE(gltf.is_object());
+    REQUIRE(gltf["animations"].size() == 1);
+    CHECK(gltf["animations"][0]["name"] == name.toStdString());
+    CHECK(gltf["scenes"][0]["name"] == name.toStdString());
+    for (const auto& mesh : gltf["meshes"]) CHECK(mesh["name"] == name.toStdString());
+    CHECK(gltf["scenes"][0]["extras"]["description"] == recipe.toStdString());
+    CHECK(gltf["animations"][0]["extras"]["description"] == recipe.toStdString());
+
+    // CSV: the recipe as the comment line the reader skips.
+    REQUIRE(window->exports().exportTake(TakeSlot::A, QString::fromStdString((dir / "designed.csv").string())));
+    const std::string csv = bunraku::test::fileBytes(dir / "designed.csv");
+    CHECK(csv.rfind("# " + recipe.toStdString() + "\n", 0) == 0);
+    auto read = analysis::io::readTakeCsv(dir / "designed.csv");
+    REQUIRE(read.ok());
+    CHECK(read->frameCount() == document.selectedTake(TakeSlot::A)->frameCount());
+    // BVH: its reader takes no comments, so the file holds the motion alone and reads back.
+    REQUIRE(window->exports().exportTake(TakeSlot::A, QString::fromStdString((dir / "designed.bvh").string())));
+    CHECK(analysis::io::readBvh(dir / "designed.bvh").ok());
+
+    // A corpus take: its own name, and no description.
+    document.selectTake(TakeSlot::A, app::Document::corpusTakeId(0));
+    REQUIRE(window->exports().exportTake(TakeSlot::A, QString::fromStdString((dir / "corpus.glb").string())));
+    const auto corpusGltf = glbJson(dir / "corpus.glb");
+    CHECK(corpusGltf["animations"][0]["name"] == document.corpus().takes[0].displayName());
+    CHECK_FALSE(corpusGltf["scenes"][0].contains("extras"));
+}
 
 TEST_CASE("File > Export Take A and B write BVH on the take's skeleton, glTF and CSV", "[app][export]")
 {

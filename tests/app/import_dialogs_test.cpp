@@ -19,6 +19,7 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QDialogButtonBox>
+#include <QFileInfo>
 #include <QLabel>
 #include <QSettings>
 #include <QLineEdit>
@@ -181,6 +182,7 @@ TEST_CASE("new corpus from files: labels from the names, corrected in the table,
 TEST_CASE("files and folders dropped on the new-corpus dialog join its table", "[app][import]")
 {
     test::isolateSettings();
+    QSettings().remove(QStringLiteral("folders"));
     const auto dir = test::scratchDir("app_new_corpus_drop");
     const auto files = writeFixtures(dir, {"walk_happy_1.bvh", "walk_sad_1.bvh"});
     app::NewCorpusDialog dialog;
@@ -195,8 +197,8 @@ TEST_CASE("files and folders dropped on the new-corpus dialog join its table", "
     QCoreApplication::sendEvent(&dialog, &drop);
     REQUIRE(dialog.table()->rowCount() == 2);
     CHECK(dialog.table()->item(1, app::NewCorpusDialog::EmotionColumn)->text() == QStringLiteral("sad"));
-    CHECK(dialog.problem().isEmpty()); // the output folder defaults to "corpus" beside the files
-    CHECK(dialog.outputFolder() == QString::fromStdString((dir / "corpus").string()));
+    CHECK(dialog.problem().isEmpty()); // the output folder defaults to "corpus" in the workbench's own folder
+    CHECK(dialog.outputFolder() == app::unusedFolder(app::workbenchFolder(app::FilePurpose::NewCorpus), QStringLiteral("corpus")));
 }
 
 TEST_CASE("new corpus from files: a file that is not a take keeps the dialog open with all input, and rows are removed with Delete",
@@ -209,10 +211,10 @@ TEST_CASE("new corpus from files: a file that is not a take keeps the dialog ope
     writeFixtures(in, {"walk_happy_1.bvh", "walk_sad_1.bvh"});
     // A text file whose name reads as a take but which holds none (a licence, say).
     const auto notTake = test::writeText(in / "walk_calm_1.txt", "This work is licensed under CC BY-NC 4.0.\n");
-    // Corpora were last opened or made in `corpora`: the new corpus is suggested there.
+    // Corpora were last made in `corpora`: the new corpus is suggested there.
     const auto corpora = dir / "corpora";
     fs::create_directories(corpora);
-    QSettings().setValue(app::purposeKey(app::FilePurpose::Corpus), QString::fromStdString(corpora.string()));
+    QSettings().setValue(app::purposeKey(app::FilePurpose::NewCorpus), QString::fromStdString(corpora.string()));
     const QString made = QString::fromStdString((dir / "made").string());
 
     int steps = 0;
@@ -270,7 +272,8 @@ TEST_CASE("new corpus from files: a file that is not a take keeps the dialog ope
     REQUIRE(corpus.takes.size() == 2);
     CHECK(std::any_of(corpus.takes.begin(), corpus.takes.end(), [](const auto& take) { return take.labels.emotion == "joyful"; }));
     CHECK(fs::exists(notTake)); // nothing deleted
-    // The next new corpus is suggested beside this one.
+    // The next new corpus is suggested beside this one (and File > Open Corpus opens there).
+    CHECK(app::rememberedPurposeFolder(app::FilePurpose::NewCorpus) == QString::fromStdString(dir.string()));
     CHECK(app::rememberedPurposeFolder(app::FilePurpose::Corpus) == QString::fromStdString(dir.string()));
 }
 
@@ -297,8 +300,42 @@ TEST_CASE("new corpus from files: the Remove button removes the selected rows an
     CHECK(table->item(1, app::NewCorpusDialog::TakeColumn)->text() == QStringLiteral("2"));
     REQUIRE(dialog.sources().size() == 2);
     CHECK(dialog.sources()[1].file.filename() == "c_walk_happy.bvh");
-    // No remembered corpus folder: beside the files.
-    CHECK(dialog.outputFolder() == QString::fromStdString((dir / "corpus").string()));
+    // No folder remembered for new corpora: the workbench's own.
+    CHECK(dialog.outputFolder() == app::unusedFolder(app::workbenchFolder(app::FilePurpose::NewCorpus), QStringLiteral("corpus")));
+}
+
+TEST_CASE("new corpus from files suggests the workbench's own folder, never the data folder the files are in", "[app][import]")
+{
+    // It used to suggest "corpus" beside the files, or beside the corpus last opened: the
+    // user's data folder (the Bandai files' folder is read-only shared data).
+    test::isolateSettings();
+    QSettings().remove(QStringLiteral("folders"));
+    const auto dir = test::scratchDir("app_new_corpus_own_folder");
+    const auto data = dir / "data";
+    const auto files = writeFixtures(data / "takes", {"walk_happy_1.bvh", "walk_sad_1.bvh"});
+    // A corpus opened from the data folder: File > Open Corpus remembers it for opening.
+    app::rememberFolder(app::FilePurpose::Corpus, QString::fromStdString((data / "takes").string()));
+    app::NewCorpusDialog dialog;
+    dialog.addInputs({QString::fromStdString(files[0].string()), QString::fromStdString(files[1].string())});
+    const QString suggested = dialog.outputFolder();
+    CHECK_FALSE(suggested.startsWith(QString::fromStdString(data.string())));
+    const QString own = app::workbenchFolder(app::FilePurpose::NewCorpus);
+    CHECK(own.endsWith(QStringLiteral("Bunraku/corpora")));
+    CHECK(QFileInfo(suggested).absolutePath() == QFileInfo(own).absoluteFilePath());
+    CHECK(QFileInfo(suggested).fileName().startsWith(QStringLiteral("corpus")));
+    CHECK_FALSE(QFileInfo::exists(suggested)); // never an existing folder
+
+    // Remembered per purpose, as exports are: the folder the last corpus was made in.
+    const auto made = dir / "made";
+    fs::create_directories(made);
+    app::rememberFolder(app::FilePurpose::NewCorpus, QString::fromStdString((made / "first").string()));
+    app::NewCorpusDialog next;
+    next.addInputs({QString::fromStdString(files[0].string())});
+    CHECK(next.outputFolder() == QString::fromStdString((made / "corpus").string()));
+    fs::create_directories(made / "corpus");
+    app::NewCorpusDialog third;
+    third.addInputs({QString::fromStdString(files[0].string())});
+    CHECK(third.outputFolder() == QString::fromStdString((made / "corpus-2").string()));
 }
 
 TEST_CASE("new corpus from the bandai files in the workbench", "[app][import]")

@@ -7,6 +7,7 @@
 #include "analysis/pipeline/stage_parameters.h"
 
 #include "app/analysis_controller.h"
+#include "app/emotion_panel.h"
 #include "app/normalise_panel.h"
 #include "app/variance_tree.h"
 
@@ -14,6 +15,8 @@
 #include <qcustomplot.h>
 
 #include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QSpinBox>
 #include <QLabel>
 #include <QLineEdit>
 #include <QRegularExpression>
@@ -156,7 +159,7 @@ TEST_CASE("the normalisation panel's table, legend and summary say what was comp
     CHECK(panel->summaryText().contains(QStringLiteral("tau 4, T_cmp 20, scales 1-16, optimal path")));
 }
 
-TEST_CASE("limits are in the tool tips and are the project's: 200000 typed into T_cmp becomes 100000 and the status bar says so",
+TEST_CASE("limits are in the tool tips and are the analysis's: 200000 typed into T_cmp becomes 16000 and the status bar says so",
           "[app][normalise][limits]")
 {
     auto window = test::demoWindow();
@@ -164,17 +167,20 @@ TEST_CASE("limits are in the tool tips and are the project's: 200000 typed into 
     auto& document = window->document();
     auto* panel = window->normalisePanel();
     CHECK(panel->tauSpin()->toolTip().endsWith(QStringLiteral("From 0 to 200 frames.")));
-    CHECK(panel->searchBandSpin()->toolTip().endsWith(QStringLiteral("From 0 to 100000 frames.")));
-    CHECK(panel->maxScaleSpin()->toolTip().endsWith(QStringLiteral("From 1 to 256.")));
-    // The panel shows every value a project may hold: the validation's limits.
+    CHECK(panel->searchBandSpin()->toolTip().endsWith(QStringLiteral("From 0 to 16000 frames.")));
+    // The largest scale that fits the demo corpus's shortest take.
+    const int largestScale = analysis::pipeline::usableMaxScale(document.corpus());
+    CHECK(largestScale < analysis::pipeline::kMaxScale);
+    CHECK(panel->maxScaleSpin()->toolTip().endsWith(QStringLiteral("From 1 to %1.").arg(largestScale)));
+    // The panel's limits are those the analysis enforces: the matcher's own for T_cmp.
     CHECK(panel->tauSpin()->maximum() == analysis::pipeline::kMaxTau);
-    CHECK(panel->searchBandSpin()->maximum() == analysis::pipeline::kMaxSearchBand);
-    CHECK(panel->maxScaleSpin()->maximum() == analysis::pipeline::kMaxScale);
+    CHECK(panel->searchBandSpin()->maximum() == analysis::kMaxSearchBand);
+    CHECK(panel->maxScaleSpin()->maximum() == largestScale);
     app::AnalysisParameters parameters = document.parameters();
-    parameters.normalise.maxScale = 100;
+    parameters.normalise.maxScale = 10;
     parameters.normalise.searchBand = 90;
     document.restoreParameters(parameters);
-    CHECK(panel->maxScaleSpin()->value() == 100);
+    CHECK(panel->maxScaleSpin()->value() == 10);
     CHECK(panel->searchBandSpin()->value() == 90);
 
     auto* band = panel->searchBandSpin();
@@ -182,10 +188,53 @@ TEST_CASE("limits are in the tool tips and are the project's: 200000 typed into 
     band->selectAll();
     QTest::keyClicks(band, QStringLiteral("200000"));
     QTest::keyClick(band, Qt::Key_Return);
-    CHECK(band->value() == 100000);
-    CHECK(document.parameters().normalise.searchBand == 100000);
-    CHECK(statusText(*window).contains(QStringLiteral("T_cmp 200000 frames is above the limit: set to 100000 frames")));
-    CHECK(document.undoStack()->undoText() == QStringLiteral("Set T_cmp to 100000 frames"));
+    CHECK(band->value() == 16000);
+    CHECK(document.parameters().normalise.searchBand == 16000);
+    CHECK(statusText(*window).contains(QStringLiteral("T_cmp 200000 frames is above the limit: set to 16000 frames")));
+    CHECK(document.undoStack()->undoText() == QStringLiteral("Set T_cmp to 16000 frames"));
+}
+
+TEST_CASE("each analysis dock control at its maximum gives a value the analysis accepts", "[app][normalise][emotion][limits]")
+{
+    // Normalisation used to fail with "the search band T_cmp must be in 0..16000 frames" for a
+    // T_cmp the dock allowed (up to 100000).
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    REQUIRE(idle(*window));
+    auto& document = window->document();
+    const auto& scheduler = window->analysis().scheduler();
+    const app::AnalysisParameters defaults = document.parameters();
+    struct Control {
+        const char* name;
+        QSpinBox* box;
+        int slot;
+    };
+    const std::vector<Control> controls = {
+        {"tau", window->normalisePanel()->tauSpin(), app::AnalysisController::kNormaliseSlot},
+        {"T_cmp", window->normalisePanel()->searchBandSpin(), app::AnalysisController::kNormaliseSlot},
+        {"largest scale", window->normalisePanel()->maxScaleSpin(), app::AnalysisController::kNormaliseSlot},
+        {"M", window->emotionPanel()->orderBox(), app::AnalysisController::kDecomposeSlot},
+    };
+    for (const Control& control : controls) {
+        INFO(control.name << " at its maximum " << control.box->maximum());
+        document.restoreParameters(defaults);
+        REQUIRE(idle(*window));
+        control.box->setValue(control.box->maximum());
+        REQUIRE(control.box->value() == control.box->maximum());
+        CHECK(analysis::pipeline::validate(document.parameters()).ok());
+        REQUIRE(idle(*window));
+        INFO(scheduler.error(control.slot).toStdString());
+        CHECK(scheduler.state(control.slot) == app::SlotState::Finished);
+    }
+    // The emotion weight's number field at its maximum: a weighted take.
+    document.restoreParameters(defaults);
+    auto* weight = window->emotionPanel()->weightBox();
+    weight->setValue(weight->maximum());
+    CHECK(document.parameters().design.emotionWeight == weight->maximum());
+    CHECK(analysis::pipeline::validate(document.parameters()).ok());
+    REQUIRE(idle(*window));
+    CHECK(window->analysis().weightError().isEmpty());
+    CHECK(window->emotionPanel()->weightedTake());
 }
 
 TEST_CASE("undo steps are named after the value they set", "[app][normalise][undo]")

@@ -4,6 +4,8 @@
 #include "tests/support/test_paths.h"
 
 #include "app/build_info.h"
+#include "analysis/decompose/emotion_weight.h"
+#include "analysis/pipeline/stage_parameters.h"
 
 #include <catch2/catch.hpp>
 
@@ -59,6 +61,57 @@ TEST_CASE("bunraku help SUBCOMMAND prints what SUBCOMMAND --help prints, for eve
         }
     }
     CHECK(compared >= 16);
+}
+
+TEST_CASE("every numeric option of the analysis states its range in --help: the analysis's own limits, enforced", "[cli][help][limits]")
+{
+    namespace pl = bunraku::analysis::pipeline;
+    struct Option {
+        std::vector<std::string> command;
+        std::string option;
+        std::string range; ///< as --help states it
+        std::string beyond; ///< a value just past the range
+    };
+    const auto in = [](auto low, auto high) {
+        std::ostringstream text;
+        text << "in [" << low << " - " << high << "]";
+        return text.str();
+    };
+    // An existing folder for the commands whose corpus must exist (the option is refused first).
+    const std::string folder = bunraku::test::scratchDir("cli-help-ranges").string();
+    const std::vector<Option> options = {
+        {{"normalise"}, "--tau", in(0, pl::kMaxTau), std::to_string(pl::kMaxTau + 1)},
+        {{"normalise"}, "--tcmp", in(0, pl::kMaxSearchBand), std::to_string(pl::kMaxSearchBand + 1)},
+        {{"phase"}, "--tau", in(0, pl::kMaxTau), std::to_string(pl::kMaxTau + 1)},
+        {{"phase"}, "--tcmp", in(0, pl::kMaxSearchBand), std::to_string(pl::kMaxSearchBand + 1)},
+        {{"phase"}, "--max-scale", in(1, pl::kMaxScale), std::to_string(pl::kMaxScale + 1)},
+        {{"phase"}, "--control-spacing", in(1, pl::kMaxControlSpacing), std::to_string(pl::kMaxControlSpacing + 1)},
+        {{"decompose"}, "--M", in(0, pl::kMaxCorrelationLength), std::to_string(pl::kMaxCorrelationLength + 1)},
+        {{"decompose"}, "--arma-max-order", in(0, pl::kMaxArmaOrder), std::to_string(pl::kMaxArmaOrder + 1)},
+        {{"emotion"}, "--weight", in(bunraku::analysis::kMinEmotionWeight, bunraku::analysis::kMaxEmotionWeight), "3.5"},
+    };
+    // The matcher's own limit: T_cmp 20000 used to pass the options and fail in the analysis.
+    CHECK(pl::kMaxSearchBand == 16000);
+    for (const Option& option : options) {
+        std::vector<std::string> help = option.command;
+        help.push_back("--help");
+        const auto run = runBunraku(help);
+        REQUIRE(run.exitCode == 0);
+        std::istringstream lines(run.out);
+        std::string line, found;
+        while (std::getline(lines, line))
+            if (line.find("  " + option.option + " ") != std::string::npos) found = line;
+        INFO(option.command.front() << " " << option.option << ": " << found);
+        CHECK(found.find(option.range) != std::string::npos);
+        // A value past the range is refused by the option, naming it, before any work.
+        std::vector<std::string> beyond = option.command;
+        const std::string corpus = option.command.front() == "normalise" ? folder : std::string("demo");
+        for (const std::string& word : {corpus, option.option, option.beyond}) beyond.push_back(word);
+        const auto refused = runBunraku(beyond);
+        INFO(refused.err);
+        CHECK(refused.exitCode == 2);
+        CHECK(refused.err.find(option.option) != std::string::npos);
+    }
 }
 
 TEST_CASE("bunraku help with an unknown subcommand names the ones there are", "[cli][help]")

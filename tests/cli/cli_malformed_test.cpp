@@ -244,12 +244,20 @@ TEST_CASE("decompose and emotion reject bad options with one line and write noth
                                       out.string()});
     CHECK(isOneLineError(badOrder.exitCode, badOrder.err));
     CHECK(badOrder.err.find("--arma-table") != std::string::npos);
+    // Values outside an option's range (the analysis's limits, stated by --help) name the option.
+    for (const auto& [option, command] : std::vector<std::pair<std::string, std::vector<std::string>>>{
+             {"--M", {"decompose", corpus.string(), "--pad", "--method", "km2o", "--M", "-3", "-o", out.string()}},
+             {"--weight", {"emotion", corpus.string(), "--pad", "--function", "greeting", "--emotion", "friendly", "--weight", "4",
+                           "-o", out.string() + ".csv"}}}) {
+        const auto run = runBunraku(command);
+        INFO(run.err);
+        CHECK(isOneLineError(run.exitCode, run.err));
+        CHECK(run.err.find(option) != std::string::npos);
+    }
     // The remaining errors all name the corpus folder they are about.
     const std::vector<std::vector<std::string>> commands = {
         {"decompose", corpus.string(), "--no-preprocess", "--method", "ls", "-o", out.string()}, // unequal lengths without --pad
-        {"decompose", corpus.string(), "--pad", "--method", "km2o", "--M", "-3", "-o", out.string()},
         {"decompose", corpus.string(), "--pad", "--method", "km2o", "--M", "1000", "-o", out.string()},
-        {"emotion", corpus.string(), "--pad", "--function", "greeting", "--emotion", "friendly", "--weight", "4", "-o", out.string() + ".csv"},
         {"emotion", corpus.string(), "--pad", "--function", "greeting", "--emotion", "furious", "--weight", "1", "-o", out.string() + ".csv"},
     };
     for (const auto& command : commands) {
