@@ -307,7 +307,7 @@ TEST_CASE("the Emotion dock says KM2O is not estimable on the Bandai bye takes a
     CHECK(((y->values + z->values) - d.cellMeans[std::size_t(cell)]).cwiseAbs().maxCoeff() < 1e-9);
 }
 
-TEST_CASE("the Normalisation panel normalises with the optimal path by default; with the greedy scan it names the takes "
+TEST_CASE("the Normalisation panel normalises with the optimal path by default, and with the greedy scan it names the takes "
           "normalisation moved away and suggests the optimal path, as the CLI does",
           "[app][normalise][variance]")
 {

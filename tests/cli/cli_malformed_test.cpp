@@ -191,7 +191,7 @@ TEST_CASE("parameters in their range that fail at run time name the parameters f
     const auto corpus = dir / "corpus";
     REQUIRE(runBunraku({"demo", "-o", corpus.string()}).exitCode == 0);
     const std::vector<std::pair<std::string, std::string>> files = {
-        {"band.json", "{\"normalise\": {\"searchBand\": 100000}}"},
+        {"band.json", "{\"normalise\": {\"searchBand\": 100000}}"}, // beyond the analysis's limit: refused as it is read
         {"scale.json", "{\"normalise\": {\"maxScale\": 256}}"},
         {"m.json", "{\"decompose\": {\"M\": 1000}}"},
     };
@@ -201,7 +201,7 @@ TEST_CASE("parameters in their range that fail at run time name the parameters f
             const auto run = runBunraku({command, corpus.string(), "--parameters", parameters.string(), "-o", (dir / "out").string()});
             INFO(command << " " << name << ": " << run.err);
             CHECK(isOneLineError(run.exitCode, run.err));
-            CHECK(run.err.find(corpus.string()) != std::string::npos);
+            if (name != "band.json") CHECK(run.err.find(corpus.string()) != std::string::npos);
             CHECK(run.err.find(parameters.string()) != std::string::npos);
         }
     }

@@ -58,7 +58,7 @@ TEST_CASE("parameters written as JSON read back equal", "[pipeline][parameters]"
     CHECK(read->design.gains.front().phrase == 0); // kept sorted
 }
 
-TEST_CASE("every written parameter file names the path; a file without one gets the default, the optimal path",
+TEST_CASE("every written parameter file names the path, and a file without one gets the default, the optimal path",
           "[pipeline][parameters]")
 {
     for (const PathMethod path : {PathMethod::Greedy, PathMethod::Optimal}) {
