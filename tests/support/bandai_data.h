@@ -72,6 +72,19 @@ inline analysis::Corpus bandaiWaveCorpus()
     return corpus;
 }
 
+/// The Bandai bye takes as a corpus of one take per cell: function "bye" x styles normal
+/// (neutral), happy, angry.
+inline analysis::Corpus bandaiByeCorpus()
+{
+    analysis::Corpus corpus;
+    corpus.name = "bandai bye";
+    corpus.neutralEmotion = "normal";
+    for (const std::string style : {"normal", "happy", "angry"})
+        corpus.takes.push_back(readBandai("bye_" + style + "_001.bvh", {"bye", style, 1, ""}));
+    corpus.rateHz = corpus.takes.front().rateHz;
+    return corpus;
+}
+
 /// Steps of the Euler angles "that the rotation itself does not make": a 6-DOF part's step
 /// above `limitDeg` (largest of |d yaw|, |d pitch|, |d roll|) between consecutive frames when
 /// an equivalent triple of the later frame (whole turns, the mirrored triple) lies nearer the

@@ -86,17 +86,6 @@ Conditioning checkExtractedGains(Corpus corpus)
     return result;
 }
 
-Corpus byeCorpus()
-{
-    Corpus corpus;
-    corpus.name = "bandai bye";
-    corpus.neutralEmotion = "normal";
-    for (const std::string style : {"normal", "happy", "angry"})
-        corpus.takes.push_back(readBandai("bye_" + style + "_001.bvh", {"bye", style, 1, ""}));
-    corpus.rateHz = corpus.takes.front().rateHz;
-    return corpus;
-}
-
 } // namespace
 
 TEST_CASE("extracted gains on the demo corpus are non-negative and the ill-conditioned ones are flagged", "[pipeline][gains]")
@@ -115,7 +104,7 @@ TEST_CASE("extracted gains on the demo corpus are non-negative and the ill-condi
 TEST_CASE("extracted gains on the Bandai bye takes are non-negative and the ill-conditioned ones are flagged", "[pipeline][gains][bandai]")
 {
     if (!bandaiAvailable({"bye_normal_001.bvh", "bye_happy_001.bvh", "bye_angry_001.bvh"})) return;
-    const Conditioning conditioning = checkExtractedGains(byeCorpus());
+    const Conditioning conditioning = checkExtractedGains(bunraku::test::bandaiByeCorpus());
     std::cout << "bye: " << conditioning.illConditioned << " of " << conditioning.gains << " gains ill-conditioned ("
               << conditioning.held << " held still):" << conditioning.summary << "\n";
     CHECK(conditioning.gains > 0);

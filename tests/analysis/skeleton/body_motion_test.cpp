@@ -115,17 +115,6 @@ Eigen::VectorXd lowestPoints(const SkeletalMotion& motion)
     return low;
 }
 
-/// The bye takes (one per style) as a corpus of one take per cell.
-Corpus bandaiByeCorpus()
-{
-    Corpus corpus;
-    corpus.name = "bandai bye";
-    corpus.neutralEmotion = "normal";
-    for (const std::string style : {"normal", "happy", "angry"})
-        corpus.takes.push_back(test::readBandai("bye_" + style + "_001.bvh", {"bye", style, 1, ""}));
-    corpus.rateHz = corpus.takes.front().rateHz;
-    return corpus;
-}
 
 } // namespace
 
@@ -198,7 +187,7 @@ TEST_CASE("every derived take of the Bandai waves is one articulated body", "[bo
 TEST_CASE("the weighted bye take of one take per cell keeps the performer's 22 joints at a = 2", "[body][bandai]")
 {
     if (!test::bandaiAvailable({"bye_normal_001.bvh", "bye_happy_001.bvh", "bye_angry_001.bvh"})) return;
-    const Corpus corpus = bandaiByeCorpus();
+    const Corpus corpus = test::bandaiByeCorpus();
     const auto scratch = scratchFolder("bye");
     for (const auto& d : derivedTakes(corpus)) {
         checkOneBody(d, scratch);
