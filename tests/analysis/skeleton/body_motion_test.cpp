@@ -141,7 +141,7 @@ TEST_CASE("the puppet rig fitted to the demo corpus finds the demo rig's neck an
     CHECK(fit->residual.frames == frames);
     // A take of another layout is refused by name.
     Take other = corpus.takes.front();
-    other.values = other.values.leftCols(6);
+    other.values = Eigen::MatrixXd(other.values.leftCols(6)); // a copy: the block views the matrix it replaces
     other.channels.resize(6);
     const auto refused = fitPuppetRig({&other});
     REQUIRE_FALSE(refused);
