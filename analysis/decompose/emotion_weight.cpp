@@ -1,6 +1,7 @@
 #include "analysis/decompose/emotion_weight.h"
 
 #include "analysis/core/message_text.h"
+#include "analysis/skeleton/ground_contact.h"
 #include "analysis/skeleton/puppet_rig_fit.h"
 #include "analysis/skeleton/skeleton_resample.h"
 
@@ -46,48 +47,32 @@ Take takeFromCoordinates(const Decomposition& decomposition, int function, const
     return take;
 }
 
-/// The lowest point of the body (every joint and End Site but the roots) per frame, cm.
-Eigen::VectorXd lowestPoints(const SkeletalMotion& motion)
-{
-    Eigen::VectorXd low(motion.frameCount());
-    const auto& joints = motion.skeleton->joints;
-    for (Eigen::Index f = 0; f < motion.frameCount(); ++f) {
-        const auto poses = motion.worldPoses(f);
-        double z = std::numeric_limits<double>::infinity();
-        for (std::size_t j = 0; j < joints.size(); ++j)
-            if (joints[j].parent >= 0) z = std::min(z, poses[j].translation.z());
-        low(f) = z;
-    }
-    return low;
-}
-
-/// `weighted` with its roots shifted vertically per frame so that its lowest point is
-/// neutral + a (emotional - neutral) of the inputs' lowest points, clamped to the range they
-/// span; null for the puppet's rig (held in the air), a skeleton of roots only, or frames that
-/// do not line up.
+/// `weighted` on the floor (analysis/skeleton/ground_contact.h): per frame, its pelvis at
+/// neutral + a (emotional - neutral) of the inputs' pelvis heights and its lowest point at the
+/// same combination of their lowest points, each clamped to the range the inputs span, so that a
+/// weight past 1 neither lifts the feet off the floor nor pushes them through it nor crouches
+/// deeper than the inputs do (the legs bend less instead); null for the puppet's rig (held in the
+/// air), a skeleton of roots only, or frames that do not line up.
 SkeletalMotionPtr keepOnFloor(const SkeletalMotion& weighted, const SkeletalMotion& neutral, const SkeletalMotion& emotional, double weight)
 {
     if (!weighted.skeleton || isPuppetRig(*weighted.skeleton)) return nullptr;
     const Eigen::Index frames = weighted.frameCount();
     if (neutral.frameCount() != frames || emotional.frameCount() != frames || frames == 0) return nullptr;
-    const Eigen::VectorXd low = lowestPoints(weighted);
-    const Eigen::VectorXd lowNeutral = lowestPoints(neutral);
-    const Eigen::VectorXd lowEmotional = lowestPoints(emotional);
-    if (!low.allFinite() || !lowNeutral.allFinite() || !lowEmotional.allFinite()) return nullptr;
-    const double floor = std::min(lowNeutral.minCoeff(), lowEmotional.minCoeff());
-    const double ceiling = std::max(lowNeutral.maxCoeff(), lowEmotional.maxCoeff());
-    std::vector<RigidTransform> corrections(static_cast<std::size_t>(frames));
-    bool moved = false;
-    for (Eigen::Index f = 0; f < frames; ++f) {
-        const double target = std::clamp(lowNeutral(f) + weight * (lowEmotional(f) - lowNeutral(f)), floor, ceiling);
-        corrections[std::size_t(f)].translation = Eigen::Vector3d(0.0, 0.0, target - low(f));
-        moved = moved || std::abs(target - low(f)) > 1e-12;
-    }
-    if (!moved) return nullptr;
-    std::vector<int> roots;
-    for (std::size_t j = 0; j < weighted.skeleton->joints.size(); ++j)
-        if (weighted.skeleton->joints[j].parent < 0) roots.push_back(int(j));
-    return moveSkeletalRoots(weighted, corrections, roots);
+    const auto combined = [&](const Eigen::VectorXd& y, const Eigen::VectorXd& z) -> std::optional<Eigen::VectorXd> {
+        if (!y.allFinite() || !z.allFinite()) return std::nullopt;
+        const double floor = std::min(y.minCoeff(), z.minCoeff());
+        const double ceiling = std::max(y.maxCoeff(), z.maxCoeff());
+        return Eigen::VectorXd((y + weight * (z - y)).array().max(floor).min(ceiling));
+    };
+    const auto lowest = combined(lowestPoints(neutral), lowestPoints(emotional));
+    if (!lowest) return nullptr;
+    const int pelvis = findLegs(weighted).pelvis;
+    std::optional<Eigen::VectorXd> pelvisHeight;
+    if (pelvis >= 0) pelvisHeight = combined(jointHeights(neutral, pelvis), jointHeights(emotional, pelvis));
+    if (!pelvisHeight) pelvisHeight = jointHeights(weighted, std::max(pelvis, 0));
+    auto grounded = groundBody(weighted, *pelvisHeight, *lowest);
+    if (!grounded || !grounded->skeleton) return nullptr;
+    return grounded;
 }
 
 int findFunction(const Decomposition& decomposition, const std::string& function)
