@@ -1,6 +1,7 @@
 #include "analysis/io/bvh_import.h"
 
 #include "analysis/core/puppet_layout.h"
+#include "analysis/core/puppet_rig_layout.h"
 #include "analysis/core/skeleton_calibration.h"
 #include "analysis/core/skeleton_take.h"
 #include "analysis/io/atomic_file.h"
@@ -49,6 +50,18 @@ bool isWorkbenchExport(const BvhFile& file)
     for (const auto part : kPuppetParts) {
         const int j = file.skeleton.find(std::string(part));
         if (j < 0 || joints[std::size_t(j)].parent != 0) return false;
+    }
+    return true;
+}
+
+/// The puppet's rig as this workbench writes it (analysis/core/puppet_rig_layout.h).
+bool isRigLayout(const BvhSkeleton& skeleton)
+{
+    if (skeleton.joints.size() != std::size_t(rig::kSlots)) return false;
+    for (int slot = 0; slot < rig::kSlots; ++slot) {
+        const BvhJoint& j = skeleton.joints[std::size_t(slot)];
+        const rig::Slot& layout = rig::kLayout[std::size_t(slot)];
+        if (j.name != layout.name || j.parent != layout.parent || j.endSite != layout.endSite) return false;
     }
     return true;
 }
@@ -304,7 +317,10 @@ Result<std::shared_ptr<const SkeletalMotion>> bvhToSkeletalMotion(const BvhFile&
     }
     if (auto valid = validateSkeletalMotion(*motion); !valid)
         return makeError(ErrorCode::Numerical, file.source + ": the poses overflow (values too large?): " + valid.error().message);
-    if (joints && isWorkbenchExport(file)) {
+    if (joints && isPuppetRig(*skeleton)) {
+        // The puppet's rig as this workbench writes it: its parts where the rig puts them.
+        skeleton->parts = *puppetRigBindings(*skeleton);
+    } else if (joints && isWorkbenchExport(file)) {
         // This workbench's own export: its joints are the puppet's part frames already.
         for (std::size_t p = 0; p < 4; ++p) skeleton->parts.push_back(PartBinding{std::string(kPuppetParts[p]), (*joints)[p], {}});
     } else if (joints) {
@@ -324,6 +340,7 @@ Result<BvhPuppetImport> importBvhPuppet(const BvhFile& file, const BvhImportOpti
     if (auto lengths = checkBvhLengths(file, bvhUnitScale(file, options)); !lengths) return lengths.error(); // before mapping on them
     std::optional<JointMap> given = options.jointMap;
     if (!given && isWorkbenchExport(file)) given = JointMap{{"head", "shoulder", "arm", "hand"}};
+    if (!given && isRigLayout(file.skeleton)) given = JointMap{{kRigNeckJoint, kRigRootJoint, kRigArmSensorJoint, kRigWristJoint}};
     auto map = mapPuppetParts(file, given, PartMapOptions{options.side}, options);
     if (!map) return map.error();
     // The joints' rotations are most of the work: 90 % of the progress, the part channels the rest.

@@ -19,18 +19,7 @@ constexpr int kShoulder = 1;
 constexpr int kArm = 2;
 constexpr int kHand = 3;
 
-/// The rig's joints: root (shoulder part), neck (head), shoulder joint (arm), wrist (hand), and
-/// End Sites at the head's and the hand's sensors so that the drawn skeleton reaches them.
-constexpr int kRootSlot = 0;
-constexpr int kNeckSlot = 1;
-constexpr int kHeadEndSlot = 2;
-constexpr int kShoulderSlot = 3;
-constexpr int kWristSlot = 4;
-constexpr int kHandEndSlot = 5;
-constexpr int kRigSlots = 6;
-
-/// Joint slot of each part (kPuppetParts order) and of its parent part's joint.
-constexpr std::array<int, kPuppetPartCount> kPartSlot{kNeckSlot, kRootSlot, kShoulderSlot, kWristSlot};
+using namespace rig;
 
 RigidTransform channelPose(const Take& take, Eigen::Index frame, int part)
 {
@@ -70,13 +59,6 @@ Status checkLayout(const Take& take)
     return okStatus();
 }
 
-bool isRig(const Skeleton& s)
-{
-    return s.joints.size() == std::size_t(kRigSlots) && s.joints[kRootSlot].name == kRigRootJoint &&
-           s.joints[kNeckSlot].name == kRigNeckJoint && s.joints[kShoulderSlot].name == kRigShoulderJoint &&
-           s.joints[kWristSlot].name == kRigWristJoint;
-}
-
 const std::vector<JointChannel> kRootChannels{JointChannel::Xposition, JointChannel::Yposition, JointChannel::Zposition,
                                               JointChannel::Zrotation, JointChannel::Yrotation, JointChannel::Xrotation};
 const std::vector<JointChannel> kRotationChannels{JointChannel::Zrotation, JointChannel::Yrotation, JointChannel::Xrotation};
@@ -99,26 +81,22 @@ Result<PuppetRigFit> fitPuppetRig(const std::vector<const Take*>& takes)
     skeleton->name = kPuppetRigName;
     skeleton->source = SourceFrame{Eigen::Quaterniond::Identity(), 1.0, "z"};
     skeleton->positionMode = PositionChannelMode::ReplaceOffset;
-    skeleton->joints.resize(kRigSlots);
-    auto joint = [&](int slot, const char* name, int parent, const Eigen::Vector3d& offset, bool endSite) {
+    skeleton->joints.resize(kSlots);
+    // Offsets: the neck and the shoulder joint from the shoulder's sensor, the arm's sensor from
+    // the shoulder joint, the wrist from the arm's sensor, the head's and the hand's sensors
+    // from the neck and the wrist.
+    const std::array<Eigen::Vector3d, kSlots> offsets{Eigen::Vector3d::Zero(), head->first, head->second, arm->first,
+                                                         arm->second, hand->first, hand->second};
+    for (int slot = 0; slot < kSlots; ++slot) {
+        const Slot& layout = kLayout[std::size_t(slot)];
         SkeletonJoint& j = skeleton->joints[std::size_t(slot)];
-        j.name = name;
-        j.parent = parent;
-        j.offset = offset;
-        j.endSite = endSite;
-        if (!endSite) j.channels = parent < 0 ? kRootChannels : kRotationChannels;
-    };
-    joint(kRootSlot, kRigRootJoint, -1, Eigen::Vector3d::Zero(), false);
-    joint(kNeckSlot, kRigNeckJoint, kRootSlot, head->first, false);
-    joint(kHeadEndSlot, "neck_End", kNeckSlot, head->second, true);
-    joint(kShoulderSlot, kRigShoulderJoint, kRootSlot, arm->first, false);
-    // The wrist from the shoulder joint: the arm's sensor, then the wrist from the sensor.
-    joint(kWristSlot, kRigWristJoint, kShoulderSlot, arm->second + hand->first, false);
-    joint(kHandEndSlot, "wrist_End", kWristSlot, hand->second, true);
-    const std::array<Eigen::Vector3d, kPuppetPartCount> sensor{head->second, Eigen::Vector3d::Zero(), arm->second, hand->second};
-    for (int p = 0; p < kPuppetPartCount; ++p)
-        skeleton->parts.push_back(PartBinding{std::string(kPuppetParts[std::size_t(p)]), kPartSlot[std::size_t(p)],
-                                              RigidTransform{Eigen::Quaterniond::Identity(), sensor[std::size_t(p)]}});
+        j.name = layout.name;
+        j.parent = layout.parent;
+        j.offset = offsets[std::size_t(slot)];
+        j.endSite = layout.endSite;
+        if (!layout.endSite) j.channels = layout.parent < 0 ? kRootChannels : kRotationChannels;
+    }
+    skeleton->parts = *puppetRigBindings(*skeleton);
     if (auto valid = validateSkeleton(*skeleton); !valid) return valid.error();
     auto residual = puppetRigResidual(takes, *skeleton);
     if (!residual) return residual.error();
@@ -128,7 +106,7 @@ Result<PuppetRigFit> fitPuppetRig(const std::vector<const Take*>& takes)
 Result<std::shared_ptr<const SkeletalMotion>> puppetRigMotion(const Take& take, std::shared_ptr<const Skeleton> rig)
 {
     if (auto ok = checkLayout(take); !ok) return ok.error();
-    if (!rig || !isRig(*rig)) return makeError(ErrorCode::InvalidArgument, "not a fitted puppet rig");
+    if (!rig || !isPuppetRig(*rig)) return makeError(ErrorCode::InvalidArgument, "not a fitted puppet rig");
     auto motion = std::make_shared<SkeletalMotion>(makeRestMotion(rig, take.frameCount()));
     motion->movingJoints = {kRootSlot};
     motion->movingTranslations.resize(take.frameCount(), 3);

@@ -13,6 +13,7 @@
 /// have a residual: the rig's segment lengths are constant, a sensor that slides along a limb
 /// (the demo's arm reach) is what the rig cannot follow, and the fit says by how much.
 
+#include "analysis/core/puppet_rig_layout.h"
 #include "analysis/core/result.h"
 #include "analysis/core/skeleton.h"
 #include "analysis/core/take.h"
@@ -24,21 +25,6 @@
 #include <vector>
 
 namespace bunraku::analysis {
-
-/// Joint names of the fitted rig (docs/FORMATS.md): the root carries the shoulder part.
-inline constexpr const char* kRigRootJoint = "torso";
-inline constexpr const char* kRigNeckJoint = "neck";
-inline constexpr const char* kRigShoulderJoint = "shoulder_joint";
-inline constexpr const char* kRigWristJoint = "wrist";
-
-/// The fitted rig's skeleton name: a rig is the puppet's own body, not a performer's skeleton
-/// (the puppet is drawn and exported as itself, not fitted to it).
-inline constexpr const char* kPuppetRigName = "puppet rig";
-/// True for a skeleton made by fitPuppetRig.
-inline bool isPuppetRig(const Skeleton& skeleton)
-{
-    return skeleton.name == kPuppetRigName && skeleton.joints.size() == 6 && skeleton.joints[0].name == kRigRootJoint;
-}
 
 /// How far the rig's parts are from the channels it was fitted to, per part (kPuppetParts order).
 struct PuppetRigResidual {
