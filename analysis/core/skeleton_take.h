@@ -4,6 +4,7 @@
 /// analysis channels and the full skeleton of a take always agree.
 
 #include "analysis/core/result.h"
+#include "analysis/core/run_control.h"
 #include "analysis/core/skeleton.h"
 #include "analysis/core/take.h"
 
@@ -63,7 +64,8 @@ struct BodyMotion {
     /// The thesis's per-channel result the channels were projected from; null when unchanged.
     std::shared_ptr<const Eigen::MatrixXd> perChannel;
 };
-BodyMotion bodyMotion(Take take);
+/// `control` is told the fraction of frames done; a cancelled call returns the take as it is.
+BodyMotion bodyMotion(Take take, const RunControl& control = {});
 /// bodyMotion(take).take.
 Take bodyTake(Take take);
 

@@ -1,12 +1,12 @@
 #include "analysis/core/skeleton.h"
 #include "analysis/io/bvh_import.h"
 #include "analysis/io/gltf_export.h"
+#include "tests/support/gltf_readback.h"
 #include "tests/support/peer.h"
 #include "tests/support/shared_data.h"
 #include "tests/support/test_paths.h"
 
 #include <catch2/catch.hpp>
-#include <tiny_gltf.h>
 
 #include <cstring>
 #include <functional>
@@ -36,62 +36,6 @@ std::vector<JointMesh> trianglePerJoint(const Skeleton& skeleton)
     return meshes;
 }
 
-/// Reads a float accessor (tightly packed) as doubles.
-std::vector<double> floats(const tinygltf::Model& model, int accessorIndex)
-{
-    const tinygltf::Accessor& accessor = model.accessors[std::size_t(accessorIndex)];
-    REQUIRE(accessor.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT);
-    const tinygltf::BufferView& view = model.bufferViews[std::size_t(accessor.bufferView)];
-    const auto* data = reinterpret_cast<const float*>(model.buffers[std::size_t(view.buffer)].data.data() + view.byteOffset + accessor.byteOffset);
-    const std::size_t n = accessor.count * std::size_t(tinygltf::GetNumComponentsInType(std::uint32_t(accessor.type)));
-    return std::vector<double>(data, data + n);
-}
-
-/// World positions (metres, glTF axes) of every node at keyframe `frame`, from the node
-/// hierarchy and the animation's samplers (a peer's reading of the file).
-std::map<std::string, Eigen::Vector3d> nodePositions(const tinygltf::Model& model, std::size_t frame)
-{
-    std::vector<Eigen::Quaterniond> rotation(model.nodes.size(), Eigen::Quaterniond::Identity());
-    std::vector<Eigen::Vector3d> translation(model.nodes.size(), Eigen::Vector3d::Zero());
-    for (std::size_t n = 0; n < model.nodes.size(); ++n) {
-        const auto& node = model.nodes[n];
-        if (node.rotation.size() == 4) rotation[n] = Eigen::Quaterniond(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
-        if (node.translation.size() == 3) translation[n] = Eigen::Vector3d(node.translation[0], node.translation[1], node.translation[2]);
-    }
-    const auto& animation = model.animations.front();
-    for (const auto& channel : animation.channels) {
-        const auto values = floats(model, animation.samplers[std::size_t(channel.sampler)].output);
-        const auto n = std::size_t(channel.target_node);
-        if (channel.target_path == "rotation")
-            rotation[n] = Eigen::Quaterniond(values[4 * frame + 3], values[4 * frame], values[4 * frame + 1], values[4 * frame + 2]).normalized();
-        else if (channel.target_path == "translation")
-            translation[n] = Eigen::Vector3d(values[3 * frame], values[3 * frame + 1], values[3 * frame + 2]);
-    }
-    std::map<std::string, Eigen::Vector3d> positions;
-    std::function<void(int, const Eigen::Isometry3d&)> walk = [&](int n, const Eigen::Isometry3d& parent) {
-        Eigen::Isometry3d local = Eigen::Isometry3d::Identity();
-        local.linear() = rotation[std::size_t(n)].toRotationMatrix();
-        local.translation() = translation[std::size_t(n)];
-        const Eigen::Isometry3d world = parent * local;
-        positions[model.nodes[std::size_t(n)].name] = world.translation();
-        for (int child : model.nodes[std::size_t(n)].children) walk(child, world);
-    };
-    for (int root : model.scenes.front().nodes) walk(root, Eigen::Isometry3d::Identity());
-    return positions;
-}
-
-tinygltf::Model loadGlb(const std::string& bytes)
-{
-    tinygltf::Model model;
-    tinygltf::TinyGLTF loader;
-    std::string error, warning;
-    const bool loaded = loader.LoadBinaryFromMemory(&model, &error, &warning, reinterpret_cast<const unsigned char*>(bytes.data()),
-                                                    unsigned(bytes.size()));
-    INFO(error << warning);
-    REQUIRE(loaded);
-    return model;
-}
-
 } // namespace
 
 TEST_CASE("glTF axes: workbench forward, left and up become +Z, +X and +Y")
@@ -116,20 +60,20 @@ TEST_CASE("a bandai take as glTF: 22 joints in a skin, one animation with the ta
     std::ifstream in(out, std::ios::binary);
     const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     REQUIRE(bytes.substr(0, 4) == "glTF");
-    const tinygltf::Model model = loadGlb(bytes);
+    const tinygltf::Model model = bunraku::test::loadGlbBytes(bytes);
     CHECK(model.asset.version == "2.0");
     REQUIRE(model.skins.size() == 1);
     CHECK(model.skins[0].joints.size() == 22);
     REQUIRE(model.animations.size() == 1);
     REQUIRE(model.meshes.size() == 1);
-    const auto times = floats(model, model.animations[0].samplers[0].input);
+    const auto times = bunraku::test::gltfFloats(model, model.animations[0].samplers[0].input);
     REQUIRE(times.size() == std::size_t(take->frameCount()));
     CHECK(times.back() == Approx(double(take->frameCount() - 1) / 30.0).margin(1e-5));
     // Every joint's world position at sampled frames, read back through the node hierarchy.
     const Eigen::Quaterniond g = gltfAxisChange();
     double worst = 0.0;
     for (Eigen::Index f : {Eigen::Index(0), take->frameCount() / 3, take->frameCount() - 1}) {
-        const auto positions = nodePositions(model, std::size_t(f));
+        const auto positions = bunraku::test::gltfNodePositions(model, std::size_t(f));
         const auto expected = motion.worldPoses(f);
         for (std::size_t j = 0; j < expected.size(); ++j) {
             const auto& joint = motion.skeleton->joints[j];
