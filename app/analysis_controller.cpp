@@ -34,6 +34,8 @@ QString AnalysisController::slotTitle(int slot)
     case kAxesSlot: return tr("Motion axes");
     case kTakeAxisSlot: return tr("Motion axis of take A");
     case kTakeAxisBSlot: return tr("Motion axis of take B");
+    case kNormalisedBodySlot: return tr("Normalised take as one body");
+    case kWeightedSlot: return tr("Weighted take");
     }
     return QString();
 }
@@ -45,6 +47,11 @@ AnalysisController::AnalysisController(Document& document, QObject* parent, std:
       m_stageCache(std::make_shared<pl::StageCache>(4))
 {
     connect(m_scheduler, &StageScheduler::finished, this, &AnalysisController::stageFinished);
+    connect(m_scheduler, &StageScheduler::failed, this, [this](int slot, const QString& message) {
+        if (slot != kWeightedSlot) return;
+        m_weightError = message;
+        emit weightedChanged();
+    });
     connect(&document, &Document::corpusChanged, this, &AnalysisController::corpusChanged);
     connect(&document, &Document::parametersChanged, this, [this](int sections) {
         if (sections & (kPreprocessSection | kNormaliseSection | kDecomposeSection | kAxisSection)) update();
@@ -167,6 +174,20 @@ void AnalysisController::stageFinished(int slot)
         m_axes = m_scheduler->result<pl::AxisOutput>(slot);
         break;
     case kTakeAxisSlot: publishAxis(); break;
+    case kNormalisedBodySlot:
+        if (auto body = m_scheduler->result<analysis::BodyMotion>(slot)) {
+            const QScopedValueRollback<bool> publishing(m_publishing, true);
+            m_document.setLiveBody(QStringLiteral("normalised"), m_pendingNormalisedLabel, *body, m_pendingNormalisedGhost);
+        }
+        break;
+    case kWeightedSlot:
+        if (auto body = m_scheduler->result<analysis::BodyMotion>(slot)) {
+            const QScopedValueRollback<bool> publishing(m_publishing, true);
+            m_weightError.clear();
+            m_weighted = m_document.setLiveBody(QStringLiteral("weighted"), m_pendingWeightedLabel, *body);
+            emit weightedChanged();
+        }
+        break;
     }
     emit resultChanged(slot);
 }
@@ -256,11 +277,23 @@ void AnalysisController::publishNormalised()
         auto take = std::make_shared<analysis::Take>(cell->normalisations[k].normalised);
         take->labels.takeIndex = takeA->labels.takeIndex;
         // The label names the take, its reference and the parameters it was computed with.
-        m_document.setLiveTake(QStringLiteral("normalised"),
-                               tr("%1 normalised to %2 (%3)")
-                                   .arg(m_document.takeLabel(idA), QString::fromStdString(cell->referenceName),
-                                        normaliseParametersText(m_normalisedParameters)),
-                               take, idA);
+        const QString label = tr("%1 normalised to %2 (%3)")
+                                  .arg(m_document.takeLabel(idA), QString::fromStdString(cell->referenceName),
+                                       normaliseParametersText(m_normalisedParameters));
+        if (take->skeleton && take->frameCount() > m_backgroundBodyFrames) {
+            // A long take's body is made off the GUI thread (stageFinished publishes it).
+            m_pendingNormalisedLabel = label;
+            m_pendingNormalisedGhost = idA;
+            const pl::StageKey key = pl::KeyBuilder("normalised body").add(m_keys.normalise).add(idA.toStdString()).key();
+            m_scheduler->request(kNormalisedBodySlot, key, [take](const analysis::RunControl& control) -> analysis::Result<StageValue> {
+                auto body = std::make_shared<const analysis::BodyMotion>(analysis::bodyMotion(*take, control));
+                if (control.cancelled()) return analysis::makeError(analysis::ErrorCode::Cancelled, "cancelled");
+                return erase<analysis::BodyMotion>(std::move(body));
+            });
+            return;
+        }
+        m_scheduler->clear(kNormalisedBodySlot);
+        m_document.setLiveTake(QStringLiteral("normalised"), label, take, idA);
         return;
     }
 }
@@ -273,6 +306,31 @@ void AnalysisController::synthesiseWeighted()
     const QScopedValueRollback<bool> publishing(m_publishing, true);
     const auto [function, emotion] = weightedCell();
     const double weight = m_document.parameters().design.emotionWeight;
+    const QString label = tr("%1/%2 a=%3 (%4)")
+                              .arg(QString::fromStdString(function), QString::fromStdString(emotion))
+                              .arg(weight, 0, 'f', 2)
+                              .arg(decompositionText(*m_decomposed));
+    qint64 frames = 0;
+    for (const auto& component : m_decomposed->components.functions)
+        if (component.function == function) frames = component.values.rows();
+    if (frames > m_backgroundBodyFrames) {
+        // A long take: y + a z and its body off the GUI thread (stageFinished publishes it).
+        m_pendingWeightedLabel = label;
+        const pl::StageKey key = pl::KeyBuilder("weighted body").add(m_keys.decompose).add(function).add(emotion).add(weight).key();
+        m_scheduler->request(kWeightedSlot, key,
+                             [decomposed = m_decomposed, function, emotion, weight](const analysis::RunControl& control)
+                                 -> analysis::Result<StageValue> {
+                                 auto take = pl::weightedTake(*decomposed, function, emotion, weight);
+                                 if (!take) return take.error();
+                                 control.report(0.5);
+                                 auto body = std::make_shared<const analysis::BodyMotion>(
+                                     analysis::bodyMotion(std::move(take).value(), control.step(0.5, 1.0)));
+                                 if (control.cancelled()) return analysis::makeError(analysis::ErrorCode::Cancelled, "cancelled");
+                                 return erase<analysis::BodyMotion>(std::move(body));
+                             });
+        return;
+    }
+    m_scheduler->clear(kWeightedSlot);
     auto take = pl::weightedTake(*m_decomposed, function, emotion, weight);
     if (!take) {
         m_weightError = QString::fromStdString(take.error().message);
@@ -281,10 +339,6 @@ void AnalysisController::synthesiseWeighted()
     }
     m_weightError.clear();
     m_weighted = std::make_shared<const analysis::Take>(std::move(take).value());
-    const QString label = tr("%1/%2 a=%3 (%4)")
-                              .arg(QString::fromStdString(function), QString::fromStdString(emotion))
-                              .arg(weight, 0, 'f', 2)
-                              .arg(decompositionText(*m_decomposed));
     // As published: the weighted body's motion (Document::setLiveTake).
     m_weighted = m_document.setLiveTake(QStringLiteral("weighted"), label, m_weighted);
     emit weightedChanged();

@@ -31,7 +31,18 @@ class AnalysisController : public QObject {
     Q_OBJECT
 public:
     /// Scheduler slots: the pipeline's stages, and the motion axes of takes A and B.
-    enum Slot { kPreprocessSlot = 1, kNormaliseSlot = 2, kDecomposeSlot = 3, kAxesSlot = 5, kTakeAxisSlot = 10, kTakeAxisBSlot = 11 };
+    /// Scheduler slots: the pipeline's stages, the motion axes of takes A and B, and the bodies of
+    /// long live takes (backgroundBodyFrames).
+    enum Slot {
+        kPreprocessSlot = 1,
+        kNormaliseSlot = 2,
+        kDecomposeSlot = 3,
+        kAxesSlot = 5,
+        kTakeAxisSlot = 10,
+        kTakeAxisBSlot = 11,
+        kNormalisedBodySlot = 12,
+        kWeightedSlot = 13
+    };
     static int takeAxisSlot(TakeSlot slot) { return slot == TakeSlot::A ? kTakeAxisSlot : kTakeAxisBSlot; }
     static QString slotTitle(int slot);
 
@@ -54,6 +65,13 @@ public:
     analysis::pipeline::Shared<analysis::pipeline::TakeAxis> takeAxis(TakeSlot slot, const TakePointer& take) const;
     /// The keys of every stage for the document's corpus and parameters.
     analysis::pipeline::ChainKeys keys() const { return m_keys; }
+
+    /// Live takes longer than this many frames (default 20,000: 11 min at 30 Hz) are made off the
+    /// GUI thread, with progress: the weighted take (y + a z and its body) and the normalised
+    /// take's body (analysis::bodyMotion). Shorter ones are made at once, so that a weight drag
+    /// shows its result in the same event. Tests set 0 to see the background path.
+    void setBackgroundBodyFrames(qint64 frames) { m_backgroundBodyFrames = frames; }
+    qint64 backgroundBodyFrames() const { return m_backgroundBodyFrames; }
 
     /// The normalise parameters the current normalise result was computed with.
     const analysis::pipeline::NormaliseParameters& normalisedParameters() const { return m_normalisedParameters; }
@@ -118,6 +136,12 @@ private:
     analysis::pipeline::NormaliseParameters m_normalisedParameters;
     TakePointer m_weighted;
     QString m_weightError;
+    qint64 m_backgroundBodyFrames = 20000;
+    /// Labels (and the normalised take's ghost) of the live takes made in the background,
+    /// published with them when their job finishes.
+    QString m_pendingWeightedLabel;
+    QString m_pendingNormalisedLabel;
+    QString m_pendingNormalisedGhost;
     TakePointer m_axisTakes[2]; ///< the takes the axis slots were last asked for
     QString m_axisLabels[2];    ///< and their labels then (what the "axis" take's label names)
 };

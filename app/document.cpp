@@ -113,6 +113,30 @@ TakePointer Document::perChannelGhostOf(const QString& id) const
 
 TakePointer Document::setLiveTake(const QString& name, const QString& label, TakePointer take, const QString& ghostId)
 {
+    // One motion: the figure, the graphs and every export show the body's.
+    if (take && take->skeleton) {
+        auto body = analysis::bodyMotion(*take);
+        if (body.perChannel) return setLiveBody(name, label, std::move(body), ghostId);
+    }
+    return publishLive(name, label, std::move(take), nullptr, ghostId);
+}
+
+TakePointer Document::setLiveBody(const QString& name, const QString& label, analysis::BodyMotion body, const QString& ghostId)
+{
+    TakePointer perChannelGhost;
+    if (body.perChannel) {
+        auto ghost = std::make_shared<analysis::Take>(body.take);
+        ghost->values = *body.perChannel;
+        ghost->skeleton = nullptr;
+        ghost->labels.source = "per-channel (thesis) result of " + body.take.labels.source;
+        perChannelGhost = std::move(ghost);
+    }
+    return publishLive(name, label, std::make_shared<const analysis::Take>(std::move(body.take)), std::move(perChannelGhost), ghostId);
+}
+
+TakePointer Document::publishLive(const QString& name, const QString& label, TakePointer take, TakePointer perChannelGhost,
+                                  const QString& ghostId)
+{
     const QString id = QStringLiteral("live/") + name;
     const int index = indexOfDerived(id);
     if (!take) {
@@ -121,19 +145,6 @@ TakePointer Document::setLiveTake(const QString& name, const QString& label, Tak
         if (m_selected[1] == id) selectTake(TakeSlot::B, QString());
         emit derivedTakesChanged();
         return nullptr;
-    }
-    // One motion: the figure, the graphs and every export show the body's.
-    TakePointer perChannelGhost;
-    if (take->skeleton) {
-        auto body = analysis::bodyMotion(*take);
-        if (body.perChannel) {
-            auto ghost = std::make_shared<analysis::Take>(body.take);
-            ghost->values = *body.perChannel;
-            ghost->skeleton = nullptr;
-            ghost->labels.source = "per-channel (thesis) result of " + body.take.labels.source;
-            perChannelGhost = std::move(ghost);
-            take = std::make_shared<const analysis::Take>(std::move(body.take));
-        }
     }
     if (index >= 0) {
         const bool relabelled = m_derived[std::size_t(index)].label != label;

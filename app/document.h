@@ -9,6 +9,7 @@
 /// AnalysisController alone - views only read them - and are never on the undo stack.
 
 #include "analysis/core/corpus.h"
+#include "analysis/core/skeleton_take.h"
 #include "analysis/core/take.h"
 #include "analysis/pipeline/stage_parameters.h"
 #include "analysis/synth/demo_corpus.h"
@@ -116,6 +117,9 @@ public:
     /// result kept as perChannelGhost.
     /// Returns the take as published (null when removed).
     TakePointer setLiveTake(const QString& name, const QString& label, TakePointer take, const QString& ghostId = {});
+    /// setLiveTake with the body already computed (analysis::bodyMotion, off the GUI thread for a
+    /// long take): `body.take` is published, `body.perChannel` kept as its per-channel ghost.
+    TakePointer setLiveBody(const QString& name, const QString& label, analysis::BodyMotion body, const QString& ghostId = {});
     /// The take drawn as a ghost behind `id` (a live result's original, else its per-channel
     /// result), null when none.
     TakePointer ghostOf(const QString& id) const;
@@ -171,6 +175,9 @@ signals:
     void interactionChanged(bool active);
 
 private:
+    TakePointer publishLive(const QString& name, const QString& label, TakePointer take, TakePointer perChannelGhost,
+                            const QString& ghostId);
+
     std::shared_ptr<const analysis::Corpus> m_corpus;
     QString m_corpusSource;
     std::shared_ptr<const analysis::synth::DemoGroundTruth> m_truth;

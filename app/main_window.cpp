@@ -466,7 +466,8 @@ void MainWindow::showStageStatus()
     QStringList parts;
     double least = 1.0;
     for (int slot : {AnalysisController::kPreprocessSlot, AnalysisController::kNormaliseSlot, AnalysisController::kDecomposeSlot,
-                     AnalysisController::kAxesSlot, AnalysisController::kTakeAxisSlot, AnalysisController::kTakeAxisBSlot}) {
+                     AnalysisController::kAxesSlot, AnalysisController::kTakeAxisSlot, AnalysisController::kTakeAxisBSlot,
+                     AnalysisController::kNormalisedBodySlot, AnalysisController::kWeightedSlot}) {
         if (scheduler.state(slot) == SlotState::Running) {
             parts << tr("%1 %2 %").arg(AnalysisController::slotTitle(slot)).arg(int(scheduler.progress(slot) * 100.0 + 0.5));
             least = std::min(least, scheduler.progress(slot));

@@ -182,6 +182,37 @@ void BM_BodyTake(benchmark::State& state)
 }
 BENCHMARK(BM_BodyTake)->ArgName("designed")->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
+/// The body of an hour-long derived take (432,000 frames at 120 Hz: a weighted demo take and its
+/// skeleton repeated), what the workbench makes off the GUI thread (AnalysisController's
+/// backgroundBodyFrames): forward kinematics and the 24 channels, one pass.
+void BM_BodyMotionHour(benchmark::State& state)
+{
+    static const ChainResult inputs = std::move(runChain(demo(), {}, nullptr)).value();
+    const auto& cell = inputs.axes->cells.front();
+    const Take weighted = std::move(weightedTake(*inputs.decomposed, cell.function, cell.emotion, 2.0)).value();
+    const Eigen::Index frames = 432000;
+    const Eigen::Index copies = (frames + weighted.frameCount() - 1) / weighted.frameCount();
+    Take hour = weighted;
+    hour.values = weighted.values.replicate(copies, 1).topRows(frames);
+    auto motion = std::make_shared<SkeletalMotion>(*weighted.skeleton);
+    const std::size_t slots = std::size_t(motion->jointSlots());
+    motion->rotations.clear();
+    for (Eigen::Index f = 0; f < frames; ++f) {
+        const std::size_t source = std::size_t(f % weighted.frameCount()) * slots;
+        motion->rotations.insert(motion->rotations.end(), weighted.skeleton->rotations.begin() + std::ptrdiff_t(source),
+                                 weighted.skeleton->rotations.begin() + std::ptrdiff_t(source + slots));
+    }
+    motion->movingTranslations = weighted.skeleton->movingTranslations.replicate(copies, 1).topRows(frames);
+    hour.skeleton = motion;
+    for (auto _ : state) {
+        const BodyMotion body = bodyMotion(hour);
+        if (!body.perChannel) state.SkipWithError("the weighted take is its body already");
+        benchmark::DoNotOptimize(body.take.values.data());
+    }
+    state.counters["frames"] = double(frames);
+}
+BENCHMARK(BM_BodyMotionHour)->Unit(benchmark::kMillisecond)->Iterations(3);
+
 } // namespace
 
 BENCHMARK_MAIN();

@@ -130,6 +130,52 @@ TEST_CASE("an emotion-weight drag during a running normalisation does not restar
     CHECK(analysis.weightedTake()->labels.source.find("2.5") != std::string::npos); // the drag's last weight
 }
 
+TEST_CASE("a long take's weighted body is made off the GUI thread with progress and is the body made at once", "[app][scheduler][emotion][body]")
+{
+    // Synchronous first: the reference.
+    TakePointer atOnce;
+    {
+        auto executor = std::make_shared<ManualExecutor>();
+        Document document;
+        AnalysisController analysis(document, nullptr, executor);
+        document.setCorpus(analysis::synth::generateDemoCorpus().corpus, QStringLiteral("demo"));
+        executor->drain();
+        setEmotionWeight(document, 2.0);
+        executor->drain();
+        atOnce = analysis.weightedTake();
+        REQUIRE(atOnce);
+        CHECK(analysis.scheduler().starts(AnalysisController::kWeightedSlot) == 0);
+    }
+    // Every take counts as long: the weighted take waits for its job.
+    auto executor = std::make_shared<ManualExecutor>();
+    Document document;
+    AnalysisController analysis(document, nullptr, executor);
+    analysis.setBackgroundBodyFrames(0);
+    std::vector<double> progress;
+    QObject::connect(&analysis.scheduler(), &StageScheduler::progressChanged, [&](int slot, double fraction) {
+        if (slot == AnalysisController::kWeightedSlot) progress.push_back(fraction);
+    });
+    document.setCorpus(analysis::synth::generateDemoCorpus().corpus, QStringLiteral("demo"));
+    executor->drain();
+    const int starts = analysis.scheduler().starts(AnalysisController::kWeightedSlot);
+    CHECK(starts >= 1);
+    setEmotionWeight(document, 2.0);
+    // Asked for, not yet made: the weight change returned without computing the take.
+    REQUIRE(executor->pending() == 1);
+    CHECK(analysis.scheduler().state(AnalysisController::kWeightedSlot) == SlotState::Running);
+    CHECK(analysis.weightedTake() != nullptr); // the previous weight's take is still shown
+    CHECK(analysis.weightedTake()->labels.source.find("a = 2") == std::string::npos);
+    executor->drain();
+    CHECK(analysis.scheduler().starts(AnalysisController::kWeightedSlot) == starts + 1);
+    REQUIRE(analysis.weightedTake());
+    CHECK(document.take(QStringLiteral("live/weighted")) == analysis.weightedTake());
+    CHECK(analysis.weightedTake()->values == atOnce->values);
+    CHECK(analysis.weightedTake()->labels.source == atOnce->labels.source);
+    REQUIRE(document.perChannelGhostOf(QStringLiteral("live/weighted")));
+    CHECK_FALSE(progress.empty());
+    CHECK(std::find_if(progress.begin(), progress.end(), [](double f) { return f >= 0.5 && f < 1.0; }) != progress.end());
+}
+
 TEST_CASE("a changed tau recomputes normalisation and what depends on it, nothing upstream", "[app][scheduler][normalise]")
 {
     auto executor = std::make_shared<ManualExecutor>();
