@@ -79,7 +79,7 @@ RemovePhraseBoundary::RemovePhraseBoundary(Document* document, AnalysisParameter
 
 ImportTake::ImportTake(Document* document, TakePointer take, const QString& label, const QString& sourcePath,
                        std::shared_ptr<const analysis::io::ImportOptions> options)
-    : m_document(document), m_take{document->nextImportedId(), label, std::move(take), sourcePath, QString(), std::move(options), nullptr}
+    : m_document(document), m_take{document->nextImportedId(), label, std::move(take), sourcePath, QString(), std::move(options), nullptr, {}}
 {
     setText(QCoreApplication::translate("commands", "Import %1").arg(label));
 }

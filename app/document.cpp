@@ -111,6 +111,13 @@ TakePointer Document::perChannelGhostOf(const QString& id) const
     return index < 0 ? nullptr : m_derived[std::size_t(index)].perChannelGhost;
 }
 
+std::optional<analysis::PerChannelDistance> Document::perChannelDistanceOf(const QString& id) const
+{
+    const int index = indexOfDerived(id);
+    if (index < 0 || !m_derived[std::size_t(index)].perChannelGhost) return std::nullopt;
+    return m_derived[std::size_t(index)].perChannelDistance;
+}
+
 TakePointer Document::setLiveTake(const QString& name, const QString& label, TakePointer take, const QString& ghostId)
 {
     // One motion: the figure, the graphs and every export show the body's.
@@ -118,7 +125,7 @@ TakePointer Document::setLiveTake(const QString& name, const QString& label, Tak
         auto body = analysis::bodyMotion(*take);
         if (body.perChannel) return setLiveBody(name, label, std::move(body), ghostId);
     }
-    return publishLive(name, label, std::move(take), nullptr, ghostId);
+    return publishLive(name, label, std::move(take), nullptr, {}, ghostId);
 }
 
 TakePointer Document::setLiveBody(const QString& name, const QString& label, analysis::BodyMotion body, const QString& ghostId)
@@ -131,11 +138,12 @@ TakePointer Document::setLiveBody(const QString& name, const QString& label, ana
         ghost->labels.source = "per-channel (thesis) result of " + body.take.labels.source;
         perChannelGhost = std::move(ghost);
     }
-    return publishLive(name, label, std::make_shared<const analysis::Take>(std::move(body.take)), std::move(perChannelGhost), ghostId);
+    return publishLive(name, label, std::make_shared<const analysis::Take>(std::move(body.take)), std::move(perChannelGhost),
+                       body.distance, ghostId);
 }
 
 TakePointer Document::publishLive(const QString& name, const QString& label, TakePointer take, TakePointer perChannelGhost,
-                                  const QString& ghostId)
+                                  const analysis::PerChannelDistance& distance, const QString& ghostId)
 {
     const QString id = QStringLiteral("live/") + name;
     const int index = indexOfDerived(id);
@@ -152,13 +160,14 @@ TakePointer Document::publishLive(const QString& name, const QString& label, Tak
         m_derived[std::size_t(index)].label = label;
         m_derived[std::size_t(index)].ghostId = ghostId;
         m_derived[std::size_t(index)].perChannelGhost = std::move(perChannelGhost);
+        m_derived[std::size_t(index)].perChannelDistance = distance;
         if (relabelled) emit takeLabelChanged(id);
         emit takeChanged(id);
         for (int slot = 0; slot < 2; ++slot)
             if (m_selected[slot] == id) emit selectionChanged(TakeSlot(slot));
         return take;
     }
-    m_derived.push_back(DerivedTake{id, label, take, QString(), ghostId, nullptr, std::move(perChannelGhost)});
+    m_derived.push_back(DerivedTake{id, label, take, QString(), ghostId, nullptr, std::move(perChannelGhost), distance});
     emit derivedTakesChanged();
     return take;
 }

@@ -20,6 +20,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace bunraku::analysis::io {
@@ -59,8 +60,11 @@ struct DerivedTake {
     /// imported takes: the options they were read with (stored in projects); null for defaults
     std::shared_ptr<const analysis::io::ImportOptions> importOptions;
     /// live results shown as one body (analysis::bodyMotion): the thesis's per-channel result, drawn
-    /// as the ghost when there is no ghostId; null when the take's channels are its body's.
+    /// as the ghost when there is no ghostId (beside it otherwise); null when the take's channels
+    /// are its body's.
     TakePointer perChannelGhost;
+    /// How far the body is from perChannelGhost (meaningful when it is set).
+    analysis::PerChannelDistance perChannelDistance;
 };
 
 class Document : public QObject {
@@ -125,6 +129,8 @@ public:
     TakePointer ghostOf(const QString& id) const;
     /// A live result's per-channel (thesis) result when it is shown as its body, null otherwise.
     TakePointer perChannelGhostOf(const QString& id) const;
+    /// How far that per-channel result is from the body shown (nothing without one).
+    std::optional<analysis::PerChannelDistance> perChannelDistanceOf(const QString& id) const;
 
     /// Replaces every parameter (loading a project): not undoable, clears the undo stack.
     void restoreParameters(const AnalysisParameters& values);
@@ -176,7 +182,7 @@ signals:
 
 private:
     TakePointer publishLive(const QString& name, const QString& label, TakePointer take, TakePointer perChannelGhost,
-                            const QString& ghostId);
+                            const analysis::PerChannelDistance& distance, const QString& ghostId);
 
     std::shared_ptr<const analysis::Corpus> m_corpus;
     QString m_corpusSource;

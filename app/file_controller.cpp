@@ -362,7 +362,7 @@ bool FileController::applyStateNow(const ProjectState& state)
         }
         m_document.insertImportedTake(
             DerivedTake{m_document.nextImportedId(), recipe.label, std::make_shared<const analysis::Take>(std::move(take).value()),
-                        recipe.path, QString(), std::make_shared<const analysis::io::ImportOptions>(recipe.options), nullptr},
+                        recipe.path, QString(), std::make_shared<const analysis::io::ImportOptions>(recipe.options), nullptr, {}},
             int(m_document.derivedTakes().size()));
     }
     m_document.restoreParameters(state.parameters);

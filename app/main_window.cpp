@@ -384,7 +384,21 @@ void MainWindow::refreshTakes()
     const TakePointer takeA = m_document->selectedTake(TakeSlot::A);
     const TakePointer takeB = m_document->selectedTake(TakeSlot::B);
     m_browser->setChosen(m_document->selectedId(TakeSlot::A), m_document->selectedId(TakeSlot::B));
-    m_graphs->setGhost(m_document->ghostOf(m_document->selectedId(TakeSlot::A)));
+    // The ghost (a live take's original), and the thesis's per-channel result of a take shown as
+    // one body: as the ghost when there is no other, else beside it; the caption says how far.
+    const QString idA = m_document->selectedId(TakeSlot::A);
+    const TakePointer ghost = m_document->ghostOf(idA);
+    const TakePointer perChannel = m_document->perChannelGhostOf(idA);
+    QString caption;
+    if (const auto distance = m_document->perChannelDistanceOf(idA))
+        caption = tr("%1: the thesis's per-channel result (each channel computed on its own), up to %2 cm (%3) and %4 deg from "
+                     "the body shown, which is what the 3D view draws and every export writes")
+                      .arg(ghost == perChannel ? tr("Grey dashes") : tr("Orange dots"))
+                      .arg(distance->maxPositionCm, 0, 'f', 1)
+                      .arg(QString::fromStdString(distance->worstPart))
+                      .arg(distance->maxAngleDeg, 0, 'f', 1);
+    m_graphs->setGhost(ghost);
+    m_graphs->setPerChannelGhost(ghost == perChannel ? nullptr : perChannel, caption);
     m_graphs->setTakes(takeA, takeB, m_document->selectedId(TakeSlot::A) + QLatin1Char('|') + m_document->selectedId(TakeSlot::B));
     m_inspector->setTakes(takeA, takeB);
     m_timeline->setDuration(m_document->duration(), m_document->rateHz());

@@ -113,7 +113,8 @@ double GraphGrid::shownDuration() const
     double duration = 0.0;
     for (const auto& take : m_takes)
         if (take) duration = std::max(duration, take->duration());
-    if (m_ghost) duration = std::max(duration, m_ghost->duration());
+    for (const auto& ghost : m_ghosts)
+        if (ghost) duration = std::max(duration, ghost->duration());
     return duration;
 }
 
@@ -148,8 +149,15 @@ void GraphGrid::settleValueRanges()
 
 void GraphGrid::setGhost(std::shared_ptr<const analysis::Take> ghost)
 {
-    if (ghost == m_ghost) return;
-    m_ghost = std::move(ghost);
+    if (ghost == m_ghosts[0]) return;
+    m_ghosts[0] = std::move(ghost);
+    rebuild();
+}
+
+void GraphGrid::setPerChannelGhost(std::shared_ptr<const analysis::Take> take)
+{
+    if (take == m_ghosts[1]) return;
+    m_ghosts[1] = std::move(take);
     rebuild();
 }
 
@@ -215,7 +223,9 @@ void GraphGrid::rebuild(bool allData)
     const std::vector<GraphCell> cells = m_takes[0] ? layoutGraphs(m_takes[0]->channels, m_options) : std::vector<GraphCell>{};
     std::vector<GraphCell> current;
     for (const auto& graph : m_graphs) current.push_back(graph.cell);
-    const bool sameStructure = !m_graphs.empty() && sameCells(cells, current) && bool(m_ghost) == (m_graphs.front().ghost != nullptr);
+    const bool sameStructure = !m_graphs.empty() && sameCells(cells, current) &&
+                               bool(m_ghosts[0]) == (m_graphs.front().ghosts[0] != nullptr) &&
+                               bool(m_ghosts[1]) == (m_graphs.front().ghosts[1] != nullptr);
 
     if (!sameStructure) {
         m_plot->clearItems();
@@ -255,9 +265,10 @@ void GraphGrid::rebuild(bool allData)
             connect(timeAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this,
                     [this, rect = graph.rect](const QCPRange&) { propagateTimeRange(rect); });
 
-            if (m_ghost) {
-                graph.ghost = m_plot->addGraph(timeAxis, valueAxis);
-                graph.ghost->setPen(QPen(m_colours.ghost, 1.0, Qt::DashLine));
+            for (int g = 0; g < 2; ++g) {
+                if (!m_ghosts[g]) continue;
+                graph.ghosts[g] = m_plot->addGraph(timeAxis, valueAxis);
+                graph.ghosts[g]->setPen(g == 0 ? QPen(m_colours.ghost, 1.0, Qt::DashLine) : QPen(m_colours.perChannel, 1.2, Qt::DotLine));
             }
             for (int slot = 0; slot < 2; ++slot) {
                 if (!drawsSlot(cell.takes, slot)) continue;
@@ -328,9 +339,10 @@ void GraphGrid::rebuild(bool allData)
             auto* valueAxis = graph.rect->axis(QCPAxis::atLeft);
             if (valueAxis->label() != unit) valueAxis->setLabel(unit);
         }
-        if (graph.ghost && allData) {
-            graph.ghostChannel = findChannel(*m_ghost, graph.cell.part, graph.cell.dof);
-            graph.ghostEnvelope = graph.ghostChannel ? SeriesEnvelope(m_ghost, *graph.ghostChannel) : SeriesEnvelope();
+        for (int g = 0; g < 2; ++g) {
+            if (!graph.ghosts[g] || !allData) continue;
+            graph.ghostChannels[g] = findChannel(*m_ghosts[g], graph.cell.part, graph.cell.dof);
+            graph.ghostEnvelopes[g] = graph.ghostChannels[g] ? SeriesEnvelope(m_ghosts[g], *graph.ghostChannels[g]) : SeriesEnvelope();
         }
         if (changed[0] || changed[1] || allData) sampleCurves(graph);
     }
@@ -367,8 +379,9 @@ void GraphGrid::applyValueRanges()
         for (int slot = 0; slot < 2; ++slot)
             if (graph.curves[slot])
                 if (auto r = graph.envelopes[slot].range()) range = merged(range, *r);
-        if (graph.ghost)
-            if (auto r = graph.ghostEnvelope.range()) range = merged(range, *r);
+        for (int g = 0; g < 2; ++g)
+            if (graph.ghosts[g])
+                if (auto r = graph.ghostEnvelopes[g].range()) range = merged(range, *r);
         return range;
     };
     std::map<std::string, ValueRange> perDof;
@@ -395,7 +408,8 @@ void GraphGrid::sampleCurves(Graph& graph)
     graph.sampledColumns = graph.rect->width();
     for (int slot = 0; slot < 2; ++slot)
         if (graph.curves[slot]) graph.curves[slot]->data()->set(graph.envelopes[slot].sample(m_rangeLower, m_rangeUpper, columns), true);
-    if (graph.ghost) graph.ghost->data()->set(graph.ghostEnvelope.sample(m_rangeLower, m_rangeUpper, columns), true);
+    for (int g = 0; g < 2; ++g)
+        if (graph.ghosts[g]) graph.ghosts[g]->data()->set(graph.ghostEnvelopes[g].sample(m_rangeLower, m_rangeUpper, columns), true);
 }
 
 void GraphGrid::resampleCurves(bool onlyResized)

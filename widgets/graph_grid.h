@@ -27,6 +27,7 @@
 #include "widgets/clock.h"
 #include <QWidget>
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -53,6 +54,7 @@ struct GraphColours {
     QColor takeA{0x1f, 0x77, 0xb4};
     QColor takeB{0xd9, 0x5f, 0x02};
     QColor ghost{0xa0, 0xa0, 0xa0};
+    QColor perChannel{0xe6, 0x9f, 0x00}; ///< the thesis's per-channel result (Okabe-Ito orange)
 };
 
 class GraphGrid : public QWidget {
@@ -70,6 +72,11 @@ public:
                   const QString& identity = {});
     /// A take drawn faintly behind A (the original under a designed take); null hides it.
     void setGhost(std::shared_ptr<const analysis::Take> ghost);
+    /// The thesis's per-channel result of a take shown as one body, drawn dotted behind A beside
+    /// the ghost (a normalised take's ghost is its raw take); null hides it.
+    void setPerChannelGhost(std::shared_ptr<const analysis::Take> take);
+    /// The takes drawn as the ghost and as the per-channel result (as the angle display shows them).
+    std::array<std::shared_ptr<const analysis::Take>, 2> ghostTakes() const { return {m_ghosts[0], m_ghosts[1]}; }
     void setGraphLayout(GraphLayout layout);
     void setTwoTakeMode(TwoTakeMode mode);
     void setValueScale(ValueScale scale);
@@ -143,14 +150,14 @@ private:
         GraphCell cell;
         QCPAxisRect* rect = nullptr;
         QCPGraph* curves[2] = {nullptr, nullptr};
-        QCPGraph* ghost = nullptr;
+        QCPGraph* ghosts[2] = {nullptr, nullptr}; ///< the ghost, the per-channel result
         std::optional<Eigen::Index> channels[2];
-        std::optional<Eigen::Index> ghostChannel;
+        std::optional<Eigen::Index> ghostChannels[2];
         QCPItemStraightLine* cursor = nullptr;
         QCPItemTracer* points[2] = {nullptr, nullptr};
         QCPItemText* valueText = nullptr;
         SeriesEnvelope envelopes[2]; ///< the curves' data at any zoom
-        SeriesEnvelope ghostEnvelope;
+        SeriesEnvelope ghostEnvelopes[2];
         int sampledColumns = 0; ///< the width the curves were last sampled for
     };
 
@@ -176,7 +183,7 @@ private:
     QCustomPlot* m_plot = nullptr;
     QScrollArea* m_scroll = nullptr;
     std::shared_ptr<const analysis::Take> m_takes[2];
-    std::shared_ptr<const analysis::Take> m_ghost;
+    std::shared_ptr<const analysis::Take> m_ghosts[2]; ///< the ghost, the per-channel result
     std::shared_ptr<const analysis::Take> m_plotted[2]; ///< the takes whose data the curves hold
     bool m_interacting = false;
     bool m_rangesStale = false; ///< data changed while the ranges were held

@@ -81,6 +81,12 @@ GraphPanel::GraphPanel(QWidget* parent) : QWidget(parent), m_grid(new GraphGrid(
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(2);
     layout->addWidget(controls);
+    m_ghostCaption = new QLabel(this);
+    m_ghostCaption->setObjectName("ghostCaption");
+    m_ghostCaption->setWordWrap(true);
+    m_ghostCaption->setContentsMargins(8, 0, 8, 0);
+    m_ghostCaption->setVisible(false);
+    layout->addWidget(m_ghostCaption);
     layout->addWidget(m_grid, 1);
 
     connect(m_layout, &QComboBox::currentIndexChanged, this,
@@ -125,6 +131,17 @@ void GraphPanel::setGhost(std::shared_ptr<const analysis::Take> ghost)
     m_grid->setGhost(shown(m_ghost));
 }
 
+void GraphPanel::setPerChannelGhost(std::shared_ptr<const analysis::Take> take, const QString& caption)
+{
+    m_ghostCaption->setText(caption);
+    m_ghostCaption->setVisible(!caption.isEmpty());
+    if (take == m_perChannel) return;
+    m_perChannel = std::move(take);
+    m_grid->setPerChannelGhost(shown(m_perChannel));
+}
+
+QString GraphPanel::ghostCaption() const { return m_ghostCaption->isHidden() ? QString() : m_ghostCaption->text(); }
+
 void GraphPanel::setAngleDisplay(AngleDisplay display) { m_angles->setCurrentIndex(m_angles->findData(int(display))); }
 
 AngleDisplay GraphPanel::angleDisplay() const { return AngleDisplay(m_angles->currentData().toInt()); }
@@ -141,6 +158,7 @@ void GraphPanel::showTakes(const QString& identity)
     m_shownA = shown(m_takeA);
     m_shownB = shown(m_takeB);
     m_grid->setGhost(shown(m_ghost));
+    m_grid->setPerChannelGhost(shown(m_perChannel));
     m_grid->setTakes(m_shownA, m_shownB, identity);
 }
 

@@ -9,6 +9,7 @@
 #include <QWidget>
 
 class QCheckBox;
+class QLabel;
 class QComboBox;
 
 namespace bunraku::widgets {
@@ -32,6 +33,11 @@ public:
                   const QString& identity = {});
     /// The take drawn faintly behind A (GraphGrid::setGhost), shown as the angles are.
     void setGhost(std::shared_ptr<const analysis::Take> ghost);
+    /// The thesis's per-channel result drawn beside the ghost (GraphGrid::setPerChannelGhost) and
+    /// `caption`, the line under the controls that says what the ghosts are and how far the
+    /// per-channel result is from the body; an empty caption hides the line.
+    void setPerChannelGhost(std::shared_ptr<const analysis::Take> take, const QString& caption);
+    QString ghostCaption() const;
     /// The "Angles" choice: Euler angles, or rotation coordinates (which never wind or jump at
     /// gimbal); the same takes are shown again with the zoom kept.
     void setAngleDisplay(AngleDisplay display);
@@ -66,7 +72,8 @@ private:
     QComboBox* m_scale = nullptr;
     QComboBox* m_angles = nullptr;
     QCheckBox* m_thesisTicks = nullptr;
-    std::shared_ptr<const analysis::Take> m_takeA, m_takeB, m_ghost; ///< as given
+    QLabel* m_ghostCaption = nullptr;
+    std::shared_ptr<const analysis::Take> m_takeA, m_takeB, m_ghost, m_perChannel; ///< as given
     std::shared_ptr<const analysis::Take> m_shownA, m_shownB;         ///< as drawn
 };
 

@@ -106,28 +106,34 @@ std::string describeSkeletonChannelGap(const SkeletonChannelGap& gap)
 BodyMotion bodyMotion(Take take, const RunControl& control)
 {
     if (!take.skeleton || !take.skeleton->skeleton || !hasPuppetLayout(take) || take.skeleton->frameCount() != take.frameCount())
-        return {std::move(take), nullptr};
+        return {std::move(take), nullptr, {}};
     const auto found = boundParts(*take.skeleton->skeleton);
-    if (!found) return {std::move(take), nullptr};
+    if (!found) return {std::move(take), nullptr, {}};
     const auto& bindings = *found;
     // One pass: the body's channels, and whether they differ from the take's own (the channels of
     // a take that is its body already are kept bit for bit).
     Eigen::MatrixXd body(take.frameCount(), kPuppetChannelCount);
     bool differs = false;
+    PerChannelDistance distance;
     const Eigen::Index frames = take.frameCount();
     for (Eigen::Index f = 0; f < frames; ++f) {
         if (f % 4096 == 4095) {
-            if (control.cancelled()) return {std::move(take), nullptr};
+            if (control.cancelled()) return {std::move(take), nullptr, {}};
             control.report(double(f) / double(frames));
         }
         const auto poses = take.skeleton->worldPoses(f);
         for (std::size_t p = 0; p < bindings.size(); ++p) {
             const Eigen::Index first = Eigen::Index(p) * kDofCount;
             const RigidTransform pose = poses[std::size_t(bindings[p]->joint)] * bindings[p]->joint_T_part;
-            if (!differs) {
-                const RigidTransform channels = partPose(take, f, first);
-                differs = (pose.translation - channels.translation).norm() > kBodyAgreementTolerance ||
-                          rotationDistance(pose.rotation, channels.rotation) * 180.0 / std::numbers::pi > kBodyAgreementTolerance;
+            const RigidTransform channels = partPose(take, f, first);
+            const double cm = (pose.translation - channels.translation).norm();
+            const double deg = rotationDistance(pose.rotation, channels.rotation) * 180.0 / std::numbers::pi;
+            differs = differs || cm > kBodyAgreementTolerance || deg > kBodyAgreementTolerance;
+            distance.maxAngleDeg = std::max(distance.maxAngleDeg, deg);
+            if (cm > distance.maxPositionCm) {
+                distance.maxPositionCm = cm;
+                distance.worstPart = std::string(kPuppetParts[p]);
+                distance.worstFrame = f;
             }
             const Eigen::MatrixXd& previousRow = f == 0 ? take.values : body;
             const Eigen::Index previousFrame = f == 0 ? 0 : f - 1;
@@ -140,10 +146,10 @@ BodyMotion bodyMotion(Take take, const RunControl& control)
             body(f, first + 5) = angles.roll;
         }
     }
-    if (!differs) return {std::move(take), nullptr};
+    if (!differs) return {std::move(take), nullptr, {}};
     auto perChannel = std::make_shared<const Eigen::MatrixXd>(std::move(take.values));
     take.values = std::move(body);
-    return {std::move(take), std::move(perChannel)};
+    return {std::move(take), std::move(perChannel), std::move(distance)};
 }
 
 Take bodyTake(Take take)

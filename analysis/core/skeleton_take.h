@@ -51,6 +51,15 @@ std::optional<SkeletonChannelGap> noticeableSkeletonGap(const Take& take);
 /// "up to 78.7 cm (hand, frame 172) and 127.1 deg".
 std::string describeSkeletonChannelGap(const SkeletonChannelGap& gap);
 
+/// The largest distance (cm) and angle (deg) between a take's puppet parts and the same parts
+/// posed by `perChannel` (its per-channel ghost), over every part and frame; nothing when the
+/// shapes differ or the take is not of the puppet layout.
+struct PerChannelDistance {
+    double maxPositionCm = 0;
+    double maxAngleDeg = 0;
+    std::string worstPart;
+    Eigen::Index worstFrame = 0;
+};
 /// One motion for a take (what the 3D view draws, the graphs show and every export writes): for a
 /// take with the 24 puppet channels and a skeleton that poses the four parts, whose channels are
 /// not the parts' poses (a derived take: the thesis's per-channel arithmetic of 3.6, 3.7, 4.5 and
@@ -63,21 +72,15 @@ struct BodyMotion {
     Take take;
     /// The thesis's per-channel result the channels were projected from; null when unchanged.
     std::shared_ptr<const Eigen::MatrixXd> perChannel;
+    /// How far the body is from the per-channel result (measured in the same pass; zero when
+    /// perChannel is null).
+    PerChannelDistance distance;
 };
 /// `control` is told the fraction of frames done; a cancelled call returns the take as it is.
 BodyMotion bodyMotion(Take take, const RunControl& control = {});
 /// bodyMotion(take).take.
 Take bodyTake(Take take);
 
-/// The largest distance (cm) and angle (deg) between a take's puppet parts and the same parts
-/// posed by `perChannel` (its per-channel ghost), over every part and frame; nothing when the
-/// shapes differ or the take is not of the puppet layout.
-struct PerChannelDistance {
-    double maxPositionCm = 0;
-    double maxAngleDeg = 0;
-    std::string worstPart;
-    Eigen::Index worstFrame = 0;
-};
 std::optional<PerChannelDistance> perChannelDistance(const Take& take, const Eigen::MatrixXd& perChannel);
 
 /// The same motion at another rate: frame k at time k / toHz, rotations interpolated

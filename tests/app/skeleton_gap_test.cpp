@@ -7,6 +7,7 @@
 #include "analysis/core/skeleton_take.h"
 #include "analysis/io/take_csv.h"
 #include "app/normalise_panel.h"
+#include "widgets/graph_panel.h"
 #include "render/scene.h"
 
 #include <catch2/catch.hpp>
@@ -57,6 +58,16 @@ TEST_CASE("a normalised Bandai take is shown, graphed and exported as one body, 
     CHECK(distance->maxPositionCm > 1.0); // method2 really moves the parts apart
 
     document.selectTake(TakeSlot::A, QStringLiteral("live/normalised"));
+    // The graphs draw the raw take as the ghost and the per-channel result beside it, and say how
+    // far the per-channel result is from the body (measured as analysis::perChannelDistance does).
+    auto* graphs = window->graphPanel();
+    const QString caption = graphs->ghostCaption();
+    INFO(caption.toStdString());
+    CHECK(caption.startsWith(QStringLiteral("Orange dots: the thesis's per-channel result")));
+    CHECK(caption.contains(QStringLiteral("up to %1 cm (%2)").arg(distance->maxPositionCm, 0, 'f', 1).arg(QString::fromStdString(distance->worstPart))));
+    CHECK(caption.contains(QStringLiteral("and %1 deg").arg(distance->maxAngleDeg, 0, 'f', 1)));
+    CHECK(graphs->grid()->ghostTakes()[0] == document.take(app::Document::corpusTakeId(0)));
+    CHECK(graphs->grid()->ghostTakes()[1] == document.perChannelGhostOf(QStringLiteral("live/normalised")));
     for (const auto style : {render::FigureStyle::PuppetAndSkeleton, render::FigureStyle::Skeleton, render::FigureStyle::Puppet}) {
         figure->setCurrentIndex(figure->findData(int(style)));
         CHECK_FALSE(gap->isVisibleTo(view)); // one motion: nothing to warn about
@@ -74,6 +85,8 @@ TEST_CASE("a normalised Bandai take is shown, graphed and exported as one body, 
     CHECK((written->values - normalised->values).cwiseAbs().maxCoeff() < 1e-6);
     document.selectTake(TakeSlot::A, app::Document::corpusTakeId(0));
     CHECK_FALSE(gap->isVisibleTo(view));
+    CHECK(graphs->ghostCaption().isEmpty()); // a take read from a file is its own body
+    CHECK_FALSE(graphs->grid()->ghostTakes()[1]);
     REQUIRE(exports.exportTake(TakeSlot::A, QString::fromStdString((dir / "take.bvh").string())));
     CHECK(exports.lastNote().isEmpty());
 }
