@@ -393,7 +393,7 @@ void MainWindow::refreshTakes()
     if (const auto distance = m_document->perChannelDistanceOf(idA))
         caption = tr("%1: the thesis's per-channel result (each channel computed on its own), up to %2 cm (%3) and %4 deg from "
                      "the body shown, which is what the 3D view draws and every export writes")
-                      .arg(ghost == perChannel ? tr("Grey dashes") : tr("Orange dots"))
+                      .arg(ghost == perChannel ? tr("Grey dashes") : tr("Orange line"))
                       .arg(distance->maxPositionCm, 0, 'f', 1)
                       .arg(QString::fromStdString(distance->worstPart))
                       .arg(distance->maxAngleDeg, 0, 'f', 1);

@@ -8,6 +8,7 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <utility>
 #include <cmath>
 #include <map>
 
@@ -131,6 +132,7 @@ void GraphGrid::endInteraction()
 {
     if (!m_interacting) return;
     m_interacting = false;
+    if (m_pendingPerChannel) setPerChannelGhost(std::exchange(m_pendingPerChannel, nullptr));
     settleValueRanges();
     if (m_followLength) {
         m_followLength = false;
@@ -157,6 +159,13 @@ void GraphGrid::setGhost(std::shared_ptr<const analysis::Take> ghost)
 void GraphGrid::setPerChannelGhost(std::shared_ptr<const analysis::Take> take)
 {
     if (take == m_ghosts[1]) return;
+    if (m_interacting && take && m_ghosts[1]) {
+        // A drag step: the dots follow when the drag ends (a new take here would replot every
+        // layer of every graph on every step).
+        m_pendingPerChannel = std::move(take);
+        return;
+    }
+    m_pendingPerChannel.reset();
     m_ghosts[1] = std::move(take);
     rebuild();
 }
@@ -268,7 +277,7 @@ void GraphGrid::rebuild(bool allData)
             for (int g = 0; g < 2; ++g) {
                 if (!m_ghosts[g]) continue;
                 graph.ghosts[g] = m_plot->addGraph(timeAxis, valueAxis);
-                graph.ghosts[g]->setPen(g == 0 ? QPen(m_colours.ghost, 1.0, Qt::DashLine) : QPen(m_colours.perChannel, 1.2, Qt::DotLine));
+                graph.ghosts[g]->setPen(g == 0 ? QPen(m_colours.ghost, 1.0, Qt::DashLine) : QPen(m_colours.perChannel, 1.0, Qt::SolidLine));
             }
             for (int slot = 0; slot < 2; ++slot) {
                 if (!drawsSlot(cell.takes, slot)) continue;

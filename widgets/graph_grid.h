@@ -72,8 +72,9 @@ public:
                   const QString& identity = {});
     /// A take drawn faintly behind A (the original under a designed take); null hides it.
     void setGhost(std::shared_ptr<const analysis::Take> ghost);
-    /// The thesis's per-channel result of a take shown as one body, drawn dotted behind A beside
-    /// the ghost (a normalised take's ghost is its raw take); null hides it.
+    /// The thesis's per-channel result of a take shown as one body, drawn in orange behind A beside
+    /// the ghost (a normalised take's ghost is its raw take); null hides it. During an interaction
+    /// a new one waits for endInteraction (a drag step redraws only the live curves).
     void setPerChannelGhost(std::shared_ptr<const analysis::Take> take);
     /// The takes drawn as the ghost and as the per-channel result (as the angle display shows them).
     std::array<std::shared_ptr<const analysis::Take>, 2> ghostTakes() const { return {m_ghosts[0], m_ghosts[1]}; }
@@ -184,6 +185,7 @@ private:
     QScrollArea* m_scroll = nullptr;
     std::shared_ptr<const analysis::Take> m_takes[2];
     std::shared_ptr<const analysis::Take> m_ghosts[2]; ///< the ghost, the per-channel result
+    std::shared_ptr<const analysis::Take> m_pendingPerChannel; ///< set during an interaction
     std::shared_ptr<const analysis::Take> m_plotted[2]; ///< the takes whose data the curves hold
     bool m_interacting = false;
     bool m_rangesStale = false; ///< data changed while the ranges were held

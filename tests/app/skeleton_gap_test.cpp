@@ -63,7 +63,7 @@ TEST_CASE("a normalised Bandai take is shown, graphed and exported as one body, 
     auto* graphs = window->graphPanel();
     const QString caption = graphs->ghostCaption();
     INFO(caption.toStdString());
-    CHECK(caption.startsWith(QStringLiteral("Orange dots: the thesis's per-channel result")));
+    CHECK(caption.startsWith(QStringLiteral("Orange line: the thesis's per-channel result")));
     CHECK(caption.contains(QStringLiteral("up to %1 cm (%2)").arg(distance->maxPositionCm, 0, 'f', 1).arg(QString::fromStdString(distance->worstPart))));
     CHECK(caption.contains(QStringLiteral("and %1 deg").arg(distance->maxAngleDeg, 0, 'f', 1)));
     CHECK(graphs->grid()->ghostTakes()[0] == document.take(app::Document::corpusTakeId(0)));

@@ -204,6 +204,49 @@ TEST_CASE("during an interaction new data redraws only the curves and value rang
     CHECK(after.second == Approx(std::max(ghostRange.second, lastRange.second)));
 }
 
+TEST_CASE("the per-channel result is drawn beside the ghost and follows a drag when it ends", "[widgets][graph_grid]")
+{
+    widgets::GraphGrid grid;
+    const auto original = test::syntheticPuppetTake(60);
+    grid.setTakes(original, nullptr);
+    grid.setGhost(original);
+    const auto perChannel = scaled(*original, 1.2);
+    grid.setPerChannelGhost(perChannel);
+    showGrid(grid);
+    REQUIRE(grid.graphCount() == 24);
+    CHECK(grid.ghostTakes()[0] == original);
+    CHECK(grid.ghostTakes()[1] == perChannel);
+    // Both ghosts are drawn in every graph: two curves below the live layer besides take A's.
+    int ghostCurves = 0;
+    for (int i = 0; i < grid.plot()->graphCount(); ++i)
+        if (grid.plot()->graph(i)->layer()->name() != "live") ++ghostCurves;
+    CHECK(ghostCurves == 2 * 24);
+    // The per-channel result's values count in the value range.
+    const auto range = grid.graphValueRange(18);
+    const auto perChannelRange = autoscaledRange(perChannel, 18);
+    CHECK(range.first <= perChannelRange.first + 1e-9);
+    CHECK(range.second >= perChannelRange.second - 1e-9);
+
+    // A drag: new per-channel results wait (no full replot per step), the last one is shown at the end.
+    QSignalSpy fullReplots(grid.plot(), &QCustomPlot::beforeReplot);
+    grid.beginInteraction();
+    std::shared_ptr<analysis::Take> last;
+    for (double factor : {1.5, 2.0, 3.0}) {
+        last = scaled(*original, factor);
+        grid.setTakes(last, nullptr);
+        grid.setPerChannelGhost(scaled(*original, factor * 1.1));
+    }
+    CHECK(fullReplots.count() == 0);
+    CHECK(grid.ghostTakes()[1] == perChannel);
+    const auto lastPerChannel = scaled(*original, 3.3);
+    grid.setPerChannelGhost(lastPerChannel);
+    grid.endInteraction();
+    CHECK(grid.ghostTakes()[1] == lastPerChannel);
+    CHECK(fullReplots.count() >= 1);
+    grid.setPerChannelGhost(nullptr);
+    CHECK_FALSE(grid.ghostTakes()[1]);
+}
+
 TEST_CASE("a burst of data changes holds the value ranges until it settles", "[widgets][graph_grid]")
 {
     widgets::ManualClock clock; // time moves only when the test says so
