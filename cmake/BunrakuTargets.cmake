@@ -17,6 +17,42 @@ function(bunraku_configure_target target)
   endif()
 endfunction()
 
+# bunraku_precompile(TARGET KIND): precompiled third-party headers (BUNRAKU_PCH), the one
+# measure that keeps a clean build of this tree on two cores short (docs/PERFORMANCE.md, "Build").
+# Project headers are never precompiled: a TU sees exactly the project headers it includes. The
+# analysis modules are not precompiled: their time goes to instantiating Eigen, not to parsing,
+# and gcc 12 at -O3 warns (-Warray-bounds, a known false positive in std::string) in some of them
+# when the standard headers come first.
+#   tests      the standard library, Eigen and Catch2 (every non-Qt test reuses one)
+#   qt-tests   those, Catch2 and QtWidgets/QtTest (every Qt test reuses one)
+#   qt-gui     the standard library, Eigen and QtGui (render)
+#   qt         the standard library, Eigen and QtWidgets (widgets, app, cli: one each)
+set(BUNRAKU_PCH_STD <algorithm> <array> <cmath> <filesystem> <functional> <map> <memory> <optional> <string> <vector>)
+function(bunraku_precompile target kind)
+  if(NOT BUNRAKU_PCH)
+    return()
+  endif()
+  if(kind STREQUAL "tests")
+    target_precompile_headers(${target} PRIVATE ${BUNRAKU_PCH_STD} <Eigen/Core> <Eigen/Geometry> <catch2/catch.hpp>)
+  elseif(kind STREQUAL "qt-tests")
+    target_precompile_headers(${target} PRIVATE ${BUNRAKU_PCH_STD} <Eigen/Core> <Eigen/Geometry> <catch2/catch.hpp> <QtWidgets> <QtTest>)
+  elseif(kind STREQUAL "qt-gui")
+    target_precompile_headers(${target} PRIVATE ${BUNRAKU_PCH_STD} <Eigen/Core> <Eigen/Geometry> <QtGui>)
+  elseif(kind STREQUAL "qt")
+    target_precompile_headers(${target} PRIVATE ${BUNRAKU_PCH_STD} <Eigen/Core> <Eigen/Geometry> <QtWidgets>)
+  else()
+    message(FATAL_ERROR "bunraku_precompile: unknown kind ${kind}")
+  endif()
+endfunction()
+
+# Targets whose precompiled headers others reuse (REUSE_FROM: one header compile for many
+# targets built with the same flags).
+function(bunraku_reuse_precompiled target from)
+  if(BUNRAKU_PCH)
+    target_precompile_headers(${target} REUSE_FROM ${from})
+  endif()
+endfunction()
+
 # bunraku_analysis_module(NAME SOURCES a.cpp ... [DEPENDS bunraku_analysis_core ...])
 # One static library per analysis module folder; it sees only the standard library, Eigen,
 # nlohmann-json and the modules it names. Qt is never on its include path.
@@ -48,6 +84,14 @@ function(bunraku_add_test name)
     BUNRAKU_SHARED_DIR="${BUNRAKU_SHARED_DIR}"
     BUNRAKU_BINARY_DIR="${CMAKE_BINARY_DIR}")
   bunraku_configure_target(${name})
+  if(T_QT)
+    bunraku_reuse_precompiled(${name} bunraku_pch_qt-tests)
+  elseif(BUNRAKU_PCH)
+    # -fPIC as Qt's targets add it, so that a test linking a Qt layer (tests_cli) and one that
+    # does not compile with the same flags as the header they share.
+    target_compile_options(${name} PRIVATE -fPIC)
+    bunraku_reuse_precompiled(${name} bunraku_pch_tests)
+  endif()
   # A case whose peer is missing prints "bunraku-test: skipped:" (tests/support/peer.h): ctest
   # reports it as skipped, not passed (under CI=true it fails instead).
   catch_discover_tests(${name} TEST_PREFIX "${name}: " PROPERTIES TIMEOUT 600 SKIP_REGULAR_EXPRESSION "bunraku-test: skipped:")

@@ -16,14 +16,18 @@ targets=("$@")
 if [ ${#targets[@]} -eq 0 ]; then
   targets=(fuzz_bvh fuzz_take_csv fuzz_fastrak fuzz_corpus_manifest fuzz_project fuzz_warp_csv fuzz_gains_json)
 fi
-build="$root/build-fuzz"
-generator=()
-if command -v ninja >/dev/null 2>&1 && [ ! -f "$build/CMakeCache.txt" ]; then generator=(-G Ninja); fi
-# -O1 with line tables: quick to build, fast enough to fuzz, stack traces with lines. Warnings
-# are errors in the gcc builds (scripts/build.sh); here clang's own (GCC pragmas) only show.
-cmake -S "$root" -B "$build" "${generator[@]}" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -gline-tables-only" \
-  -DCMAKE_CXX_COMPILER=clang++-14 -DBUNRAKU_FUZZ=ON -DBUNRAKU_WITH_QT=OFF -DBUNRAKU_BUILD_TESTS=OFF \
-  -DBUNRAKU_BUILD_BENCHMARKS=OFF -DBUNRAKU_WERROR=OFF >/dev/null
+# BUNRAKU_FUZZ_BUILD: a build folder already configured with BUNRAKU_FUZZ=ON (scripts/test.sh
+# builds its sanitizer tests and these targets in one folder); default build-fuzz, configured here.
+build="${BUNRAKU_FUZZ_BUILD:-$root/build-fuzz}"
+if ! grep -q '^BUNRAKU_FUZZ:BOOL=ON' "$build/CMakeCache.txt" 2>/dev/null; then
+  generator=()
+  if command -v ninja >/dev/null 2>&1 && [ ! -f "$build/CMakeCache.txt" ]; then generator=(-G Ninja); fi
+  # -O1 with line tables: quick to build, fast enough to fuzz, stack traces with lines. Warnings
+  # are errors in the gcc builds (scripts/build.sh); here clang's own (GCC pragmas) only show.
+  cmake -S "$root" -B "$build" "${generator[@]}" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -gline-tables-only" \
+    -DCMAKE_CXX_COMPILER=clang++-14 -DBUNRAKU_FUZZ=ON -DBUNRAKU_WITH_QT=OFF -DBUNRAKU_BUILD_TESTS=OFF \
+    -DBUNRAKU_BUILD_BENCHMARKS=OFF -DBUNRAKU_WERROR=OFF >/dev/null
+fi
 cmake --build "$build" --parallel "$(nproc)" --target "${targets[@]}"
 
 status=0
