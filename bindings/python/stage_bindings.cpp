@@ -891,8 +891,12 @@ gains (5.4) of every emotional cell against its function's functional motion.)do
         py::arg("normalisation"), py::arg("parameters"), py::arg("threads") = 0);
 
     py::class_<TakeAxis>(m, "TakeAxis", "A take's motion axis (thesis 5.2.1), per frame and as the 6 axis-coordinate channels.")
-        .def_property_readonly("coordinates", [](const TakeAxis& a) { return alias(a.axis, a.axis->coordinates); },
-                               "The axis as a Take of 6 channels (centre x, y, z in cm; rotation vector in degrees).")
+        .def_property_readonly("take", [](const TakeAxis& a) { return alias(a.axis, a.axis->coordinates); },
+                               "The axis as a Take of the thesis's 6 axis channels (axis_channels.h), as `bunraku axis` "
+                               "writes it and the workbench's \"axis\" take.")
+        .def_property_readonly("coordinates", [](const TakeAxis& a) { return copyMatrix(an::axisCoordinates(a.axis->world_T_axis)); },
+                               "frames x 6 axis coordinates: the centre (cm) and the continuous rotation vector (deg), as "
+                               "`bunraku axis --coordinates` writes them and phase and gains (5.3, 5.4) compare them.")
         .def_property_readonly("poses", [](const TakeAxis& a) { return posesArray(a.axis->world_T_axis); },
                                "frames x 4 x 4: world_T_axis per frame (a copy).")
         .def("__repr__", [](const TakeAxis& a) { return "<bunraku.TakeAxis " + a.axis->coordinates.displayName() + ">"; });

@@ -194,11 +194,16 @@ def test_design_with_no_edits_is_the_functional_motion(demo_analysis):
     assert bunraku.relative_error(slower.axis_coordinates, slower.axis_coordinates) == 0.0
 
 
-def test_motion_axis_of_a_take(demo_corpus):
-    axis = bunraku.motion_axis(demo_corpus.takes[0])
+def test_motion_axis_of_a_take_matches_bunraku_axis(cli, demo_dir, tmp_path):
+    path = demo_dir / "greeting_friendly_2.csv"
+    take = bunraku.read_take(str(path))
+    axis = bunraku.motion_axis(take)
     assert isinstance(axis, bunraku.TakeAxis)
-    assert axis.coordinates.values.shape == (demo_corpus.takes[0].frames, 6)
-    assert axis.poses.shape == (demo_corpus.takes[0].frames, 4, 4)
+    run_cli(cli, "axis", path, "-o", tmp_path / "axis.csv")
+    assert same_bits(axis.take.values, take_matrix(tmp_path / "axis.csv"))
+    run_cli(cli, "axis", path, "--coordinates", "-o", tmp_path / "coordinates.csv")
+    assert same_bits(axis.coordinates, take_matrix(tmp_path / "coordinates.csv"))
+    assert axis.poses.shape == (take.frames, 4, 4)
 
 
 def test_keywords_are_the_parameter_files_keys_and_defaults():
@@ -274,3 +279,38 @@ def test_analyse_of_the_bandai_waves_writes_the_bytes_bunraku_analyse_writes(cli
     phase = bunraku.phase(axes, "wave-right-hand", "active")
     e2f = np.array([float(row[1]) for row in read_csv_rows(out / "phase_wave-right-hand_active.csv")[1:]])
     assert same_bits(phase.emotional_to_functional, e2f)
+
+
+def test_the_remaining_accessors_agree_with_the_cli_files(demo_analysis, demo_cli_analysis, tmp_path):
+    summary = load_json(demo_cli_analysis / "summary.json")
+    # the parameters: the chain's, as parameters.json holds them; the builder and the file reader agree
+    assert json.loads(demo_analysis.parameters.to_json()) == load_json(demo_cli_analysis / "parameters.json")["parameters"]
+    file = tmp_path / "p.json"
+    file.write_text(json.dumps({"parameters": {"normalise": {"tau": 6}, "decompose": {"method": "least-squares"}}}))
+    assert bunraku.parameters(normalise={"tau": 6}, decompose={"method": "least-squares"}) == bunraku.Parameters.read(str(file))
+    # the normalised corpus is the cells' normalised takes
+    normalisation = demo_analysis.normalisation
+    for take in normalisation.corpus.takes:
+        k = stem(take.function, take.emotion, take.take_index)
+        assert same_bits(take.values, take_matrix(demo_cli_analysis / f"normalised_{k}.csv")), k
+    first = normalisation.cells[0].takes[0]
+    assert first.body_time.shape == (normalisation.cells[0].reference_take.frames,)
+    assert first.families and {"family", "unit", "raw", "normalised"} == set(first.families[0])
+    # decomposition: the cell means are the normalised takes' frame-wise means (positions; eq. 4.22)
+    decomposition = demo_analysis.decomposition
+    f, e = decomposition.cells[1]
+    takes = [t.values for t in normalisation.corpus.cell(f, e)]
+    assert np.allclose(decomposition.cell_mean(f, e)[:, :3], np.mean(takes, axis=0)[:, :3], atol=1e-9)
+    assert decomposition.y(f).shape == decomposition.z(f, e).shape
+    # axes: boundaries and errors as summary.json reports them
+    axes = demo_analysis.axes
+    for entry in summary["axes"]:
+        cell = axes.cell(entry["function"], entry["emotion"])
+        assert cell.undesigned_relative_error == entry["undesigned_relative_error"]
+        assert axes.function(entry["function"]).boundaries == entry["phrase_boundaries"]
+    function = axes.functions[0]
+    designed = bunraku.design(axes, function.function, boundaries=[function.take.frames // 2])
+    assert designed.take.frames == function.take.frames
+    with pytest.raises(bunraku.Error) as error:
+        bunraku.design(axes, function.function, boundaries=[5, 3])
+    assert "parameters.design.boundaries[1]: expected increasing whole frames" in str(error.value)
