@@ -51,3 +51,34 @@ def test_the_package_is_the_build_trees():
     path = pathlib.Path(bunraku.__file__).resolve()
     assert path.parent.name == "bunraku"
     assert any(p.name.startswith("_bunraku.") and p.suffix == ".so" for p in path.parent.iterdir())
+
+
+def test_mypy_checks_scripts_against_the_stub(tmp_path):
+    """The stub makes mypy check calls: a correct script passes, wrong types are reported."""
+    import importlib.util
+    import subprocess
+    import sys
+
+    from conftest import require_peer
+
+    require_peer(importlib.util.find_spec("mypy") is not None, "mypy (Debian: mypy)")
+    (tmp_path / "good.py").write_text(
+        "import numpy as np\nimport bunraku\n"
+        "corpus = bunraku.Corpus.open('demo')\n"
+        "cell = bunraku.normalise(corpus, function='greeting', emotion='friendly', tau=6)\n"
+        "values: np.ndarray = corpus.takes[0].values\n"
+        "total: float = sum(t.variance_normalised for t in cell.takes)\n"
+        "z = bunraku.decompose(cell).z('greeting', 'friendly')\n")
+    (tmp_path / "bad.py").write_text(
+        "import bunraku\n"
+        "corpus = bunraku.Corpus.open('demo')\n"
+        "cell = bunraku.normalise(corpus, tau='six')\n"
+        "name: int = corpus.takes[0].name\n")
+    package = pathlib.Path(bunraku.__file__).resolve().parents[1]
+    result = subprocess.run([sys.executable, "-m", "mypy", "--no-incremental", "--cache-dir=/dev/null",
+                             "--ignore-missing-imports", "good.py", "bad.py"],
+                            cwd=tmp_path, capture_output=True, text=True, env={"MYPYPATH": str(package), "PATH": "/usr/bin:/bin"})
+    errors = [line for line in result.stdout.splitlines() if ": error:" in line]
+    assert all(line.startswith("bad.py:") for line in errors), result.stdout
+    assert any(line.startswith("bad.py:3:") and '"tau"' in line for line in errors), result.stdout
+    assert any(line.startswith("bad.py:4:") for line in errors), result.stdout
