@@ -252,10 +252,20 @@ def test_bad_parameters_raise_the_parameter_files_message(cli, demo_dir, demo_co
     assert str(error.value) == expected
 
 
-def test_run_time_errors_name_the_stage(demo_corpus):
+def test_run_time_errors_are_the_chains_messages(cli, demo_dir, demo_corpus, tmp_path):
+    """A value in its range that fails at run time (M beyond M_max): the stage's error, named
+    by the stage, as `bunraku analyse` prints it after naming the corpus and the file."""
+    file = tmp_path / "parameters.json"
+    file.write_text(json.dumps({"decompose": {"M": 999}}))
+    expected = cli_error(cli, "analyse", demo_dir, "-o", tmp_path / "out", "--parameters", file)
     with pytest.raises(bunraku.Error) as error:
         bunraku.decompose(demo_corpus, M=999)
-    assert str(error.value).startswith("Decomposition")
+    message = str(error.value)
+    assert message.startswith("Decomposition (4): ")
+    assert expected == f"{demo_dir} with the parameters of {file}: {message}"
+    with pytest.raises(bunraku.Error) as error:
+        bunraku.analyse(demo_corpus, parameters=str(file))
+    assert str(error.value) == message
 
 
 @pytest.mark.bandai
