@@ -63,6 +63,12 @@ function(bunraku_analysis_module name)
   target_include_directories(${target} PUBLIC ${PROJECT_SOURCE_DIR})
   target_link_libraries(${target} PUBLIC Eigen3::Eigen nlohmann_json::nlohmann_json ${M_DEPENDS})
   target_compile_features(${target} PUBLIC cxx_std_20)
+  # The Python module (bindings/python) links these static libraries into a shared object.
+  # Without semantic interposition GCC inlines as it does for the executables.
+  if(BUNRAKU_PYTHON)
+    set_target_properties(${target} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+    target_compile_options(${target} PRIVATE $<$<CXX_COMPILER_ID:GNU>:-fno-semantic-interposition>)
+  endif()
   bunraku_configure_target(${target})
   set_property(GLOBAL APPEND PROPERTY BUNRAKU_ANALYSIS_MODULES ${target})
 endfunction()

@@ -363,6 +363,14 @@ must "apt installs the desktop's tools, then the package with its Recommends (ff
   install_logged "B: the package with its Recommends" "$DEB"
   dpkg-query -W -f="ffmpeg \${Status}\n" ffmpeg | grep "ok installed"
   save_file_list'
+check "the Python module imports with Debian's python3 (installed with the Recommends) and names the version" '
+  # no __pycache__: the package has no maintainer scripts to remove one (py3clean), and purge
+  # must leave no file behind
+  export PYTHONDONTWRITEBYTECODE=1
+  version="$(python3 -c "import bunraku; print(bunraku.__version__)")"
+  echo "bunraku $version"
+  bunraku --version | head -n 1 | grep -qF "$version" || { echo "bunraku.__version__ $version is not the program'"'"'s"; exit 1; }
+  python3 -c "import bunraku, numpy; t = bunraku.Corpus.open(\"demo\").takes[0]; assert not t.values.flags.owndata; print(t)"'
 check "man bunraku and man bunraku-workbench show the installed pages" '
   man -P cat bunraku 2>/dev/null | grep -q "bunraku help" || { echo "man bunraku: no page"; exit 1; }
   man -P cat bunraku-workbench 2>/dev/null | grep -q -- "--screenshot" || { echo "man bunraku-workbench: no page"; exit 1; }

@@ -20,6 +20,8 @@ packages=(
   blender
   clang-14 libfuzzer-14-dev
   python3 python3-numpy python3-pywt python3-statsmodels
+  # the Python module (bindings/python, docs/PYTHON.md): pybind11, and its tests and example
+  pybind11-dev python3-dev python3-pytest python3-pandas python3-matplotlib mypy
   # Snakemake: the batch workflow over motion-capture libraries (workflows/Snakefile)
   snakemake
 )
