@@ -103,9 +103,14 @@ Skin skinWeights(Group group, const Eigen::Vector3f& p)
         const float wrist = float(rest.wristAlong);
         const float shoulder = 1.0f - smoothstep(-1.0f, 3.0f, t);
         const float hand = smoothstep(wrist - 1.2f, wrist + 1.2f, t);
+        // s: the depth below the bone. The sleeve below the arm hangs from its sleeve joint.
+        const float depth = (r.dot(down) - c * r.dot(along)) / (1.0f - c * c);
+        const float arm = std::max(0.0f, 1.0f - shoulder - hand);
+        const float hang = arm * smoothstep(3.0f, 12.0f, depth);
         skin.add(PuppetJoint::Shoulder, shoulder);
-        skin.add(left ? PuppetJoint::LeftArm : PuppetJoint::RightArm, std::max(0.0f, 1.0f - shoulder - hand));
+        skin.add(left ? PuppetJoint::LeftArm : PuppetJoint::RightArm, arm - hang);
         skin.add(left ? PuppetJoint::LeftHand : PuppetJoint::RightHand, hand);
+        skin.add(left ? PuppetJoint::LeftSleeve : PuppetJoint::RightSleeve, hang);
         break;
     }
     case Group::RightHand:
@@ -252,6 +257,11 @@ PuppetMesh generatePuppetMesh(const PuppetMeshOptions& options)
     mesh.bindPoses[std::size_t(PuppetJoint::LeftHand)] = mirrored(rest.rightHand);
     mesh.bindPoses[std::size_t(PuppetJoint::Kimono)] = RigidTransform{Eigen::Quaterniond::Identity(), rest.dowa};
     mesh.dowaInShoulder = rest.dowa;
+    mesh.restArmHeadingDeg = std::atan2(rest.armDirection.y(), rest.armDirection.x()) * 180.0 / M_PI;
+    const Eigen::Vector3d sleeve = rest.rightArm.apply(mesh.sleeveInArm);
+    mesh.bindPoses[std::size_t(PuppetJoint::RightSleeve)] = RigidTransform{Eigen::Quaterniond::Identity(), sleeve};
+    mesh.bindPoses[std::size_t(PuppetJoint::LeftSleeve)] =
+        RigidTransform{Eigen::Quaterniond::Identity(), Eigen::Vector3d(sleeve.x(), -sleeve.y(), sleeve.z())};
     return mesh;
 }
 
@@ -286,8 +296,14 @@ PuppetMesh fittedPuppetMesh(const PuppetMesh& shipped, const BodyDescription& bo
     }
     if (identity) return shipped;
     PuppetMesh mesh = shipped;
-    // The kimono joint's vertices are in the shoulder's frame (it hangs from the shoulder's dō-wa).
-    const auto frameOf = [](int joint) { return joint == int(PuppetJoint::Kimono) ? int(PuppetJoint::Shoulder) : joint; };
+    // The kimono joint's vertices are in the shoulder's frame (it hangs from the shoulder's dō-wa),
+    // and a sleeve joint's in its arm's frame.
+    const auto frameOf = [](int joint) {
+        if (joint == int(PuppetJoint::Kimono)) return int(PuppetJoint::Shoulder);
+        if (joint == int(PuppetJoint::RightSleeve)) return int(PuppetJoint::RightArm);
+        if (joint == int(PuppetJoint::LeftSleeve)) return int(PuppetJoint::LeftArm);
+        return joint;
+    };
     std::array<Eigen::Affine3d, kPuppetJointCount> model_fit_model;
     std::array<Eigen::Matrix3d, kPuppetJointCount> normalMap;
     for (int j = 0; j < kPuppetJointCount; ++j) {
@@ -314,6 +330,14 @@ PuppetMesh fittedPuppetMesh(const PuppetMesh& shipped, const BodyDescription& bo
     mesh.dowaInShoulder = shoulderFit * shipped.dowaInShoulder;
     mesh.bindPoses[std::size_t(PuppetJoint::Kimono)] =
         RigidTransform{Eigen::Quaterniond::Identity(), shipped.bindPoses[std::size_t(PuppetJoint::Shoulder)].apply(mesh.dowaInShoulder)};
+    const Eigen::Affine3d& armFit = fit[std::size_t(PuppetJoint::RightArm)];
+    mesh.sleeveInArm = armFit * shipped.sleeveInArm;
+    for (const PuppetJoint sleeve : {PuppetJoint::RightSleeve, PuppetJoint::LeftSleeve}) {
+        const bool left = sleeve == PuppetJoint::LeftSleeve;
+        const Eigen::Vector3d local = left ? Eigen::Vector3d(mesh.sleeveInArm.x(), -mesh.sleeveInArm.y(), mesh.sleeveInArm.z()) : mesh.sleeveInArm;
+        const RigidTransform& arm = shipped.bindPoses[std::size_t(left ? PuppetJoint::LeftArm : PuppetJoint::RightArm)];
+        mesh.bindPoses[std::size_t(sleeve)] = RigidTransform{Eigen::Quaterniond::Identity(), arm.apply(local)};
+    }
     return mesh;
 }
 
@@ -335,6 +359,22 @@ std::array<RigidTransform, kPuppetJointCount> puppetJointPoses(const PuppetMesh&
     const double yaw = std::atan2(heading.y(), heading.x());
     poses[std::size_t(PuppetJoint::Kimono)] =
         RigidTransform{Eigen::Quaterniond(Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ())), shoulder.apply(mesh.dowaInShoulder)};
+    // A sleeve joint: on its arm, turned from the rest by the change of the arm's heading (the
+    // arm's bone projected on the floor; within 25 deg of the vertical, the shoulder's heading
+    // turned as at rest takes over smoothly).
+    const double restHeading = mesh.restArmHeadingDeg * M_PI / 180.0;
+    for (const bool left : {false, true}) {
+        const RigidTransform& arm = poses[std::size_t(left ? PuppetJoint::LeftArm : PuppetJoint::RightArm)];
+        const double sign = left ? -1.0 : 1.0;
+        const Eigen::Vector2d bone = (arm.rotation * Eigen::Vector3d::UnitX()).head<2>();
+        const Eigen::Vector2d asAtRest(std::cos(yaw + sign * restHeading), std::sin(yaw + sign * restHeading));
+        Eigen::Vector2d armHeading = bone + 0.35 * (1.0 - std::clamp((bone.norm() - 0.15) / 0.25, 0.0, 1.0)) * asAtRest;
+        if (armHeading.norm() < 1e-9) armHeading = asAtRest;
+        const double turn = std::atan2(armHeading.y(), armHeading.x()) - sign * restHeading;
+        const Eigen::Vector3d local = left ? Eigen::Vector3d(mesh.sleeveInArm.x(), -mesh.sleeveInArm.y(), mesh.sleeveInArm.z()) : mesh.sleeveInArm;
+        poses[std::size_t(left ? PuppetJoint::LeftSleeve : PuppetJoint::RightSleeve)] =
+            RigidTransform{Eigen::Quaterniond(Eigen::AngleAxisd(turn, Eigen::Vector3d::UnitZ())), arm.apply(local)};
+    }
     return poses;
 }
 

@@ -13,10 +13,12 @@
 ///
 /// Skinning: every vertex has up to four joints with weights summing to one. The joints are the
 /// body description's six parts (head, shoulder, right arm and hand, mirrored left arm and hand)
-/// and one more, the kimono joint: it sits at the dō-wa and turns with the shoulder's heading
-/// only, so the skirt below the dō-wa hangs under it in a bow instead of swinging up with the
-/// torso. Weights are smooth across the neck (along the neck), the shoulders and the wrists
-/// (along the arm's bone) and below the dō-wa (by height). Poses are blended as dual
+/// and three more that hang: the kimono joint sits at the dō-wa and turns with the shoulder's
+/// heading only, so the skirt below the dō-wa hangs under it in a bow instead of swinging up
+/// with the torso; a sleeve joint sits on its arm's bone and turns with the arm's heading only,
+/// so a long sleeve hangs below the arm whether it is raised or lowered. Weights are smooth
+/// across the neck (along the neck), the shoulders and the wrists (along the arm's bone), below
+/// the dō-wa (by height) and down a sleeve (by the depth below the bone). Poses are blended as dual
 /// quaternions (dual_quaternion.h; the GPU does the same in resources/shaders/skinned.vert).
 ///
 /// Frames: model space is the shoulder part's frame at rest (x forward, y to the puppet's left,
@@ -35,13 +37,14 @@
 
 namespace bunraku::analysis {
 
-enum class PuppetJoint { Head, Shoulder, RightArm, RightHand, LeftArm, LeftHand, Kimono };
-inline constexpr int kPuppetJointCount = 7;
-/// The body part each joint moves with (the kimono hangs from the shoulder's dō-wa).
+enum class PuppetJoint { Head, Shoulder, RightArm, RightHand, LeftArm, LeftHand, Kimono, RightSleeve, LeftSleeve };
+inline constexpr int kPuppetJointCount = 9;
+/// The body part each joint moves with (the kimono hangs from the shoulder's dō-wa, a sleeve
+/// from its arm).
 inline constexpr std::array<const char*, kPuppetJointCount> kPuppetJointParts{
-    "head", "shoulder", "right_arm", "right_hand", "left_arm", "left_hand", "shoulder"};
+    "head", "shoulder", "right_arm", "right_hand", "left_arm", "left_hand", "shoulder", "right_arm", "left_arm"};
 inline constexpr std::array<const char*, kPuppetJointCount> kPuppetJointNames{
-    "head", "shoulder", "right_arm", "right_hand", "left_arm", "left_hand", "kimono"};
+    "head", "shoulder", "right_arm", "right_hand", "left_arm", "left_hand", "kimono", "right_sleeve", "left_sleeve"};
 
 /// Where the renderer paints per pixel from `paintPositions`.
 enum class PuppetRegion : std::uint8_t { None = 0, Face = 1, Kimono = 2, Obi = 3 };
@@ -60,6 +63,10 @@ struct PuppetMesh {
     std::array<RigidTransform, kPuppetJointCount> bindPoses; ///< model_T_joint at rest
     /// The kimono joint's origin (the dō-wa's centre) in the shoulder frame, cm.
     Eigen::Vector3d dowaInShoulder{0.0, 0.0, -24.0};
+    /// A sleeve joint's origin in its arm's frame (the left mirrors the right), cm, and the
+    /// heading (deg, about the vertical) of the right arm's bone at rest.
+    Eigen::Vector3d sleeveInArm{2.0, 0.0, 0.0};
+    double restArmHeadingDeg = -20.0;
     /// Grid cell of the polygonisation (cm) and small separate pieces dropped (normally 0).
     float cellSize = 0.0f;
     int droppedComponents = 0;
@@ -97,8 +104,9 @@ std::array<int, kPuppetJointCount> puppetJointPartIndices(const BodyDescription&
 PuppetMesh fittedPuppetMesh(const PuppetMesh& shipped, const BodyDescription& body);
 
 /// world_T_joint of every joint from the body parts' world poses (body order, e.g.
-/// worldPartPoses): the parts' own, and the kimono joint at the dō-wa turned by the shoulder's
-/// heading alone (about the world's vertical).
+/// worldPartPoses): the parts' own, the kimono joint at the dō-wa turned by the shoulder's
+/// heading alone (about the world's vertical), and each sleeve joint on its arm turned by the
+/// arm's heading alone (the shoulder's when the arm points straight up or down).
 std::array<RigidTransform, kPuppetJointCount> puppetJointPoses(const PuppetMesh& mesh, const BodyDescription& body,
                                                                const std::vector<RigidTransform>& world_T_part);
 

@@ -12,7 +12,7 @@ layout(location = 4) in vec3 a_paint;       // the shipped puppet's model positi
 layout(location = 5) in uvec4 a_joints;
 layout(location = 6) in vec4 a_weights;
 
-const int kJoints = 7;
+const int kJoints = 9; // analysis::kPuppetJointCount
 uniform mat4 u_model;
 uniform mat4 u_viewProjection;
 uniform mat3 u_normalMatrix;
