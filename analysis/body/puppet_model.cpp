@@ -2,6 +2,7 @@
 
 #include "analysis/body/body_pose.h"
 #include "analysis/body/dual_quaternion.h"
+#include "analysis/body/mesh_decimation.h"
 #include "analysis/body/puppet_shapes.h"
 #include "analysis/body/surface_nets.h"
 #include "analysis/core/parallel.h"
@@ -169,6 +170,61 @@ RigidTransform mirrored(const RigidTransform& model_T_part)
 
 Eigen::Vector3f apply(const RigidTransform& t, const Eigen::Vector3f& p) { return t.apply(p.cast<double>()).cast<float>(); }
 
+/// Fewer triangles where the surface is flat (the skirt, the sleeves), the same vertices where it
+/// is not; the borders between materials and painted regions are kept as they are.
+void simplify(PuppetMesh& mesh, const PuppetMeshOptions& options)
+{
+    const std::size_t n = mesh.vertexCount();
+    std::vector<char> locked(n, 0);
+    const auto differ = [&](std::uint32_t a, std::uint32_t b) {
+        return mesh.regions[a] != mesh.regions[b] || mesh.sheen[a] != mesh.sheen[b] || mesh.colours[a] != mesh.colours[b];
+    };
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3)
+        for (int e = 0; e < 3; ++e) {
+            const std::uint32_t a = mesh.indices[t + std::size_t(e)], b = mesh.indices[t + std::size_t((e + 1) % 3)];
+            if (differ(a, b)) locked[a] = locked[b] = 1;
+        }
+    DecimationOptions decimation;
+    decimation.targetTriangles = options.targetTriangles;
+    decimation.maxError = options.maxError;
+    decimation.maxEdge = options.maxEdge;
+    // Where the skin weights change (the bends at the neck, shoulders, wrists, below the dō-wa
+    // and down the sleeves) the vertices stay as dense as polygonised.
+    const auto weightsOf = [&](std::uint32_t v) {
+        Eigen::Matrix<float, kPuppetJointCount, 1> w = Eigen::Matrix<float, kPuppetJointCount, 1>::Zero();
+        for (int k = 0; k < 4; ++k) w[mesh.joints[v][std::size_t(k)]] += mesh.weights[v][k];
+        return w;
+    };
+    const auto difference = [&](std::uint32_t u, std::uint32_t v) { return (weightsOf(u) - weightsOf(v)).cwiseAbs().sum(); };
+    const std::vector<std::uint32_t> into = decimateMesh(mesh.positions, mesh.indices, locked, decimation, difference, 0.1f);
+    std::vector<std::int64_t> remap(n, -1);
+    PuppetMesh kept = mesh;
+    kept.positions.clear();
+    kept.normals.clear();
+    kept.colours.clear();
+    kept.sheen.clear();
+    kept.regions.clear();
+    kept.paintPositions.clear();
+    kept.joints.clear();
+    kept.weights.clear();
+    kept.indices.clear();
+    for (const std::uint32_t v : mesh.indices) {
+        if (remap[v] >= 0) continue;
+        remap[v] = std::int64_t(kept.positions.size());
+        kept.positions.push_back(mesh.positions[v]);
+        kept.normals.push_back(mesh.normals[v]);
+        kept.colours.push_back(mesh.colours[v]);
+        kept.sheen.push_back(mesh.sheen[v]);
+        kept.regions.push_back(mesh.regions[v]);
+        kept.paintPositions.push_back(mesh.paintPositions[v]);
+        kept.joints.push_back(mesh.joints[v]);
+        kept.weights.push_back(mesh.weights[v]);
+    }
+    for (const std::uint32_t v : mesh.indices) kept.indices.push_back(std::uint32_t(remap[v]));
+    (void)into;
+    mesh = std::move(kept);
+}
+
 } // namespace
 
 int PuppetMesh::dominantJoint(std::size_t v) const
@@ -248,6 +304,7 @@ PuppetMesh generatePuppetMesh(const PuppetMeshOptions& options)
         return okStatus();
     });
     mesh.paintPositions = mesh.positions;
+    if (options.targetTriangles > 0) simplify(mesh, options);
 
     mesh.bindPoses[std::size_t(PuppetJoint::Head)] = rest.head;
     mesh.bindPoses[std::size_t(PuppetJoint::Shoulder)] = rest.shoulder;

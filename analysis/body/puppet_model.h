@@ -80,6 +80,11 @@ struct PuppetMesh {
 struct PuppetMeshOptions {
     float cellSize = 0.5f; ///< cm
     int threads = 0;       ///< 0: one per hardware thread
+    /// Then simplified (mesh_decimation.h) to about this many triangles where the surface moves
+    /// less than `maxError` (cm); 0: as polygonised.
+    std::size_t targetTriangles = 12000;
+    double maxError = 0.1;
+    double maxEdge = 3.0; ///< cm, the longest edge a simplification may make
 };
 
 /// Generates the puppet (deterministic: the same options give the same mesh on any thread count).

@@ -156,7 +156,7 @@ TEST_CASE("puppet model: each part posed alone moves its own surface and nothing
                     REQUIRE((now - was).norm() < 1e-3);
                 }
             }
-            CHECK(own > 300);
+            CHECK(own > 100);
             CHECK(still > 1000);
         }
     }
@@ -199,9 +199,9 @@ TEST_CASE("puppet model: the head and hands and sleeves are skinned wholly to th
                     0.999f);
         }
     }
-    CHECK(head > 500);
-    CHECK(hands > 300);
-    CHECK(sleeves > 300);
+    CHECK(head > 300);
+    CHECK(hands > 150);
+    CHECK(sleeves > 100);
 }
 
 TEST_CASE("puppet model: in a deep bow the kimono hangs below the do-wa", "[puppet_model]")
@@ -287,17 +287,25 @@ TEST_CASE("puppet model: arms raised or spread stretch no triangle (no part grow
 {
     // Surfaces of parts that move apart (a sleeve and the obi, an arm and the chest) must not
     // be joined: a joined spot would stretch into long triangles. At rest no edge is longer than
-    // twice the grid; spread or raised arms and a turned head keep every edge under 4 cm.
+    // the simplification's 3 cm; spread or raised arms, a turned head and a bow lengthen no edge
+    // by 3 cm or more.
     const PuppetMesh& mesh = shippedPuppetMesh();
     const BodyDescription& body = defaultBodyDescription();
-    const auto longestEdge = [&](const std::vector<Eigen::Vector3f>& positions) {
+    // The most any edge grows from the rest (cm).
+    const auto longestGrowth = [&](const std::vector<Eigen::Vector3f>& positions) {
         float longest = 0.0f;
         for (std::size_t t = 0; t < mesh.indices.size(); t += 3)
-            for (int e = 0; e < 3; ++e)
-                longest = std::max(longest, (positions[mesh.indices[t + std::size_t(e)]] - positions[mesh.indices[t + std::size_t((e + 1) % 3)]]).norm());
+            for (int e = 0; e < 3; ++e) {
+                const std::uint32_t a = mesh.indices[t + std::size_t(e)], b = mesh.indices[t + std::size_t((e + 1) % 3)];
+                longest = std::max(longest, (positions[a] - positions[b]).norm() - (mesh.positions[a] - mesh.positions[b]).norm());
+            }
         return longest;
     };
-    CHECK(longestEdge(mesh.positions) < 2.0f * mesh.cellSize * std::sqrt(3.0f));
+    float restLongest = 0.0f;
+    for (std::size_t t = 0; t < mesh.indices.size(); t += 3)
+        for (int e = 0; e < 3; ++e)
+            restLongest = std::max(restLongest, (mesh.positions[mesh.indices[t + std::size_t(e)]] - mesh.positions[mesh.indices[t + std::size_t((e + 1) % 3)]]).norm());
+    CHECK(restLongest <= 3.0f + 1e-3f);
     using synth::RigParameter;
     const std::vector<std::vector<std::pair<RigParameter, double>>> poses{
         {{RigParameter::ArmYaw, -80.0}, {RigParameter::ArmPitch, 0.0}},
@@ -312,6 +320,6 @@ TEST_CASE("puppet model: arms raised or spread stretch no triangle (no part grow
         const Take take = rigTake(parameters);
         const SkinnedSurface skinned = skinPuppet(mesh, puppetJointPoses(mesh, body, worldPartPoses(body, take, 0)));
         INFO("pose " << k);
-        CHECK(longestEdge(skinned.positions) < 4.0f);
+        CHECK(longestGrowth(skinned.positions) < 3.0f);
     }
 }
