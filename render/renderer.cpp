@@ -43,6 +43,17 @@ Mesh partnerMesh()
 
 } // namespace
 
+/// The modelled puppet of one body on the GPU (render/skinned_puppet.h).
+struct Renderer::PuppetFigure {
+    std::vector<Eigen::Matrix4d> fits; ///< the body's part fits it was made for
+    std::shared_ptr<const analysis::PuppetMesh> mesh;
+    SkinnedPuppetGpu gpu;
+    /// Per joint the box of the vertices it moves most, in the joint's frame.
+    std::array<Bounds, analysis::kPuppetJointCount> jointBounds;
+
+    void release(QOpenGLExtraFunctions& gl) { gpu.release(gl); }
+};
+
 struct Renderer::Slot {
     analysis::Take take;
     analysis::BodyDescription body; ///< the scene's body, or the take's own
@@ -55,6 +66,8 @@ struct Renderer::Slot {
     float orbitRadius = 0.4f;                     ///< cm, the tubes' (orbitTubeRadius)
     Eigen::Index frame = 0;
     std::vector<glm::mat4> take_T_part; ///< at `frame`, one per body part
+    std::shared_ptr<PuppetFigure> puppet; ///< the take's own fitted puppet; null: the scene's
+    std::array<analysis::RigidTransform, analysis::kPuppetJointCount> take_T_skinJoint; ///< at `frame`
     std::shared_ptr<SkeletonFigure> skeleton; ///< the performer's skeleton, when the take has one
     std::vector<glm::mat4> take_T_joint;  ///< at `frame`, one per joint
     float puppetLowest = 0.0f, puppetHighest = 0.0f;     ///< cm, at frame 0
@@ -105,7 +118,24 @@ analysis::Status Renderer::initialize()
     m_uniforms.useVertexColour = program->uniformLocation("u_useVertexColour");
     m_uniforms.lit = program->uniformLocation("u_lit");
     m_uniforms.lightPosition = program->uniformLocation("u_lightPosition");
+    m_uniforms.partIdBase = program->uniformLocation("u_partIdBase");
+    auto skin = std::make_unique<QOpenGLShaderProgram>();
+    if (!skin->addShaderFromSourceFile(QOpenGLShader::Vertex, QStringLiteral(":/shaders/skinned.vert")) ||
+        !skin->addShaderFromSourceFile(QOpenGLShader::Fragment, QStringLiteral(":/shaders/scene.frag")) || !skin->link())
+        return analysis::makeError(ErrorCode::Unsupported, "shader build failed: " + skin->log().toStdString());
+    m_skinUniforms.model = skin->uniformLocation("u_model");
+    m_skinUniforms.viewProjection = skin->uniformLocation("u_viewProjection");
+    m_skinUniforms.normalMatrix = skin->uniformLocation("u_normalMatrix");
+    m_skinUniforms.colour = skin->uniformLocation("u_colour");
+    m_skinUniforms.useVertexColour = skin->uniformLocation("u_useVertexColour");
+    m_skinUniforms.lit = skin->uniformLocation("u_lit");
+    m_skinUniforms.lightPosition = skin->uniformLocation("u_lightPosition");
+    m_skinUniforms.partIdBase = skin->uniformLocation("u_partIdBase");
+    m_skinUniforms.jointReal = skin->uniformLocation("u_jointReal");
+    m_skinUniforms.jointDual = skin->uniformLocation("u_jointDual");
+    m_skinUniforms.partOfJoint = skin->uniformLocation("u_partOfJoint");
     m_program = std::move(program);
+    m_skinProgram = std::move(skin);
     m_context = context;
     m_gl = context->extraFunctions();
 
@@ -119,7 +149,10 @@ void Renderer::releaseSceneBuffers()
 {
     for (GpuMesh& mesh : m_partMeshes) mesh.release(*m_gl);
     m_partMeshes.clear();
+    if (m_puppet) m_puppet->release(*m_gl);
+    m_puppet.reset();
     for (Slot& slot : m_slots) {
+        if (slot.puppet) slot.puppet->release(*m_gl);
         for (GpuMesh& orbit : slot.orbits) orbit.release(*m_gl);
         for (GpuMesh& mesh : slot.meshes) mesh.release(*m_gl);
         if (slot.skeleton) slot.skeleton->release(*m_gl);
@@ -137,6 +170,7 @@ void Renderer::release()
     m_partner.release(*m_gl);
     m_pickFramebuffer.reset();
     m_program.reset();
+    m_skinProgram.reset();
     m_gl = nullptr;
     m_context = nullptr;
 }
@@ -149,13 +183,21 @@ analysis::Status Renderer::setScene(const SceneContent& scene, const LayoutOptio
     std::vector<std::shared_ptr<SkeletonFigure>> reusable;
     for (Slot& slot : m_slots)
         if (slot.skeleton) reusable.push_back(std::move(slot.skeleton));
+    std::vector<std::shared_ptr<PuppetFigure>> reusablePuppets;
+    if (m_puppet) reusablePuppets.push_back(std::move(m_puppet));
+    for (Slot& slot : m_slots)
+        if (slot.puppet) reusablePuppets.push_back(std::move(slot.puppet));
     releaseSceneBuffers();
     m_layout = layout;
     m_body = scene.body;
     m_partNames.clear();
     for (const auto& part : m_body.parts) m_partNames.push_back(part.name);
 
-    const std::vector<Mesh> meshes = buildPuppetMeshes(m_body, scene.partMeshes);
+    // The modelled, skinned puppet stands for a body with its six parts; a body of other parts,
+    // or one with meshes loaded from files, is drawn from its own primitives and meshes.
+    const bool modelled = scene.partMeshes.empty() && analysis::bodyHasPuppetParts(m_body);
+    if (modelled) m_puppet = puppetFigure(m_body, reusablePuppets);
+    const std::vector<Mesh> meshes = modelled ? std::vector<Mesh>{} : buildPuppetMeshes(m_body, scene.partMeshes);
     m_partMeshes.resize(meshes.size());
     for (std::size_t i = 0; i < meshes.size(); ++i) m_partMeshes[i].upload(*m_gl, meshes[i]);
     m_partBounds.assign(meshes.size(), Bounds{});
@@ -167,7 +209,8 @@ analysis::Status Renderer::setScene(const SceneContent& scene, const LayoutOptio
         Slot slot;
         slot.take = source.take;
         slot.body = source.body ? *source.body : m_body;
-        const std::vector<Mesh> ownMeshes = source.body ? buildPuppetMeshes(slot.body) : std::vector<Mesh>{};
+        if (modelled && source.body) slot.puppet = puppetFigure(slot.body, reusablePuppets);
+        const std::vector<Mesh> ownMeshes = source.body && !modelled ? buildPuppetMeshes(slot.body) : std::vector<Mesh>{};
         for (const Mesh& mesh : ownMeshes) {
             GpuMesh gpu;
             gpu.upload(*m_gl, mesh);
@@ -191,6 +234,7 @@ analysis::Status Renderer::setScene(const SceneContent& scene, const LayoutOptio
         // Tubes sized from the figure and the orbits' span, so they read beside a puppet and
         // along a long walk.
         const auto firstPoses = analysis::worldPartPoses(m_body, slot.binding, slot.take, 0);
+        if (modelled) addPuppetBounds(pathBounds, slot, 0, glm::mat4(1.0f), {});
         for (std::size_t p = 0; p < firstPoses.size() && p < m_partBounds.size(); ++p)
             for (const glm::vec3& corner : {m_partBounds[p].lower, m_partBounds[p].upper})
                 if (!m_partBounds[p].empty()) pathBounds.add(glm::vec3(toMatrix(firstPoses[p]) * glm::vec4(corner, 1.0f)));
@@ -215,6 +259,12 @@ analysis::Status Renderer::setScene(const SceneContent& scene, const LayoutOptio
         std::vector<glm::mat4> partPoses;
         for (const auto& pose : analysis::worldPartPoses(slot.body, slot.binding, slot.take, 0)) partPoses.push_back(toMatrix(pose));
         extent(slotMeshes, partPoses, slot.puppetLowest, slot.puppetHighest);
+        if (modelled) {
+            Bounds figure;
+            addPuppetBounds(figure, slot, 0, glm::mat4(1.0f), {});
+            slot.puppetLowest = figure.lower.z;
+            slot.puppetHighest = figure.upper.z;
+        }
         if (slot.take.skeleton) {
             slot.skeleton = skeletonFigure(*slot.take.skeleton, reusable);
             // Joint spheres are the figure's extremes (bones are thinner).
@@ -229,9 +279,61 @@ analysis::Status Renderer::setScene(const SceneContent& scene, const LayoutOptio
     }
     for (auto& unused : reusable)
         if (unused && unused.use_count() == 1) unused->release(*m_gl);
+    for (auto& unused : reusablePuppets)
+        if (unused && unused.use_count() == 1) unused->release(*m_gl);
     m_grid.upload(*m_gl, gridMesh(m_layout.gridHalfExtent, m_layout.gridSpacing));
     setFrame(0);
     return analysis::okStatus();
+}
+
+std::shared_ptr<Renderer::PuppetFigure> Renderer::puppetFigure(const analysis::BodyDescription& body,
+                                                               std::vector<std::shared_ptr<PuppetFigure>>& reusable)
+{
+    std::vector<Eigen::Matrix4d> fits;
+    for (const auto& part : body.parts) fits.push_back(part.fit.matrix());
+    for (const auto& figure : reusable)
+        if (figure->fits == fits) return figure;
+    auto figure = std::make_shared<PuppetFigure>();
+    figure->fits = fits;
+    const analysis::PuppetMesh& shipped = analysis::shippedPuppetMesh();
+    const bool identity = std::all_of(fits.begin(), fits.end(), [](const Eigen::Matrix4d& m) { return m.isIdentity(0.0); });
+    figure->mesh = identity ? std::shared_ptr<const analysis::PuppetMesh>(&shipped, [](const analysis::PuppetMesh*) {})
+                            : std::make_shared<const analysis::PuppetMesh>(analysis::fittedPuppetMesh(shipped, body));
+    figure->gpu.upload(*m_gl, *figure->mesh);
+    const analysis::PuppetMesh& mesh = *figure->mesh;
+    std::array<analysis::RigidTransform, analysis::kPuppetJointCount> joint_T_model;
+    for (int j = 0; j < analysis::kPuppetJointCount; ++j) joint_T_model[std::size_t(j)] = mesh.bindPoses[std::size_t(j)].inverse();
+    for (std::size_t v = 0; v < mesh.vertexCount(); ++v) {
+        const int j = mesh.dominantJoint(v);
+        const Eigen::Vector3d local = joint_T_model[std::size_t(j)].apply(mesh.positions[v].cast<double>());
+        figure->jointBounds[std::size_t(j)].add(glm::vec3(float(local.x()), float(local.y()), float(local.z())));
+    }
+    reusable.push_back(figure);
+    return figure;
+}
+
+const Renderer::PuppetFigure* Renderer::slotPuppet(const Slot& slot) const
+{
+    return slot.puppet ? slot.puppet.get() : m_puppet.get();
+}
+
+void Renderer::addPuppetBounds(Bounds& bounds, const Slot& slot, Eigen::Index frame, const glm::mat4& root,
+                               const std::function<bool(const std::string&, const std::string&)>& wanted) const
+{
+    const PuppetFigure* figure = slotPuppet(slot);
+    if (!figure) return;
+    const auto joints = analysis::puppetJointPoses(*figure->mesh, slot.body, analysis::worldPartPoses(slot.body, slot.binding, slot.take, frame));
+    const auto partOf = analysis::puppetJointPartIndices(slot.body);
+    for (int j = 0; j < analysis::kPuppetJointCount; ++j) {
+        const Bounds& box = figure->jointBounds[std::size_t(j)];
+        const int p = partOf[std::size_t(j)];
+        if (box.empty() || p < 0) continue;
+        if (wanted && !wanted(slot.body.parts[std::size_t(p)].name, slot.body.parts[std::size_t(p)].drivenBy)) continue;
+        const glm::mat4 world_T_joint = root * toMatrix(joints[std::size_t(j)]);
+        for (int corner = 0; corner < 8; ++corner)
+            bounds.add(glm::vec3(world_T_joint * glm::vec4((corner & 1) ? box.upper.x : box.lower.x, (corner & 2) ? box.upper.y : box.lower.y,
+                                                           (corner & 4) ? box.upper.z : box.lower.z, 1.0f)));
+    }
 }
 
 std::shared_ptr<Renderer::SkeletonFigure> Renderer::skeletonFigure(const analysis::SkeletalMotion& motion,
@@ -261,6 +363,7 @@ void Renderer::updatePoses(Slot& slot) const
     const auto poses = analysis::worldPartPoses(slot.body, slot.binding, slot.take, slot.frame);
     slot.take_T_part.resize(poses.size());
     for (std::size_t p = 0; p < poses.size(); ++p) slot.take_T_part[p] = toMatrix(poses[p]);
+    if (const PuppetFigure* figure = slotPuppet(slot)) slot.take_T_skinJoint = analysis::puppetJointPoses(*figure->mesh, slot.body, poses);
     slot.take_T_joint.clear();
     if (slot.take.skeleton)
         for (const auto& pose : slot.take.skeleton->worldPoses(slot.frame)) slot.take_T_joint.push_back(toMatrix(pose));
@@ -397,7 +500,9 @@ Bounds Renderer::displayedBounds(const Camera& camera, const BoundsQuery& query)
         const auto wanted = [&](const std::string& name, const std::string& drivenBy) {
             return query.part.empty() || name == query.part || drivenBy == query.part;
         };
-        if (puppetDrawn(int(s))) {
+        if (puppetDrawn(int(s)) && slotPuppet(slot)) {
+            for (const Eigen::Index f : frames) addPuppetBounds(bounds, slot, f, root, wanted);
+        } else if (puppetDrawn(int(s))) {
             for (const Eigen::Index f : frames) {
                 const auto poses = analysis::worldPartPoses(m_body, slot.binding, slot.take, f);
                 for (std::size_t p = 0; p < poses.size() && p < m_partBounds.size(); ++p) {
@@ -484,6 +589,7 @@ void Renderer::drawScene(const Camera& camera, QSize size, bool partIds)
     if (partIds) gl.glDisable(GL_DITHER);
 
     m_program->bind();
+    gl.glUniform1i(m_uniforms.partIdBase, -1);
     const glm::mat4 viewProjection = camera.viewProjection(size);
     gl.glUniformMatrix4fv(m_uniforms.viewProjection, 1, GL_FALSE, glm::value_ptr(viewProjection));
     const glm::vec3 eye = camera.eye();
@@ -498,7 +604,9 @@ void Renderer::drawScene(const Camera& camera, QSize size, bool partIds)
     for (std::size_t s = 0; s < m_slots.size(); ++s) {
         const Slot& slot = m_slots[s];
         const glm::mat4 root = takeRoot(int(s), camera);
-        if (puppetDrawn(int(s))) {
+        if (puppetDrawn(int(s)) && slotPuppet(slot)) {
+            drawPuppet(slot, int(s), root, viewProjection, eye, partIds);
+        } else if (puppetDrawn(int(s))) {
             const std::vector<GpuMesh>& meshes = slot.meshes.empty() ? m_partMeshes : slot.meshes;
             for (std::size_t p = 0; p < meshes.size() && p < slot.take_T_part.size(); ++p) {
                 setModel(root * slot.take_T_part[p]);
@@ -570,6 +678,30 @@ void Renderer::drawScene(const Camera& camera, QSize size, bool partIds)
     }
     m_program->release();
     if (partIds) gl.glEnable(GL_DITHER);
+}
+
+void Renderer::drawPuppet(const Slot& slot, int takeSlot, const glm::mat4& root, const glm::mat4& viewProjection,
+                          const glm::vec3& eye, bool partIds)
+{
+    QOpenGLExtraFunctions& gl = *m_gl;
+    const PuppetFigure& figure = *slotPuppet(slot);
+    m_skinProgram->bind();
+    const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(root)));
+    gl.glUniformMatrix4fv(m_skinUniforms.model, 1, GL_FALSE, glm::value_ptr(root));
+    gl.glUniformMatrix3fv(m_skinUniforms.normalMatrix, 1, GL_FALSE, glm::value_ptr(normalMatrix));
+    gl.glUniformMatrix4fv(m_skinUniforms.viewProjection, 1, GL_FALSE, glm::value_ptr(viewProjection));
+    gl.glUniform3f(m_skinUniforms.lightPosition, eye.x, eye.y, eye.z);
+    gl.glUniform4f(m_skinUniforms.colour, 1.0f, 1.0f, 1.0f, 1.0f);
+    gl.glUniform1i(m_skinUniforms.useVertexColour, 1);
+    gl.glUniform1i(m_skinUniforms.lit, 1);
+    gl.glUniform1i(m_skinUniforms.partIdBase, partIds ? 1 + kIdsPerSlot * takeSlot : -1);
+    const JointDualQuaternions q = jointDualQuaternions(*figure.mesh, slot.take_T_skinJoint);
+    gl.glUniform4fv(m_skinUniforms.jointReal, analysis::kPuppetJointCount, glm::value_ptr(q.real[0]));
+    gl.glUniform4fv(m_skinUniforms.jointDual, analysis::kPuppetJointCount, glm::value_ptr(q.dual[0]));
+    const auto partOf = analysis::puppetJointPartIndices(slot.body);
+    gl.glUniform1iv(m_skinUniforms.partOfJoint, analysis::kPuppetJointCount, partOf.data());
+    figure.gpu.draw(gl);
+    m_program->bind();
 }
 
 void Renderer::render(const Camera& camera, QSize size)

@@ -13,12 +13,14 @@
 #include "render/framing.h"
 #include "render/gpu_mesh.h"
 #include "render/scene.h"
+#include "render/skinned_puppet.h"
 
 #include <QImage>
 #include <QOpenGLExtraFunctions>
 #include <QPoint>
 #include <QSize>
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -114,6 +116,17 @@ public:
 private:
     struct Slot;
     struct SkeletonFigure;
+    struct PuppetFigure;
+    /// The uploaded modelled puppet fitted like `body`: reused when the next scene's body has the
+    /// same fits (a scene is replaced on every step of a drag).
+    std::shared_ptr<PuppetFigure> puppetFigure(const analysis::BodyDescription& body,
+                                               std::vector<std::shared_ptr<PuppetFigure>>& reusable);
+    /// The puppet's figure a slot draws (its own fitted one, or the scene's); null without the
+    /// modelled puppet (a body of other parts, or meshes loaded from files).
+    const PuppetFigure* slotPuppet(const Slot& slot) const;
+    /// The displayed box of the modelled puppet's joints of `part` (all parts when empty) at `frame`.
+    void addPuppetBounds(Bounds& bounds, const Slot& slot, Eigen::Index frame, const glm::mat4& root,
+                         const std::function<bool(const std::string&, const std::string&)>& wanted) const;
     /// The uploaded skeleton of a take: reused when the next scene shows the same skeleton with
     /// the same bones (a scene is replaced on every step of a drag).
     std::shared_ptr<SkeletonFigure> skeletonFigure(const analysis::SkeletalMotion& motion,
@@ -122,6 +135,8 @@ private:
     /// Height (cm) the view is framed for: a puppet's, or the tallest skeleton drawn.
     float framedHeight() const;
     void drawScene(const Camera& camera, QSize size, bool partIds);
+    void drawPuppet(const Slot& slot, int takeSlot, const glm::mat4& root, const glm::mat4& viewProjection,
+                    const glm::vec3& eye, bool partIds);
     void setModel(const glm::mat4& model);
     void setColour(const glm::vec3& colour, bool vertexColour, bool lit);
     QOpenGLFramebufferObject& pickFramebuffer(QSize size);
@@ -130,11 +145,17 @@ private:
     QOpenGLContext* m_context = nullptr;
     QOpenGLExtraFunctions* m_gl = nullptr;
     std::unique_ptr<QOpenGLShaderProgram> m_program;
+    std::unique_ptr<QOpenGLShaderProgram> m_skinProgram; ///< skinned.vert + scene.frag
     std::unique_ptr<QOpenGLFramebufferObject> m_pickFramebuffer;
     struct Uniforms {
         int model = -1, viewProjection = -1, normalMatrix = -1, colour = -1, useVertexColour = -1, lit = -1,
-            lightPosition = -1;
+            lightPosition = -1, partIdBase = -1;
     } m_uniforms;
+    struct SkinUniforms {
+        int model = -1, viewProjection = -1, normalMatrix = -1, colour = -1, useVertexColour = -1, lit = -1,
+            lightPosition = -1, partIdBase = -1, jointReal = -1, jointDual = -1, partOfJoint = -1;
+    } m_skinUniforms;
+    std::shared_ptr<PuppetFigure> m_puppet; ///< the scene body's modelled puppet, or null
 
     analysis::BodyDescription m_body;
     std::vector<std::string> m_partNames;

@@ -20,6 +20,7 @@
 #include "analysis/core/result.h"
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <filesystem>
 #include <string>
@@ -67,6 +68,10 @@ struct BodyPart {
     double density = 1.0; ///< g/cm^3, the default of its primitives
     Eigen::Vector3d colour{0.8, 0.8, 0.8};
     std::vector<Primitive> primitives; ///< mirrored parts: already reflected, see the file comment
+    /// How this part's geometry was mapped from the shipped puppet's in the part frame
+    /// (body_fit.h: p -> A_s + R S (p - A_p), reflected for a mirrored part); the identity for the
+    /// shipped description. The modelled puppet (puppet_model.h) is fitted with it.
+    Eigen::Affine3d fit = Eigen::Affine3d::Identity();
 
     /// Sum of the primitives' masses in g (overlaps counted twice, as the volumes are).
     double mass() const;

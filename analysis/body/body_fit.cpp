@@ -127,12 +127,22 @@ Result<BodyDescription> fitBodyToSkeleton(const BodyDescription& puppet, const S
             return -1;
         }();
         if (driver < 0) continue; // driven by a take part the skeleton does not bind: left as it is
-        for (Primitive& primitive : part.primitives) primitive = mapped(primitive, maps[std::size_t(driver)]);
+        const PartMapping& m = maps[std::size_t(driver)];
+        for (Primitive& primitive : part.primitives) primitive = mapped(primitive, m);
+        part.fit = Eigen::Affine3d::Identity();
+        part.fit.linear() = m.rotation.toRotationMatrix() * m.scale.asDiagonal();
+        part.fit.translation() = m.to - part.fit.linear() * m.from;
     }
     for (BodyPart& part : body.parts) {
         if (!part.mirrored) continue;
         const int source = body.partIndex(part.mirrorOf);
-        if (source >= 0) part.primitives = reflected(body.parts[std::size_t(source)].primitives);
+        if (source < 0) continue;
+        part.primitives = reflected(body.parts[std::size_t(source)].primitives);
+        const Eigen::Matrix3d flip = Eigen::Vector3d(1.0, -1.0, 1.0).asDiagonal();
+        const Eigen::Affine3d& sourceFit = body.parts[std::size_t(source)].fit;
+        part.fit = Eigen::Affine3d::Identity();
+        part.fit.linear() = flip * sourceFit.linear() * flip;
+        part.fit.translation() = flip * sourceFit.translation();
     }
     return body;
 }

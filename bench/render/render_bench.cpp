@@ -1,7 +1,8 @@
-// Frame time of the 3D view: two puppets of the demo corpus with their motion axes and orbits
+// Frame time of the 3D view: two puppets of the demo corpus (the modelled, skinned puppet) with their motion axes and orbits
 // at 1280x720, offscreen (Xvfb + llvmpipe). Each iteration advances the frame (CPU poses and
 // uniforms only) and draws; glFinish makes the GPU's work part of the time. Per-frame times are
 // collected so the median and 95th percentile can be reported (target: 60 fps = 16.7 ms).
+#include "analysis/body/puppet_model.h"
 #include "analysis/synth/demo_corpus.h"
 #include "render/offscreen_renderer.h"
 #include "render/take_scene.h"
@@ -143,8 +144,36 @@ void BM_ScreenshotTwoPuppets(benchmark::State& state)
     for (auto _ : state) benchmark::DoNotOptimize(s.offscreen->render(camera, size));
 }
 
+/// Generating the modelled puppet (analysis/body/puppet_model.h): the signed distance field
+/// polygonised by surface nets at the shipped 0.5 cm cells, weights and materials; what the
+/// first scene of a process pays once (shippedPuppetMesh caches it). Argument: threads.
+void BM_GeneratePuppetMesh(benchmark::State& state)
+{
+    analysis::PuppetMeshOptions options;
+    options.threads = int(state.range(0));
+    std::size_t triangles = 0;
+    for (auto _ : state) {
+        const analysis::PuppetMesh mesh = analysis::generatePuppetMesh(options);
+        triangles = mesh.triangleCount();
+        benchmark::DoNotOptimize(triangles);
+    }
+    state.counters["triangles"] = double(triangles);
+}
+
+/// The puppet fitted to a performer's proportions (each vertex mapped by its parts' fits): once
+/// per take with a skeleton shown.
+void BM_FitPuppetMesh(benchmark::State& state)
+{
+    analysis::BodyDescription body = analysis::defaultBodyDescription();
+    for (auto& part : body.parts) part.fit.linear() *= 1.3;
+    const analysis::PuppetMesh& shipped = analysis::shippedPuppetMesh();
+    for (auto _ : state) benchmark::DoNotOptimize(analysis::fittedPuppetMesh(shipped, body));
+}
+
 } // namespace
 
+BENCHMARK(BM_GeneratePuppetMesh)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->Iterations(5);
+BENCHMARK(BM_FitPuppetMesh)->Unit(benchmark::kMillisecond);
 // Arguments: width, height, multisampling (0 = none, 1 = 4x).
 BENCHMARK(BM_TwoPuppetsAxesOrbits)
     ->ArgNames({"w", "h", "msaa4"})

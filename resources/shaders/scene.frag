@@ -1,20 +1,72 @@
 #version 330 core
 // A light at the camera (thesis 6): diffuse shading, two-sided so scanned meshes with mixed
 // winding still read, and a faint highlight. Unlit mode writes the colour exactly (lines and
-// the part-ID pass, whose 8-bit values must survive unchanged).
+// the part-ID pass, whose 8-bit values must survive unchanged). The modelled puppet
+// (skinned.vert) adds a sheen per material and paint evaluated per pixel: the kashira's eyes,
+// brows, lips and blush, the kimono's kanoko dots and the obi's weave.
 in vec3 v_worldPosition;
 in vec3 v_normal;
 in vec3 v_colour;
+in float v_sheen;
+in vec3 v_paint;
+flat in int v_region;
+flat in int v_part;
 
 uniform vec4 u_colour;          // multiplies the vertex colour, or replaces it
 uniform int u_useVertexColour;  // 1: v_colour * u_colour.rgb, 0: u_colour.rgb
 uniform int u_lit;              // 1: shaded by the light at u_lightPosition
 uniform vec3 u_lightPosition;   // world, cm
+uniform int u_partIdBase;       // >= 0: the ID pass of the skinned puppet, red = base + v_part
 
 out vec4 fragColour;
 
+vec3 paintFace(vec3 base, vec3 p)
+{
+    if (p.x < 4.6) return base;
+    float ay = abs(p.y);
+    float blush = exp(-((ay - 2.2) * (ay - 2.2) + (p.z - 13.1) * (p.z - 13.1)) / 0.8);
+    base = mix(base, vec3(0.95, 0.66, 0.66), 0.25 * blush);
+    // Narrow almond eyes, the outer corners a little higher; a dark upper lid line.
+    vec2 e = vec2((ay - 1.55) / 0.68, (p.z - 14.5 - 0.16 * (ay - 1.55)) / 0.2);
+    float eye = dot(e, e);
+    if (eye < 1.0) return vec3(0.06, 0.05, 0.05);
+    if (eye < 1.6 && e.y > 0.3) return mix(base, vec3(0.25, 0.12, 0.1), 0.8);
+    // Thin painted brows, high on the forehead.
+    float u = (ay - 1.45) / 0.9;
+    float browZ = 16.3 - 0.22 * u * u;
+    if (ay > 0.65 && ay < 2.35 && abs(p.z - browZ) < 0.08) return vec3(0.12, 0.1, 0.1);
+    // Small red lips, the lower a little narrower.
+    float lz = (p.z - 12.2) / 0.36;
+    float halfWidth = lz > 0.0 ? 0.62 : 0.5;
+    if (p.x > 5.6 && abs(lz) < 1.0 && ay < halfWidth * sqrt(1.0 - lz * lz)) return vec3(0.74, 0.05, 0.12);
+    return base;
+}
+
+vec3 paintKimono(vec3 base, vec3 p)
+{
+    if (p.z < -51.6) return base; // the lining at the hem
+    // Kanoko: a lattice of small tie-dye rings.
+    vec3 q = p / 1.7;
+    q.x += 0.5 * mod(floor(q.z), 2.0);
+    vec3 f = fract(q) - 0.5;
+    float r = length(f);
+    if (r < 0.09) return base * 0.8;
+    if (r < 0.2) return mix(base, vec3(0.97, 0.86, 0.84), 0.85);
+    return base;
+}
+
+vec3 paintObi(vec3 base, vec3 p)
+{
+    float weave = 0.5 + 0.5 * sin(p.z * 6.0) * sin((p.x + p.y) * 2.2);
+    return base * (0.82 + 0.22 * weave);
+}
+
 void main()
 {
+    if (u_partIdBase >= 0) {
+        fragColour = vec4(float(u_partIdBase + v_part) / 255.0, 0.0, 0.0, 1.0);
+        return;
+    }
     vec3 base = u_useVertexColour != 0 ? v_colour * u_colour.rgb : u_colour.rgb;
     if (u_lit == 0) {
         fragColour = vec4(base, u_colour.a);
@@ -23,6 +75,18 @@ void main()
     vec3 n = normalize(v_normal);
     vec3 l = normalize(u_lightPosition - v_worldPosition);
     float diffuse = abs(dot(n, l));
-    float highlight = pow(diffuse, 40.0) * 0.12;
-    fragColour = vec4(base * (0.45 + 0.55 * diffuse) + vec3(highlight), u_colour.a);
+    if (v_sheen < 0.0) {
+        float highlight = pow(diffuse, 40.0) * 0.12;
+        fragColour = vec4(base * (0.45 + 0.55 * diffuse) + vec3(highlight), u_colour.a);
+        return;
+    }
+    if (v_region == 1) base = paintFace(base, v_paint);
+    else if (v_region == 2) base = paintKimono(base, v_paint);
+    else if (v_region == 3) base = paintObi(base, v_paint);
+    // The light sits at the eye, so the half vector is the light direction: a Blinn highlight
+    // whose size and strength follow the material (silk broad and soft, lacquer tight).
+    float shininess = mix(10.0, 80.0, v_sheen);
+    float highlight = pow(diffuse, shininess) * 0.45 * v_sheen;
+    float sky = 0.5 + 0.5 * (gl_FrontFacing ? n.z : -n.z);
+    fragColour = vec4(base * (0.34 + 0.52 * diffuse + 0.12 * sky) + vec3(highlight), u_colour.a);
 }

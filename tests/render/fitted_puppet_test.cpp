@@ -56,6 +56,7 @@ void checkArmAndHandOnTheirBones(const NamedTake& named)
     render::TakeSceneOptions sceneOptions;
     sceneOptions.computeAxes = false;
     auto scene = render::makeTakeScene(analysis::defaultBodyDescription(), {named.take}, sceneOptions);
+    INFO((scene.ok() ? std::string() : scene.error().message));
     REQUIRE(scene.ok());
     REQUIRE(scene->takes.front().body); // drawn with its own, fitted body
     render::LayoutOptions layout;
