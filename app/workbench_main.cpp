@@ -11,10 +11,13 @@
 #include "app/window_placement.h"
 #include "render/scene.h"
 
+#include "analysis/body/puppet_model.h"
+
 #include <QApplication>
 #include <QComboBox>
 #include <QCommandLineParser>
 #include <QMessageBox>
+#include <QtConcurrent/QtConcurrentRun>
 
 #include <cstdio>
 #include <cstring>
@@ -105,6 +108,10 @@ int runWorkbench(int argc, char** argv)
     if (userGuidePath().isEmpty())
         std::fprintf(stderr, "bunraku-workbench: warning: the user guide is not installed (expected %s)\n",
                      qPrintable(expectedUserGuidePath()));
+
+    // The modelled puppet's mesh (about 1.2 s of CPU, made once per process) starts on a pool
+    // thread while the window is built: the first scene waits only for what is left of it.
+    (void)QtConcurrent::run([] { (void)analysis::shippedPuppetMesh(); });
 
     MainWindow window;
     if (parser.isSet(QStringLiteral("figure"))) {
