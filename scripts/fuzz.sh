@@ -3,7 +3,7 @@
 # Usage: scripts/fuzz.sh [RUNS] [TARGET...]
 #   RUNS     executions per target (default 1000000; scripts/test.sh runs 20000 as a smoke test)
 #   TARGET   fuzz_bvh fuzz_take_csv fuzz_fastrak fuzz_corpus_manifest fuzz_project fuzz_warp_csv
-#            fuzz_gains_json (default: all)
+#            fuzz_gains_json fuzz_scene_take (default: all)
 # Builds the analysis layer with clang-14, -fsanitize=fuzzer,address,undefined in build-fuzz,
 # starts each target from its seeds (fuzz/seeds/<target>, valid files) in a scratch corpus, and
 # fails on the first crash, leak, timeout or allocation past the limits below; the input that
@@ -14,7 +14,7 @@ runs="${1:-1000000}"
 shift || true
 targets=("$@")
 if [ ${#targets[@]} -eq 0 ]; then
-  targets=(fuzz_bvh fuzz_take_csv fuzz_fastrak fuzz_corpus_manifest fuzz_project fuzz_warp_csv fuzz_gains_json)
+  targets=(fuzz_bvh fuzz_take_csv fuzz_fastrak fuzz_corpus_manifest fuzz_project fuzz_warp_csv fuzz_gains_json fuzz_scene_take)
 fi
 build="$root/build-fuzz"
 generator=()
