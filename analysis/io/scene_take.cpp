@@ -103,14 +103,23 @@ Eigen::Matrix4d toEigen(const aiMatrix4x4& m)
 }
 
 /// The rotation nearest a 3x3 block that may carry scale: columns normalised when they are
-/// orthogonal (the usual case), the polar factor (SVD) otherwise.
+/// orthogonal (the usual case; single-precision keys leave 1e-7), else the polar factor by
+/// Newton's iteration R <- (R + R^-T) / 2 (a few steps from a scaled rotation), the SVD when that
+/// does not settle.
 Eigen::Matrix3d rotationPart(const Eigen::Matrix3d& m, bool* scaled)
 {
     const Eigen::Vector3d lengths = m.colwise().norm();
-    if (scaled && (lengths - Eigen::Vector3d::Ones()).cwiseAbs().maxCoeff() > 1e-6) *scaled = true;
+    if (scaled && (lengths - Eigen::Vector3d::Ones()).cwiseAbs().maxCoeff() > 1e-5) *scaled = true;
     if (lengths.minCoeff() > 1e-12) {
         Eigen::Matrix3d r = m * lengths.cwiseInverse().asDiagonal();
-        if ((r.transpose() * r - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff() < 1e-9 && r.determinant() > 0.0) return r;
+        if (r.determinant() > 0.0) {
+            for (int step = 0; step < 20; ++step) {
+                const double error = (r.transpose() * r - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
+                if (error < 1e-12) return r;
+                if (!(error < 0.5)) break;
+                r = 0.5 * (r + r.inverse().transpose());
+            }
+        }
     }
     Eigen::JacobiSVD<Eigen::Matrix3d> svd(m, Eigen::ComputeFullU | Eigen::ComputeFullV);
     Eigen::Matrix3d u = svd.matrixU();
