@@ -3,6 +3,7 @@
 #include "analysis/core/take.h"
 #include "analysis/io/atomic_file.h"
 #include "analysis/io/bvh_import.h"
+#include "analysis/io/text_scan.h"
 
 #include <assimp/Importer.hpp>
 #include <assimp/config.h>
@@ -274,7 +275,10 @@ Result<SceneTake> convertScene(const aiScene& scene, SceneFormat format, const s
     info.format = format;
     info.formatName = formatName(format);
     info.meshes = int(scene.mNumMeshes);
-    for (unsigned a = 0; a < scene.mNumAnimations; ++a) info.animations.push_back(scene.mAnimations[a] ? scene.mAnimations[a]->mName.C_Str() : "");
+    for (unsigned a = 0; a < scene.mNumAnimations; ++a) {
+        const std::string name = scene.mAnimations && scene.mAnimations[a] ? scene.mAnimations[a]->mName.C_Str() : "";
+        info.animations.push_back(detail::isUtf8(name) ? name : detail::quoted(name)); // shown and written as JSON
+    }
     if (!scene.mRootNode) return parseError(source, 0, "the " + info.formatName + " file has no scene nodes");
     if (scene.mNumAnimations == 0 || !scene.mAnimations) {
         return makeError(ErrorCode::Unsupported, source + ": no animation in this " + info.formatName + " file (" + std::to_string(scene.mNumMeshes) +
@@ -395,7 +399,12 @@ Result<SceneTake> convertScene(const aiScene& scene, SceneFormat format, const s
     if (root < 0)
         return makeError(ErrorCode::Unsupported, source + ": the animated nodes of the " + info.formatName + " file have no common joint");
 
-    // Joints: the root and every non-helper node below it, parents first (the node order is).
+    // Joints: the root and the non-helper nodes below it that are animated or lead to one, and
+    // the leaves hanging from those without a mesh of their own (End Sites: Blender's "_end"
+    // bones, Mixamo's HeadTop_End); parents first (the node order is).
+    std::vector<char> animatedBelow(animated);
+    for (std::size_t n = nodes.size(); n-- > 1;)
+        if (animatedBelow[n] && nodes[n].parent >= 0) animatedBelow[std::size_t(nodes[n].parent)] = 1;
     std::vector<int> jointOf(nodes.size(), -1);
     std::vector<int> jointNodes;
     std::vector<int> jointParent;
@@ -406,6 +415,7 @@ Result<SceneTake> convertScene(const aiScene& scene, SceneFormat format, const s
         int parentJoint = -1;
         if (int(n) != root) {
             if (parent < 0 || jointOf[std::size_t(parent)] < 0) continue; // not below the root
+            if (!animatedBelow[n] && (!animatedBelow[std::size_t(parent)] || nodes[n].node->mNumMeshes > 0)) continue; // a mesh, a prop
             parentJoint = jointOf[std::size_t(parent)];
         }
         jointOf[n] = int(jointNodes.size());
@@ -567,6 +577,23 @@ Result<SceneTake> convertScene(const aiScene& scene, SceneFormat format, const s
     info.scaleDropped = scaled;
     control.report(1.0);
 
+    // Joint names as the skeleton needs them: UTF-8 text (they go into JSON files), non-empty and
+    // unique; a file's other names get "joint N" or a suffix, and the error names the first.
+    std::vector<std::string> jointNames(static_cast<std::size_t>(jointCount));
+    {
+        std::unordered_map<std::string, int> used;
+        for (int j = 0; j < jointCount; ++j) {
+            std::string name = nodes[std::size_t(jointNodes[std::size_t(j)])].name;
+            if (!detail::isUtf8(name))
+                return parseError(source, 0, "node name " + detail::quoted(name) + " is not UTF-8 text");
+            if (name.empty()) name = "joint " + std::to_string(j);
+            std::string unique = name;
+            for (int k = 2; used.count(unique); ++k) unique = name + " " + std::to_string(k);
+            used.emplace(unique, j);
+            jointNames[std::size_t(j)] = unique;
+        }
+    }
+
     // The BVH structure: offsets are the rest pose's, End Sites the leaves that never move.
     BvhFile& bvh = out.bvh;
     bvh.source = source;
@@ -587,7 +614,7 @@ Result<SceneTake> convertScene(const aiScene& scene, SceneFormat format, const s
     int columns = 0;
     for (int j = 0; j < jointCount; ++j) {
         BvhJoint joint;
-        joint.name = nodes[std::size_t(jointNodes[std::size_t(j)])].name;
+        joint.name = jointNames[std::size_t(j)];
         joint.parent = jointParent[std::size_t(j)];
         const Eigen::Vector3d offset = j == 0 ? restPosition[0] : Eigen::Vector3d(restPosition[std::size_t(j)] - restPosition[std::size_t(joint.parent)]);
         joint.offset = offset;
@@ -702,7 +729,10 @@ Result<std::vector<std::string>> listSceneAnimations(const fs::path& file)
     const aiScene* scene = importer.ReadFile(source, 0);
     if (!scene) return assimpError(source, *format, importer);
     std::vector<std::string> names;
-    for (unsigned a = 0; a < scene->mNumAnimations; ++a) names.push_back(scene->mAnimations[a] ? scene->mAnimations[a]->mName.C_Str() : "");
+    for (unsigned a = 0; a < scene->mNumAnimations; ++a) {
+        const std::string name = scene->mAnimations && scene->mAnimations[a] ? scene->mAnimations[a]->mName.C_Str() : "";
+        names.push_back(detail::isUtf8(name) ? name : detail::quoted(name));
+    }
     return names;
 }
 

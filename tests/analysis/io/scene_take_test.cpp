@@ -5,6 +5,7 @@
 #include "analysis/core/skeleton.h"
 #include "analysis/io/bvh_import.h"
 #include "analysis/io/gltf_export.h"
+#include "analysis/io/import_options_json.h"
 #include "analysis/io/scene_take.h"
 #include "analysis/io/take_reader.h"
 #include "tests/support/test_paths.h"
@@ -341,4 +342,20 @@ TEST_CASE("a take written as glTF by the workbench reads back on the same skelet
             CHECK(ours[std::size_t(a)].rotation.angularDistance(theirs[std::size_t(b)].rotation) < 1e-5);
         }
     }
+}
+
+TEST_CASE("a project keeps a scene take's animation and rate in its import options", "[io][scene]")
+{
+    ImportOptions options;
+    options.scene.animation = "walk";
+    options.scene.rateHz = 48.0;
+    auto read = importOptionsFromJson(importOptionsToJson(options), "project.bunraku.json");
+    REQUIRE(read.ok());
+    CHECK(read->scene.animation == "walk");
+    CHECK(read->scene.rateHz == 48.0);
+    nlohmann::json bad = importOptionsToJson(options);
+    bad["scene"]["rateHz"] = 0.0;
+    auto refused = importOptionsFromJson(bad, "project.bunraku.json");
+    REQUIRE(!refused.ok());
+    CHECK(refused.error().message.find("scene.rateHz") != std::string::npos);
 }
