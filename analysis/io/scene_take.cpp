@@ -8,6 +8,7 @@
 #include <assimp/Importer.hpp>
 #include <assimp/config.h>
 #include <assimp/scene.h>
+#include <nlohmann/json.hpp>
 
 #include <Eigen/Geometry>
 #include <Eigen/SVD>
@@ -16,6 +17,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <initializer_list>
 #include <iterator>
 #include <limits>
@@ -675,6 +677,105 @@ Error assimpError(const std::string& source, SceneFormat format, const Assimp::I
     return makeError(ErrorCode::Parse, source + ": not a readable " + std::string(formatName(format)) + " file: " + oneLine(importer.GetErrorString()));
 }
 
+std::string base64(std::string_view bytes)
+{
+    static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    out.reserve((bytes.size() + 2) / 3 * 4);
+    for (std::size_t i = 0; i < bytes.size(); i += 3) {
+        const unsigned b0 = std::uint8_t(bytes[i]), b1 = i + 1 < bytes.size() ? std::uint8_t(bytes[i + 1]) : 0u,
+                       b2 = i + 2 < bytes.size() ? std::uint8_t(bytes[i + 2]) : 0u;
+        out += table[b0 >> 2];
+        out += table[((b0 & 3) << 4) | (b1 >> 4)];
+        out += i + 1 < bytes.size() ? table[((b1 & 15) << 2) | (b2 >> 6)] : '=';
+        out += i + 2 < bytes.size() ? table[b2 & 63] : '=';
+    }
+    return out;
+}
+
+/// A glTF file without what a take does not use - meshes, skins, materials, textures, images,
+/// cameras - before assimp sees it: assimp 5.2 crashes on some of it (a skin without
+/// inverseBindMatrices, which glTF allows; found by fuzz_scene_take) and reads less. `meshes`
+/// gets the file's mesh count. A text file's buffers in other files are read from `folder`
+/// (relative names without "..", regular files of at most kMaxSceneFileBytes) and embedded, so
+/// assimp reads nothing but these bytes; without a folder they are an error.
+Result<std::string> slimGltf(const std::string& bytes, bool binary, const fs::path* folder, const std::string& source, int& meshes)
+{
+    const auto bad = [&](const std::string& what) { return parseError(source, 0, "not a readable glTF file: " + what); };
+    std::string_view json = bytes;
+    std::string rest; // a binary file's chunks after the JSON
+    if (binary) {
+        auto u32 = [&](std::size_t at) {
+            std::uint32_t v = 0;
+            std::memcpy(&v, bytes.data() + at, 4);
+            return v;
+        };
+        if (bytes.size() < 20 || bytes.compare(0, 4, "glTF") != 0) return bad("expected the glTF binary header");
+        if (u32(4) != 2) return bad("expected glTF version 2");
+        const std::uint32_t chunk = u32(12);
+        if (u32(16) != 0x4E4F534Au || chunk > bytes.size() - 20) return bad("expected a JSON chunk inside the file");
+        json = std::string_view(bytes).substr(20, chunk);
+        rest = bytes.substr(20 + chunk);
+    }
+    nlohmann::json document = nlohmann::json::parse(json.begin(), json.end(), nullptr, false);
+    if (document.is_discarded() || !document.is_object()) return bad("its JSON does not parse");
+    meshes = document.contains("meshes") && document["meshes"].is_array() ? int(document["meshes"].size()) : 0;
+    for (const char* key : {"meshes", "skins", "materials", "textures", "images", "samplers", "cameras"}) document.erase(key);
+    if (document.contains("nodes") && document["nodes"].is_array())
+        for (auto& node : document["nodes"])
+            if (node.is_object())
+                for (const char* key : {"mesh", "skin", "camera", "weights"}) node.erase(key);
+    if (!binary && document.contains("buffers") && document["buffers"].is_array()) {
+        for (auto& buffer : document["buffers"]) {
+            if (!buffer.is_object() || !buffer.contains("uri") || !buffer["uri"].is_string()) continue;
+            const std::string uri = buffer["uri"].get<std::string>();
+            if (uri.rfind("data:", 0) == 0) continue;
+            if (!folder) return bad("its buffer '" + detail::quoted(uri) + "' is in another file");
+            const fs::path relative(uri);
+            if (relative.is_absolute() || uri.find("..") != std::string::npos || uri.find('%') != std::string::npos)
+                return bad("its buffer " + detail::quoted(uri) + " is not a file beside it");
+            auto data = readTextFile(*folder / relative, kMaxSceneFileBytes);
+            if (!data) return data.error();
+            buffer["uri"] = "data:application/octet-stream;base64," + base64(*data);
+        }
+    }
+    std::string text = document.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+    if (!binary) return text;
+    while (text.size() % 4 != 0) text += ' ';
+    std::string out = "glTF";
+    auto put = [&](std::uint32_t v) { out.append(reinterpret_cast<const char*>(&v), 4); };
+    put(2);
+    put(std::uint32_t(12 + 8 + text.size() + rest.size()));
+    put(std::uint32_t(text.size()));
+    put(0x4E4F534Au);
+    out += text;
+    out += rest;
+    return out;
+}
+
+/// Reads the bytes with assimp (glTF slimmed first) and converts the scene.
+Result<SceneTake> readWithAssimp(const std::string& bytes, const std::string& extension, SceneFormat format, const std::string& source,
+                                 const fs::path* folder, const SceneTakeOptions& options, const RunControl& control)
+{
+    if (bytes.empty()) return makeError(ErrorCode::Parse, source + ": empty file");
+    const std::string* input = &bytes;
+    std::string slim;
+    int meshes = -1;
+    if (format == SceneFormat::Gltf) {
+        auto slimmed = slimGltf(bytes, extension == ".glb", folder, source, meshes);
+        if (!slimmed) return slimmed.error();
+        slim = std::move(slimmed).value();
+        input = &slim;
+    }
+    Assimp::Importer importer;
+    configure(importer);
+    const aiScene* scene = importer.ReadFileFromMemory(input->data(), input->size(), 0, extension.substr(1).c_str());
+    if (!scene) return assimpError(source, format, importer);
+    auto take = convertScene(*scene, format, source, options, control);
+    if (take && meshes >= 0) take->info.meshes = meshes;
+    return take;
+}
+
 } // namespace
 
 bool isSceneTakeFile(const fs::path& file) { return formatOfExtension(lowerExtension(file)).has_value(); }
@@ -690,12 +791,7 @@ Result<SceneTake> parseSceneTake(const std::string& bytes, const std::string& ex
 {
     auto format = formatOf(extension, sourceName);
     if (!format) return format.error();
-    if (bytes.empty()) return makeError(ErrorCode::Parse, sourceName + ": empty file");
-    Assimp::Importer importer;
-    configure(importer);
-    const aiScene* scene = importer.ReadFileFromMemory(bytes.data(), bytes.size(), 0, extension.substr(1).c_str());
-    if (!scene) return assimpError(sourceName, *format, importer);
-    return convertScene(*scene, *format, sourceName, options, control);
+    return readWithAssimp(bytes, extension, *format, sourceName, nullptr, options, control);
 }
 
 Result<SceneTake> readSceneTake(const fs::path& file, const SceneTakeOptions& options, const RunControl& control)
@@ -704,36 +800,24 @@ Result<SceneTake> readSceneTake(const fs::path& file, const SceneTakeOptions& op
     const std::string extension = lowerExtension(file);
     auto format = formatOf(extension, source);
     if (!format) return format.error();
-    if (extension == ".gltf") {
-        // Text glTF may keep its buffers in files beside it: assimp reads them from the folder.
-        if (auto status = checkReadableFile(file, kMaxSceneFileBytes); !status) return status.error();
-        Assimp::Importer importer;
-        configure(importer);
-        const aiScene* scene = importer.ReadFile(source, 0);
-        if (!scene) return assimpError(source, *format, importer);
-        return convertScene(*scene, *format, source, options, control);
-    }
     auto bytes = readTextFile(file, kMaxSceneFileBytes);
     if (!bytes) return bytes.error();
-    return parseSceneTake(*bytes, extension, source, options, control);
+    // Text glTF may keep its buffers in files beside it.
+    const fs::path folder = file.parent_path().empty() ? fs::path(".") : file.parent_path();
+    return readWithAssimp(*bytes, extension, *format, source, &folder, options, control);
 }
 
 Result<std::vector<std::string>> listSceneAnimations(const fs::path& file)
 {
-    const std::string source = file.string();
-    auto format = formatOf(lowerExtension(file), source);
-    if (!format) return format.error();
-    if (auto status = checkReadableFile(file, kMaxSceneFileBytes); !status) return status.error();
-    Assimp::Importer importer;
-    configure(importer);
-    const aiScene* scene = importer.ReadFile(source, 0);
-    if (!scene) return assimpError(source, *format, importer);
-    std::vector<std::string> names;
-    for (unsigned a = 0; a < scene->mNumAnimations; ++a) {
-        const std::string name = scene->mAnimations && scene->mAnimations[a] ? scene->mAnimations[a]->mName.C_Str() : "";
-        names.push_back(detail::isUtf8(name) ? name : detail::quoted(name));
+    // Read as a take of its first animation (assimp reads them all): the names come with it. A
+    // file without animation has none to list.
+    auto take = readSceneTake(file);
+    if (!take) {
+        if (take.error().code == ErrorCode::Unsupported && take.error().message.find("no animation in this") != std::string::npos)
+            return std::vector<std::string>{};
+        return take.error();
     }
-    return names;
+    return take->info.animations;
 }
 
 } // namespace bunraku::analysis::io

@@ -95,7 +95,10 @@ fs::path mixamoSizeFbx(long frames)
     out << "\tAnimationLayer: " << layer << ", \"AnimLayer::BaseLayer\", \"\" {\n\t}\n";
     connections << "\tC: \"OO\"," << layer << "," << stack << "\n";
     std::string times;
-    for (long f = 0; f < frames; ++f) times += (f ? "," : "") + std::to_string(ticksPerFrame * f);
+    for (long f = 0; f < frames; ++f) {
+        if (f > 0) times += ',';
+        times += std::to_string(ticksPerFrame * f); // appended piecewise: GCC 12's false -Wrestrict
+    }
     auto curve = [&](long long node, const char* axis, double amplitude, double phase, double offset) {
         const long long curveId = ++id;
         out << "\tAnimationCurve: " << curveId << ", \"AnimCurve::\", \"\" {\n\t\tDefault: 0\n\t\tKeyVer: 4008\n\t\tKeyTime: *" << frames

@@ -359,3 +359,48 @@ TEST_CASE("a project keeps a scene take's animation and rate in its import optio
     REQUIRE(!refused.ok());
     CHECK(refused.error().message.find("scene.rateHz") != std::string::npos);
 }
+
+TEST_CASE("a glTF skin without inverse bind matrices is read: its skins and meshes never reach assimp", "[io][scene]")
+{
+    // Found by fuzz_scene_take: assimp 5.2 crashes on a skin without inverseBindMatrices, which
+    // glTF allows (this file is the workbench's own export with that key misspelled).
+    const fs::path file = bunraku::test::sourceDir() / "tests" / "data" / "io" / "skin_without_inverse_bind_matrices.glb";
+    auto scene = readSceneTake(file);
+    REQUIRE(scene.ok());
+    CHECK(scene->info.meshes == 1);
+    CHECK(scene->bvh.motion.values.rows() == 12);
+}
+
+TEST_CASE("a text glTF reads its buffer from a file beside it and refuses one outside its folder", "[io][scene]")
+{
+    const fs::path dir = bunraku::test::scratchDir("scene_gltf_buffer");
+    std::string text = twoAnimationGltf({0.0f, 0.05f, 0.1f}, 0.5f);
+    const std::size_t uri = text.find("data:application/octet-stream;base64,");
+    const std::size_t end = text.find('"', uri);
+    // The embedded bytes written to two.bin, the file naming it.
+    const std::string encoded = text.substr(uri + 37, end - uri - 37);
+    std::string decoded;
+    {
+        const std::string table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+        unsigned value = 0;
+        int bits = -8;
+        for (char c : encoded) {
+            if (c == '=') break;
+            value = (value << 6) | unsigned(table.find(c));
+            bits += 6;
+            if (bits >= 0) {
+                decoded += char((value >> bits) & 0xFF);
+                bits -= 8;
+            }
+        }
+    }
+    writeText(dir / "two.bin", decoded);
+    writeText(dir / "two.gltf", text.substr(0, uri) + "two.bin" + text.substr(end));
+    auto scene = readSceneTake(dir / "two.gltf");
+    REQUIRE(scene.ok());
+    CHECK(scene->bvh.motion.values.rows() == 3);
+    writeText(dir / "outside.gltf", text.substr(0, uri) + "../two.bin" + text.substr(end));
+    auto outside = readSceneTake(dir / "outside.gltf");
+    REQUIRE(!outside.ok());
+    CHECK(outside.error().message.find("is not a file beside it") != std::string::npos);
+}
