@@ -441,6 +441,22 @@ TEST_CASE("File > Import Take and drag and drop of a glTF take keep its skeleton
     // Dropped on the window: imported the same way (no dialog when dialogs are off).
     CHECK(window->files().openDroppedPaths({QString::fromStdString(glb.string())}) == 1);
     CHECK(window->document().selectedTake(app::TakeSlot::A)->frameCount() == source->frameCount());
+    // A project keeps the imported glTF takes and reads them again when reopened.
+    const QString project = QString::fromStdString((dir / "glb.bunraku.json").string());
+    REQUIRE(window->files().saveProject(project));
+    auto reopened = test::demoWindow();
+    REQUIRE(reopened);
+    REQUIRE(reopened->files().openProject(project));
+    int fromGlb = 0;
+    for (const auto& derived : reopened->document().derivedTakes()) {
+        if (!derived.sourcePath.endsWith(QStringLiteral(".glb"))) continue;
+        ++fromGlb;
+        REQUIRE(derived.take);
+        REQUIRE(derived.take->skeleton);
+        CHECK(derived.take->skeleton->skeleton->find("mixamorig:RightHand") >= 0);
+        CHECK(derived.take->frameCount() == source->frameCount());
+    }
+    CHECK(fromGlb == 2);
 }
 
 TEST_CASE("new corpus from glTF files lists each file's animation and part map and makes the corpus", "[app][import][scene]")
