@@ -20,6 +20,7 @@
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QFileInfo>
+#include <QInputDialog>
 #include <QLabel>
 #include <QSettings>
 #include <QLineEdit>
@@ -491,4 +492,42 @@ TEST_CASE("new corpus from glTF files lists each file's animation and part map a
         REQUIRE(take.skeleton);
         CHECK(take.skeleton->skeleton->find("mixamorig:RightHand") >= 0);
     }
+}
+
+TEST_CASE("File > Import Take of a glTF file with two animations lists them before the joint dialog", "[app][import][scene]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    const auto dir = test::scratchDir("app_import_animations");
+    // Two nodes; animation "walk" turns root, "idle" holds its translation (keys in the buffer).
+    const fs::path file = test::writeText(dir / "two.gltf", R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],
+"nodes":[{"name":"root","translation":[0,1,0],"children":[1]},{"name":"tip","translation":[0.1,0,0]}],
+"buffers":[{"byteLength":72,"uri":"data:application/octet-stream;base64,AAAAAM3MzD0AAAAAAAAAAAAAAAAAAIA/AAAAAAAAAAAV78M+XoNsPwAAAAAAAAA/AAAAAAAAgD8AAAAAAAAAAAAAgD8AAAAA"}],
+"bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":8},{"buffer":0,"byteOffset":8,"byteLength":32},{"buffer":0,"byteOffset":40,"byteLength":8},{"buffer":0,"byteOffset":48,"byteLength":24}],
+"accessors":[{"bufferView":0,"componentType":5126,"count":2,"type":"SCALAR","min":[0],"max":[0.1]},{"bufferView":1,"componentType":5126,"count":2,"type":"VEC4"},
+{"bufferView":2,"componentType":5126,"count":2,"type":"SCALAR","min":[0],"max":[0.5]},{"bufferView":3,"componentType":5126,"count":2,"type":"VEC3"}],
+"animations":[{"name":"walk","channels":[{"sampler":0,"target":{"node":0,"path":"rotation"}}],"samplers":[{"input":0,"output":1}]},
+{"name":"idle","channels":[{"sampler":0,"target":{"node":0,"path":"translation"}}],"samplers":[{"input":2,"output":3}]}]})");
+    window->files().setDialogsEnabled(true);
+    QStringList listed;
+    bool jointDialog = false;
+    QTimer poll;
+    QObject::connect(&poll, &QTimer::timeout, [&] {
+        QWidget* modal = QApplication::activeModalWidget();
+        if (auto* input = qobject_cast<QInputDialog*>(modal); input && listed.isEmpty()) {
+            listed = input->comboBoxItems();
+            input->setTextValue(listed.value(1));
+            input->accept();
+        } else if (auto* joints = qobject_cast<app::JointMapDialog*>(modal); joints && !jointDialog) {
+            jointDialog = true; // two joints cannot carry the puppet's four parts: cancelled
+            joints->reject();
+        }
+    });
+    poll.start(20);
+    const bool imported = window->files().importTakeFile(QString::fromStdString(file.string()));
+    poll.stop();
+    window->files().setDialogsEnabled(false);
+    CHECK(listed == QStringList({QStringLiteral("0: walk"), QStringLiteral("1: idle")}));
+    CHECK(jointDialog);
+    CHECK_FALSE(imported);
 }
