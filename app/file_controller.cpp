@@ -18,6 +18,7 @@
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QInputDialog>
 #include <QMenu>
 #include <QMessageBox>
 #include <QScopedValueRollback>
@@ -180,7 +181,43 @@ bool FileController::importTakeFile(const QString& file, const QString& jointMap
     const QString name = QFileInfo(file).fileName();
     const QString title = tr("Cannot import %1").arg(name);
     const auto format = analysis::io::takeFileFormat(toPath(file));
-    const bool bvh = format == analysis::io::TakeFileFormat::Bvh;
+    const bool scene = format == analysis::io::TakeFileFormat::Scene;
+    const bool bvh = format == analysis::io::TakeFileFormat::Bvh || scene;
+    // FBX, glTF and Collada: the animation chosen from the file's list, then the whole file
+    // converted (behind the progress dialog) before the part map is chosen on its skeleton.
+    std::optional<analysis::io::BvhFile> converted;
+    if (scene) {
+        if (m_dialogs) {
+            auto names = analysis::io::listSceneAnimations(toPath(file));
+            if (!names) {
+                report(title, names.error());
+                return false;
+            }
+            if (names->size() > 1) {
+                QStringList items;
+                for (std::size_t a = 0; a < names->size(); ++a)
+                    items << tr("%1: %2").arg(a).arg((*names)[a].empty() ? tr("(unnamed)") : QString::fromStdString((*names)[a]));
+                bool chosen = false;
+                const QString item = QInputDialog::getItem(m_window, tr("Import %1").arg(name), tr("The file has %1 animations; import:").arg(items.size()),
+                                                           items, 0, false, &chosen);
+                if (!chosen) return false;
+                options.scene.animation = std::to_string(items.indexOf(item));
+            }
+        }
+        analysis::Result<analysis::io::BvhFile> read = analysis::makeError(analysis::ErrorCode::Cancelled, "not run");
+        runProgressTask(m_dialogs ? m_window : nullptr, tr("Reading %1...").arg(name), [&](const analysis::RunControl& control) {
+            read = analysis::io::readSkeletalFile(toPath(file), options, control);
+        }, m_progressOptions);
+        if (!read && read.error().code == analysis::ErrorCode::Cancelled) {
+            emit statusMessage(tr("Import of %1 cancelled; nothing was changed").arg(name));
+            return false;
+        }
+        if (!read) {
+            report(title, read.error());
+            return false;
+        }
+        converted = std::move(read).value();
+    }
     if (bvh && !jointMap.isEmpty()) {
         auto map = analysis::io::parseJointMap(jointMap.toStdString());
         if (!map) {
@@ -189,8 +226,8 @@ bool FileController::importTakeFile(const QString& file, const QString& jointMap
         }
         options.bvh.jointMap = map.value();
     } else if (bvh && m_dialogs) {
-        // The dialog needs the hierarchy and the first pose only: a long take is read after it.
-        auto start = analysis::io::readBvhStart(toPath(file));
+        // The dialog needs the hierarchy and the first pose only: a long BVH take is read after it.
+        auto start = converted ? analysis::Result<analysis::io::BvhFile>(*converted) : analysis::io::readBvhStart(toPath(file));
         if (!start) {
             report(title, start.error());
             return false;
@@ -208,12 +245,14 @@ bool FileController::importTakeFile(const QString& file, const QString& jointMap
             take = analysis::io::readTakeFile(toPath(file), options);
             return;
         }
-        auto parsed = analysis::io::readBvh(toPath(file), control.step(0.0, 0.5));
+        auto parsed = converted ? analysis::Result<analysis::io::BvhFile>(std::move(*converted))
+                                : analysis::io::readBvh(toPath(file), control.step(0.0, 0.5));
         if (!parsed) {
             take = parsed.error();
             return;
         }
-        auto imported = analysis::io::importBvhPuppet(*parsed, options.bvh, control.step(0.5, 1.0));
+        auto imported = analysis::io::importBvhPuppet(*parsed, scene ? analysis::io::sceneBvhOptions(options.bvh) : options.bvh,
+                                                      control.step(0.5, 1.0));
         if (!imported) {
             take = imported.error();
             return;
@@ -496,7 +535,9 @@ void FileController::chooseAndImport()
 {
     const QString file = chooseOpenFile(
         m_window, FilePurpose::ImportTake, tr("Import take"),
-        tr("Takes (*.csv *.bvh *.txt *.fastrak *.fst);;CSV (*.csv);;BVH (*.bvh);;FASTRAK (*.txt *.fastrak *.fst)"), m_projectPath);
+        tr("Takes (*.csv *.bvh *.fbx *.glb *.gltf *.dae *.txt *.fastrak *.fst);;CSV (*.csv);;BVH (*.bvh);;FBX (*.fbx);;glTF (*.glb *.gltf);;"
+           "Collada (*.dae);;FASTRAK (*.txt *.fastrak *.fst)"),
+        m_projectPath);
     if (!file.isEmpty()) importTakeFile(file);
 }
 

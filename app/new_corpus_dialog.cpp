@@ -53,7 +53,7 @@ NewCorpusDialog::NewCorpusDialog(QWidget* parent) : QDialog(parent)
     auto* clear = new QPushButton(tr("Clear"), this);
     clear->setToolTip(tr("Remove every file"));
     connect(addFiles, &QPushButton::clicked, this, [this] {
-        addInputs(QFileDialog::getOpenFileNames(this, tr("Take files"), {}, tr("Takes (*.bvh *.csv *.txt *.fastrak *.fst)")));
+        addInputs(QFileDialog::getOpenFileNames(this, tr("Take files"), {}, tr("Takes (*.bvh *.fbx *.glb *.gltf *.dae *.csv *.txt *.fastrak *.fst)")));
     });
     connect(addFolder, &QPushButton::clicked, this, [this] {
         const QString folder = QFileDialog::getExistingDirectory(this, tr("Folder of take files"));
@@ -62,6 +62,7 @@ NewCorpusDialog::NewCorpusDialog(QWidget* parent) : QDialog(parent)
     connect(clear, &QPushButton::clicked, this, [this] {
         m_files.clear();
         m_starts.clear();
+        m_animationNotes.clear();
         m_table->setRowCount(0);
         validate();
     });
@@ -100,6 +101,15 @@ NewCorpusDialog::NewCorpusDialog(QWidget* parent) : QDialog(parent)
     connect(m_joints, &QLineEdit::textChanged, this, &NewCorpusDialog::remap);
     auto* chooseMap = new QPushButton(tr("Joint Map..."), this);
     connect(chooseMap, &QPushButton::clicked, this, &NewCorpusDialog::chooseJointMap);
+    m_animation = new QLineEdit(this);
+    m_animation->setPlaceholderText(tr("the first"));
+    m_animation->setToolTip(tr("FBX, glTF and Collada files: the animation to read, by name or 0-based index (the part map column "
+                               "lists each file's animations)"));
+    connect(m_animation, &QLineEdit::textChanged, this, [this] {
+        for (const auto& file : m_files)
+            if (io::takeFileFormat(file) == io::TakeFileFormat::Scene) m_starts.erase(file);
+        remap();
+    });
     m_side = new QComboBox(this);
     m_side->addItems({tr("Right arm and hand"), tr("Left arm and hand")});
     connect(m_side, &QComboBox::currentIndexChanged, this, &NewCorpusDialog::remap);
@@ -135,6 +145,7 @@ NewCorpusDialog::NewCorpusDialog(QWidget* parent) : QDialog(parent)
     auto* form = new QFormLayout;
     form->addRow(tr("File names"), m_pattern);
     form->addRow(tr("Part map"), joints);
+    form->addRow(tr("Animation"), m_animation);
     form->addRow(tr("Side"), m_side);
     form->addRow(tr("Neutral emotion"), m_neutral);
     form->addRow(tr("Rate"), m_rate);
@@ -289,20 +300,37 @@ void NewCorpusDialog::remap()
     for (int row = 0; row < m_table->rowCount(); ++row) {
         const auto& file = m_files[std::size_t(row)];
         QTableWidgetItem* item = m_table->item(row, MapColumn);
-        if (io::takeFileFormat(file) != io::TakeFileFormat::Bvh) {
-            item->setText(tr("(not a BVH file: its parts as they are)"));
+        const auto format = io::takeFileFormat(file);
+        if (format != io::TakeFileFormat::Bvh && format != io::TakeFileFormat::Scene) {
+            item->setText(tr("(not a BVH, FBX, glTF or Collada file: its parts as they are)"));
             item->setData(Qt::UserRole, QString());
             continue;
         }
         auto& start = m_starts[file];
         if (!start.first && start.second.isEmpty()) {
-            auto read = io::readBvhStart(file, 1);
-            if (read) start.first = std::move(read).value();
-            else start.second = QString::fromStdString(read.error().message);
+            if (format == io::TakeFileFormat::Bvh) {
+                auto read = io::readBvhStart(file, 1);
+                if (read) start.first = std::move(read).value();
+                else start.second = QString::fromStdString(read.error().message);
+            } else {
+                // The whole scene is converted (the importer reads it again when the corpus is made).
+                io::ImportOptions importOptions;
+                importOptions.scene.animation = m_animation->text().trimmed().toStdString();
+                io::SceneTakeInfo info;
+                auto read = io::readSkeletalFile(file, importOptions, {}, &info);
+                if (read) start.first = std::move(read).value();
+                else start.second = QString::fromStdString(read.error().message);
+                QStringList names;
+                for (std::size_t a = 0; a < info.animations.size(); ++a)
+                    names << QStringLiteral("%1 '%2'").arg(a).arg(QString::fromStdString(info.animations[a]));
+                m_animationNotes[file] = read ? tr("animation %1 of %2 (%3); ").arg(info.animation).arg(info.animations.size()).arg(names.join(QStringLiteral(", ")))
+                                              : QString();
+            }
         }
         auto map = start.first ? io::mapPuppetParts(*start.first, given, options) : analysis::Result<io::PartMap>(analysis::Error{});
         const QString error = start.first ? (map ? QString() : QString::fromStdString(map.error().message)) : start.second;
-        item->setText(error.isEmpty() ? QString::fromStdString(map->describe()) : error);
+        const QString note = format == io::TakeFileFormat::Scene ? m_animationNotes[file] : QString();
+        item->setText(error.isEmpty() ? note + QString::fromStdString(map->describe()) : error);
         item->setForeground(error.isEmpty() ? palette().text() : QBrush(QColor(0xb0, 0x00, 0x20)));
         item->setData(Qt::UserRole, error); // non-empty: this file cannot be mapped
     }
@@ -313,8 +341,11 @@ void NewCorpusDialog::remap()
 void NewCorpusDialog::chooseJointMap()
 {
     for (const auto& file : m_files) {
-        if (io::takeFileFormat(file) != io::TakeFileFormat::Bvh) continue;
-        auto start = io::readBvhStart(file, 1);
+        const auto format = io::takeFileFormat(file);
+        if (format != io::TakeFileFormat::Bvh && format != io::TakeFileFormat::Scene) continue;
+        io::ImportOptions importOptions;
+        importOptions.scene.animation = m_animation->text().trimmed().toStdString();
+        auto start = format == io::TakeFileFormat::Bvh ? io::readBvhStart(file, 1) : io::readSkeletalFile(file, importOptions);
         if (!start) {
             m_message->setText(QString::fromStdString(start.error().message));
             return;
@@ -325,7 +356,7 @@ void NewCorpusDialog::chooseJointMap()
         m_joints->setText(dialog.jointMapText());
         return;
     }
-    m_message->setText(tr("No BVH file to map."));
+    m_message->setText(tr("No BVH, FBX, glTF or Collada file to map."));
 }
 
 void NewCorpusDialog::validate()
@@ -393,6 +424,7 @@ io::CorpusBuildOptions NewCorpusDialog::buildOptions() const
 {
     io::CorpusBuildOptions options;
     options.import.bvh.guessUnits = true;
+    options.import.scene.animation = m_animation->text().trimmed().toStdString();
     options.import.bvh.side = m_side->currentIndex() == 1 ? analysis::BodySide::Left : analysis::BodySide::Right;
     if (!m_joints->text().trimmed().isEmpty())
         if (auto map = io::parseJointMap(m_joints->text().toStdString())) options.import.bvh.jointMap = map.value();

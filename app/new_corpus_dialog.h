@@ -54,6 +54,8 @@ public:
 
     QTableWidget* table() const { return m_table; }
     QLineEdit* jointsEdit() const { return m_joints; }
+    /// The animation read from FBX, glTF and Collada files (name or index; empty: the first).
+    QLineEdit* animationEdit() const { return m_animation; }
     QComboBox* sideBox() const { return m_side; }
     QComboBox* neutralBox() const { return m_neutral; }
     QPushButton* removeButton() const { return m_remove; }
@@ -75,11 +77,16 @@ private:
     void chooseJointMap();
 
     std::vector<std::filesystem::path> m_files;
-    /// Per BVH file: its hierarchy and first frame, or why it cannot be read (read once).
+    /// Per BVH file: its hierarchy and first frame, or why it cannot be read (read once); per
+    /// FBX, glTF or Collada file its converted skeleton and motion (read again when the
+    /// animation changes).
     std::map<std::filesystem::path, std::pair<std::optional<analysis::io::BvhFile>, QString>> m_starts;
+    /// Per FBX, glTF or Collada file: its animations and the one read, for the part map column.
+    std::map<std::filesystem::path, QString> m_animationNotes;
     QLineEdit* m_pattern = nullptr;
     QTableWidget* m_table = nullptr;
     QLineEdit* m_joints = nullptr;
+    QLineEdit* m_animation = nullptr;
     QComboBox* m_side = nullptr;
     QComboBox* m_neutral = nullptr;
     QDoubleSpinBox* m_rate = nullptr;

@@ -36,7 +36,7 @@ void describeOptions(QCommandLineParser& parser)
     parser.addPositionalArgument(
         QStringLiteral("paths"),
         QStringLiteral("A corpus folder or its corpus.json, a project file (.bunraku.json), or take files (.csv, .bvh, "
-                       ".txt/.fastrak/.fst); default: the demo corpus."),
+                       ".fbx, .glb/.gltf, .dae, .txt/.fastrak/.fst); default: the demo corpus."),
         QStringLiteral("[paths...]"));
     parser.addOption({QStringLiteral("screenshot"), QStringLiteral("Save a PNG of the window once shown, then quit."), QStringLiteral("file")});
     parser.addOption({QStringLiteral("default-layout"), QStringLiteral("Ignore the saved window layout.")});

@@ -110,16 +110,16 @@ Result<std::vector<fs::path>> collectTakeFiles(const std::vector<fs::path>& inpu
                     byFormat[takeFileFormat(entry.path())].push_back(entry.path());
             if (ec) return makeError(ErrorCode::Io, input.string() + ": cannot list the folder: " + ec.message());
             std::vector<fs::path> found;
-            for (const TakeFileFormat format : {TakeFileFormat::Bvh, TakeFileFormat::Csv, TakeFileFormat::Fastrak})
+            for (const TakeFileFormat format : {TakeFileFormat::Bvh, TakeFileFormat::Scene, TakeFileFormat::Csv, TakeFileFormat::Fastrak})
                 if (found.empty() && byFormat.count(format)) found = byFormat[format];
             if (found.empty())
-                return makeError(ErrorCode::NotFound, input.string() + ": no take files (.bvh, .csv, .txt, .fastrak, .fst) in the folder");
+                return makeError(ErrorCode::NotFound, input.string() + ": no take files (.bvh, .fbx, .glb, .gltf, .dae, .csv, .txt, .fastrak, .fst) in the folder");
             std::sort(found.begin(), found.end());
             files.insert(files.end(), found.begin(), found.end());
         } else if (fs::exists(input, ec)) {
             if (takeFileFormat(input) == TakeFileFormat::Unknown)
                 return makeError(ErrorCode::Unsupported,
-                                 input.string() + ": not a take file (expected .bvh, .csv, .txt, .fastrak or .fst)");
+                                 input.string() + ": not a take file (expected .bvh, .fbx, .glb, .gltf, .dae, .csv, .txt, .fastrak or .fst)");
             files.push_back(input);
         } else {
             return makeError(ErrorCode::NotFound, input.string() + ": no such file or folder");
@@ -213,12 +213,14 @@ Result<CorpusBuild> buildCorpus(const std::vector<CorpusSource>& sources, const 
         report.file = source.file;
         report.labels = source.labels;
         Result<Take> take = makeError(ErrorCode::InvalidArgument, "");
-        if (takeFileFormat(source.file) == TakeFileFormat::Bvh && options.import.bvhLayout == BvhTakeLayout::PuppetParts) {
+        const TakeFileFormat format = takeFileFormat(source.file);
+        if ((format == TakeFileFormat::Bvh || format == TakeFileFormat::Scene) && options.import.bvhLayout == BvhTakeLayout::PuppetParts) {
             // Half of a file's share of the progress for reading it, half for its import.
             const double share = 0.9 / double(sources.size());
-            auto bvh = readBvh(source.file, control.step(share * double(i), share * (double(i) + 0.5)));
+            auto bvh = readSkeletalFile(source.file, options.import, control.step(share * double(i), share * (double(i) + 0.5)));
             if (!bvh) return bvh.error();
-            auto imported = importBvhPuppet(*bvh, options.import.bvh, control.step(share * (double(i) + 0.5), share * double(i + 1)));
+            const BvhImportOptions bvhOptions = format == TakeFileFormat::Scene ? sceneBvhOptions(options.import.bvh) : options.import.bvh;
+            auto imported = importBvhPuppet(*bvh, bvhOptions, control.step(share * (double(i) + 0.5), share * double(i + 1)));
             if (!imported) return imported.error();
             report.partMap = imported->map->describe();
             take = std::move(imported->take);

@@ -32,8 +32,8 @@ Status checkLabelPattern(std::string_view pattern);
 std::optional<TakeLabels> parseTakeLabels(std::string_view stem, std::string_view pattern);
 
 /// The take files among `inputs`: files as given, folders expanded to the take files directly
-/// inside them, of one format (the .bvh files; without any, the .csv files; else the FASTRAK
-/// .txt/.fastrak/.fst files), sorted by name. Errors name a missing input or a folder without
+/// inside them, of one format (the .bvh files; without any, the FBX/glTF/Collada files; then the
+/// .csv files; else the FASTRAK .txt/.fastrak/.fst files), sorted by name. Errors name a missing input or a folder without
 /// take files.
 Result<std::vector<std::filesystem::path>> collectTakeFiles(const std::vector<std::filesystem::path>& inputs);
 

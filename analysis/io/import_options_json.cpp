@@ -40,7 +40,8 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(BvhImportOptions, jointMap, upAx
                                                 calibrationFrame)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(TakeCsvOptions, rateHz, timeMustMatchRate, timeTolerance, labels)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(FastrakOptions, rateHz, units, stations, labels)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(ImportOptions, csv, bvh, bvhLayout, fastrak)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(SceneTakeOptions, animation, rateHz)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(ImportOptions, csv, bvh, bvhLayout, fastrak, scene)
 
 namespace {
 
@@ -108,6 +109,8 @@ Result<ImportOptions> importOptionsFromJson(const nlohmann::json& json, const st
     if (options.csv.rateHz && !plausibleRate(*options.csv.rateHz))
         return parseError(where, 0, "import options: csv.rateHz: " + rateExpectation());
     if (!plausibleRate(options.fastrak.rateHz)) return parseError(where, 0, "import options: fastrak.rateHz: " + rateExpectation());
+    if (!plausibleRate(options.scene.rateHz)) return parseError(where, 0, "import options: scene.rateHz: " + rateExpectation());
+    if (options.scene.animation.size() > 4096) return parseError(where, 0, "import options: scene.animation: expected a name of at most 4096 bytes");
     if (!(options.csv.timeTolerance >= 0.0 && options.csv.timeTolerance <= 0.5))
         return parseError(where, 0, "import options: csv.timeTolerance: expected a fraction in [0, 0.5]");
     if (!(std::isfinite(options.bvh.unitScale) && options.bvh.unitScale > 0.0 && options.bvh.unitScale <= 1e6))

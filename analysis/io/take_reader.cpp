@@ -15,26 +15,54 @@ TakeFileFormat takeFileFormat(const std::filesystem::path& file)
     if (extension == ".csv") return TakeFileFormat::Csv;
     if (extension == ".bvh") return TakeFileFormat::Bvh;
     if (extension == ".txt" || extension == ".fastrak" || extension == ".fst") return TakeFileFormat::Fastrak;
+    if (isSceneTakeFile(file)) return TakeFileFormat::Scene;
     return TakeFileFormat::Unknown;
+}
+
+BvhImportOptions sceneBvhOptions(const BvhImportOptions& options)
+{
+    BvhImportOptions converted = options;
+    converted.upAxis = BvhUpAxis::Y;
+    converted.unitScale = 1.0;
+    converted.guessUnits = false;
+    converted.kinematics.positionMode = BvhPositionMode::ReplaceOffset;
+    return converted;
+}
+
+Result<BvhFile> readSkeletalFile(const std::filesystem::path& file, const ImportOptions& options, const RunControl& control, SceneTakeInfo* info)
+{
+    switch (takeFileFormat(file)) {
+    case TakeFileFormat::Bvh: return readBvh(file, control);
+    case TakeFileFormat::Scene: {
+        auto scene = readSceneTake(file, options.scene, control);
+        if (!scene) return scene.error();
+        if (info) *info = scene->info;
+        return std::move(scene->bvh);
+    }
+    default: break;
+    }
+    return makeError(ErrorCode::Unsupported, file.string() + ": not a file with a skeleton (expected .bvh, .fbx, .glb, .gltf or .dae)");
 }
 
 Result<Take> readTakeFile(const std::filesystem::path& file, const ImportOptions& options, const RunControl& control)
 {
     switch (takeFileFormat(file)) {
     case TakeFileFormat::Csv: return readTakeCsv(file, options.csv);
-    case TakeFileFormat::Bvh: {
-        auto bvh = readBvh(file, control.step(0.0, 0.5));
+    case TakeFileFormat::Bvh:
+    case TakeFileFormat::Scene: {
+        auto bvh = readSkeletalFile(file, options, control.step(0.0, 0.5));
         if (!bvh) return bvh.error();
-        if (options.bvhLayout == BvhTakeLayout::AllJoints) return bvhToJointTake(*bvh, options.bvh);
-        auto imported = importBvhPuppet(*bvh, options.bvh, control.step(0.5, 1.0));
+        const BvhImportOptions bvhOptions = takeFileFormat(file) == TakeFileFormat::Scene ? sceneBvhOptions(options.bvh) : options.bvh;
+        if (options.bvhLayout == BvhTakeLayout::AllJoints) return bvhToJointTake(*bvh, bvhOptions);
+        auto imported = importBvhPuppet(*bvh, bvhOptions, control.step(0.5, 1.0));
         if (!imported) return imported.error();
         return std::move(imported->take);
     }
     case TakeFileFormat::Fastrak: return readFastrak(file, options.fastrak);
     case TakeFileFormat::Unknown: break;
     }
-    return makeError(ErrorCode::Unsupported,
-                     file.string() + ": unknown take file type '" + file.extension().string() + "' (expected .csv, .bvh, .txt, .fastrak or .fst)");
+    return makeError(ErrorCode::Unsupported, file.string() + ": unknown take file type '" + file.extension().string() +
+                                                 "' (expected .csv, .bvh, .fbx, .glb, .gltf, .dae, .txt, .fastrak or .fst)");
 }
 
 Status writeTakeFile(const Take& take, const std::filesystem::path& file)

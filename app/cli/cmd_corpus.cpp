@@ -93,7 +93,7 @@ void addCorpusCommands(CommandSet& commands)
 {
     auto arguments = std::make_shared<CorpusArguments>();
     CLI::App* command = commands.root.add_subcommand(
-        "corpus", "Make a corpus folder from take files (BVH, CSV, FASTRAK) or folders of them: labels from the file names, each "
+        "corpus", "Make a corpus folder from take files (BVH, FBX, glTF, Collada, CSV, FASTRAK) or folders of them: labels from the file names, each "
                   "file's part map reported, takes resampled to one rate when their rates differ");
     command->add_option("INPUTS", arguments->inputs, "Take files and/or folders of take files")->required();
     command->add_option("-o,--output", arguments->output, "Corpus folder to write")->required();

@@ -53,6 +53,7 @@ struct Loaded {
     io::BvhUnitsGuess units;
     double cmPerUnit = 1.0;
     io::BvhUpAxis upAxis = io::BvhUpAxis::Y;
+    std::optional<io::SceneTakeInfo> scene; ///< FBX, glTF, Collada: what was converted
 };
 
 Loaded load(const std::string& pathText, const ImportArguments& arguments, bool requireTake = true)
@@ -71,16 +72,24 @@ Loaded load(const std::string& pathText, const ImportArguments& arguments, bool 
     const auto format = io::takeFileFormat(path);
     const io::ImportOptions options = importOptions(arguments, pathText);
     loaded.corpus.name = path.stem().string();
-    if (format == io::TakeFileFormat::Bvh) {
-        loaded.format = "bvh";
-        loaded.bvh = std::make_unique<io::BvhFile>(unwrap(io::readBvh(path)));
-        loaded.units = io::guessBvhUnits(*loaded.bvh, options.bvh.upAxis);
-        loaded.cmPerUnit = io::bvhUnitScale(*loaded.bvh, options.bvh);
+    if (format == io::TakeFileFormat::Bvh || format == io::TakeFileFormat::Scene) {
+        // A scene file (FBX, glTF, Collada) is read as the BvhFile it converts to (y up, cm).
+        io::SceneTakeInfo sceneInfo;
+        loaded.bvh = std::make_unique<io::BvhFile>(unwrap(io::readSkeletalFile(path, options, {}, &sceneInfo)));
+        const io::BvhImportOptions bvhOptions = format == io::TakeFileFormat::Scene ? io::sceneBvhOptions(options.bvh) : options.bvh;
+        if (format == io::TakeFileFormat::Scene) {
+            loaded.scene = sceneInfo;
+            loaded.format = sceneInfo.format == io::SceneFormat::Fbx ? "fbx" : sceneInfo.format == io::SceneFormat::Gltf ? "gltf" : "collada";
+        } else {
+            loaded.format = "bvh";
+        }
+        loaded.units = io::guessBvhUnits(*loaded.bvh, bvhOptions.upAxis);
+        loaded.cmPerUnit = io::bvhUnitScale(*loaded.bvh, bvhOptions);
         unwrap(io::checkBvhLengths(*loaded.bvh, loaded.cmPerUnit)); // `info` too: it prints the offsets
-        loaded.upAxis = io::resolveUpAxis(*loaded.bvh, options.bvh.upAxis);
+        loaded.upAxis = io::resolveUpAxis(*loaded.bvh, bvhOptions.upAxis);
         if (options.bvhLayout == io::BvhTakeLayout::AllJoints) {
-            loaded.corpus.takes.push_back(unwrap(io::bvhToJointTake(*loaded.bvh, options.bvh)));
-        } else if (auto imported = io::importBvhPuppet(*loaded.bvh, options.bvh); imported.ok()) {
+            loaded.corpus.takes.push_back(unwrap(io::bvhToJointTake(*loaded.bvh, bvhOptions)));
+        } else if (auto imported = io::importBvhPuppet(*loaded.bvh, bvhOptions); imported.ok()) {
             loaded.map = imported->map;
             loaded.corpus.takes.push_back(std::move(imported->take));
         } else if (requireTake) {
@@ -165,6 +174,26 @@ json bvhJson(const Loaded& loaded)
                         {"cm_per_unit_used", loaded.cmPerUnit}}}};
     if (loaded.map) out["part_map"] = partMapJson(*loaded.map);
     if (!loaded.mapError.empty()) out["part_map_error"] = loaded.mapError;
+    if (loaded.scene) {
+        const io::SceneTakeInfo& scene = *loaded.scene;
+        json animations = json::array();
+        for (const auto& name : scene.animations) animations.push_back(name);
+        // The file's own units and axes, converted to BVH's (y up, +Z forward, cm) before the
+        // import (the "joints", "up_axis" and "units" above are of the converted skeleton).
+        out["scene"] = {{"format", scene.formatName},
+                        {"animations", animations},
+                        {"animation", scene.animation},
+                        {"file_unit", scene.unit},
+                        {"file_cm_per_unit", scene.cmPerUnit},
+                        {"file_up_axis", scene.upAxis},
+                        {"converted_to", "cm, y up, +Z forward (BVH), then the workbench's z up"},
+                        {"rate_hz", scene.rateHz},
+                        {"rate_source", scene.rateSource},
+                        {"start_time_s", scene.startTime},
+                        {"fbx_helper_nodes_folded", scene.helperNodesFolded},
+                        {"meshes_not_read", scene.meshes},
+                        {"scale_dropped", scene.scaleDropped}};
+    }
     return out;
 }
 
@@ -173,6 +202,17 @@ void printBvh(const Loaded& loaded)
     const io::BvhFile& bvh = *loaded.bvh;
     const auto& skeleton = bvh.skeleton;
     const double frames = double(bvh.motion.values.rows());
+    if (loaded.scene) {
+        const io::SceneTakeInfo& scene = *loaded.scene;
+        std::cout << "\n" << scene.formatName << ": animation " << scene.animation << " '" << scene.animations[std::size_t(scene.animation)]
+                  << "' of " << scene.animations.size() << ", sampled at " << scene.rateHz << " Hz (" << scene.rateSource
+                  << " rate) from " << scene.startTime << " s; file unit " << scene.unit << ", up axis " << scene.upAxis
+                  << ": converted to cm, y up (then the workbench's z up)";
+        if (scene.helperNodesFolded > 0) std::cout << "; " << scene.helperNodesFolded << " FBX pivot nodes folded into their joints";
+        if (scene.meshes > 0) std::cout << "; " << scene.meshes << " meshes not read";
+        if (scene.scaleDropped) std::cout << "; joint scale dropped (kept in positions)";
+        std::cout << "\nconverted skeleton as BVH:";
+    }
     std::cout << "\nBVH: " << skeleton.jointCount() << " joints + " << skeleton.endSiteCount() << " End Sites, "
               << skeleton.channelCount << " channels, " << bvh.motion.values.rows() << " frames, frame time " << bvh.motion.frameTime
               << " s (" << io::bvhRateHz(bvh.motion.frameTime) << " Hz, " << std::max(0.0, frames - 1.0) * bvh.motion.frameTime
@@ -445,8 +485,8 @@ void addIoCommands(CommandSet& commands)
     {
         auto arguments = std::make_shared<InfoArguments>();
         CLI::App* info = commands.root.add_subcommand(
-            "info", "Describe a corpus folder or a take file (.csv, .bvh, .txt/.fastrak): labels, frames, rate, channels, "
-                    "ranges, and a BVH file's joints");
+            "info", "Describe a corpus folder or a take file (.csv, .bvh, .fbx, .glb/.gltf, .dae, .txt/.fastrak): labels, frames, rate, "
+                    "channels, ranges, and a BVH (or converted FBX, glTF, Collada) file's joints");
         info->add_option("PATH", arguments->path, "Corpus folder or take file")->required();
         info->add_flag("--json", arguments->json, "Print a machine-readable summary");
         addImportOptions(info, arguments->import);
@@ -455,7 +495,7 @@ void addIoCommands(CommandSet& commands)
     {
         auto arguments = std::make_shared<ConvertArguments>();
         CLI::App* convert = commands.root.add_subcommand(
-            "convert", "Convert a take file (.csv, .bvh, .txt/.fastrak) to .csv, .bvh (on the take's own skeleton when it has one) or .glb (glTF binary) by the output's extension, or a corpus "
+            "convert", "Convert a take file (.csv, .bvh, .fbx, .glb/.gltf, .dae, .txt/.fastrak) to .csv, .bvh (on the take's own skeleton when it has one) or .glb (glTF binary) by the output's extension, or a corpus "
                        "folder to a corpus folder");
         convert->add_option("IN", arguments->input, "Input take file or corpus folder")->required();
         convert->add_option("-o,--output", arguments->output, "Output file (.bvh, .glb or .csv) or corpus folder")->required();

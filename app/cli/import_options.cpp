@@ -27,7 +27,10 @@ void addImportOptions(CLI::App* command, ImportArguments& arguments, bool withLa
         ->capture_default_str();
     if (withLayout)
         command->add_flag("--all-joints", arguments.allJoints, "BVH: keep every joint (6 channels each) instead of the 4 puppet parts");
-    command->add_option("--rate", arguments.rateHz, "Sample rate in Hz, in (0, 1000000] (CSV without time_s; FASTRAK, default 5)");
+    command->add_option("--rate", arguments.rateHz,
+                        "Sample rate in Hz, in (0, 1000000] (CSV without time_s; FASTRAK, default 5; FBX/glTF/Collada without a rate of "
+                        "their own and with keys not uniform in time, default 30)");
+    command->add_option("--animation", arguments.animation, "FBX/glTF/Collada: the animation to read, by name or 0-based index (default: the first)");
     command->add_option("--fastrak-units", arguments.fastrakUnits, "FASTRAK position unit: cm or in")
         ->check(CLI::IsMember({"cm", "in"}))
         ->capture_default_str();
@@ -52,7 +55,9 @@ io::ImportOptions importOptions(const ImportArguments& arguments, const std::str
                            analysis::rateExpectation());
         options.csv.rateHz = *arguments.rateHz;
         options.fastrak.rateHz = *arguments.rateHz;
+        options.scene.rateHz = *arguments.rateHz;
     }
+    options.scene.animation = arguments.animation;
     options.fastrak.units = arguments.fastrakUnits == "in" ? io::FastrakUnits::Inches : io::FastrakUnits::Centimetres;
     return options;
 }

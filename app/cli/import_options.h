@@ -1,7 +1,8 @@
 #pragma once
 /// Import options shared by the commands that read take files (info, convert, corpus): the BVH
 /// part map (--joints, --joint-map, --side), axes and units (--up-axis, --units), the layout
-/// (--all-joints) and the rates of CSV and FASTRAK files.
+/// (--all-joints), the rates of CSV and FASTRAK files, and the animation and rate of FBX, glTF
+/// and Collada files (--animation, --rate).
 #include "app/cli/cli.h"
 
 #include "analysis/io/take_reader.h"
@@ -20,6 +21,7 @@ struct ImportArguments {
     bool allJoints = false;
     std::optional<double> rateHz; ///< --rate, when given
     std::string fastrakUnits = "cm";
+    std::string animation; ///< --animation NAME|INDEX (FBX, glTF, Collada)
 };
 
 /// Registers the options on `command`; `withLayout` adds --all-joints.

@@ -234,6 +234,8 @@ TEST_CASE("import options survive a JSON round trip, and every field is stored",
     options.fastrak.rateHz = 7.5;
     options.fastrak.units = FastrakUnits::Inches;
     options.fastrak.stations = {4, 3, 2, 1};
+    options.scene.animation = "walk";
+    options.scene.rateHz = 24.0;
     const nlohmann::json json = importOptionsToJson(options);
     auto back = importOptionsFromJson(nlohmann::json::parse(json.dump()), "p.json");
     REQUIRE(back.ok());
@@ -244,6 +246,8 @@ TEST_CASE("import options survive a JSON round trip, and every field is stored",
     CHECK(back->bvh.side == BodySide::Left);
     CHECK(back->bvh.calibrationFrame == 12);
     CHECK(back->fastrak.stations == options.fastrak.stations);
+    CHECK(back->scene.animation == "walk");
+    CHECK(back->scene.rateHz == 24.0);
 
     // older projects: missing fields keep their defaults; wrong ones are refused by name
     auto defaults = importOptionsFromJson(nlohmann::json::object(), "p.json");
@@ -265,5 +269,6 @@ TEST_CASE("import options survive a JSON round trip, and every field is stored",
     CHECK(sizeof(TakeCsvOptions) == 136);
     CHECK(sizeof(BvhImportOptions) == 280);
     CHECK(sizeof(FastrakOptions) == 136);
-    CHECK(sizeof(ImportOptions) == 560);
+    CHECK(sizeof(SceneTakeOptions) == 40);
+    CHECK(sizeof(ImportOptions) == 600);
 }
