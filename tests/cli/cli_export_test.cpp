@@ -51,8 +51,9 @@ TEST_CASE("emotion, normalise and design write their take as BVH, glTF or CSV by
     REQUIRE(bvh.ok());
     CHECK(bvh->motion.values.rows() == csv->frameCount());
     // A demo take has no skeleton of its own: the weighted take moves the puppet's rig fitted to
-    // the corpus (analysis/skeleton/puppet_rig_fit.h), and its BVH is that rig.
-    CHECK(bvh->skeleton.jointCount() == 4);
+    // the corpus (analysis/skeleton/puppet_rig_fit.h), and its BVH is that rig: torso, neck,
+    // shoulder_joint, arm_sensor, wrist.
+    CHECK(bvh->skeleton.jointCount() == 5);
     CHECK(bvh->skeleton.joints.front().name == "torso");
     const std::string glb = readBytes(dir / "weighted.glb");
     REQUIRE(glb.substr(0, 4) == "glTF");
