@@ -150,7 +150,9 @@ if [ -n "${XAUTHORITY:-}" ] && [ -f "$XAUTHORITY" ]; then
   xauth_env=(XAUTHORITY=/root/.Xauthority)
 fi
 
-# Runs a bash script in the root, in the environment a login on that system has.
+# Runs a bash script in the root, in the environment a login on that system has. Under pipefail a
+# `grep -q` that stops reading early kills its writer with SIGPIPE and fails the pipeline when the
+# writer has more to write: a large output is matched with `grep ... >/dev/null`, which reads it all.
 inroot() {
   chroot "$root" /usr/bin/env -i HOME=/root USER=root LOGNAME=root SHELL=/bin/bash LANG=C.UTF-8 \
     PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin DEBIAN_FRONTEND=noninteractive \
@@ -303,7 +305,7 @@ check "both programs find every library they link and answer --version" '
   [ -z "$missing" ] || { echo "libraries no Depends pulled in:"; echo "$missing" | sort -u; exit 1; }
   bunraku --version | head -n 1
   bunraku-workbench --version | head -n 1
-  zcat /usr/share/man/man1/bunraku.1.gz | grep -q "^\.TH BUNRAKU " || { echo "bunraku.1.gz has no .TH line"; exit 1; }'
+  zcat /usr/share/man/man1/bunraku.1.gz | grep "^\.TH BUNRAKU " >/dev/null || { echo "bunraku.1.gz has no .TH line"; exit 1; }'
 check "the workbench starts from its desktop entry (Exec line, --screenshot) with its resources found" '
   . /root/lib.sh
   entry=/usr/share/applications/$APP_ID.desktop
@@ -372,8 +374,8 @@ check "the Python module imports with Debian's python3 (installed with the Recom
   bunraku --version | head -n 1 | grep -qF "$version" || { echo "bunraku.__version__ $version is not the program'"'"'s"; exit 1; }
   python3 -c "import bunraku, numpy; t = bunraku.Corpus.open(\"demo\").takes[0]; assert not t.values.flags.owndata; print(t)"'
 check "man bunraku and man bunraku-workbench show the installed pages" '
-  man -P cat bunraku 2>/dev/null | grep -q "bunraku help" || { echo "man bunraku: no page"; exit 1; }
-  man -P cat bunraku-workbench 2>/dev/null | grep -q -- "--screenshot" || { echo "man bunraku-workbench: no page"; exit 1; }
+  man -P cat bunraku 2>/dev/null | grep "bunraku help" >/dev/null || { echo "man bunraku: no page"; exit 1; }
+  man -P cat bunraku-workbench 2>/dev/null | grep -- "--screenshot" >/dev/null || { echo "man bunraku-workbench: no page"; exit 1; }
   man -w bunraku bunraku-workbench'
 check "the icon is in the directories the hicolor theme lists" '
   icon="$(sed -n "s/^Icon=//p" /usr/share/applications/$APP_ID.desktop)"
