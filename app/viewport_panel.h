@@ -88,6 +88,7 @@ private:
     QCheckBox* m_axis = nullptr;
     QCheckBox* m_orbits = nullptr;
     QCheckBox* m_grid = nullptr;
+    QCheckBox* m_shadows = nullptr;
     QCheckBox* m_partner = nullptr;
     QAction* m_frameAll = nullptr;
     QAction* m_frameSelected = nullptr;

@@ -25,6 +25,11 @@ constexpr int kSkeletonId = kIdsPerSlot - 1; // partIndex 31 (no body part has i
 constexpr float kPuppetFramedHeight = 90.0f;
 const glm::vec3 kBackground(0.94f, 0.95f, 0.97f);
 const glm::vec3 kPartnerColour(0.42f, 0.48f, 0.58f);
+const glm::vec3 kFloorColour(0.86f, 0.85f, 0.83f);
+/// Texels per side of the key light's depth map, and the width (cm) its filter softens a
+/// shadow's edge over.
+constexpr int kShadowMapSize = 1024;
+constexpr float kShadowSoftness = 4.0f;
 
 glm::vec3 sensorPosition(const analysis::Take& take, Eigen::Index frame, Eigen::Index firstChannel)
 {
@@ -38,6 +43,16 @@ Mesh partnerMesh()
     Mesh mesh = transformed(cylinderMesh(14.0f, 1.0f), glm::translate(glm::mat4(1.0f), glm::vec3(0, 0, 0.5f)));
     mesh.append(transformed(frustumMesh(5.0f, 0.5f, 45.0f), glm::translate(glm::mat4(1.0f), glm::vec3(0, 0, 23.5f))));
     paint(mesh, kPartnerColour);
+    return mesh;
+}
+
+Mesh floorMesh(float halfExtent)
+{
+    Mesh mesh;
+    const glm::vec3 up(0.0f, 0.0f, 1.0f);
+    for (const glm::vec2 corner : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, 1)})
+        mesh.vertices.push_back(Vertex{glm::vec3(corner * halfExtent, 0.0f), up, kFloorColour});
+    mesh.indices = {0, 1, 2, 0, 2, 3};
     return mesh;
 }
 
@@ -68,6 +83,7 @@ struct Renderer::Slot {
     std::vector<glm::mat4> take_T_part; ///< at `frame`, one per body part
     std::shared_ptr<PuppetFigure> puppet; ///< the take's own fitted puppet; null: the scene's
     std::array<analysis::RigidTransform, analysis::kPuppetJointCount> take_T_skinJoint; ///< at `frame`
+    std::array<analysis::RigidTransform, analysis::kPuppetJointCount> partnerSkinJoint; ///< at frame 0
     std::shared_ptr<SkeletonFigure> skeleton; ///< the performer's skeleton, when the take has one
     std::vector<glm::mat4> take_T_joint;  ///< at `frame`, one per joint
     float puppetLowest = 0.0f, puppetHighest = 0.0f;     ///< cm, at frame 0
@@ -119,6 +135,14 @@ analysis::Status Renderer::initialize()
     m_uniforms.lit = program->uniformLocation("u_lit");
     m_uniforms.lightPosition = program->uniformLocation("u_lightPosition");
     m_uniforms.partIdBase = program->uniformLocation("u_partIdBase");
+    m_uniforms.keyDirection = program->uniformLocation("u_keyDirection");
+    m_uniforms.floor = program->uniformLocation("u_floor");
+    m_uniforms.floorRadius = program->uniformLocation("u_floorRadius");
+    m_uniforms.background = program->uniformLocation("u_background");
+    m_uniforms.shadows = program->uniformLocation("u_shadows");
+    m_uniforms.shadowMap = program->uniformLocation("u_shadowMap");
+    m_uniforms.lightViewProjection = program->uniformLocation("u_lightViewProjection");
+    m_uniforms.shadowSpread = program->uniformLocation("u_shadowSpread");
     auto skin = std::make_unique<QOpenGLShaderProgram>();
     if (!skin->addShaderFromSourceFile(QOpenGLShader::Vertex, QStringLiteral(":/shaders/skinned.vert")) ||
         !skin->addShaderFromSourceFile(QOpenGLShader::Fragment, QStringLiteral(":/shaders/scene.frag")) || !skin->link())
@@ -131,6 +155,7 @@ analysis::Status Renderer::initialize()
     m_skinUniforms.lit = skin->uniformLocation("u_lit");
     m_skinUniforms.lightPosition = skin->uniformLocation("u_lightPosition");
     m_skinUniforms.partIdBase = skin->uniformLocation("u_partIdBase");
+    m_skinUniforms.keyDirection = skin->uniformLocation("u_keyDirection");
     m_skinUniforms.jointReal = skin->uniformLocation("u_jointReal");
     m_skinUniforms.jointDual = skin->uniformLocation("u_jointDual");
     m_skinUniforms.partOfJoint = skin->uniformLocation("u_partOfJoint");
@@ -142,6 +167,13 @@ analysis::Status Renderer::initialize()
     m_box.upload(*m_gl, boxMesh(glm::vec3(1.0f)));
     m_sphere.upload(*m_gl, ellipsoidMesh(glm::vec3(1.0f), 16, 10));
     m_partner.upload(*m_gl, partnerMesh());
+    // The shadow map's sampler reads texture unit 1 in both programs (unit 0 stays free).
+    m_program->bind();
+    m_gl->glUniform1i(m_uniforms.shadowMap, 1);
+    m_program->release();
+    m_skinProgram->bind();
+    m_gl->glUniform1i(m_skinProgram->uniformLocation("u_shadowMap"), 1);
+    m_skinProgram->release();
     return analysis::okStatus();
 }
 
@@ -159,6 +191,7 @@ void Renderer::releaseSceneBuffers()
     }
     m_slots.clear();
     m_grid.release(*m_gl);
+    m_floor.release(*m_gl);
 }
 
 void Renderer::release()
@@ -168,6 +201,8 @@ void Renderer::release()
     m_box.release(*m_gl);
     m_sphere.release(*m_gl);
     m_partner.release(*m_gl);
+    m_shadowMap.release(*m_gl);
+    m_shadowKey.clear();
     m_pickFramebuffer.reset();
     m_program.reset();
     m_skinProgram.reset();
@@ -180,6 +215,8 @@ analysis::Status Renderer::setScene(const SceneContent& scene, const LayoutOptio
     if (m_gl == nullptr)
         return analysis::makeError(analysis::ErrorCode::InvalidArgument, "the renderer is not initialised");
     if (auto status = validateScene(scene); !status.ok()) return status;
+    ++m_sceneGeneration;
+    m_shadowKey.clear();
     std::vector<std::shared_ptr<SkeletonFigure>> reusable;
     for (Slot& slot : m_slots)
         if (slot.skeleton) reusable.push_back(std::move(slot.skeleton));
@@ -260,6 +297,8 @@ analysis::Status Renderer::setScene(const SceneContent& scene, const LayoutOptio
         for (const auto& pose : analysis::worldPartPoses(slot.body, slot.binding, slot.take, 0)) partPoses.push_back(toMatrix(pose));
         extent(slotMeshes, partPoses, slot.puppetLowest, slot.puppetHighest);
         if (modelled) {
+            if (const PuppetFigure* puppet = slotPuppet(slot))
+                slot.partnerSkinJoint = analysis::puppetJointPoses(*puppet->mesh, slot.body, analysis::worldPartPoses(slot.body, slot.binding, slot.take, 0));
             Bounds figure;
             addPuppetBounds(figure, slot, 0, glm::mat4(1.0f), {});
             slot.puppetLowest = figure.lower.z;
@@ -282,6 +321,7 @@ analysis::Status Renderer::setScene(const SceneContent& scene, const LayoutOptio
     for (auto& unused : reusablePuppets)
         if (unused && unused.use_count() == 1) unused->release(*m_gl);
     m_grid.upload(*m_gl, gridMesh(m_layout.gridHalfExtent, m_layout.gridSpacing));
+    m_floor.upload(*m_gl, floorMesh(m_layout.gridHalfExtent));
     setFrame(0);
     return analysis::okStatus();
 }
@@ -540,11 +580,16 @@ Bounds Renderer::displayedBounds(const Camera& camera, const BoundsQuery& query)
             }
         }
         if (!query.part.empty()) continue;
-        if (m_visibility.partner && !query.figuresOnly) {
-            // partnerMesh: a disc of radius 14 cm on the floor under a cone 46 cm high.
-            const glm::vec3 partner = slot.centre + glm::vec3(m_layout.partnerDistance, 0.0f, 0.0f);
-            for (const glm::vec3 corner : {glm::vec3(-14.0f, -14.0f, 0.0f), glm::vec3(14.0f, 14.0f, 46.0f)})
-                bounds.add(glm::vec3(root * glm::vec4(partner.x + corner.x, partner.y + corner.y, floorHeight() + corner.z, 1.0f)));
+        if (partnerShown(int(s), camera) && !query.figuresOnly) {
+            // The take's puppet as it stands at frame 0, or partnerMesh: a disc of radius 14 cm
+            // under a cone 46 cm high.
+            const glm::mat4 world_T_partner = partnerTransform(slot, root);
+            if (slotPuppet(slot)) {
+                addPuppetBounds(bounds, slot, 0, world_T_partner, {});
+            } else {
+                for (const glm::vec3 corner : {glm::vec3(-14.0f, -14.0f, 0.0f), glm::vec3(14.0f, 14.0f, 46.0f)})
+                    bounds.add(glm::vec3(world_T_partner * glm::vec4(corner, 1.0f)));
+            }
         }
         if (m_visibility.axis && !slot.world_T_axis.empty()) {
             for (const Eigen::Index f : frames) {
@@ -575,42 +620,59 @@ void Renderer::setColour(const glm::vec3& colour, bool vertexColour, bool lit)
     m_gl->glUniform1i(m_uniforms.lit, lit ? 1 : 0);
 }
 
-void Renderer::drawScene(const Camera& camera, QSize size, bool partIds)
+std::optional<glm::mat4> Renderer::drawShadowMap(const Camera& camera, QSize size)
+{
+    if (!m_visibility.grid || !m_visibility.shadows || m_slots.empty()) return std::nullopt;
+    BoundsQuery query;
+    query.span = FramingSpan::CurrentFrame;
+    const Bounds casters = displayedBounds(camera, query);
+    if (casters.empty() || !m_shadowMap.ensure(*m_gl, kShadowMapSize)) return std::nullopt;
+    QOpenGLExtraFunctions& gl = *m_gl;
+    const glm::mat4 light = shadowViewProjection(casters, floorHeight(), keyLightDirection(), kShadowMapSize);
+    // The map depends on the light's box, the figures' poses and where each take stands: kept
+    // while none of them changes (the camera turning around a still frame of one take).
+    std::vector<float> key(glm::value_ptr(light), glm::value_ptr(light) + 16);
+    key.push_back(float(m_sceneGeneration));
+    key.push_back(float(m_shadowMap.texture()));
+    for (std::size_t s = 0; s < m_slots.size(); ++s) {
+        const glm::mat4 root = takeRoot(int(s), camera);
+        key.insert(key.end(), glm::value_ptr(root), glm::value_ptr(root) + 16);
+        key.push_back(float(m_slots[s].frame));
+        key.push_back(float(int(puppetDrawn(int(s))) + 2 * int(skeletonDrawn(int(s))) + 4 * int(partnerShown(int(s), camera))));
+    }
+    if (key == m_shadowKey) return light;
+    m_shadowKey = std::move(key);
+    GLint previous = 0;
+    gl.glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous);
+    // The map is written, not read, in this pass: no texture unit may hold it meanwhile.
+    gl.glActiveTexture(GL_TEXTURE1);
+    gl.glBindTexture(GL_TEXTURE_2D, 0);
+    gl.glActiveTexture(GL_TEXTURE0);
+    m_shadowMap.beginWriting(gl);
+    m_program->bind();
+    gl.glUniform1i(m_uniforms.shadows, 0);
+    gl.glUniform1i(m_uniforms.floor, 0);
+    gl.glUniformMatrix4fv(m_uniforms.viewProjection, 1, GL_FALSE, glm::value_ptr(light));
+    drawFigures(camera, light, camera.eye(), Pass::Shadow);
+    gl.glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));
+    gl.glViewport(0, 0, size.width(), size.height());
+    return light;
+}
+
+void Renderer::drawFigures(const Camera& camera, const glm::mat4& viewProjection, const glm::vec3& eye, Pass pass)
 {
     QOpenGLExtraFunctions& gl = *m_gl;
-    gl.glViewport(0, 0, size.width(), size.height());
-    const glm::vec3 background = partIds ? glm::vec3(0.0f) : kBackground;
-    gl.glClearColor(background.r, background.g, background.b, partIds ? 0.0f : 1.0f);
-    gl.glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    gl.glEnable(GL_DEPTH_TEST);
-    gl.glDepthFunc(GL_LESS);
-    gl.glDisable(GL_CULL_FACE);
-    gl.glDisable(GL_BLEND);
-    if (partIds) gl.glDisable(GL_DITHER);
-
-    m_program->bind();
-    gl.glUniform1i(m_uniforms.partIdBase, -1);
-    const glm::mat4 viewProjection = camera.viewProjection(size);
-    gl.glUniformMatrix4fv(m_uniforms.viewProjection, 1, GL_FALSE, glm::value_ptr(viewProjection));
-    const glm::vec3 eye = camera.eye();
-    gl.glUniform3f(m_uniforms.lightPosition, eye.x, eye.y, eye.z);
-
-    if (m_visibility.grid && !partIds && !m_slots.empty()) {
-        setModel(glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, floorHeight())));
-        setColour(glm::vec3(1.0f), true, false);
-        m_grid.draw(gl);
-    }
-
+    const bool ids = pass != Pass::Colour;
     for (std::size_t s = 0; s < m_slots.size(); ++s) {
         const Slot& slot = m_slots[s];
         const glm::mat4 root = takeRoot(int(s), camera);
         if (puppetDrawn(int(s)) && slotPuppet(slot)) {
-            drawPuppet(slot, int(s), root, viewProjection, eye, partIds);
+            drawPuppet(slot, int(s), root, viewProjection, eye, ids);
         } else if (puppetDrawn(int(s))) {
             const std::vector<GpuMesh>& meshes = slot.meshes.empty() ? m_partMeshes : slot.meshes;
             for (std::size_t p = 0; p < meshes.size() && p < slot.take_T_part.size(); ++p) {
                 setModel(root * slot.take_T_part[p]);
-                if (partIds)
+                if (ids)
                     setColour(glm::vec3(float(1 + int(p) + kIdsPerSlot * int(s)) / 255.0f, 0.0f, 0.0f), false, false);
                 else
                     setColour(glm::vec3(1.0f), true, true);
@@ -621,7 +683,7 @@ void Renderer::drawScene(const Camera& camera, QSize size, bool partIds)
             for (std::size_t j = 0; j < slot.skeleton->meshes.size() && j < slot.take_T_joint.size(); ++j) {
                 if (slot.skeleton->meshes[j].empty()) continue; // End Sites
                 setModel(root * slot.take_T_joint[j]);
-                if (partIds) {
+                if (ids) {
                     const int id = int(j) + 1;
                     setColour(glm::vec3(float(kSkeletonId + 1 + kIdsPerSlot * int(s)), float(id % 256), float(id / 256)) / 255.0f, false, false);
                 } else {
@@ -630,13 +692,74 @@ void Renderer::drawScene(const Camera& camera, QSize size, bool partIds)
                 slot.skeleton->meshes[j].draw(gl);
             }
         }
-        if (partIds) continue;
-        if (m_visibility.partner) {
-            const glm::vec3 partner = slot.centre + glm::vec3(m_layout.partnerDistance, 0.0f, 0.0f);
-            setModel(root * glm::translate(glm::mat4(1.0f), glm::vec3(partner.x, partner.y, floorHeight())));
-            setColour(glm::vec3(1.0f), true, true);
-            m_partner.draw(gl);
+        if (pass != Pass::PartIds && partnerShown(int(s), camera)) {
+            const glm::mat4 world_T_partner = partnerTransform(slot, root);
+            if (const PuppetFigure* puppet = slotPuppet(slot)) {
+                drawPartnerPuppet(slot, *puppet, world_T_partner, viewProjection, eye, pass == Pass::Shadow);
+            } else {
+                setModel(world_T_partner);
+                setColour(glm::vec3(1.0f), true, pass == Pass::Colour);
+                m_partner.draw(gl);
+            }
         }
+    }
+}
+
+void Renderer::drawScene(const Camera& camera, QSize size, bool partIds)
+{
+    QOpenGLExtraFunctions& gl = *m_gl;
+    gl.glEnable(GL_DEPTH_TEST);
+    gl.glDepthFunc(GL_LESS);
+    gl.glDisable(GL_CULL_FACE);
+    gl.glDisable(GL_BLEND);
+    const std::optional<glm::mat4> light = partIds ? std::nullopt : drawShadowMap(camera, size);
+    gl.glViewport(0, 0, size.width(), size.height());
+    const glm::vec3 background = partIds ? glm::vec3(0.0f) : kBackground;
+    gl.glClearColor(background.r, background.g, background.b, partIds ? 0.0f : 1.0f);
+    gl.glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if (partIds) gl.glDisable(GL_DITHER);
+
+    m_program->bind();
+    gl.glUniform1i(m_uniforms.partIdBase, -1);
+    gl.glUniform1i(m_uniforms.floor, 0);
+    const glm::mat4 viewProjection = camera.viewProjection(size);
+    gl.glUniformMatrix4fv(m_uniforms.viewProjection, 1, GL_FALSE, glm::value_ptr(viewProjection));
+    const glm::vec3 eye = camera.eye();
+    gl.glUniform3f(m_uniforms.lightPosition, eye.x, eye.y, eye.z);
+    const glm::vec3 key = keyLightDirection();
+    gl.glUniform3f(m_uniforms.keyDirection, key.x, key.y, key.z);
+
+    if (m_visibility.grid && !partIds && !m_slots.empty()) {
+        gl.glUniform1i(m_uniforms.floor, 1);
+        gl.glUniform1f(m_uniforms.floorRadius, m_layout.gridHalfExtent);
+        gl.glUniform3f(m_uniforms.background, kBackground.r, kBackground.g, kBackground.b);
+        gl.glUniform1i(m_uniforms.shadows, light ? 1 : 0);
+        if (light) {
+            gl.glActiveTexture(GL_TEXTURE1);
+            gl.glBindTexture(GL_TEXTURE_2D, m_shadowMap.texture());
+            gl.glActiveTexture(GL_TEXTURE0);
+            gl.glUniformMatrix4fv(m_uniforms.lightViewProjection, 1, GL_FALSE, glm::value_ptr(*light));
+            // kShadowSoftness cm in the map's coordinates (its box is 2 / light[0][0] cm wide).
+            const float spread = 0.5f * kShadowSoftness * 0.5f * glm::length(glm::vec3((*light)[0][0], (*light)[1][0], (*light)[2][0]));
+            gl.glUniform2f(m_uniforms.shadowSpread, spread, spread);
+        }
+        const glm::mat4 floor = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, floorHeight()));
+        setModel(floor);
+        setColour(glm::vec3(1.0f), true, false);
+        // The square just behind the grid's lines, which lie in its plane.
+        gl.glEnable(GL_POLYGON_OFFSET_FILL);
+        gl.glPolygonOffset(1.0f, 1.0f);
+        m_floor.draw(gl);
+        gl.glDisable(GL_POLYGON_OFFSET_FILL);
+        m_grid.draw(gl);
+        gl.glUniform1i(m_uniforms.floor, 0);
+        gl.glUniform1i(m_uniforms.shadows, 0);
+    }
+
+    drawFigures(camera, viewProjection, eye, partIds ? Pass::PartIds : Pass::Colour);
+    for (std::size_t s = 0; s < m_slots.size() && !partIds; ++s) {
+        const Slot& slot = m_slots[s];
+        const glm::mat4 root = takeRoot(int(s), camera);
         if (m_visibility.orbitsDrawn()) {
             // Over the puppet, like the motion axis: the sensors sit inside its parts.
             gl.glDepthRangef(0.0f, 0.0005f);
@@ -691,6 +814,8 @@ void Renderer::drawPuppet(const Slot& slot, int takeSlot, const glm::mat4& root,
     gl.glUniformMatrix3fv(m_skinUniforms.normalMatrix, 1, GL_FALSE, glm::value_ptr(normalMatrix));
     gl.glUniformMatrix4fv(m_skinUniforms.viewProjection, 1, GL_FALSE, glm::value_ptr(viewProjection));
     gl.glUniform3f(m_skinUniforms.lightPosition, eye.x, eye.y, eye.z);
+    const glm::vec3 key = keyLightDirection();
+    gl.glUniform3f(m_skinUniforms.keyDirection, key.x, key.y, key.z);
     gl.glUniform4f(m_skinUniforms.colour, 1.0f, 1.0f, 1.0f, 1.0f);
     gl.glUniform1i(m_skinUniforms.useVertexColour, 1);
     gl.glUniform1i(m_skinUniforms.lit, 1);
@@ -700,6 +825,60 @@ void Renderer::drawPuppet(const Slot& slot, int takeSlot, const glm::mat4& root,
     gl.glUniform4fv(m_skinUniforms.jointDual, analysis::kPuppetJointCount, glm::value_ptr(q.dual[0]));
     const auto partOf = analysis::puppetJointPartIndices(slot.body);
     gl.glUniform1iv(m_skinUniforms.partOfJoint, analysis::kPuppetJointCount, partOf.data());
+    figure.gpu.draw(gl);
+    m_program->bind();
+}
+
+glm::mat4 Renderer::partnerTransform(const Slot& slot, const glm::mat4& root) const
+{
+    const glm::vec3 partner = slot.centre + glm::vec3(m_layout.partnerDistance, 0.0f, 0.0f);
+    const glm::mat4 onFloor = root * glm::translate(glm::mat4(1.0f), glm::vec3(partner.x, partner.y, floorHeight()));
+    if (!slotPuppet(slot)) return onFloor;
+    // The take's puppet as it stands at frame 0, turned about its centre to face the take, as
+    // tall as the figure drawn (a performer's skeleton is taller than the puppet fitted to it).
+    const int index = int(&slot - m_slots.data());
+    const float puppetHeight = slot.puppetHighest - slot.puppetLowest;
+    const float height = puppetDrawn(index) ? puppetHeight : slot.skeletonHighest - slot.skeletonLowest;
+    const float scale = puppetHeight > 1.0f && height > 1.0f ? height / puppetHeight : 1.0f;
+    return glm::scale(glm::rotate(onFloor, glm::pi<float>(), glm::vec3(0.0f, 0.0f, 1.0f)), glm::vec3(scale)) *
+           glm::translate(glm::mat4(1.0f), glm::vec3(-slot.centre.x, -slot.centre.y, -slot.puppetLowest));
+}
+
+bool Renderer::partnerShown(int takeSlot, const Camera& camera) const
+{
+    if (!m_visibility.partner) return false;
+    // Two takes stand side by side along the screen's right: seen from the side, one take's
+    // partner would stand inside the other take's figure, and is left out.
+    const Slot& slot = m_slots.at(std::size_t(takeSlot));
+    const glm::vec3 partner(takeRoot(takeSlot, camera) * glm::vec4(slot.centre + glm::vec3(m_layout.partnerDistance, 0.0f, 0.0f), 1.0f));
+    for (std::size_t other = 0; other < m_slots.size(); ++other) {
+        if (int(other) == takeSlot) continue;
+        const glm::vec3 figure(takeRoot(int(other), camera) * glm::vec4(m_slots[other].centre, 1.0f));
+        if (glm::length(glm::vec2(partner - figure)) < 0.5f * framedHeight()) return false;
+    }
+    return true;
+}
+
+void Renderer::drawPartnerPuppet(const Slot& slot, const PuppetFigure& figure, const glm::mat4& world_T_model,
+                                 const glm::mat4& viewProjection, const glm::vec3& eye, bool depthOnly)
+{
+    QOpenGLExtraFunctions& gl = *m_gl;
+    m_skinProgram->bind();
+    const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(world_T_model)));
+    gl.glUniformMatrix4fv(m_skinUniforms.model, 1, GL_FALSE, glm::value_ptr(world_T_model));
+    gl.glUniformMatrix3fv(m_skinUniforms.normalMatrix, 1, GL_FALSE, glm::value_ptr(normalMatrix));
+    gl.glUniformMatrix4fv(m_skinUniforms.viewProjection, 1, GL_FALSE, glm::value_ptr(viewProjection));
+    gl.glUniform3f(m_skinUniforms.lightPosition, eye.x, eye.y, eye.z);
+    const glm::vec3 key = keyLightDirection();
+    gl.glUniform3f(m_skinUniforms.keyDirection, key.x, key.y, key.z);
+    // One colour (the partner is not a take): the puppet's shape and paint in slate.
+    gl.glUniform4f(m_skinUniforms.colour, kPartnerColour.r, kPartnerColour.g, kPartnerColour.b, 1.0f);
+    gl.glUniform1i(m_skinUniforms.useVertexColour, 0);
+    gl.glUniform1i(m_skinUniforms.lit, depthOnly ? 0 : 1);
+    gl.glUniform1i(m_skinUniforms.partIdBase, -1);
+    const JointDualQuaternions rest = jointDualQuaternions(*figure.mesh, slot.partnerSkinJoint);
+    gl.glUniform4fv(m_skinUniforms.jointReal, analysis::kPuppetJointCount, glm::value_ptr(rest.real[0]));
+    gl.glUniform4fv(m_skinUniforms.jointDual, analysis::kPuppetJointCount, glm::value_ptr(rest.dual[0]));
     figure.gpu.draw(gl);
     m_program->bind();
 }

@@ -60,7 +60,8 @@ struct SceneVisibility {
     bool puppet = true;
     bool axis = true;
     bool orbits = true;
-    bool grid = true;
+    bool grid = true;    ///< the floor and its grid
+    bool shadows = true; ///< the figures' shadows on the floor (drawn with it)
     bool partner = true;
     OrbitVisibility orbitVisibility = OrbitVisibility::WhenPuppetHidden;
     /// Per take slot, what `puppet` (the figure) shows.

@@ -47,7 +47,7 @@ struct RenderArguments {
     float elevationDeg = 15.0f;
     float distanceCm = 0.0f; // 0: chosen from the scene
     std::string preset;
-    std::string show = "puppet,axis,grid,partner";
+    std::string show = "puppet,axis,grid,shadows,partner";
     std::string figure = "puppet";
     std::string figureB; // empty: as --figure
     std::string size = "1280x720";
@@ -124,7 +124,7 @@ std::pair<long, long> parseFrameRange(const std::string& text)
 render::SceneVisibility parseShow(const std::string& text)
 {
     render::SceneVisibility visibility;
-    visibility.puppet = visibility.axis = visibility.orbits = visibility.grid = visibility.partner = false;
+    visibility.puppet = visibility.axis = visibility.orbits = visibility.grid = visibility.shadows = visibility.partner = false;
     // Orbits named explicitly are drawn even with the puppet (the thesis shows them instead of it).
     visibility.orbitVisibility = render::OrbitVisibility::Always;
     std::stringstream stream(text);
@@ -133,10 +133,12 @@ render::SceneVisibility parseShow(const std::string& text)
         else if (name == "axis") visibility.axis = true;
         else if (name == "orbits") visibility.orbits = true;
         else if (name == "grid") visibility.grid = true;
+        else if (name == "shadows") visibility.shadows = true;
         else if (name == "partner") visibility.partner = true;
-        else if (name == "all") visibility.puppet = visibility.axis = visibility.orbits = visibility.grid = visibility.partner = true;
+        else if (name == "all")
+            visibility.puppet = visibility.axis = visibility.orbits = visibility.grid = visibility.shadows = visibility.partner = true;
         else if (!name.empty())
-            throw CliError("--show: unknown object '" + name + "' (expected puppet, axis, orbits, grid, partner, all)");
+            throw CliError("--show: unknown object '" + name + "' (expected puppet, axis, orbits, grid, shadows, partner, all)");
     }
     return visibility;
 }
@@ -442,7 +444,7 @@ void addRenderCommands(CommandSet& commands)
     render->add_option("--elevation", args->elevationDeg, "Camera elevation, deg")->capture_default_str();
     render->add_option("--distance", args->distanceCm, "Camera distance, cm (default: fits the scene)");
     render->add_option("--preset", args->preset, "Camera preset: top or bottom");
-    render->add_option("--show", args->show, "Objects to draw: puppet,axis,orbits,grid,partner or all")
+    render->add_option("--show", args->show, "Objects to draw: puppet,axis,orbits,grid (the floor),shadows (the figures' on the floor),partner or all")
         ->capture_default_str();
     render->add_option("--figure", args->figure,
                        "Figure of the take(s): puppet, skeleton (the performer's, for takes read from BVH) or both")

@@ -1,6 +1,9 @@
 #version 330 core
 // A light at the camera (thesis 6): diffuse shading, two-sided so scanned meshes with mixed
-// winding still read, and a faint highlight. Unlit mode writes the colour exactly (lines and
+// winding still read, and a faint highlight; the figures also take a key light fixed in the
+// world (render/shadow_map.h) and a sky from above. The floor is lit by the key light only where
+// the figures do not shadow it (a depth map seen from the light, filtered over a few
+// centimetres: a soft edge), and fades into the background at its rim. Unlit mode writes the colour exactly (lines and
 // the part-ID pass, whose 8-bit values must survive unchanged). The modelled puppet
 // (skinned.vert) adds a sheen per material and paint evaluated per pixel: the kashira's eyes,
 // brows, lips and blush, the kimono's kanoko dots and the obi's weave.
@@ -17,6 +20,14 @@ uniform int u_useVertexColour;  // 1: v_colour * u_colour.rgb, 0: u_colour.rgb
 uniform int u_lit;              // 1: shaded by the light at u_lightPosition
 uniform vec3 u_lightPosition;   // world, cm
 uniform int u_partIdBase;       // >= 0: the ID pass of the skinned puppet, red = base + v_part
+uniform vec3 u_keyDirection;    // world, unit, towards the key light
+uniform int u_floor;            // 1: the floor (shadowed, faded at u_floorRadius cm from the origin)
+uniform float u_floorRadius;
+uniform vec3 u_background;
+uniform int u_shadows;          // 1: u_shadowMap holds the figures' depths seen from the key light
+uniform sampler2DShadow u_shadowMap;
+uniform mat4 u_lightViewProjection;
+uniform vec2 u_shadowSpread;    // the filter's half width, in the map's texture coordinates
 
 out vec4 fragColour;
 
@@ -61,6 +72,22 @@ vec3 paintObi(vec3 base, vec3 p)
     return base * (0.82 + 0.22 * weave);
 }
 
+// The fraction of the key light reaching a world point: 16 filtered depth comparisons over a
+// square of 2 u_shadowSpread; outside the light's box, all of it.
+float keyLight(vec3 world)
+{
+    vec4 clip = u_lightViewProjection * vec4(world, 1.0);
+    vec3 p = clip.xyz / clip.w * 0.5 + 0.5;
+    if (p.x <= 0.0 || p.x >= 1.0 || p.y <= 0.0 || p.y >= 1.0 || p.z >= 1.0) return 1.0;
+    float sum = 0.0;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) {
+            vec2 offset = (vec2(float(i), float(j)) - 1.5) / 1.5 * u_shadowSpread;
+            sum += texture(u_shadowMap, vec3(p.xy + offset, p.z));
+        }
+    return sum / 16.0;
+}
+
 void main()
 {
     if (u_partIdBase >= 0) {
@@ -68,6 +95,12 @@ void main()
         return;
     }
     vec3 base = u_useVertexColour != 0 ? v_colour * u_colour.rgb : u_colour.rgb;
+    if (u_floor != 0) { // the floor and its grid lines
+        float lit = u_shadows != 0 ? keyLight(v_worldPosition) : 1.0;
+        float rim = smoothstep(0.55, 1.0, length(v_worldPosition.xy) / u_floorRadius);
+        fragColour = vec4(mix(base * (0.58 + 0.42 * lit), u_background, rim), 1.0);
+        return;
+    }
     if (u_lit == 0) {
         fragColour = vec4(base, u_colour.a);
         return;
@@ -75,6 +108,7 @@ void main()
     vec3 n = normalize(v_normal);
     vec3 l = normalize(u_lightPosition - v_worldPosition);
     float diffuse = abs(dot(n, l));
+    float key = max(dot(gl_FrontFacing ? n : -n, u_keyDirection), 0.0);
     if (v_sheen < 0.0) {
         float highlight = pow(diffuse, 40.0) * 0.12;
         fragColour = vec4(base * (0.45 + 0.55 * diffuse) + vec3(highlight), u_colour.a);
@@ -88,5 +122,5 @@ void main()
     float shininess = mix(10.0, 80.0, v_sheen);
     float highlight = pow(diffuse, shininess) * 0.45 * v_sheen;
     float sky = 0.5 + 0.5 * (gl_FrontFacing ? n.z : -n.z);
-    fragColour = vec4(base * (0.34 + 0.52 * diffuse + 0.12 * sky) + vec3(highlight), u_colour.a);
+    fragColour = vec4(base * (0.3 + 0.4 * diffuse + 0.2 * key + 0.12 * sky) + vec3(highlight), u_colour.a);
 }

@@ -85,6 +85,36 @@ TEST_CASE("bunraku render writes a PNG of a demo take and a frame sequence", "[r
     CHECK_FALSE(std::filesystem::exists(dir / "seq" / "frame_00003.png"));
 }
 
+TEST_CASE("bunraku render draws the figures' shadows on the floor unless --show leaves them out", "[render][cli][shadow]")
+{
+    if (!test::requirePeer(std::filesystem::exists(cliPath()), "the bunraku executable (" + cliPath().string() + ")",
+                           "build the target bunraku"))
+        return;
+    const auto dir = test::scratchDir("render_cli_shadows");
+    const std::string take = "render demo:greeting/friendly/2 --frame 40 --camera 200 --elevation 60 --size 320x240 --samples 0 ";
+    for (const char* show : {"puppet,grid,shadows", "puppet,grid"}) {
+        const auto [code, errors] = runCli(take + "--show " + show + " -o " + quoted(dir / (std::string(show) + ".png")), dir);
+        INFO(errors);
+        REQUIRE(code == 0);
+    }
+    const QImage with(QString::fromStdString((dir / "puppet,grid,shadows.png").string()));
+    const QImage without(QString::fromStdString((dir / "puppet,grid.png").string()));
+    REQUIRE(with.size() == without.size());
+    int darker = 0, lighter = 0;
+    for (int y = 0; y < with.height(); ++y)
+        for (int x = 0; x < with.width(); ++x) {
+            const int a = qGray(with.pixel(x, y)), b = qGray(without.pixel(x, y));
+            darker += a < b - 20 ? 1 : 0;
+            lighter += a > b + 1 ? 1 : 0;
+        }
+    CHECK(darker > 200);
+    CHECK(lighter == 0);
+    // "shadows" is one of the names --show knows (its default draws them).
+    const auto [code, errors] = runCli("render demo:greeting/friendly/2 --show puppet,shadow -o " + quoted(dir / "x.png"), dir);
+    CHECK(code != 0);
+    CHECK(errors.find("grid, shadows, partner") != std::string::npos);
+}
+
 TEST_CASE("bunraku render rejects bad input with a one-line error", "[render][cli]")
 {
     if (!test::requirePeer(std::filesystem::exists(cliPath()), "the bunraku executable (" + cliPath().string() + ")",
