@@ -45,6 +45,11 @@ ViewportPanel::ViewportPanel(Document& document, AnalysisController& analysis, Q
     m_grid = new QCheckBox(tr("Grid"), this);
     m_shadows = new QCheckBox(tr("Shadows"), this);
     m_partner = new QCheckBox(tr("Partner"), this);
+    m_follow = new QCheckBox(tr("Follow"), this);
+    m_follow->setObjectName("followFigures");
+    m_follow->setToolTip(tr("Carry the camera along the floor with the figures as the take plays (a walking take "
+                            "stays in frame); orbit and zoom still work around them"));
+    connect(m_follow, &QCheckBox::toggled, m_viewport, &widgets::ViewportWidget::setFollow);
     const auto visibility = m_viewport->visibility();
     m_puppet->setChecked(visibility.puppet);
     m_axis->setChecked(visibility.axis);
@@ -77,6 +82,7 @@ ViewportPanel::ViewportPanel(Document& document, AnalysisController& analysis, Q
         flow->addWidget(box);
         connect(box, &QCheckBox::toggled, this, &ViewportPanel::applyVisibility);
     }
+    flow->addWidget(m_follow);
     for (int slot = 0; slot < 2; ++slot) {
         auto* box = new QComboBox(this);
         box->setObjectName(slot == 0 ? "figureA" : "figureB");

@@ -90,6 +90,7 @@ private:
     QCheckBox* m_grid = nullptr;
     QCheckBox* m_shadows = nullptr;
     QCheckBox* m_partner = nullptr;
+    QCheckBox* m_follow = nullptr;
     QAction* m_frameAll = nullptr;
     QAction* m_frameSelected = nullptr;
     QAction* m_resetCamera = nullptr;

@@ -30,6 +30,10 @@ const glm::vec3 kFloorColour(0.86f, 0.85f, 0.83f);
 /// shadow's edge over.
 constexpr int kShadowMapSize = 1024;
 constexpr float kShadowSoftness = 4.0f;
+/// cm the partner keeps clear of the furthest reach of a take that travels towards it.
+constexpr float kPartnerClearance = 60.0f;
+/// cm: the largest floor (a grid line every 20 cm: at most 2 x 250 lines each way).
+constexpr float kMaxFloorHalfExtent = 5000.0f;
 
 glm::vec3 sensorPosition(const analysis::Take& take, Eigen::Index frame, Eigen::Index firstChannel)
 {
@@ -86,6 +90,8 @@ struct Renderer::Slot {
     std::array<analysis::RigidTransform, analysis::kPuppetJointCount> partnerSkinJoint; ///< at frame 0
     std::shared_ptr<SkeletonFigure> skeleton; ///< the performer's skeleton, when the take has one
     std::vector<glm::mat4> take_T_joint;  ///< at `frame`, one per joint
+    Bounds path;             ///< take coordinates: the sensors over the take and the figure at frame 0
+    glm::vec3 partnerSpot{0.0f}; ///< take coordinates, on z = 0: where the partner stands
     float puppetLowest = 0.0f, puppetHighest = 0.0f;     ///< cm, at frame 0
     float skeletonLowest = 0.0f, skeletonHighest = 0.0f; ///< cm, at frame 0
 };
@@ -276,6 +282,11 @@ analysis::Status Renderer::setScene(const SceneContent& scene, const LayoutOptio
             for (const glm::vec3& corner : {m_partBounds[p].lower, m_partBounds[p].upper})
                 if (!m_partBounds[p].empty()) pathBounds.add(glm::vec3(toMatrix(firstPoses[p]) * glm::vec4(corner, 1.0f)));
         slot.orbitRadius = orbitTubeRadius(pathBounds.extent());
+        // The partner stands partnerDistance ahead (+x) of the take's centre, or beyond the
+        // take's furthest reach ahead when the take travels there (a walk towards +x).
+        slot.partnerSpot = slot.centre + glm::vec3(m_layout.partnerDistance, 0.0f, 0.0f);
+        if (!pathBounds.empty()) slot.partnerSpot.x = std::max(slot.partnerSpot.x, pathBounds.upper.x + kPartnerClearance);
+        slot.path = pathBounds;
         for (std::size_t k = 0; k < sensors.size(); ++k) {
             GpuMesh orbit;
             orbit.upload(*m_gl, orbitTubeMesh(paths[k], slot.orbitRadius, orbitColour(int(s), int(k))));
@@ -320,8 +331,21 @@ analysis::Status Renderer::setScene(const SceneContent& scene, const LayoutOptio
         if (unused && unused.use_count() == 1) unused->release(*m_gl);
     for (auto& unused : reusablePuppets)
         if (unused && unused.use_count() == 1) unused->release(*m_gl);
-    m_grid.upload(*m_gl, gridMesh(m_layout.gridHalfExtent, m_layout.gridSpacing));
-    m_floor.upload(*m_gl, floorMesh(m_layout.gridHalfExtent));
+    // The floor reaches past every take's path (a walk), whichever side the camera puts a take.
+    m_floorHalfExtent = m_layout.gridHalfExtent;
+    for (const Slot& slot : m_slots) {
+        if (slot.path.empty()) continue;
+        const glm::vec3 origin = m_layout.centreTakes ? slot.centre : glm::vec3(0.0f);
+        const float reach = std::max({std::abs(slot.path.lower.x - origin.x), std::abs(slot.path.upper.x - origin.x),
+                                      std::abs(slot.path.lower.y - origin.y), std::abs(slot.path.upper.y - origin.y),
+                                      std::abs(slot.partnerSpot.x - origin.x)});
+        const float separation = m_slots.size() > 1 ? 0.5f * m_layout.separation * framedHeight() / kPuppetFramedHeight : 0.0f;
+        // The floor fades from 55 % of its half extent: the path stays on the unfaded part.
+        m_floorHalfExtent = std::max(m_floorHalfExtent, (reach + separation + 40.0f) / 0.55f);
+    }
+    m_floorHalfExtent = std::min(std::ceil(m_floorHalfExtent / m_layout.gridSpacing) * m_layout.gridSpacing, kMaxFloorHalfExtent);
+    m_grid.upload(*m_gl, gridMesh(m_floorHalfExtent, m_layout.gridSpacing));
+    m_floor.upload(*m_gl, floorMesh(m_floorHalfExtent));
     setFrame(0);
     return analysis::okStatus();
 }
@@ -731,7 +755,7 @@ void Renderer::drawScene(const Camera& camera, QSize size, bool partIds)
 
     if (m_visibility.grid && !partIds && !m_slots.empty()) {
         gl.glUniform1i(m_uniforms.floor, 1);
-        gl.glUniform1f(m_uniforms.floorRadius, m_layout.gridHalfExtent);
+        gl.glUniform1f(m_uniforms.floorRadius, m_floorHalfExtent);
         gl.glUniform3f(m_uniforms.background, kBackground.r, kBackground.g, kBackground.b);
         gl.glUniform1i(m_uniforms.shadows, light ? 1 : 0);
         if (light) {
@@ -831,7 +855,7 @@ void Renderer::drawPuppet(const Slot& slot, int takeSlot, const glm::mat4& root,
 
 glm::mat4 Renderer::partnerTransform(const Slot& slot, const glm::mat4& root) const
 {
-    const glm::vec3 partner = slot.centre + glm::vec3(m_layout.partnerDistance, 0.0f, 0.0f);
+    const glm::vec3 partner = slot.partnerSpot;
     const glm::mat4 onFloor = root * glm::translate(glm::mat4(1.0f), glm::vec3(partner.x, partner.y, floorHeight()));
     if (!slotPuppet(slot)) return onFloor;
     // The take's puppet as it stands at frame 0, turned about its centre to face the take, as
@@ -850,7 +874,7 @@ bool Renderer::partnerShown(int takeSlot, const Camera& camera) const
     // Two takes stand side by side along the screen's right: seen from the side, one take's
     // partner would stand inside the other take's figure, and is left out.
     const Slot& slot = m_slots.at(std::size_t(takeSlot));
-    const glm::vec3 partner(takeRoot(takeSlot, camera) * glm::vec4(slot.centre + glm::vec3(m_layout.partnerDistance, 0.0f, 0.0f), 1.0f));
+    const glm::vec3 partner(takeRoot(takeSlot, camera) * glm::vec4(slot.partnerSpot, 1.0f));
     for (std::size_t other = 0; other < m_slots.size(); ++other) {
         if (int(other) == takeSlot) continue;
         const glm::vec3 figure(takeRoot(int(other), camera) * glm::vec4(m_slots[other].centre, 1.0f));

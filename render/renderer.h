@@ -104,6 +104,10 @@ public:
     /// Height (cm) of the floor grid: just under the lowest point of the figures drawn (the
     /// puppets, the skeletons) at frame 0.
     float floorHeight() const;
+    /// Half the side (cm) of the square floor and grid around the origin: LayoutOptions'
+    /// gridHalfExtent, or more so that every take's path (a walk) lies on the floor before it
+    /// fades (at 55 % of it), up to 50 m.
+    float floorHalfExtent() const { return m_floorHalfExtent; }
     /// A camera that frames the scene: angle 340 deg (the puppet's left front), elevation 15 deg,
     /// looking at the figures' middle height, far enough back for one or two puppets, or for
     /// skeletons of any height (sized from the take).
@@ -185,6 +189,7 @@ private:
     std::vector<Slot> m_slots;
     GpuMesh m_grid;
     GpuMesh m_floor;  ///< a square under the grid, shaded by the key light and its shadows
+    float m_floorHalfExtent = 0.0f; ///< cm: the grid's half extent, grown to hold every take's path
     GpuMesh m_box;    ///< unit cube for the axis bars
     GpuMesh m_sphere; ///< unit sphere for the orbits' moving points
     GpuMesh m_partner;

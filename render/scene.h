@@ -74,8 +74,10 @@ struct SceneVisibility {
 struct LayoutOptions {
     float separation = 70.0f;      ///< cm between the two puppets' centres, along the screen's right
     bool centreTakes = true;       ///< move each take's centre (takeCentre) to the origin
-    float partnerDistance = 110.0f; ///< cm from a take's centre along +x (towards the partner)
-    float gridHalfExtent = 200.0f; ///< cm
+    /// cm from a take's centre along +x (towards the partner); further for a take that travels
+    /// that way (the partner keeps 60 cm clear of its furthest reach)
+    float partnerDistance = 110.0f;
+    float gridHalfExtent = 200.0f; ///< cm, at least (the floor grows with a take's path)
     float gridSpacing = 20.0f;     ///< cm
     float axisBarLength = 30.0f;   ///< cm, each bar from the centre of mass along +x, +y, +z
     float axisBarThickness = 1.6f; ///< cm

@@ -56,6 +56,7 @@ struct RenderArguments {
     std::string body;
     std::vector<std::string> meshes;
     int samples = 4;
+    bool follow = false;
     bool json = false;
     // --multimodal: the thesis's multimodal display (chapter 6), view and graphs in one picture
     bool multimodal = false;
@@ -396,10 +397,19 @@ void runRender(const RenderArguments& args)
     for (int s = 0; s < int(scene.takes.size()); ++s)
         summary["figures"].push_back({{"puppet", offscreen->renderer().puppetDrawn(s)}, {"skeleton", offscreen->renderer().skeletonDrawn(s)}});
 
+    // --follow: the camera carried along the floor with the figures (as the 3D view's Follow).
+    const auto follow = [&] {
+        if (!args.follow) return;
+        render::BoundsQuery now;
+        now.span = render::FramingSpan::CurrentFrame;
+        now.figuresOnly = true;
+        camera = render::followingCamera(camera, offscreen->renderer().displayedBounds(camera, now));
+    };
     if (!range) {
         offscreen->makeCurrent();
         if (args.time) offscreen->renderer().setTime(*args.time);
         else offscreen->renderer().setFrame(args.frame.value_or(0));
+        follow();
         unwrap(analysis::io::writeFileAtomically(args.output, view(pngBytes(offscreen->render(camera, size), args.output))));
         summary["output"] = args.output;
         summary["frame"] = offscreen->renderer().frame(0);
@@ -411,6 +421,7 @@ void runRender(const RenderArguments& args)
         for (long f = range->first; f <= range->second; ++f) {
             offscreen->makeCurrent();
             offscreen->renderer().setFrame(f);
+            follow();
             char name[32];
             std::snprintf(name, sizeof name, "frame_%05ld.png", f - range->first);
             unwrap(staged.writeFile(name, view(pngBytes(offscreen->render(camera, size), folder / name))));
@@ -456,6 +467,8 @@ void addRenderCommands(CommandSet& commands)
     render->add_option("--body", args->body, "Body description JSON (default: the shipped puppet)");
     render->add_option("--mesh", args->meshes, "PART=FILE: a mesh file (glTF, OBJ...) replacing a body part");
     render->add_option("--samples", args->samples, "Multisampling, 0..16")->capture_default_str();
+    render->add_flag("--follow", args->follow,
+                     "Carry the camera along the floor with the figures at every frame (a walking take stays in frame)");
     render->add_flag("--multimodal", args->multimodal,
                      "The thesis's multimodal display: the 3D view and the graphs with a moving time cursor in one picture "
                      "(-o FILE.png: one frame; -o FILE.mp4 or -o FOLDER: the whole take or --frames as MP4 or PNG frames)");

@@ -448,3 +448,23 @@ TEST_CASE("a project brings back the graphs' part and DOF, the camera and the em
     CHECK(window->files().lastError().contains(QStringLiteral("\"view\".\"camera\"")));
     CHECK(window->graphPanel()->selectedDof() == QStringLiteral("x"));
 }
+
+TEST_CASE("the 3D view's Shadows and Follow boxes reach the view", "[app][viewport]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    widgets::ViewportWidget* viewport = window->viewportPanel()->viewport();
+    auto* shadows = window->findChild<QCheckBox*>("showShadows");
+    auto* follow = window->findChild<QCheckBox*>("followFigures");
+    REQUIRE(shadows != nullptr);
+    REQUIRE(follow != nullptr);
+    // Shadows on and Follow off by default, as the view starts.
+    CHECK(shadows->isChecked());
+    CHECK(viewport->visibility().shadows);
+    CHECK_FALSE(follow->isChecked());
+    CHECK_FALSE(viewport->follow());
+    QTest::mouseClick(shadows, Qt::LeftButton, Qt::NoModifier, QPoint(6, shadows->height() / 2));
+    QTest::mouseClick(follow, Qt::LeftButton, Qt::NoModifier, QPoint(6, follow->height() / 2));
+    CHECK_FALSE(viewport->visibility().shadows);
+    CHECK(viewport->follow());
+}

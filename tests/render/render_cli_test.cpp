@@ -4,6 +4,8 @@
 #include "tests/support/peer.h"
 #include "tests/support/shared_data.h"
 #include "render/take_scene.h"
+#include "analysis/io/take_csv.h"
+#include "render_test_support.h"
 #include "analysis/core/puppet_layout.h"
 #include "tests/support/test_paths.h"
 
@@ -113,6 +115,36 @@ TEST_CASE("bunraku render draws the figures' shadows on the floor unless --show 
     const auto [code, errors] = runCli("render demo:greeting/friendly/2 --show puppet,shadow -o " + quoted(dir / "x.png"), dir);
     CHECK(code != 0);
     CHECK(errors.find("grid, shadows, partner") != std::string::npos);
+}
+
+TEST_CASE("bunraku render --follow keeps a walking take in the middle of the picture", "[render][cli][travel]")
+{
+    if (!test::requirePeer(std::filesystem::exists(cliPath()), "the bunraku executable (" + cliPath().string() + ")",
+                           "build the target bunraku"))
+        return;
+    const auto dir = test::scratchDir("render_cli_follow");
+    REQUIRE(analysis::io::writeTakeCsv(test::travellingTake(60, 400.0), dir / "walk.csv").ok());
+    // The middle column of the figure's pixels, as a fraction of the width from the centre.
+    const auto offset = [&dir](const std::string& options) {
+        const auto [code, errors] = runCli("render " + quoted(dir / "walk.csv") + " --frame 59 --camera 0 --elevation 10 "
+                                           "--distance 300 --show puppet --size 200x150 --samples 0 " + options + " -o " +
+                                               quoted(dir / "walk.png"), dir);
+        INFO(errors);
+        REQUIRE(code == 0);
+        const QImage image(QString::fromStdString((dir / "walk.png").string()));
+        double sum = 0.0;
+        int count = 0;
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x)
+                if (!test::isBackground(image.pixel(x, y))) {
+                    sum += x;
+                    ++count;
+                }
+        if (count < 50) return 1.0; // out of the picture
+        return std::abs(sum / count - 0.5 * image.width()) / image.width();
+    };
+    CHECK(offset("--follow") < 0.05);
+    CHECK(offset("") > 0.2); // the camera stays where it was framed: the walker has left
 }
 
 TEST_CASE("bunraku render rejects bad input with a one-line error", "[render][cli]")

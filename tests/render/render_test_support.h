@@ -64,6 +64,17 @@ inline analysis::Take spreadArmsTake(Eigen::Index frames, const Eigen::Vector3d&
     });
 }
 
+/// The spread-arms puppet walking `distance` cm along +x (towards the partner) at an even pace
+/// over `frames` frames, starting `distance` / 2 behind the origin.
+inline analysis::Take travellingTake(Eigen::Index frames, double distance)
+{
+    const analysis::Take still = spreadArmsTake(frames);
+    analysis::Take take = still;
+    for (Eigen::Index f = 0; f < frames; ++f)
+        for (int p = 0; p < 4; ++p) take.values(f, p * 6) += distance * (double(f) / double(frames - 1) - 0.5);
+    return take;
+}
+
 inline bool isBackground(QRgb pixel)
 {
     // The renderer's background is a light grey-blue (0.94, 0.95, 0.97).

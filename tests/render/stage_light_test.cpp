@@ -202,3 +202,38 @@ TEST_CASE("the partner is a figure as tall as the take's standing in front of it
     stage.show(true, false);
     CHECK(test::isBackground(stage.image().pixel(chest)));
 }
+
+TEST_CASE("a take that travels 4 m stays on the floor and its partner out of its way", "[render][partner][travel]")
+{
+    Stage stage;
+    render::SceneContent scene;
+    scene.body = analysis::defaultBodyDescription();
+    scene.takes.push_back(render::TakeSlot{test::travellingTake(60, 400.0), {}});
+    stage.offscreen->makeCurrent();
+    REQUIRE(stage.offscreen->setScene(scene).ok());
+    stage.show(true, true);
+    render::Renderer& renderer = stage.offscreen->renderer();
+    // The floor holds the walk before it fades (at 55 % of its half extent).
+    render::BoundsQuery whole;
+    whole.figuresOnly = true;
+    const render::Bounds walk = renderer.displayedBounds(renderer.framingCamera(), whole);
+    CHECK(walk.size().x > 400.0f);
+    CHECK(0.55f * renderer.floorHalfExtent() >= std::max(std::abs(walk.lower.x), std::abs(walk.upper.x)));
+    CHECK(renderer.floorHalfExtent() <= 5000.0f);
+    // The partner stands beyond the walk's end (+x), not in the walker's path.
+    render::BoundsQuery withPartner;
+    const render::Bounds all = renderer.displayedBounds(renderer.framingCamera(), withPartner);
+    CHECK(all.upper.x >= walk.upper.x + 60.0f);
+    // At the last frame the floor under the figure is floor (lit, not faded into the background).
+    renderer.setFrame(59);
+    stage.camera = renderer.framingCamera();
+    stage.camera.elevationDeg = 40.0f;
+    stage.camera.distance = 700.0f;
+    stage.camera.target = {0.0f, 0.0f, 60.0f};
+    const QImage image = stage.image();
+    const glm::vec3 shoulder = renderer.displayedSensorPositions(0, 59, stage.camera)[1];
+    const glm::vec3 behind(shoulder.x - 40.0f, shoulder.y + 30.0f, renderer.floorHeight());
+    const QPoint pixel = stage.camera.project(behind, stage.size).pixel.toPoint();
+    REQUIRE(QRect(QPoint(0, 0), stage.size).contains(pixel));
+    CHECK_FALSE(test::isBackground(image.pixel(pixel)));
+}
