@@ -585,7 +585,7 @@ void MainWindow::restoreViewState(const QVariantMap& state)
     if (state.contains("part")) m_graphs->selectPart(state["part"].toString());
     if (state.contains("dof")) m_graphs->selectDof(state["dof"].toString());
     if (state.contains("camera")) m_viewportPanel->setCameraState(state["camera"].toMap());
-    // The 3D view's figure per take: puppet, skeleton or both (the boxes' order).
+    // The 3D view's figure per take: puppet, skeleton, both or body (the boxes' order).
     if (state.contains("figureA")) m_viewportPanel->figureBox(0)->setCurrentIndex(state["figureA"].toInt());
     if (state.contains("figureB")) m_viewportPanel->figureBox(1)->setCurrentIndex(state["figureB"].toInt());
     if (state.contains("weightEmotion")) m_analysis->setWeightEmotion(state["weightEmotion"].toString());

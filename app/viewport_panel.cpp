@@ -89,6 +89,7 @@ ViewportPanel::ViewportPanel(Document& document, AnalysisController& analysis, Q
         box->addItem(tr("Puppet"), int(render::FigureStyle::Puppet));
         box->addItem(tr("Skeleton"), int(render::FigureStyle::Skeleton));
         box->addItem(tr("Both"), int(render::FigureStyle::PuppetAndSkeleton));
+        box->addItem(tr("Body"), int(render::FigureStyle::Body));
         box->setToolTip(slot == 0 ? tr("Figure of take A: the puppet, the performer's skeleton (takes read from BVH), or both")
                                   : tr("Figure of take B: the puppet, the performer's skeleton (takes read from BVH), or both"));
         connect(box, &QComboBox::currentIndexChanged, this, &ViewportPanel::applyVisibility);

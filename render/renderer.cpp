@@ -1,10 +1,13 @@
 #include "render/renderer.h"
 
+#include "analysis/body/dual_quaternion.h"
+#include "analysis/body/performer_body.h"
 #include "analysis/core/puppet_layout.h"
 #include "render/orbit_geometry.h"
 #include "render/puppet_geometry.h"
 #include "render/skeleton_geometry.h"
 
+#include <QFile>
 #include <QOpenGLContext>
 #include <QOpenGLFramebufferObject>
 #include <QOpenGLShaderProgram>
@@ -29,7 +32,6 @@ const glm::vec3 kFloorColour(0.86f, 0.85f, 0.83f);
 /// Texels per side of the key light's depth map, and the width (cm) its filter softens a
 /// shadow's edge over.
 constexpr int kShadowMapSize = 1024;
-constexpr float kShadowSoftness = 4.0f;
 /// cm the partner keeps clear of the furthest reach of a take that travels towards it.
 constexpr float kPartnerClearance = 60.0f;
 /// cm: the largest floor (a grid line every 20 cm: at most 2 x 250 lines each way).
@@ -104,10 +106,16 @@ struct Renderer::SkeletonFigure {
     std::vector<std::string> jointNames;
     std::vector<std::string> jointParts; ///< the puppet part each joint carries, or ""
     float jointRadius = 0.0f;
+    /// The performer's body (FigureStyle::Body), made on first use; null when it cannot be
+    /// made (then the capsules are drawn).
+    std::shared_ptr<const analysis::PerformerBody> body;
+    SkinnedPuppetGpu bodyGpu;
+    bool bodyTried = false;
 
     void release(QOpenGLExtraFunctions& gl)
     {
         for (GpuMesh& mesh : meshes) mesh.release(gl);
+        bodyGpu.release(gl);
     }
 };
 
@@ -148,7 +156,9 @@ analysis::Status Renderer::initialize()
     m_uniforms.shadows = program->uniformLocation("u_shadows");
     m_uniforms.shadowMap = program->uniformLocation("u_shadowMap");
     m_uniforms.lightViewProjection = program->uniformLocation("u_lightViewProjection");
-    m_uniforms.shadowSpread = program->uniformLocation("u_shadowSpread");
+    m_uniforms.shadowDepth = program->uniformLocation("u_shadowDepth");
+    m_uniforms.shadowUvPerCm = program->uniformLocation("u_shadowUvPerCm");
+    m_uniforms.shadowCmPerDepth = program->uniformLocation("u_shadowCmPerDepth");
     auto skin = std::make_unique<QOpenGLShaderProgram>();
     if (!skin->addShaderFromSourceFile(QOpenGLShader::Vertex, QStringLiteral(":/shaders/skinned.vert")) ||
         !skin->addShaderFromSourceFile(QOpenGLShader::Fragment, QStringLiteral(":/shaders/scene.frag")) || !skin->link())
@@ -165,8 +175,22 @@ analysis::Status Renderer::initialize()
     m_skinUniforms.jointReal = skin->uniformLocation("u_jointReal");
     m_skinUniforms.jointDual = skin->uniformLocation("u_jointDual");
     m_skinUniforms.partOfJoint = skin->uniformLocation("u_partOfJoint");
+    // The performer's body: skinned.vert again, for the skeleton's joints.
+    QFile skinnedSource(QStringLiteral(":/shaders/skinned.vert"));
+    if (!skinnedSource.open(QIODevice::ReadOnly)) return analysis::makeError(ErrorCode::Unsupported, "shader :/shaders/skinned.vert not found");
+    QByteArray bodySource = skinnedSource.readAll();
+    const qsizetype versionEnd = bodySource.indexOf('\n') + 1;
+    bodySource.insert(versionEnd, "#define BODY_JOINTS " + QByteArray::number(analysis::kMaxBodyJoints) + "\n");
+    auto body = std::make_unique<QOpenGLShaderProgram>();
+    if (!body->addShaderFromSourceCode(QOpenGLShader::Vertex, bodySource) ||
+        !body->addShaderFromSourceFile(QOpenGLShader::Fragment, QStringLiteral(":/shaders/scene.frag")) || !body->link())
+        return analysis::makeError(ErrorCode::Unsupported, "shader build failed: " + body->log().toStdString());
+    for (const char* name : {"u_model", "u_viewProjection", "u_normalMatrix", "u_colour", "u_useVertexColour", "u_lit", "u_lightPosition",
+                             "u_partIdBase", "u_boneIds", "u_keyDirection", "u_jointReal", "u_jointDual"})
+        m_bodyUniforms[name] = body->uniformLocation(name);
     m_program = std::move(program);
     m_skinProgram = std::move(skin);
+    m_bodyProgram = std::move(body);
     m_context = context;
     m_gl = context->extraFunctions();
 
@@ -176,10 +200,14 @@ analysis::Status Renderer::initialize()
     // The shadow map's sampler reads texture unit 1 in both programs (unit 0 stays free).
     m_program->bind();
     m_gl->glUniform1i(m_uniforms.shadowMap, 1);
+    m_gl->glUniform1i(m_uniforms.shadowDepth, 2);
     m_program->release();
-    m_skinProgram->bind();
-    m_gl->glUniform1i(m_skinProgram->uniformLocation("u_shadowMap"), 1);
-    m_skinProgram->release();
+    for (QOpenGLShaderProgram* skinned : {m_skinProgram.get(), m_bodyProgram.get()}) {
+        skinned->bind();
+        m_gl->glUniform1i(skinned->uniformLocation("u_shadowMap"), 1);
+        m_gl->glUniform1i(skinned->uniformLocation("u_shadowDepth"), 2);
+        skinned->release();
+    }
     return analysis::okStatus();
 }
 
@@ -212,6 +240,7 @@ void Renderer::release()
     m_pickFramebuffer.reset();
     m_program.reset();
     m_skinProgram.reset();
+    m_bodyProgram.reset();
     m_gl = nullptr;
     m_context = nullptr;
 }
@@ -374,6 +403,48 @@ std::shared_ptr<Renderer::PuppetFigure> Renderer::puppetFigure(const analysis::B
     }
     reusable.push_back(figure);
     return figure;
+}
+
+bool Renderer::drawBody(const Slot& slot, int takeSlot, const glm::mat4& root, const glm::mat4& viewProjection, const glm::vec3& eye,
+                        bool partIds)
+{
+    SkeletonFigure& figure = *slot.skeleton;
+    if (!figure.bodyTried) {
+        figure.bodyTried = true;
+        auto made = analysis::performerBody(*slot.take.skeleton);
+        if (made.ok()) {
+            figure.body = std::make_shared<const analysis::PerformerBody>(std::move(made).value());
+            figure.bodyGpu.upload(*m_gl, figure.body->mesh);
+        }
+    }
+    if (!figure.body) return false;
+    QOpenGLExtraFunctions& gl = *m_gl;
+    m_bodyProgram->bind();
+    const auto at = [this](const char* name) { return m_bodyUniforms.at(name); };
+    const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(root)));
+    gl.glUniformMatrix4fv(at("u_model"), 1, GL_FALSE, glm::value_ptr(root));
+    gl.glUniformMatrix3fv(at("u_normalMatrix"), 1, GL_FALSE, glm::value_ptr(normalMatrix));
+    gl.glUniformMatrix4fv(at("u_viewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
+    gl.glUniform3f(at("u_lightPosition"), eye.x, eye.y, eye.z);
+    const glm::vec3 key = keyLightDirection();
+    gl.glUniform3f(at("u_keyDirection"), key.x, key.y, key.z);
+    gl.glUniform4f(at("u_colour"), 1.0f, 1.0f, 1.0f, 1.0f);
+    gl.glUniform1i(at("u_useVertexColour"), 1);
+    gl.glUniform1i(at("u_lit"), 1);
+    gl.glUniform1i(at("u_partIdBase"), partIds ? kSkeletonId + 1 + kIdsPerSlot * takeSlot : -1);
+    gl.glUniform1i(at("u_boneIds"), 1);
+    const auto skinning = analysis::bodySkinningTransforms(*figure.body, slot.take.skeleton->worldPoses(slot.frame));
+    std::vector<glm::vec4> real(skinning.size()), dual(skinning.size());
+    for (std::size_t j = 0; j < skinning.size(); ++j) {
+        const analysis::DualQuaternion q = analysis::DualQuaternion::fromRigid(skinning[j]);
+        real[j] = glm::vec4(float(q.real.x()), float(q.real.y()), float(q.real.z()), float(q.real.w()));
+        dual[j] = glm::vec4(float(q.dual.x()), float(q.dual.y()), float(q.dual.z()), float(q.dual.w()));
+    }
+    gl.glUniform4fv(at("u_jointReal"), GLsizei(real.size()), glm::value_ptr(real[0]));
+    gl.glUniform4fv(at("u_jointDual"), GLsizei(dual.size()), glm::value_ptr(dual[0]));
+    figure.bodyGpu.draw(gl);
+    m_program->bind();
+    return true;
 }
 
 const Renderer::PuppetFigure* Renderer::slotPuppet(const Slot& slot) const
@@ -580,9 +651,12 @@ Bounds Renderer::displayedBounds(const Camera& camera, const BoundsQuery& query)
                 }
             }
         }
-        // The skeleton: every joint (a sphere of the joint radius; the bones run between them).
+        // The skeleton: every joint (a sphere of the joint radius; the bones run between them;
+        // the body's trunk is up to 7.5 % of the height thick).
         if (skeletonDrawn(int(s)) && slot.skeleton) {
-            const float radius = slot.skeleton->jointRadius;
+            const float radius = m_visibility.figures[s] == FigureStyle::Body
+                                     ? std::max(slot.skeleton->jointRadius, 0.08f * (slot.skeletonHighest - slot.skeletonLowest))
+                                     : slot.skeleton->jointRadius;
             for (const Eigen::Index f : frames) {
                 const auto poses = slot.take.skeleton->worldPoses(f);
                 for (std::size_t j = 0; j < poses.size(); ++j) {
@@ -669,9 +743,7 @@ std::optional<glm::mat4> Renderer::drawShadowMap(const Camera& camera, QSize siz
     GLint previous = 0;
     gl.glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous);
     // The map is written, not read, in this pass: no texture unit may hold it meanwhile.
-    gl.glActiveTexture(GL_TEXTURE1);
-    gl.glBindTexture(GL_TEXTURE_2D, 0);
-    gl.glActiveTexture(GL_TEXTURE0);
+    m_shadowMap.unbindFromReading(gl, 1, 2);
     m_shadowMap.beginWriting(gl);
     m_program->bind();
     gl.glUniform1i(m_uniforms.shadows, 0);
@@ -703,7 +775,9 @@ void Renderer::drawFigures(const Camera& camera, const glm::mat4& viewProjection
                 meshes[p].draw(gl);
             }
         }
-        if (skeletonDrawn(int(s))) {
+        if (skeletonDrawn(int(s)) && m_visibility.figures[s] == FigureStyle::Body && drawBody(slot, int(s), root, viewProjection, eye, ids)) {
+            // the performer's body, skinned to the skeleton
+        } else if (skeletonDrawn(int(s))) {
             for (std::size_t j = 0; j < slot.skeleton->meshes.size() && j < slot.take_T_joint.size(); ++j) {
                 if (slot.skeleton->meshes[j].empty()) continue; // End Sites
                 setModel(root * slot.take_T_joint[j]);
@@ -759,13 +833,12 @@ void Renderer::drawScene(const Camera& camera, QSize size, bool partIds)
         gl.glUniform3f(m_uniforms.background, kBackground.r, kBackground.g, kBackground.b);
         gl.glUniform1i(m_uniforms.shadows, light ? 1 : 0);
         if (light) {
-            gl.glActiveTexture(GL_TEXTURE1);
-            gl.glBindTexture(GL_TEXTURE_2D, m_shadowMap.texture());
-            gl.glActiveTexture(GL_TEXTURE0);
+            m_shadowMap.bindForReading(gl, 1, 2);
             gl.glUniformMatrix4fv(m_uniforms.lightViewProjection, 1, GL_FALSE, glm::value_ptr(*light));
-            // kShadowSoftness cm in the map's coordinates (its box is 2 / light[0][0] cm wide).
-            const float spread = 0.5f * kShadowSoftness * 0.5f * glm::length(glm::vec3((*light)[0][0], (*light)[1][0], (*light)[2][0]));
-            gl.glUniform2f(m_uniforms.shadowSpread, spread, spread);
+            // The light's box is 2 / |row 0| cm wide and 2 / |row 2| cm deep (rows of unit vectors).
+            const glm::mat4& m = *light;
+            gl.glUniform1f(m_uniforms.shadowUvPerCm, 0.5f * glm::length(glm::vec3(m[0][0], m[1][0], m[2][0])));
+            gl.glUniform1f(m_uniforms.shadowCmPerDepth, 2.0f / glm::length(glm::vec3(m[0][2], m[1][2], m[2][2])));
         }
         const glm::mat4 floor = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, floorHeight()));
         setModel(floor);

@@ -22,6 +22,7 @@
 #include <QSize>
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -149,6 +150,10 @@ private:
     std::optional<glm::mat4> drawShadowMap(const Camera& camera, QSize size);
     void drawPuppet(const Slot& slot, int takeSlot, const glm::mat4& root, const glm::mat4& viewProjection,
                     const glm::vec3& eye, bool partIds);
+    /// The performer's body of a slot's skeleton (made and uploaded on first use); false when no
+    /// body can be made for it (the caller draws the capsules).
+    bool drawBody(const Slot& slot, int takeSlot, const glm::mat4& root, const glm::mat4& viewProjection, const glm::vec3& eye,
+                  bool partIds);
     /// world_T_take of the partner of `slot` (thesis 6: the person greeted or served): the take's
     /// modelled puppet as it stands at frame 0, turned about its centre to face the take from
     /// partnerDistance ahead; without a modelled puppet, the cone's frame on the floor there.
@@ -167,11 +172,13 @@ private:
     QOpenGLExtraFunctions* m_gl = nullptr;
     std::unique_ptr<QOpenGLShaderProgram> m_program;
     std::unique_ptr<QOpenGLShaderProgram> m_skinProgram; ///< skinned.vert + scene.frag
+    std::unique_ptr<QOpenGLShaderProgram> m_bodyProgram; ///< skinned.vert for a skeleton's joints + scene.frag
+    std::map<std::string, int> m_bodyUniforms;
     std::unique_ptr<QOpenGLFramebufferObject> m_pickFramebuffer;
     struct Uniforms {
         int model = -1, viewProjection = -1, normalMatrix = -1, colour = -1, useVertexColour = -1, lit = -1,
             lightPosition = -1, partIdBase = -1, keyDirection = -1, floor = -1, floorRadius = -1, background = -1,
-            shadows = -1, shadowMap = -1, lightViewProjection = -1, shadowSpread = -1;
+            shadows = -1, shadowMap = -1, shadowDepth = -1, lightViewProjection = -1, shadowUvPerCm = -1, shadowCmPerDepth = -1;
     } m_uniforms;
     struct SkinUniforms {
         int model = -1, viewProjection = -1, normalMatrix = -1, colour = -1, useVertexColour = -1, lit = -1,

@@ -47,8 +47,10 @@ struct SceneContent {
 };
 
 /// How a take's figure is drawn: the puppet, the performer's skeleton (a take that carries one,
-/// analysis/core/skeleton.h; a take without one shows its puppet), or both overlaid.
-enum class FigureStyle { Puppet, Skeleton, PuppetAndSkeleton };
+/// analysis/core/skeleton.h; a take without one shows its puppet), both overlaid, or the
+/// performer's body (a smooth mannequin skinned to the skeleton, analysis/body/performer_body.h;
+/// its capsules for a skeleton of more joints than a body is made for).
+enum class FigureStyle { Puppet, Skeleton, PuppetAndSkeleton, Body };
 
 enum class OrbitVisibility {
     WhenPuppetHidden, ///< as in the thesis: orbits replace the puppet

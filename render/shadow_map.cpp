@@ -24,8 +24,12 @@ glm::mat4 shadowViewProjection(const Bounds& casters, float floorZ, const glm::v
     const float texel = 2.0f * radius / float(mapSize);
     centre.x = std::round(centre.x / texel) * texel;
     centre.y = std::round(centre.y / texel) * texel;
+    // Depth: from the nearest caster to where the light's ray past the lowest caster meets the
+    // floor (a shadow shares its caster's place across the light, never its depth: the shadow
+    // of a raised hand lies far down the ray).
+    const float toFloor = (box.upper.z - box.lower.z) / std::max(light.z, 0.1f);
     const glm::mat4 projection = glm::ortho(centre.x - radius, centre.x + radius, centre.y - radius, centre.y + radius,
-                                            -centre.z - radius - 1.0f, -centre.z + radius + 1.0f);
+                                            -centre.z - radius - 1.0f, -centre.z + radius + toFloor + 1.0f);
     return projection * view;
 }
 
@@ -47,6 +51,12 @@ bool ShadowMap::ensure(QOpenGLExtraFunctions& gl, int size)
     gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
     gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
     gl.glBindTexture(GL_TEXTURE_2D, 0);
+    gl.glGenSamplers(1, &m_depthSampler);
+    gl.glSamplerParameteri(m_depthSampler, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    gl.glSamplerParameteri(m_depthSampler, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    gl.glSamplerParameteri(m_depthSampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    gl.glSamplerParameteri(m_depthSampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    gl.glSamplerParameteri(m_depthSampler, GL_TEXTURE_COMPARE_MODE, GL_NONE);
     gl.glGenFramebuffers(1, &m_framebuffer);
     gl.glBindFramebuffer(GL_FRAMEBUFFER, m_framebuffer);
     gl.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, m_texture, 0);
@@ -67,8 +77,30 @@ void ShadowMap::beginWriting(QOpenGLExtraFunctions& gl) const
     gl.glClear(GL_DEPTH_BUFFER_BIT);
 }
 
+void ShadowMap::bindForReading(QOpenGLExtraFunctions& gl, int compared, int depths) const
+{
+    gl.glActiveTexture(GLenum(GL_TEXTURE0 + compared));
+    gl.glBindTexture(GL_TEXTURE_2D, m_texture);
+    gl.glActiveTexture(GLenum(GL_TEXTURE0 + depths));
+    gl.glBindTexture(GL_TEXTURE_2D, m_texture);
+    gl.glBindSampler(GLuint(depths), m_depthSampler);
+    gl.glActiveTexture(GL_TEXTURE0);
+}
+
+void ShadowMap::unbindFromReading(QOpenGLExtraFunctions& gl, int compared, int depths) const
+{
+    for (const int unit : {compared, depths}) {
+        gl.glActiveTexture(GLenum(GL_TEXTURE0 + unit));
+        gl.glBindTexture(GL_TEXTURE_2D, 0);
+    }
+    gl.glBindSampler(GLuint(depths), 0);
+    gl.glActiveTexture(GL_TEXTURE0);
+}
+
 void ShadowMap::release(QOpenGLExtraFunctions& gl)
 {
+    if (m_depthSampler != 0) gl.glDeleteSamplers(1, &m_depthSampler);
+    m_depthSampler = 0;
     if (m_framebuffer != 0) gl.glDeleteFramebuffers(1, &m_framebuffer);
     if (m_texture != 0) gl.glDeleteTextures(1, &m_texture);
     m_framebuffer = 0;

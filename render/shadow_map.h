@@ -5,7 +5,8 @@
 ///
 /// The key light is fixed in the world (above the figures, in front and to their left, as a
 /// stage's key light), so a shadow does not turn with the camera; the floor samples the depth
-/// texture with percentage-closer filtering over a few texels, which softens its edge.
+/// texture with percentage-closer filtering over a width that grows with the distance from the
+/// caster (resources/shaders/scene.frag): contact shadows are sharp, far ones soft.
 
 #include "render/framing.h"
 
@@ -19,7 +20,8 @@ namespace bunraku::render {
 glm::vec3 keyLightDirection();
 
 /// The light's clip_T_world: an orthographic box looking along -`towardsLight` that holds
-/// `casters` (the figures, world cm) and the floor beneath them down to `floorZ`. Its centre is
+/// `casters` (the figures, world cm) and, in depth, the floor at `floorZ` where their shadows
+/// fall. Its centre is
 /// moved to whole texels of a `mapSize`-texel map, so a box that moves (a walking take) does not
 /// make the shadow's edge shimmer. An empty `casters` gives the identity.
 glm::mat4 shadowViewProjection(const Bounds& casters, float floorZ, const glm::vec3& towardsLight, int mapSize);
@@ -38,6 +40,11 @@ public:
     bool ensure(QOpenGLExtraFunctions& gl, int size);
     /// Binds the framebuffer, sets the viewport to the map and clears its depth.
     void beginWriting(QOpenGLExtraFunctions& gl) const;
+    /// Binds the map to texture unit `compared` (compare mode: a sampler2DShadow) and to unit
+    /// `depths` with a sampler object that reads plain depths (a sampler2D); unit 0 is left active.
+    void bindForReading(QOpenGLExtraFunctions& gl, int compared, int depths) const;
+    /// Unbinds those units (before the map is written again).
+    void unbindFromReading(QOpenGLExtraFunctions& gl, int compared, int depths) const;
     GLuint texture() const { return m_texture; }
     int size() const { return m_size; }
     void release(QOpenGLExtraFunctions& gl);
@@ -45,6 +52,7 @@ public:
 private:
     GLuint m_framebuffer = 0;
     GLuint m_texture = 0;
+    GLuint m_depthSampler = 0; ///< compare mode off, nearest: the blocker search reads depths
     int m_size = 0;
 };
 

@@ -149,7 +149,8 @@ render::FigureStyle parseFigure(const std::string& text, const std::string& opti
     if (text == "puppet") return render::FigureStyle::Puppet;
     if (text == "skeleton") return render::FigureStyle::Skeleton;
     if (text == "both") return render::FigureStyle::PuppetAndSkeleton;
-    throw CliError(option + " '" + text + "': expected puppet, skeleton or both");
+    if (text == "body") return render::FigureStyle::Body;
+    throw CliError(option + " '" + text + "': expected puppet, skeleton, both or body");
 }
 
 bool hasDisplay() { return std::getenv("DISPLAY") != nullptr || std::getenv("WAYLAND_DISPLAY") != nullptr; }
@@ -458,7 +459,8 @@ void addRenderCommands(CommandSet& commands)
     render->add_option("--show", args->show, "Objects to draw: puppet,axis,orbits,grid (the floor),shadows (the figures' on the floor),partner or all")
         ->capture_default_str();
     render->add_option("--figure", args->figure,
-                       "Figure of the take(s): puppet, skeleton (the performer's, for takes read from BVH) or both")
+                       "Figure of the take(s): puppet, skeleton (the performer's, for takes read from BVH), both or body "
+                       "(the performer's body, a smooth mannequin skinned to that skeleton)")
         ->capture_default_str();
     render->add_option("--figure-b", args->figureB, "Figure of the second take (default: as --figure)");
     render->add_option("--size", args->size, "Image size WIDTHxHEIGHT")->capture_default_str();

@@ -23,6 +23,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QCheckBox>
+#include <QComboBox>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QJsonDocument>
@@ -467,4 +468,11 @@ TEST_CASE("the 3D view's Shadows and Follow boxes reach the view", "[app][viewpo
     QTest::mouseClick(follow, Qt::LeftButton, Qt::NoModifier, QPoint(6, follow->height() / 2));
     CHECK_FALSE(viewport->visibility().shadows);
     CHECK(viewport->follow());
+    // The figure boxes offer the performer's body, and choosing it reaches the view.
+    QComboBox* figure = window->viewportPanel()->figureBox(0);
+    const int body = figure->findData(int(render::FigureStyle::Body));
+    REQUIRE(body >= 0);
+    CHECK(figure->itemText(body) == QStringLiteral("Body"));
+    figure->setCurrentIndex(body);
+    CHECK(viewport->visibility().figures[0] == render::FigureStyle::Body);
 }

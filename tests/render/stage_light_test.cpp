@@ -74,6 +74,9 @@ TEST_CASE("the key light's box holds the figures and the floor under them", "[re
         CHECK(insideClip(box, point));
         CHECK(insideClip(box, glm::vec3(point.x, point.y, 18.0f))); // the floor under it
     }
+    // The shadow of the highest corner falls inside the box too (far down the light's ray).
+    const glm::vec3 top = figures.upper;
+    CHECK(insideClip(box, top - light * ((top.z - 18.0f) / light.z)));
     // The light looks down its direction: a point nearer the light is nearer in depth.
     const glm::vec4 low = box * glm::vec4(0.0f, 0.0f, 60.0f, 1.0f);
     const glm::vec4 high = box * glm::vec4(glm::vec3(0.0f, 0.0f, 60.0f) + 20.0f * light, 1.0f);
