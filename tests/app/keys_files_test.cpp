@@ -204,6 +204,8 @@ TEST_CASE("Home resets the camera in the focused 3D view and goes to the start e
     auto& document = window->document();
     auto* viewport = window->viewportPanel()->viewport();
     (void)viewport->grabFramebuffer(); // the scene uploaded and framed
+    // The first view at the view's size now (the docks may have widened it since the first paint).
+    viewport->resetCamera();
     const render::Camera first = viewport->camera();
 
     // Orbit with the mouse (the view takes the focus), then Home: the camera, not the time.
