@@ -236,6 +236,7 @@ bool FileController::importTakeFile(const QString& file, const QString& jointMap
         if (dialog.exec() != QDialog::Accepted) return false;
         options.bvh.jointMap = dialog.jointMap();
         options.bvh.side = dialog.side();
+        dialog.applyUnits(options.bvh);
     }
     // Read and imported off the GUI thread behind a progress dialog that can cancel it.
     analysis::Result<analysis::Take> take = analysis::makeError(analysis::ErrorCode::Cancelled, "not run");

@@ -22,6 +22,27 @@ constexpr int kPreviewSize = 260;
 
 } // namespace
 
+QComboBox* makeUnitsBox(QWidget* parent)
+{
+    auto* units = new QComboBox(parent);
+    units->setObjectName(QStringLiteral("units"));
+    units->addItem(QObject::tr("Guess"));
+    units->addItem(QObject::tr("Centimetres"), 1.0);
+    units->addItem(QObject::tr("Metres"), 100.0);
+    units->addItem(QObject::tr("Millimetres"), 0.1);
+    units->addItem(QObject::tr("Inches"), 2.54);
+    units->setToolTip(QObject::tr("The files' length unit. A skeleton 40 to 100 units tall reads as a small figure in "
+                                  "centimetres (a puppet, a child) or as a person in inches; Guess tells them apart by a "
+                                  "walking take's pace and says which it chose"));
+    return units;
+}
+
+void applyUnitsChoice(const QComboBox& units, analysis::io::BvhImportOptions& options)
+{
+    options.guessUnits = units.currentIndex() <= 0;
+    if (!options.guessUnits) options.unitScale = units.currentData().toDouble();
+}
+
 JointMapDialog::JointMapDialog(const analysis::io::BvhFile& file, const QString& fileName, QWidget* parent)
     : QDialog(parent), m_file(file)
 {
@@ -35,8 +56,14 @@ JointMapDialog::JointMapDialog(const analysis::io::BvhFile& file, const QString&
     m_side = new QComboBox(this);
     m_side->addItem(tr("Right arm and hand"));
     m_side->addItem(tr("Left arm and hand"));
+    m_units = makeUnitsBox(this);
+    m_height = new QLabel(this);
+    m_height->setObjectName(QStringLiteral("height"));
+    m_height->setWordWrap(true);
     auto* form = new QFormLayout;
     form->addRow(tr("Side"), m_side);
+    form->addRow(tr("Units"), m_units);
+    form->addRow(QString(), m_height);
     for (int part = 0; part < 4; ++part) {
         auto* box = new QComboBox(this);
         box->addItems(joints);
@@ -53,6 +80,7 @@ JointMapDialog::JointMapDialog(const analysis::io::BvhFile& file, const QString&
         });
     }
     connect(m_side, &QComboBox::currentIndexChanged, this, &JointMapDialog::applyAutomaticMap);
+    connect(m_units, &QComboBox::currentIndexChanged, this, &JointMapDialog::update);
 
     m_message = new QLabel(this);
     m_message->setWordWrap(true);
@@ -105,6 +133,26 @@ analysis::io::JointMap JointMapDialog::jointMap() const
     return map;
 }
 
+std::optional<double> JointMapDialog::cmPerUnit() const
+{
+    if (m_units->currentIndex() <= 0) return std::nullopt;
+    return m_units->currentData().toDouble();
+}
+
+void JointMapDialog::applyUnits(analysis::io::BvhImportOptions& options) const { applyUnitsChoice(*m_units, options); }
+
+QString JointMapDialog::heightText() const
+{
+    const auto guess = analysis::io::guessBvhUnits(m_file);
+    const auto chosen = cmPerUnit();
+    const double metres = guess.height * chosen.value_or(guess.cmPerUnit) / 100.0;
+    QString text = chosen ? tr("%1 m tall").arg(metres, 0, 'f', 2)
+                          : tr("%1 m tall (guessed: %2)").arg(metres, 0, 'f', 2).arg(QString::fromStdString(guess.unit));
+    if (guess.height >= 40.0 && guess.height < 100.0 && (!chosen || *chosen == 1.0))
+        text += tr("; in inches %1 m: choose Inches for a person").arg(guess.height * 2.54 / 100.0, 0, 'f', 2);
+    return text;
+}
+
 analysis::BodySide JointMapDialog::side() const
 {
     return m_side->currentIndex() == 1 ? analysis::BodySide::Left : analysis::BodySide::Right;
@@ -122,6 +170,7 @@ QString JointMapDialog::jointMapText() const
 void JointMapDialog::update()
 {
     if (m_applying) return;
+    m_height->setText(heightText());
     m_problem.clear();
     for (std::size_t part = 0; part < 4 && m_problem.isEmpty(); ++part) {
         if (m_parts[part]->currentIndex() <= 0)
@@ -138,7 +187,7 @@ void JointMapDialog::update()
         analysis::io::BvhImportOptions options;
         options.jointMap = jointMap();
         options.side = side();
-        options.guessUnits = true;
+        applyUnits(options);
         auto take = analysis::io::bvhToPuppetTake(m_file, options);
         if (!take) {
             m_problem = QString::fromStdString(take.error().message);

@@ -110,6 +110,7 @@ NewCorpusDialog::NewCorpusDialog(QWidget* parent) : QDialog(parent)
             if (io::takeFileFormat(file) == io::TakeFileFormat::Scene) m_starts.erase(file);
         remap();
     });
+    m_units = makeUnitsBox(this);
     m_side = new QComboBox(this);
     m_side->addItems({tr("Right arm and hand"), tr("Left arm and hand")});
     connect(m_side, &QComboBox::currentIndexChanged, this, &NewCorpusDialog::remap);
@@ -147,6 +148,7 @@ NewCorpusDialog::NewCorpusDialog(QWidget* parent) : QDialog(parent)
     form->addRow(tr("Part map"), joints);
     form->addRow(tr("Animation"), m_animation);
     form->addRow(tr("Side"), m_side);
+    form->addRow(tr("Units"), m_units);
     form->addRow(tr("Neutral emotion"), m_neutral);
     form->addRow(tr("Rate"), m_rate);
     form->addRow(tr("Corpus folder"), output);
@@ -423,7 +425,7 @@ std::vector<io::CorpusSource> NewCorpusDialog::sources() const
 io::CorpusBuildOptions NewCorpusDialog::buildOptions() const
 {
     io::CorpusBuildOptions options;
-    options.import.bvh.guessUnits = true;
+    applyUnitsChoice(*m_units, options.import.bvh);
     options.import.scene.animation = m_animation->text().trimmed().toStdString();
     options.import.bvh.side = m_side->currentIndex() == 1 ? analysis::BodySide::Left : analysis::BodySide::Right;
     if (!m_joints->text().trimmed().isEmpty())

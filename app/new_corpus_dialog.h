@@ -57,6 +57,7 @@ public:
     /// The animation read from FBX, glTF and Collada files (name or index; empty: the first).
     QLineEdit* animationEdit() const { return m_animation; }
     QComboBox* sideBox() const { return m_side; }
+    QComboBox* unitsBox() const { return m_units; }
     QComboBox* neutralBox() const { return m_neutral; }
     QPushButton* removeButton() const { return m_remove; }
     QPushButton* createButton() const { return m_create; }
@@ -88,6 +89,7 @@ private:
     QLineEdit* m_joints = nullptr;
     QLineEdit* m_animation = nullptr;
     QComboBox* m_side = nullptr;
+    QComboBox* m_units = nullptr;
     QComboBox* m_neutral = nullptr;
     QDoubleSpinBox* m_rate = nullptr;
     QLineEdit* m_output = nullptr;

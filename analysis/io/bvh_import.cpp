@@ -209,7 +209,37 @@ BvhUnitsGuess guessBvhUnits(const BvhFile& file, BvhUpAxis upAxis)
         guess.note = "the joints span " + height + " units from top to bottom: millimetres";
     } else {
         guess.note = "the joints span " + height + " units from top to bottom: centimetres";
-        if (guess.height >= 40.0 && guess.height < 100.0) guess.note += " (or inches: give --units in)";
+        if (guess.height >= 40.0 && guess.height < 100.0) {
+            // A small figure in cm or a person in inches: a take that walks says which. Walking
+            // keeps the Froude number v^2 / (g L) (L the leg, about 0.53 of the height) near
+            // 0.25; below 0.1 in centimetres the pace is too slow for any walker's legs, and
+            // the same take in inches walks at 2.54 times that.
+            const Eigen::Index frames = file.motion.values.rows();
+            const double seconds = double(frames - 1) * file.motion.frameTime;
+            if (frames > 1 && seconds >= 2.0 && !file.skeleton.joints.empty()) {
+                const Eigen::Index step = std::max<Eigen::Index>(1, frames / 200);
+                double travel = 0.0;
+                Eigen::Vector2d last = Eigen::Vector2d::Zero();
+                for (Eigen::Index f = 0; f < frames; f += step) {
+                    const Eigen::Vector3d root = bvhWorldPoses(file, f).front().translation;
+                    const Eigen::Vector2d ground = up == BvhUpAxis::Z ? Eigen::Vector2d(root.x(), root.y()) : Eigen::Vector2d(root.x(), root.z());
+                    if (f > 0) travel += (ground - last).norm();
+                    last = ground;
+                }
+                const double speed = travel / seconds; // units per second
+                const double froudeCm = speed * speed / (981.0 * 0.53 * guess.height);
+                if (travel > guess.height && froudeCm < 0.1) {
+                    guess.unit = "in";
+                    guess.cmPerUnit = 2.54;
+                    guess.note = "the joints span " + height + " units from top to bottom and the take walks " +
+                                 detail::shortText(speed) + " units/s: too slow for legs that short in centimetres " +
+                                 "(Froude number " + detail::shortText(froudeCm) + "), a walk in inches (" +
+                                 detail::shortText(froudeCm * 2.54) + "): inches";
+                    return guess;
+                }
+            }
+            guess.note += " (or inches: give --units in)";
+        }
     }
     return guess;
 }

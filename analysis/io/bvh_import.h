@@ -53,14 +53,17 @@ struct BvhImportOptions {
 
 /// What the skeleton's size says about the file's length unit.
 struct BvhUnitsGuess {
-    std::string unit = "cm";  ///< "m", "mm" or "cm"
-    double cmPerUnit = 1.0;   ///< 100, 0.1 or 1
+    std::string unit = "cm";  ///< "m", "mm", "cm" or "in"
+    double cmPerUnit = 1.0;   ///< 100, 0.1, 1 or 2.54
     double height = 0.0;      ///< the joints' extent along the up axis at the first frame, file units
     std::string note;         ///< why, for reports
 };
 /// A performer's joints span about 1.2-2 m standing: an extent below 5 units is metres, from
-/// 500 to 5000 millimetres, anything else centimetres (inches, 40-100 units, are only noted:
-/// a small skeleton in cm spans as much).
+/// 500 to 5000 millimetres, anything else centimetres. An extent of 40-100 units is a small
+/// figure in cm (a puppet, a child) or a person in inches: a take of 2 s or more whose root
+/// travels more than the figure's height tells them apart by its pace (a walk's Froude number
+/// v^2 / (g L), L = 0.53 of the height, stays near 0.25: below 0.1 in centimetres it is inches);
+/// otherwise cm, noted.
 BvhUnitsGuess guessBvhUnits(const BvhFile& file, BvhUpAxis upAxis = BvhUpAxis::Auto);
 /// The unit scale an import with `options` uses (guessBvhUnits when guessUnits is set).
 double bvhUnitScale(const BvhFile& file, const BvhImportOptions& options);

@@ -385,6 +385,52 @@ TEST_CASE("File > Import Take of a BVH file takes the map chosen in the joint di
     CHECK(skeleton.binding("hand")->joint == skeleton.find("mixamorig:LeftHand"));
 }
 
+TEST_CASE("File > Import Take of an inch-unit BVH stands at a person's height when the dialog says Inches", "[app][import][units]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    const auto dir = test::scratchDir("app_import_inches");
+    test::BvhFamily family = test::bvhFamilies()[3];
+    family.unitsPerCm = 1.0 / 2.54; // the 172 cm performer written in inches: 68 units tall
+    const auto file = test::writeText(dir / "inches.bvh", test::fixtureBvh(family));
+    window->files().setDialogsEnabled(true);
+    QString guessed, chosen;
+    QTimer::singleShot(0, [&] {
+        auto* dialog = qobject_cast<app::JointMapDialog*>(QApplication::activeModalWidget());
+        if (dialog == nullptr) return;
+        // Guessed (a standing take: centimetres), with the hint; then Inches, as a user would.
+        guessed = dialog->findChild<QLabel*>("height")->text();
+        QComboBox* units = dialog->unitsBox();
+        units->setCurrentIndex(units->findText(QStringLiteral("Inches")));
+        chosen = dialog->findChild<QLabel*>("height")->text();
+        QTest::mouseClick(okButton(*dialog), Qt::LeftButton);
+    });
+    const bool imported = window->files().importTakeFile(QString::fromStdString(file.string()));
+    window->files().setDialogsEnabled(false);
+    INFO("guessed: " << guessed.toStdString() << "; chosen: " << chosen.toStdString());
+    REQUIRE(imported);
+    CHECK(guessed.contains(QStringLiteral("0.6")));
+    CHECK(guessed.contains(QStringLiteral("choose Inches")));
+    CHECK(chosen.startsWith(QStringLiteral("1.7")));
+    const auto take = window->document().selectedTake(app::TakeSlot::A);
+    REQUIRE(take->skeleton);
+    // The joints span the performer's height in cm at the first frame.
+    double low = 1e9, high = -1e9;
+    for (const auto& pose : take->skeleton->worldPoses(0)) {
+        low = std::min(low, pose.translation.z());
+        high = std::max(high, pose.translation.z());
+    }
+    CHECK(high - low == Approx(170.0).margin(8.0));
+
+    // New Corpus from Files has the same box, and its choice reaches the corpus's import.
+    app::NewCorpusDialog corpus;
+    REQUIRE(corpus.unitsBox());
+    CHECK(corpus.buildOptions().import.bvh.guessUnits);
+    corpus.unitsBox()->setCurrentIndex(corpus.unitsBox()->findText(QStringLiteral("Inches")));
+    CHECK_FALSE(corpus.buildOptions().import.bvh.guessUnits);
+    CHECK(corpus.buildOptions().import.bvh.unitScale == 2.54);
+}
+
 namespace {
 
 /// A Mixamo-named fixture BVH imported in `window` and exported from take A as glTF binary (the

@@ -193,6 +193,41 @@ TEST_CASE("the units of a skeleton are guessed from its height")
     }
 }
 
+namespace {
+
+/// The Mixamo-style fixture in `unitsPerCm`, 3 s at 30 Hz, its root walking `cmPerSecond` along
+/// the file's forward axis (+Z, y up).
+BvhFile walkingFixture(double unitsPerCm, double cmPerSecond)
+{
+    BvhFamily family = bunraku::test::bvhFamilies()[3];
+    family.unitsPerCm = unitsPerCm;
+    auto file = parseBvh(bunraku::test::fixtureBvh(family, 91), "walk.bvh");
+    REQUIRE(file.ok());
+    for (Eigen::Index f = 0; f < file->motion.values.rows(); ++f) file->motion.values(f, 2) += cmPerSecond * unitsPerCm * double(f) / 30.0;
+    return std::move(file).value();
+}
+
+} // namespace
+
+TEST_CASE("a skeleton 40 to 100 units tall is guessed in inches when it walks at a person's pace")
+{
+    // A 172 cm performer written in inches (68 units) walking 130 cm/s: inches.
+    const BvhUnitsGuess walking = guessBvhUnits(walkingFixture(1.0 / 2.54, 130.0));
+    INFO(walking.note);
+    CHECK(walking.unit == "in");
+    CHECK(walking.cmPerUnit == 2.54);
+    CHECK(walking.height * walking.cmPerUnit == Approx(172.0).margin(8.0));
+    // Standing in place, the same file says nothing more: centimetres, with the hint.
+    const BvhUnitsGuess standing = guessBvhUnits(walkingFixture(1.0 / 2.54, 0.0));
+    CHECK(standing.unit == "cm");
+    CHECK(standing.note.find("or inches") != std::string::npos);
+    // A 69 cm figure (a puppet, a child) in centimetres toddling 70 cm/s (the performer scaled
+    // by 0.4, walking 175 cm/s before scaling): centimetres.
+    const BvhUnitsGuess small = guessBvhUnits(walkingFixture(0.4, 175.0));
+    INFO(small.note);
+    CHECK(small.unit == "cm");
+}
+
 TEST_CASE("every bandai file maps by name and imports as an upright, attached puppet")
 {
     for (const auto& path : bunraku::test::bandaiFilesOrSkip()) {
