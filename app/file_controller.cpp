@@ -3,6 +3,7 @@
 #include "app/commands.h"
 #include "app/document.h"
 #include "app/file_dialogs.h"
+#include "app/import_takes_dialog.h"
 #include "app/joint_map_dialog.h"
 #include "app/new_corpus_dialog.h"
 #include "app/progress_task.h"
@@ -169,15 +170,47 @@ int FileController::openDroppedPaths(const QStringList& paths)
         return QFileInfo(path).isDir() || path.endsWith(QStringLiteral(".json"));
     });
     if (replaces && !maybeSave()) return 0;
+    // Take files together (one dialog for several BVH files), the rest one by one.
     int opened = 0;
-    for (const QString& path : paths) opened += openPath(path) ? 1 : 0;
-    return opened;
+    QStringList takes;
+    for (const QString& path : paths) {
+        if (!QFileInfo(path).isDir() && !path.endsWith(QStringLiteral(".json")) && QFileInfo::exists(path)) takes << path;
+        else opened += openPath(path) ? 1 : 0;
+    }
+    return opened + (takes.isEmpty() ? 0 : importTakeFiles(takes));
 }
 
-bool FileController::importTakeFile(const QString& file, const QString& jointMap)
+int FileController::importTakeFiles(const QStringList& files)
+{
+    QStringList bvhFiles;
+    for (const QString& file : files)
+        if (analysis::io::takeFileFormat(toPath(file)) == analysis::io::TakeFileFormat::Bvh) bvhFiles << file;
+    std::optional<ImportTakesDialog> dialog;
+    if (m_dialogs && bvhFiles.size() > 1) {
+        // One dialog for all the BVH files, over the window (not one joint dialog per file).
+        dialog.emplace(bvhFiles, m_window);
+        if (dialog->exec() != QDialog::Accepted) {
+            emit statusMessage(tr("Import of %n file(s) cancelled; nothing was changed", nullptr, int(files.size())));
+            return 0;
+        }
+    }
+    int imported = 0;
+    for (const QString& file : files) {
+        const int row = dialog ? int(bvhFiles.indexOf(file)) : -1;
+        const bool done = row >= 0 ? importTake(file, dialog->options(row)) : importTakeFile(file);
+        if (!done) break;
+        ++imported;
+    }
+    return imported;
+}
+
+bool FileController::importTakeFile(const QString& file, const QString& jointMap) { return importTake(file, std::nullopt, jointMap); }
+
+bool FileController::importTake(const QString& file, const std::optional<analysis::io::BvhImportOptions>& preset, const QString& jointMap)
 {
     analysis::io::ImportOptions options;
     options.bvh.guessUnits = true;
+    if (preset) options.bvh = *preset;
     const QString name = QFileInfo(file).fileName();
     const QString title = tr("Cannot import %1").arg(name);
     const auto format = analysis::io::takeFileFormat(toPath(file));
@@ -218,7 +251,9 @@ bool FileController::importTakeFile(const QString& file, const QString& jointMap
         }
         converted = std::move(read).value();
     }
-    if (bvh && !jointMap.isEmpty()) {
+    if (bvh && preset) {
+        // Chosen in the dialog for several files: no joint dialog.
+    } else if (bvh && !jointMap.isEmpty()) {
         auto map = analysis::io::parseJointMap(jointMap.toStdString());
         if (!map) {
             report(title, map.error());

@@ -56,6 +56,10 @@ public:
     /// dialogs the file is read and imported off the GUI thread behind a progress dialog that
     /// can cancel it; a cancelled import changes nothing.
     bool importTakeFile(const QString& file, const QString& jointMap = {});
+    /// Imports several take files: with dialogs and more than one BVH file, one dialog
+    /// (import_takes_dialog.h) chooses the joints, side and units of all of them first. Stops at
+    /// the first failure (lastError); returns how many were imported.
+    int importTakeFiles(const QStringList& files);
     /// Builds a corpus from take files (analysis/io/corpus_builder.h, as `bunraku corpus`),
     /// writes it to `folder` and opens it. With dialogs the work runs off the GUI thread behind a
     /// progress dialog that can cancel it; the notes (rates, neutral emotion) go to the status bar.
@@ -109,6 +113,9 @@ signals:
 
 private:
     void report(const QString& title, const analysis::Error& error);
+    /// importTakeFile, with the BVH options `preset` chosen in a dialog for several files (no
+    /// joint dialog then).
+    bool importTake(const QString& file, const std::optional<analysis::io::BvhImportOptions>& preset, const QString& jointMap = {});
     void addRecent(const QString& path);
     void rebuildRecentMenu();
     ProjectState captureState() const;

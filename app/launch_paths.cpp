@@ -18,7 +18,8 @@ LaunchPath classifyLaunchPath(const QString& argument)
     return {LaunchPathKind::Take, argument};
 }
 
-QString openLaunchPaths(FileController& files, const Document& document, const QStringList& arguments)
+QString openLaunchPaths(FileController& files, const Document& document, const QStringList& arguments,
+                        const std::function<void()>& beforeTakes)
 {
     std::vector<LaunchPath> sources;
     std::vector<LaunchPath> takes;
@@ -43,8 +44,10 @@ QString openLaunchPaths(FileController& files, const Document& document, const Q
             return files.lastError();
         }
     }
-    for (const LaunchPath& take : takes)
-        if (!files.importTakeFile(take.path)) return files.lastError();
+    if (beforeTakes) beforeTakes();
+    QStringList paths;
+    for (const LaunchPath& take : takes) paths << take.path;
+    if (!paths.isEmpty() && files.importTakeFiles(paths) < int(paths.size())) return files.lastError();
     return {};
 }
 

@@ -7,6 +7,8 @@
 #include <QString>
 #include <QStringList>
 
+#include <functional>
+
 namespace bunraku::app {
 
 class FileController;
@@ -28,9 +30,12 @@ struct LaunchPath {
 LaunchPath classifyLaunchPath(const QString& argument);
 
 /// Opens `arguments`: the corpus or project first (at most one), then every take file imported
-/// over it - over the demo corpus when no corpus or project is named. No arguments: the demo
-/// corpus. Stops at the first failure and returns its message (empty on success); the window
-/// then still shows a corpus (the demo corpus when nothing else opened).
-QString openLaunchPaths(FileController& files, const Document& document, const QStringList& arguments);
+/// over it - over the demo corpus when no corpus or project is named - all at once
+/// (FileController::importTakeFiles: one dialog for several BVH files). `beforeTakes` runs
+/// between the two (the workbench shows its window there, so the dialog opens over it). No
+/// arguments: the demo corpus. Stops at the first failure and returns its message (empty on
+/// success); the window then still shows a corpus (the demo corpus when nothing else opened).
+QString openLaunchPaths(FileController& files, const Document& document, const QStringList& arguments,
+                        const std::function<void()>& beforeTakes = {});
 
 } // namespace bunraku::app

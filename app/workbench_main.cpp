@@ -134,13 +134,19 @@ int runWorkbench(int argc, char** argv)
     window.exports().setDialogsEnabled(!batch);
     if (!batch && !parser.isSet(QStringLiteral("default-layout"))) window.restoreSavedLayout();
 
-    const QString error = openLaunchPaths(window.files(), window.document(), parser.positionalArguments());
+    // The corpus or project, then the window (inside the available screen area, whatever
+    // --window-size asks for), then the take files: their dialog opens over the window.
+    bool shown = false;
+    const auto show = [&] {
+        showInsideScreen(window, size);
+        shown = true;
+    };
+    const QString error = openLaunchPaths(window.files(), window.document(), parser.positionalArguments(), show);
     if (!error.isEmpty() && batch) {
         std::fprintf(stderr, "bunraku-workbench: %s\n", qPrintable(error));
         return 1;
     }
-    // Inside the available screen area, whatever --window-size asks for.
-    showInsideScreen(window, size);
+    if (!shown) show();
     if (!raiseRequestedDock(window, parser, optionError)) {
         std::fprintf(stderr, "bunraku-workbench: %s\n", qPrintable(optionError));
         return 2;

@@ -4,6 +4,7 @@
 #include "tests/app/app_test_support.h"
 
 #include "app/file_dialogs.h"
+#include "app/import_takes_dialog.h"
 #include "app/joint_map_dialog.h"
 #include "app/new_corpus_dialog.h"
 
@@ -429,6 +430,55 @@ TEST_CASE("File > Import Take of an inch-unit BVH stands at a person's height wh
     corpus.unitsBox()->setCurrentIndex(corpus.unitsBox()->findText(QStringLiteral("Inches")));
     CHECK_FALSE(corpus.buildOptions().import.bvh.guessUnits);
     CHECK(corpus.buildOptions().import.bvh.unitScale == 2.54);
+}
+
+TEST_CASE("six BVH files imported at once ask one dialog for all of them and import every one", "[app][import]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    const auto dir = test::scratchDir("app_import_six");
+    QStringList files;
+    for (const auto& path : writeFixtures(dir, {"w1.bvh", "w2.bvh", "w3.bvh", "w4.bvh", "w5.bvh", "w6.bvh"}))
+        files << QString::fromStdString(path.string());
+    const auto importedCount = [&window] {
+        return std::count_if(window->document().derivedTakes().begin(), window->document().derivedTakes().end(),
+                             [](const app::DerivedTake& take) { return take.id.startsWith(QStringLiteral("imported/")); });
+    };
+    const auto importedBefore = importedCount();
+    window->files().setDialogsEnabled(true);
+    int dialogs = 0, jointDialogs = 0, rows = 0;
+    QString heights;
+    // Every modal dialog that opens is counted; the one for all files: the left side, then OK.
+    QTimer watcher;
+    watcher.setInterval(10);
+    QObject::connect(&watcher, &QTimer::timeout, [&] {
+        QWidget* modal = QApplication::activeModalWidget();
+        if (auto* joints = qobject_cast<app::JointMapDialog*>(modal)) {
+            ++jointDialogs;
+            joints->reject();
+        } else if (auto* all = qobject_cast<app::ImportTakesDialog*>(modal)) {
+            ++dialogs;
+            rows = all->table()->rowCount();
+            heights = all->table()->item(0, 2)->text();
+            all->sideBox()->setCurrentIndex(1);
+            REQUIRE(all->problem().isEmpty());
+            QTest::mouseClick(okButton(*all), Qt::LeftButton);
+        }
+    });
+    watcher.start();
+    const int imported = window->files().importTakeFiles(files);
+    watcher.stop();
+    window->files().setDialogsEnabled(false);
+    CHECK(dialogs == 1);
+    CHECK(jointDialogs == 0);
+    CHECK(rows == 6);
+    CHECK(heights.endsWith(QStringLiteral(" m")));
+    REQUIRE(imported == 6);
+    CHECK(importedCount() == importedBefore + 6);
+    // Every take follows the left arm chosen for all of them.
+    const auto take = window->document().selectedTake(app::TakeSlot::A);
+    REQUIRE(take->skeleton);
+    CHECK(take->skeleton->skeleton->binding("arm")->joint == take->skeleton->skeleton->find("mixamorig:LeftForeArm"));
 }
 
 namespace {
