@@ -143,6 +143,7 @@ void Renderer::releaseSceneBuffers()
         for (GpuMesh& orbit : slot.orbits) orbit.release(*m_gl);
         for (GpuMesh& mesh : slot.meshes) mesh.release(*m_gl);
         if (slot.skeleton) slot.skeleton->release(*m_gl);
+        if (slot.partner) slot.partner->release(*m_gl);
     }
     m_slots.clear();
     m_grid.release(*m_gl);
@@ -180,6 +181,9 @@ analysis::Status Renderer::setScene(const SceneContent& scene, const LayoutOptio
     if (m_puppet) reusablePuppets.push_back(std::move(m_puppet));
     for (Slot& slot : m_slots)
         if (slot.puppet) reusablePuppets.push_back(std::move(slot.puppet));
+    std::vector<std::shared_ptr<PartnerFigure>> reusablePartners;
+    for (Slot& slot : m_slots)
+        if (slot.partner) reusablePartners.push_back(std::move(slot.partner));
     releaseSceneBuffers();
     m_layout = layout;
     m_body = scene.body;
@@ -258,8 +262,10 @@ analysis::Status Renderer::setScene(const SceneContent& scene, const LayoutOptio
         for (const auto& pose : analysis::worldPartPoses(slot.body, slot.binding, slot.take, 0)) partPoses.push_back(toMatrix(pose));
         extent(slotMeshes, partPoses, slot.puppetLowest, slot.puppetHighest);
         if (modelled) {
-            if (const PuppetFigure* puppet = slotPuppet(slot))
+            if (const PuppetFigure* puppet = slotPuppet(slot)) {
                 slot.partnerSkinJoint = analysis::puppetJointPoses(*puppet->mesh, slot.body, analysis::worldPartPoses(slot.body, slot.binding, slot.take, 0));
+                slot.partner = partnerFigure(*puppet, slot.partnerSkinJoint, reusablePartners);
+            }
             Bounds figure;
             addPuppetBounds(figure, slot, 0, glm::mat4(1.0f), {});
             slot.puppetLowest = figure.lower.z;
@@ -280,6 +286,8 @@ analysis::Status Renderer::setScene(const SceneContent& scene, const LayoutOptio
     for (auto& unused : reusable)
         if (unused && unused.use_count() == 1) unused->release(*m_gl);
     for (auto& unused : reusablePuppets)
+        if (unused && unused.use_count() == 1) unused->release(*m_gl);
+    for (auto& unused : reusablePartners)
         if (unused && unused.use_count() == 1) unused->release(*m_gl);
     // The floor reaches past every take's path (a walk), whichever side the camera puts a take.
     m_floorHalfExtent = m_layout.gridHalfExtent;
@@ -322,6 +330,29 @@ std::shared_ptr<Renderer::PuppetFigure> Renderer::puppetFigure(const analysis::B
         const Eigen::Vector3d local = joint_T_model[std::size_t(j)].apply(mesh.positions[v].cast<double>());
         figure->jointBounds[std::size_t(j)].add(glm::vec3(float(local.x()), float(local.y()), float(local.z())));
     }
+    reusable.push_back(figure);
+    return figure;
+}
+
+std::shared_ptr<Renderer::PartnerFigure> Renderer::partnerFigure(const PuppetFigure& puppet,
+                                                                 const std::array<analysis::RigidTransform, analysis::kPuppetJointCount>& pose,
+                                                                 std::vector<std::shared_ptr<PartnerFigure>>& reusable)
+{
+    for (const auto& figure : reusable)
+        if (figure && figure->matches(puppet.mesh.get(), pose)) return figure;
+    auto figure = std::make_shared<PartnerFigure>();
+    figure->mesh = puppet.mesh;
+    figure->joints = pose;
+    const analysis::SkinnedSurface surface = analysis::skinPuppet(*puppet.mesh, pose);
+    Mesh mesh;
+    mesh.vertices.reserve(surface.positions.size());
+    for (std::size_t v = 0; v < surface.positions.size(); ++v) {
+        const Eigen::Vector3f& p = surface.positions[v];
+        const Eigen::Vector3f& n = surface.normals[v];
+        mesh.vertices.push_back(Vertex{glm::vec3(p.x(), p.y(), p.z()), glm::vec3(n.x(), n.y(), n.z()), kPartnerColour});
+    }
+    mesh.indices = puppet.mesh->indices;
+    figure->gpu.upload(*m_gl, mesh);
     reusable.push_back(figure);
     return figure;
 }

@@ -123,10 +123,15 @@ private:
     struct Slot;
     struct SkeletonFigure;
     struct PuppetFigure;
+    struct PartnerFigure;
     /// The uploaded modelled puppet fitted like `body`: reused when the next scene's body has the
     /// same fits (a scene is replaced on every step of a drag).
     std::shared_ptr<PuppetFigure> puppetFigure(const analysis::BodyDescription& body,
                                                std::vector<std::shared_ptr<PuppetFigure>>& reusable);
+    /// The partner skinned from `puppet` in `pose`: reused when the next scene's is the same.
+    std::shared_ptr<PartnerFigure> partnerFigure(const PuppetFigure& puppet,
+                                                 const std::array<analysis::RigidTransform, analysis::kPuppetJointCount>& pose,
+                                                 std::vector<std::shared_ptr<PartnerFigure>>& reusable);
     /// The puppet's figure a slot draws (its own fitted one, or the scene's); null without the
     /// modelled puppet (a body of other parts, or meshes loaded from files).
     const PuppetFigure* slotPuppet(const Slot& slot) const;
@@ -160,9 +165,7 @@ private:
     glm::mat4 partnerTransform(const Slot& slot, const glm::mat4& root) const;
     /// Whether the partner of a take is drawn: shown, and not inside the other take's figure.
     bool partnerShown(int takeSlot, const Camera& camera) const;
-    /// The partner in one slate colour (it is not a take), posed as `slot` at frame 0.
-    void drawPartnerPuppet(const Slot& slot, const PuppetFigure& figure, const glm::mat4& world_T_model,
-                           const glm::mat4& viewProjection, const glm::vec3& eye, bool depthOnly);
+
     void setModel(const glm::mat4& model);
     void setColour(const glm::vec3& colour, bool vertexColour, bool lit);
     QOpenGLFramebufferObject& pickFramebuffer(QSize size);

@@ -145,13 +145,10 @@ void Renderer::drawFigures(const Camera& camera, const glm::mat4& viewProjection
         }
         if (pass != Pass::PartIds && partnerShown(int(s), camera)) {
             const glm::mat4 world_T_partner = partnerTransform(slot, root);
-            if (const PuppetFigure* puppet = slotPuppet(slot)) {
-                drawPartnerPuppet(slot, *puppet, world_T_partner, viewProjection, eye, pass == Pass::Shadow);
-            } else {
-                setModel(world_T_partner);
-                setColour(glm::vec3(1.0f), true, pass == Pass::Colour);
-                m_partner.draw(gl);
-            }
+            setModel(world_T_partner);
+            setColour(glm::vec3(1.0f), true, pass == Pass::Colour);
+            if (slot.partner) slot.partner->gpu.draw(gl);
+            else m_partner.draw(gl);
         }
     }
 }
@@ -275,30 +272,6 @@ void Renderer::drawPuppet(const Slot& slot, int takeSlot, const glm::mat4& root,
     gl.glUniform4fv(m_skinUniforms.jointDual, analysis::kPuppetJointCount, glm::value_ptr(q.dual[0]));
     const auto partOf = analysis::puppetJointPartIndices(slot.body);
     gl.glUniform1iv(m_skinUniforms.partOfJoint, analysis::kPuppetJointCount, partOf.data());
-    figure.gpu.draw(gl);
-    m_program->bind();
-}
-
-void Renderer::drawPartnerPuppet(const Slot& slot, const PuppetFigure& figure, const glm::mat4& world_T_model,
-                                 const glm::mat4& viewProjection, const glm::vec3& eye, bool depthOnly)
-{
-    QOpenGLExtraFunctions& gl = *m_gl;
-    m_skinProgram->bind();
-    const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(world_T_model)));
-    gl.glUniformMatrix4fv(m_skinUniforms.model, 1, GL_FALSE, glm::value_ptr(world_T_model));
-    gl.glUniformMatrix3fv(m_skinUniforms.normalMatrix, 1, GL_FALSE, glm::value_ptr(normalMatrix));
-    gl.glUniformMatrix4fv(m_skinUniforms.viewProjection, 1, GL_FALSE, glm::value_ptr(viewProjection));
-    gl.glUniform3f(m_skinUniforms.lightPosition, eye.x, eye.y, eye.z);
-    const glm::vec3 key = keyLightDirection();
-    gl.glUniform3f(m_skinUniforms.keyDirection, key.x, key.y, key.z);
-    // One colour (the partner is not a take): the puppet's shape and paint in slate.
-    gl.glUniform4f(m_skinUniforms.colour, kPartnerColour.r, kPartnerColour.g, kPartnerColour.b, 1.0f);
-    gl.glUniform1i(m_skinUniforms.useVertexColour, 0);
-    gl.glUniform1i(m_skinUniforms.lit, depthOnly ? 0 : 1);
-    gl.glUniform1i(m_skinUniforms.partIdBase, -1);
-    const JointDualQuaternions rest = jointDualQuaternions(*figure.mesh, slot.partnerSkinJoint);
-    gl.glUniform4fv(m_skinUniforms.jointReal, analysis::kPuppetJointCount, glm::value_ptr(rest.real[0]));
-    gl.glUniform4fv(m_skinUniforms.jointDual, analysis::kPuppetJointCount, glm::value_ptr(rest.dual[0]));
     figure.gpu.draw(gl);
     m_program->bind();
 }

@@ -51,6 +51,23 @@ struct Renderer::PuppetFigure {
     void release(QOpenGLExtraFunctions& gl) { gpu.release(gl); }
 };
 
+/// The partner: the take's puppet as it stands at frame 0, skinned once on the CPU (it never
+/// moves) and drawn as a plain mesh, in take coordinates.
+struct Renderer::PartnerFigure {
+    std::shared_ptr<const analysis::PuppetMesh> mesh; ///< the puppet it was skinned from
+    std::array<analysis::RigidTransform, analysis::kPuppetJointCount> joints; ///< the pose it was skinned in
+    GpuMesh gpu;
+
+    bool matches(const analysis::PuppetMesh* other, const std::array<analysis::RigidTransform, analysis::kPuppetJointCount>& pose) const
+    {
+        if (mesh.get() != other) return false;
+        for (std::size_t j = 0; j < pose.size(); ++j)
+            if (!joints[j].rotation.coeffs().isApprox(pose[j].rotation.coeffs(), 0.0) || joints[j].translation != pose[j].translation) return false;
+        return true;
+    }
+    void release(QOpenGLExtraFunctions& gl) { gpu.release(gl); }
+};
+
 struct Renderer::Slot {
     analysis::Take take;
     analysis::BodyDescription body; ///< the scene's body, or the take's own
@@ -66,6 +83,7 @@ struct Renderer::Slot {
     std::shared_ptr<PuppetFigure> puppet; ///< the take's own fitted puppet; null: the scene's
     std::array<analysis::RigidTransform, analysis::kPuppetJointCount> take_T_skinJoint; ///< at `frame`
     std::array<analysis::RigidTransform, analysis::kPuppetJointCount> partnerSkinJoint; ///< at frame 0
+    std::shared_ptr<PartnerFigure> partner; ///< null without a modelled puppet (the cone then)
     std::shared_ptr<SkeletonFigure> skeleton; ///< the performer's skeleton, when the take has one
     std::vector<glm::mat4> take_T_joint;  ///< at `frame`, one per joint
     Bounds path;             ///< take coordinates: the sensors over the take and the figure at frame 0
