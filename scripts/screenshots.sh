@@ -108,6 +108,8 @@ shot puppet-bandai.png "$bunraku" render "$bandai/wave-right-hand_active_001.bvh
 shot guide-bandai-open.png "$workbench" "$bandai/bye_angry_001.bvh" --figure both --window-size 1700x920 --screenshot @OUT@
 shot guide-bandai-skeletons.png "$bunraku" render "$bandai/bye_normal_001.bvh" --take-b "$bandai/bye_angry_001.bvh" \
   --figure skeleton --time 1.5 --size 960x540 -o @OUT@
+shot guide-bandai-bodies.png "$bunraku" render "$bandai/bye_normal_001.bvh" --take-b "$bandai/bye_angry_001.bvh" \
+  --figure body --time 1.5 --size 960x540 -o @OUT@
 shot guide-bandai-designed.png "$bunraku" render "$bandai/bye_normal_001.bvh" --take-b "$work/bye-designed.bvh" \
   --figure both --time 1.5 --size 960x540 -o @OUT@
 # The tutorial (docs/TUTORIAL.md), at 1600x900, every figure the performer's skeleton.
