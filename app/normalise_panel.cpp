@@ -95,7 +95,7 @@ NormalisePanel::NormalisePanel(Document& document, AnalysisController& analysis,
     m_table = new QTreeWidget(this);
     m_table->setObjectName("varianceTree");
     m_table->setColumnCount(4);
-    m_table->setHeaderLabels({tr("Take / DOF family / part"), tr("Before"), tr("After"), tr("Change")});
+    m_table->setHeaderLabels({tr("Take"), tr("Before"), tr("After"), tr("Change")});
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->setRootIsDecorated(true);
     m_table->setMinimumHeight(90);

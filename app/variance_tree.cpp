@@ -61,7 +61,8 @@ void fillVarianceTree(QTreeWidget* tree, const analysis::VarianceTable& table, c
 {
     tree->clear();
     tree->setColumnCount(4);
-    tree->setHeaderLabels({tr("Take / DOF family / part"), tr("Before"), tr("After"), tr("Change")});
+    tree->setHeaderLabels({tr("Take"), tr("Before"), tr("After"), tr("Change")});
+    tree->headerItem()->setToolTip(0, tr("Each take, then its DOF families (positions, rotations), then its parts"));
     const QString worseTip = tr("After normalisation this is further from the reference than before");
     std::map<std::string, QTreeWidgetItem*> takes;
     QTreeWidgetItem* family = nullptr;
@@ -97,8 +98,9 @@ void fillVarianceTree(QTreeWidget* tree, const analysis::VarianceTable& table, c
     }
     tree->setIndentation(12);
     tree->header()->setStretchLastSection(false);
-    tree->header()->setSectionResizeMode(0, QHeaderView::Stretch);
-    for (int column = 1; column < 4; ++column) tree->header()->setSectionResizeMode(column, QHeaderView::ResizeToContents);
+    // Every column as wide as its widest text: a narrow dock scrolls sideways rather than cutting
+    // a take's name ("take 11 (r...").
+    for (int column = 0; column < 4; ++column) tree->header()->setSectionResizeMode(column, QHeaderView::ResizeToContents);
 }
 
 bool isMarkedWorse(const QTreeWidgetItem* item) { return item && item->data(0, kWorseRole).toBool(); }

@@ -74,7 +74,10 @@ GraphGrid::GraphGrid(QWidget* parent) : QWidget(parent), m_plot(new QCustomPlot)
     connect(m_plot, &QCustomPlot::mouseDoubleClick, this, [this](QMouseEvent*) { resetTimeRange(); });
     // The layout is known only inside a replot: graphs that changed width are resampled there,
     // before anything is drawn.
-    connect(m_plot, &QCustomPlot::afterLayout, this, [this] { resampleCurves(true); });
+    connect(m_plot, &QCustomPlot::afterLayout, this, [this] {
+        resampleCurves(true);
+        for (auto& graph : m_graphs) placeValueText(graph);
+    });
     m_settle.setInterval(kSettleMs);
     connect(&m_settle, &ClockTimer::timeout, this, [this] {
         if (!interactionActive()) settleValueRanges();
@@ -295,6 +298,7 @@ void GraphGrid::rebuild(bool allData)
             name->setFont(tickFont);
             const QString label = QString::fromStdString(cell.part + "." + cell.dof);
             name->setText(cell.takes == GraphTakes::OnlyB ? label + " (B)" : label);
+            graph.nameText = name;
 
             m_plot->setCurrentLayer(kCursorLayer);
             graph.cursor = new QCPItemStraightLine(m_plot);
@@ -451,6 +455,22 @@ void GraphGrid::updateCursorItems()
             }
         }
         graph.valueText->setText(texts.join("  "));
+        placeValueText(graph);
+    }
+}
+
+void GraphGrid::placeValueText(Graph& graph) const
+{
+    if (!graph.valueText || !graph.nameText) return;
+    const QFontMetrics metrics(graph.valueText->font());
+    const int width = graph.rect->width(), height = graph.rect->height();
+    const int needed = metrics.horizontalAdvance(graph.nameText->text()) + metrics.horizontalAdvance(graph.valueText->text()) + 16;
+    if (needed <= width || height <= 0) {
+        graph.valueText->position->setCoords(0.99, 0.02);
+        graph.valueText->setPositionAlignment(Qt::AlignRight | Qt::AlignTop);
+    } else {
+        graph.valueText->position->setCoords(0.01, 0.02 + double(metrics.height() + 1) / double(height));
+        graph.valueText->setPositionAlignment(Qt::AlignLeft | Qt::AlignTop);
     }
 }
 
@@ -499,6 +519,15 @@ void GraphGrid::propagateTimeRange(QCPAxisRect* source)
 const GraphCell& GraphGrid::graphCell(int graph) const { return m_graphs.at(std::size_t(graph)).cell; }
 
 double GraphGrid::graphCursorTime(int graph) const { return m_graphs.at(std::size_t(graph)).cursor->point1->coords().x(); }
+
+std::pair<QRectF, QRectF> GraphGrid::graphTextBoxes(int graph) const
+{
+    const Graph& g = m_graphs.at(std::size_t(graph));
+    const auto box = [](const QCPItemText* text) {
+        return QRectF(text->topLeft->pixelPosition(), text->bottomRight->pixelPosition()).normalized();
+    };
+    return {box(g.nameText), box(g.valueText)};
+}
 
 std::optional<double> GraphGrid::graphPointValue(int graph, int slot) const
 {

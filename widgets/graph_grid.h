@@ -127,6 +127,9 @@ public:
     /// The value shown by graph `graph`'s moving point of take A (slot 0) or B (slot 1), or
     /// std::nullopt when that point is hidden (time outside the take, or no such curve).
     std::optional<double> graphPointValue(int graph, int slot) const;
+    /// The boxes (pixels) of a graph's name and of its cursor values as drawn, and whether the
+    /// values are empty.
+    std::pair<QRectF, QRectF> graphTextBoxes(int graph) const;
     /// The value axis range of graph `graph`.
     std::pair<double, double> graphValueRange(int graph) const;
     /// The pixel rectangle of graph `graph` inside this widget (for tests and screenshots).
@@ -157,6 +160,7 @@ private:
         QCPItemStraightLine* cursor = nullptr;
         QCPItemTracer* points[2] = {nullptr, nullptr};
         QCPItemText* valueText = nullptr;
+        QCPItemText* nameText = nullptr;
         SeriesEnvelope envelopes[2]; ///< the curves' data at any zoom
         SeriesEnvelope ghostEnvelopes[2];
         int sampledColumns = 0; ///< the width the curves were last sampled for
@@ -172,6 +176,9 @@ private:
     void resampleCurves(bool onlyResized);
     /// The tickers of every graph for m_thesisTicks.
     void applyTickers();
+    /// The cursor's values at the graph's top right, or under its name when both do not fit on
+    /// one line beside each other (a narrow graph: 48 at 1366 pixels).
+    void placeValueText(Graph& graph) const;
     /// Autoscales and replots if data changed while the ranges were held.
     void settleValueRanges();
     void updateCursorItems();

@@ -21,6 +21,7 @@
 #include <QLineEdit>
 #include <QRegularExpression>
 #include <QStatusBar>
+#include <QHeaderView>
 #include <QTreeWidget>
 
 #include <map>
@@ -157,6 +158,18 @@ TEST_CASE("the normalisation panel's table, legend and summary say what was comp
     // The summary names the reference and the parameters.
     CHECK(panel->summaryText().contains(QString::fromStdString(cell->referenceName).toHtmlEscaped()));
     CHECK(panel->summaryText().contains(QStringLiteral("tau 4, T_cmp 20, scales 1-16, optimal path")));
+
+    // At a laptop's size no name in the first column is cut: the column is as wide as its
+    // widest text (the tree scrolls sideways in a narrow dock), the header's too.
+    window->resize(1366, 768);
+    QCoreApplication::processEvents();
+    const QFontMetrics metrics(tree->font());
+    for (int k = 0; k < tree->topLevelItemCount(); ++k) {
+        QTreeWidgetItem* take = tree->topLevelItem(k);
+        INFO(take->text(0).toStdString());
+        CHECK(tree->columnWidth(0) >= metrics.horizontalAdvance(take->text(0)) + tree->indentation());
+    }
+    CHECK(tree->columnWidth(0) >= tree->header()->sectionSizeHint(0));
 }
 
 TEST_CASE("limits are in the tool tips and are the analysis's: 200000 typed into T_cmp becomes 16000 and the status bar says so",

@@ -329,3 +329,32 @@ TEST_CASE("an hour-long take's graphs hold a few points a pixel column, resample
     REQUIRE(grid.samplingCount() == samplings + 2);
     checkCurves(1800.0, 1810.0);
 }
+
+TEST_CASE("48 graphs at a laptop's size show every name and value without overlap", "[widgets][graph_grid]")
+{
+    widgets::GraphGrid grid;
+    grid.setTakes(test::syntheticPuppetTake(60), test::syntheticPuppetTake(60, 1.0));
+    grid.setTwoTakeMode(TwoTakeMode::SideBySide);
+    // The graphs dock at 1366 x 768 with A and B side by side.
+    for (const QSize size : {QSize(560, 560), QSize(900, 700)}) {
+        grid.resize(size);
+        grid.show();
+        REQUIRE(QTest::qWaitForWindowExposed(&grid));
+        grid.setCursorTime(3.3);
+        grid.plot()->replot();
+        QCoreApplication::processEvents();
+        REQUIRE(grid.graphCount() == 48);
+        int overlapping = 0, empty = 0;
+        for (int g = 0; g < grid.graphCount(); ++g) {
+            const auto [name, value] = grid.graphTextBoxes(g);
+            empty += value.width() < 4.0 ? 1 : 0;
+            if (name.intersects(value)) {
+                ++overlapping;
+                INFO("graph " << g << " at " << size.width() << "x" << size.height());
+                CHECK_FALSE(name.intersects(value));
+            }
+        }
+        CHECK(overlapping == 0);
+        CHECK(empty == 0);
+    }
+}
