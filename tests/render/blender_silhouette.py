@@ -10,7 +10,8 @@
 #            "renders": [{"frame": file frame, "eye": [x, y, z], "right": [...], "up": [...],
 #                         "forward": [...] (Blender's world, metres), "ortho_scale": metres,
 #                         "size": pixels (square), "png": path}],
-#            "axis_frames": [file frames at which to report each vertex group's principal axis]}
+#            "axis_frames": [file frames at which to report each vertex group's principal axis;
+#                            any: also its |cos| with its bone at rest]}
 import json
 import math
 import sys
@@ -137,6 +138,21 @@ for v in mesh.data.vertices:
     for g in v.groups:
         if g.weight > 0.0:
             members.setdefault(mesh.vertex_groups[g.group].name, []).append(v.index)
+# At rest (the undeformed mesh against the armature's rest bones, head to tail), as a user
+# inspecting the imported file would measure it.
+if job.get("axis_frames"):
+    rest = {}
+    for name, indices in members.items():
+        pts = numpy.array([tuple(mesh.matrix_world @ mesh.data.vertices[i].co) for i in indices])
+        centred = pts - pts.mean(axis=0)
+        values, vectors = numpy.linalg.eigh(centred.T @ centred)
+        bone = armature.data.bones.get(name)
+        if bone is None:
+            continue
+        along = numpy.array(armature.matrix_world @ bone.tail_local) - numpy.array(armature.matrix_world @ bone.head_local)
+        along /= numpy.linalg.norm(along)
+        rest[name] = {"vertices": len(indices), "cos": float(abs(vectors[:, -1] @ along))}
+    result["rest_axes"] = rest
 for frame in job.get("axis_frames", []):
     go_to(frame)
     points = numpy.array([tuple(p) for p in evaluated_vertices()])
