@@ -53,8 +53,9 @@ struct Box {
     }
 };
 
-/// An orthographic camera looking horizontally at the box's centre from `angleDeg` (270: the
-/// front, the puppet facing +x; 0: its left side), the box's largest extent plus a margin high.
+/// An orthographic camera looking horizontally at the box's centre from `angleDeg` (270: from +x,
+/// the front of a figure facing +x; 0: from +y, its left side), the box's largest extent plus a
+/// margin high.
 render::Camera orthographicCamera(const Box& box, float angleDeg)
 {
     render::Camera camera;
@@ -161,7 +162,8 @@ std::vector<Shot> frontAndSide(const std::vector<Eigen::Index>& frames, const st
     std::vector<Shot> shots;
     for (const Eigen::Index frame : frames) {
         const Box box = bounds(frame);
-        for (const auto& [view, angle] : {std::pair<std::string, float>{"front", 270.0f}, {"side", 0.0f}}) {
+        // Along the take's x (front to back: a demo take's puppet may be turned) and along its y.
+        for (const auto& [view, angle] : {std::pair<std::string, float>{"x", 270.0f}, {"y", 0.0f}}) {
             Shot shot;
             shot.frame = frame;
             shot.view = view;
