@@ -3,8 +3,10 @@
 /// the file's extension: .csv (the take's channels), .bvh (on the take's own skeleton when it
 /// has one, else the part layout) and .glb (glTF 2.0 binary: the skeleton with its bone
 /// capsules as a rigidly skinned mesh, or, for a take without a skeleton, the modelled puppet's
-/// joints under a root with its skinned surface, as the 3D view draws it). The geometry is the 3D view's
-/// (skeleton_geometry.h, puppet_geometry.h), hence this lives beside the renderer.
+/// joints under a root with its skinned surface, as the 3D view draws it). The geometry and the
+/// poses are the 3D view's (skeleton_geometry.h; analysis/body/puppet_model.h with
+/// puppetJointPoses; puppet_geometry.h for a body without the puppet's parts), hence this lives
+/// beside the renderer.
 
 #include "analysis/body/body_description.h"
 #include "analysis/core/result.h"
