@@ -148,6 +148,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_document(new Do
     connect(m_emotionPanel, &EmotionPanel::statusMessage, this, &MainWindow::showStatus);
     new FocusReturn(this);
     m_columns = new SideColumns(this);
+    // A wider window widens the 3D view first: it keeps at least a third of the width.
+    m_columns->setFavoured(dock(QStringLiteral("viewDock")), 1.0 / 3.0);
 
     // The default size, within the screen (a 1366 x 768 laptop gets the whole screen).
     const QSize preferred(1500, 920);
@@ -572,7 +574,10 @@ QVariantMap MainWindow::viewState() const
             {"weightEmotion", m_analysis->weightEmotion()},
             {"speed", m_timeline->speed()},
             // The docks' places and sizes (QMainWindow::saveState), so the project reopens as laid out.
-            {"windowState", QString::fromLatin1(saveState(kLayoutVersion).toBase64())}};
+            {"windowState", QString::fromLatin1(saveState(kLayoutVersion).toBase64())},
+            // The left column's width: a layout restored into a larger window gives that column
+            // the difference unless told (SideColumns keeps this width instead).
+            {"leftWidth", m_columns->leftWidth()}};
 }
 
 void MainWindow::restoreViewState(const QVariantMap& state)
@@ -585,7 +590,7 @@ void MainWindow::restoreViewState(const QVariantMap& state)
     if (state.contains("part")) m_graphs->selectPart(state["part"].toString());
     if (state.contains("dof")) m_graphs->selectDof(state["dof"].toString());
     if (state.contains("camera")) m_viewportPanel->setCameraState(state["camera"].toMap());
-    // The 3D view's figure per take: puppet, skeleton or both (the boxes' order).
+    // The 3D view's figure per take: puppet, skeleton, both or body (the boxes' order).
     if (state.contains("figureA")) m_viewportPanel->figureBox(0)->setCurrentIndex(state["figureA"].toInt());
     if (state.contains("figureB")) m_viewportPanel->figureBox(1)->setCurrentIndex(state["figureB"].toInt());
     if (state.contains("weightEmotion")) m_analysis->setWeightEmotion(state["weightEmotion"].toString());
@@ -595,7 +600,7 @@ void MainWindow::restoreViewState(const QVariantMap& state)
         // A value that is not base64 or not a state of this layout version is ignored.
         const auto decoded = QByteArray::fromBase64Encoding(state["windowState"].toString().toLatin1(),
                                                             QByteArray::AbortOnBase64DecodingErrors);
-        if (decoded && restoreState(*decoded, kLayoutVersion)) m_columns->adoptLayoutNow();
+        if (decoded && restoreState(*decoded, kLayoutVersion)) m_columns->adoptLayoutNow(state.value("leftWidth").toInt());
     }
 }
 

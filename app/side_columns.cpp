@@ -58,10 +58,13 @@ void SideColumns::reset()
     QTimer::singleShot(0, this, &SideColumns::keepLeftWidth);
 }
 
-void SideColumns::adoptLayoutNow()
+int SideColumns::maxLeftWidth(int width) { return std::max(preferredLeftWidth(width), width * 2 / 5); }
+
+void SideColumns::adoptLayoutNow(int savedWidth)
 {
     m_leftWidth = 0;
     m_adopt = true;
+    m_adoptWidth = savedWidth;
     m_windowSize = QSize();
     QTimer::singleShot(0, this, &SideColumns::keepLeftWidth);
 }
@@ -74,8 +77,10 @@ void SideColumns::keepLeftWidth()
     const auto left = docksIn(*m_window, Qt::LeftDockWidgetArea);
     if (left.empty()) return;
     if (first || m_leftWidth <= 0) {
-        m_leftWidth = m_adopt ? left.front()->width() : preferredLeftWidth(m_window->width());
+        const int adopted = m_adoptWidth > 0 ? m_adoptWidth : left.front()->width();
+        m_leftWidth = m_adopt ? std::min(adopted, maxLeftWidth(m_window->width())) : preferredLeftWidth(m_window->width());
         m_adopt = false;
+        m_adoptWidth = 0;
     }
     // The right area's columns (docks side by side; stacked or tabbed docks share a column)
     // share the rest of the window in proportion to their widths. Every dock gets a width and
@@ -86,14 +91,38 @@ void SideColumns::keepLeftWidth()
     const int available = m_window->width() - m_leftWidth - separator * int(columns.size());
     int total = 0;
     for (const auto& [x, column] : columns) total += std::max(1, column.front()->width());
+    std::vector<int> columnWidths;
+    for (const auto& [x, column] : columns)
+        columnWidths.push_back(total > 0 ? int(std::lround(double(available) * std::max(1, column.front()->width()) / total)) : 0);
+    // The favoured column (the 3D view) gets at least its share of the window, from the other
+    // right columns' width above their minimum.
+    std::size_t index = 0;
+    for (const auto& [x, column] : columns) {
+        if (m_favoured && std::find(column.begin(), column.end(), m_favoured.data()) != column.end()) {
+            int deficit = int(std::lround(m_favouredFraction * m_window->width())) - columnWidths[index];
+            std::size_t other = 0;
+            for (const auto& [ox, otherColumn] : columns) {
+                if (other != index && deficit > 0) {
+                    const int spare = columnWidths[other] - std::max(otherColumn.front()->minimumSizeHint().width(), 1);
+                    const int taken = std::clamp(spare, 0, deficit);
+                    columnWidths[other] -= taken;
+                    columnWidths[index] += taken;
+                    deficit -= taken;
+                }
+                ++other;
+            }
+        }
+        ++index;
+    }
     QList<QDockWidget*> docks(left.begin(), left.end());
     QList<int> widths(docks.size(), m_leftWidth);
+    index = 0;
     for (const auto& [x, column] : columns) {
-        const int width = total > 0 ? int(std::lround(double(available) * std::max(1, column.front()->width()) / total)) : 0;
         for (QDockWidget* dock : column) {
             docks << dock;
-            widths << std::max(1, width);
+            widths << std::max(1, columnWidths[index]);
         }
+        ++index;
     }
     m_window->resizeDocks(docks, widths, Qt::Horizontal);
 }

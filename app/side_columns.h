@@ -9,6 +9,7 @@
 #include <QPointer>
 #include <QSize>
 
+class QDockWidget;
 class QMainWindow;
 
 namespace bunraku::app {
@@ -27,8 +28,21 @@ public:
     void reset();
     /// Keeps the width a restored layout gives the column (the layout saved at the last quit).
     void adoptRestoredLayout() { m_adopt = true; }
-    /// Keeps the width a layout restored now gives the column (a project's), once laid out.
-    void adoptLayoutNow();
+    /// Keeps the width a layout restored now gives the column (a project's), once laid out:
+    /// `savedWidth` when the project says what it was (a layout restored into a window of
+    /// another size gives the left column the difference), else what the layout gives it. Either
+    /// is kept within maxLeftWidth.
+    void adoptLayoutNow(int savedWidth = 0);
+    /// The widest the left column is adopted in a window `width` pixels wide: 40 % of it, at
+    /// least the preferred width (a wider column was the layout of a smaller window stretched).
+    static int maxLeftWidth(int width);
+    /// The dock whose column gets at least `fraction` of the window's width whenever the other
+    /// right columns can give it (the 3D view: a larger window widens the view first).
+    void setFavoured(QDockWidget* dock, double fraction)
+    {
+        m_favoured = dock;
+        m_favouredFraction = fraction;
+    }
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
@@ -40,6 +54,9 @@ private:
     QSize m_windowSize; ///< the window's size when the left width was last kept
     int m_leftWidth = 0;
     bool m_adopt = false; ///< the first width kept is the one laid out (a restored layout)
+    int m_adoptWidth = 0; ///< or this width, when a project said it
+    QPointer<QDockWidget> m_favoured;
+    double m_favouredFraction = 0.0;
 };
 
 } // namespace bunraku::app

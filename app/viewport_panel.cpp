@@ -43,41 +43,53 @@ ViewportPanel::ViewportPanel(Document& document, AnalysisController& analysis, Q
     m_axis = new QCheckBox(tr("Axis"), this);
     m_orbits = new QCheckBox(tr("Orbits"), this);
     m_grid = new QCheckBox(tr("Grid"), this);
+    m_shadows = new QCheckBox(tr("Shadows"), this);
     m_partner = new QCheckBox(tr("Partner"), this);
+    m_follow = new QCheckBox(tr("Follow"), this);
+    m_follow->setObjectName("followFigures");
+    m_follow->setToolTip(tr("Carry the camera along the floor with the figures as the take plays (a walking take "
+                            "stays in frame); orbit and zoom still work around them"));
+    connect(m_follow, &QCheckBox::toggled, m_viewport, &widgets::ViewportWidget::setFollow);
     const auto visibility = m_viewport->visibility();
     m_puppet->setChecked(visibility.puppet);
     m_axis->setChecked(visibility.axis);
     m_orbits->setChecked(false);
     m_grid->setChecked(visibility.grid);
+    m_shadows->setChecked(visibility.shadows);
     m_partner->setChecked(visibility.partner);
     m_puppet->setObjectName("showPuppet");
     m_axis->setObjectName("showAxis");
     m_orbits->setObjectName("showOrbits");
     m_grid->setObjectName("showGrid");
+    m_shadows->setObjectName("showShadows");
     m_partner->setObjectName("showPartner");
     m_puppet->setToolTip(tr("The puppet posed by take A (and B beside it)"));
     m_axis->setToolTip(tr("The motion axis (thesis 5.2.1): red front, green side, blue up, at the centre of mass"));
     m_orbits->setToolTip(tr("The paths of the head, shoulder, arm and hand sensors over the whole take, drawn over the "
                             "puppet, with a ball where each sensor is now"));
-    m_grid->setToolTip(tr("The floor: a 20 cm grid under the lowest point of the figures"));
-    m_partner->setToolTip(tr("Where the partner stands (the person greeted or served): a grey cone on a disc on the floor, "
-                             "110 cm in front of the puppet"));
+    m_grid->setToolTip(tr("The floor: a 20 cm grid under the lowest point of the figures, fading out at 2 m"));
+    m_shadows->setToolTip(tr("The figures' soft shadows on the floor, cast by the key light above them, in front and "
+                             "to their left"));
+    m_partner->setToolTip(tr("The partner (the person greeted or served): a slate figure of the take's puppet as it "
+                             "stands at the first frame, 110 cm in front of it and facing it"));
     // The controls flow onto more rows in a narrow dock: every one stays reachable, and the
     // dock does not widen (a tool bar's extension menu cannot show check and combo boxes).
     auto* toggles = new QWidget(this);
     toggles->setObjectName("viewToolBar");
     auto* flow = new widgets::FlowLayout(toggles);
     flow->setContentsMargins(4, 2, 4, 2);
-    for (auto* box : {m_puppet, m_axis, m_orbits, m_grid, m_partner}) {
+    for (auto* box : {m_puppet, m_axis, m_orbits, m_grid, m_shadows, m_partner}) {
         flow->addWidget(box);
         connect(box, &QCheckBox::toggled, this, &ViewportPanel::applyVisibility);
     }
+    flow->addWidget(m_follow);
     for (int slot = 0; slot < 2; ++slot) {
         auto* box = new QComboBox(this);
         box->setObjectName(slot == 0 ? "figureA" : "figureB");
         box->addItem(tr("Puppet"), int(render::FigureStyle::Puppet));
         box->addItem(tr("Skeleton"), int(render::FigureStyle::Skeleton));
         box->addItem(tr("Both"), int(render::FigureStyle::PuppetAndSkeleton));
+        box->addItem(tr("Body"), int(render::FigureStyle::Body));
         box->setToolTip(slot == 0 ? tr("Figure of take A: the puppet, the performer's skeleton (takes read from BVH), or both")
                                   : tr("Figure of take B: the puppet, the performer's skeleton (takes read from BVH), or both"));
         connect(box, &QComboBox::currentIndexChanged, this, &ViewportPanel::applyVisibility);
@@ -176,6 +188,7 @@ void ViewportPanel::applyVisibility()
     visibility.axis = m_axis->isChecked();
     visibility.orbits = m_orbits->isChecked();
     visibility.grid = m_grid->isChecked();
+    visibility.shadows = m_shadows->isChecked();
     visibility.partner = m_partner->isChecked();
     visibility.orbitVisibility = render::OrbitVisibility::Always; // the box shows them, puppet or not
     const auto shown = shownTakes(m_document);

@@ -88,7 +88,9 @@ private:
     QCheckBox* m_axis = nullptr;
     QCheckBox* m_orbits = nullptr;
     QCheckBox* m_grid = nullptr;
+    QCheckBox* m_shadows = nullptr;
     QCheckBox* m_partner = nullptr;
+    QCheckBox* m_follow = nullptr;
     QAction* m_frameAll = nullptr;
     QAction* m_frameSelected = nullptr;
     QAction* m_resetCamera = nullptr;

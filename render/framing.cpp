@@ -71,6 +71,15 @@ Camera resetCamera(const Bounds& bounds, QSize size)
     return framedCamera(camera, bounds, size, 0.05f);
 }
 
+Camera followingCamera(const Camera& camera, const Bounds& figures)
+{
+    if (figures.empty()) return camera;
+    Camera moved = camera;
+    moved.target.x = figures.centre().x;
+    moved.target.y = figures.centre().y;
+    return moved;
+}
+
 bool boundsDiffer(const Bounds& a, const Bounds& b, float ratio)
 {
     if (a.empty() || b.empty()) return a.empty() != b.empty();

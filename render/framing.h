@@ -60,6 +60,12 @@ Camera framedCamera(const Camera& view, const Bounds& bounds, QSize size, float 
 /// field of view 35 deg, framing `bounds` in a view of `size`.
 Camera resetCamera(const Bounds& bounds, QSize size);
 
+/// Follow (the 3D view's Follow, `bunraku render --follow`): the camera carried along the floor
+/// so that it looks at the middle of `figures` (the figures' box at the frame shown) - target x
+/// and y from the box; its height, angle, elevation, distance and field of view kept, so a walk
+/// stays in frame at the size it was framed. An empty box returns `camera` unchanged.
+Camera followingCamera(const Camera& camera, const Bounds& figures);
+
 /// True when two boxes differ enough that a camera framed for one does not suit the other: the
 /// longest side changed by more than `ratio` (either way), or the centre moved by more than
 /// (ratio - 1) times the larger longest side. A take of another performer's size or one that

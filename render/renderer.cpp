@@ -1,10 +1,10 @@
-#include "render/renderer.h"
+#include "render/renderer_internal.h"
 
-#include "analysis/core/puppet_layout.h"
 #include "render/orbit_geometry.h"
 #include "render/puppet_geometry.h"
 #include "render/skeleton_geometry.h"
 
+#include <QFile>
 #include <QOpenGLContext>
 #include <QOpenGLFramebufferObject>
 #include <QOpenGLShaderProgram>
@@ -19,19 +19,6 @@ namespace bunraku::render {
 
 namespace {
 
-constexpr int kIdsPerSlot = 32; // part IDs: 1 + partIndex + 32 * slot, in the red channel
-constexpr int kSkeletonId = kIdsPerSlot - 1; // partIndex 31 (no body part has it): a bone
-/// Height (cm) a puppet is framed for (framingCamera's distances were chosen for it).
-constexpr float kPuppetFramedHeight = 90.0f;
-const glm::vec3 kBackground(0.94f, 0.95f, 0.97f);
-const glm::vec3 kPartnerColour(0.42f, 0.48f, 0.58f);
-
-glm::vec3 sensorPosition(const analysis::Take& take, Eigen::Index frame, Eigen::Index firstChannel)
-{
-    return {float(take.values(frame, firstChannel)), float(take.values(frame, firstChannel + 1)),
-            float(take.values(frame, firstChannel + 2))};
-}
-
 Mesh partnerMesh()
 {
     // Where the partner stands: a disc on the floor and a slim cone, small beside the puppet.
@@ -41,53 +28,17 @@ Mesh partnerMesh()
     return mesh;
 }
 
+Mesh floorMesh(float halfExtent)
+{
+    Mesh mesh;
+    const glm::vec3 up(0.0f, 0.0f, 1.0f);
+    for (const glm::vec2 corner : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, 1)})
+        mesh.vertices.push_back(Vertex{glm::vec3(corner * halfExtent, 0.0f), up, kFloorColour});
+    mesh.indices = {0, 1, 2, 0, 2, 3};
+    return mesh;
+}
+
 } // namespace
-
-/// The modelled puppet of one body on the GPU (render/skinned_puppet.h).
-struct Renderer::PuppetFigure {
-    std::vector<Eigen::Matrix4d> fits; ///< the body's part fits it was made for
-    std::shared_ptr<const analysis::PuppetMesh> mesh;
-    SkinnedPuppetGpu gpu;
-    /// Per joint the box of the vertices it moves most, in the joint's frame.
-    std::array<Bounds, analysis::kPuppetJointCount> jointBounds;
-
-    void release(QOpenGLExtraFunctions& gl) { gpu.release(gl); }
-};
-
-struct Renderer::Slot {
-    analysis::Take take;
-    analysis::BodyDescription body; ///< the scene's body, or the take's own
-    std::vector<GpuMesh> meshes;    ///< the take's own body's meshes; empty: the scene's
-    analysis::BodyBinding binding;
-    std::vector<analysis::RigidTransform> world_T_axis;
-    glm::vec3 centre{0.0f};
-    std::vector<Eigen::Index> sensorFirstChannel; ///< one per 6-DOF part of the take
-    std::vector<GpuMesh> orbits;                  ///< one tube per sensor, take coordinates
-    float orbitRadius = 0.4f;                     ///< cm, the tubes' (orbitTubeRadius)
-    Eigen::Index frame = 0;
-    std::vector<glm::mat4> take_T_part; ///< at `frame`, one per body part
-    std::shared_ptr<PuppetFigure> puppet; ///< the take's own fitted puppet; null: the scene's
-    std::array<analysis::RigidTransform, analysis::kPuppetJointCount> take_T_skinJoint; ///< at `frame`
-    std::shared_ptr<SkeletonFigure> skeleton; ///< the performer's skeleton, when the take has one
-    std::vector<glm::mat4> take_T_joint;  ///< at `frame`, one per joint
-    float puppetLowest = 0.0f, puppetHighest = 0.0f;     ///< cm, at frame 0
-    float skeletonLowest = 0.0f, skeletonHighest = 0.0f; ///< cm, at frame 0
-};
-
-struct Renderer::SkeletonFigure {
-    std::shared_ptr<const analysis::Skeleton> skeleton;
-    std::vector<Eigen::Vector3d> bones; ///< the static translations the meshes were built for
-    std::vector<int> movingJoints;
-    std::vector<GpuMesh> meshes;        ///< one per Skeleton::joints, in the joint frame
-    std::vector<std::string> jointNames;
-    std::vector<std::string> jointParts; ///< the puppet part each joint carries, or ""
-    float jointRadius = 0.0f;
-
-    void release(QOpenGLExtraFunctions& gl)
-    {
-        for (GpuMesh& mesh : meshes) mesh.release(gl);
-    }
-};
 
 Renderer::Renderer() = default;
 
@@ -119,6 +70,16 @@ analysis::Status Renderer::initialize()
     m_uniforms.lit = program->uniformLocation("u_lit");
     m_uniforms.lightPosition = program->uniformLocation("u_lightPosition");
     m_uniforms.partIdBase = program->uniformLocation("u_partIdBase");
+    m_uniforms.keyDirection = program->uniformLocation("u_keyDirection");
+    m_uniforms.floor = program->uniformLocation("u_floor");
+    m_uniforms.floorRadius = program->uniformLocation("u_floorRadius");
+    m_uniforms.background = program->uniformLocation("u_background");
+    m_uniforms.shadows = program->uniformLocation("u_shadows");
+    m_uniforms.shadowMap = program->uniformLocation("u_shadowMap");
+    m_uniforms.lightViewProjection = program->uniformLocation("u_lightViewProjection");
+    m_uniforms.shadowDepth = program->uniformLocation("u_shadowDepth");
+    m_uniforms.shadowUvPerCm = program->uniformLocation("u_shadowUvPerCm");
+    m_uniforms.shadowCmPerDepth = program->uniformLocation("u_shadowCmPerDepth");
     auto skin = std::make_unique<QOpenGLShaderProgram>();
     if (!skin->addShaderFromSourceFile(QOpenGLShader::Vertex, QStringLiteral(":/shaders/skinned.vert")) ||
         !skin->addShaderFromSourceFile(QOpenGLShader::Fragment, QStringLiteral(":/shaders/scene.frag")) || !skin->link())
@@ -131,17 +92,43 @@ analysis::Status Renderer::initialize()
     m_skinUniforms.lit = skin->uniformLocation("u_lit");
     m_skinUniforms.lightPosition = skin->uniformLocation("u_lightPosition");
     m_skinUniforms.partIdBase = skin->uniformLocation("u_partIdBase");
+    m_skinUniforms.keyDirection = skin->uniformLocation("u_keyDirection");
     m_skinUniforms.jointReal = skin->uniformLocation("u_jointReal");
     m_skinUniforms.jointDual = skin->uniformLocation("u_jointDual");
     m_skinUniforms.partOfJoint = skin->uniformLocation("u_partOfJoint");
+    // The performer's body: skinned.vert again, for the skeleton's joints.
+    QFile skinnedSource(QStringLiteral(":/shaders/skinned.vert"));
+    if (!skinnedSource.open(QIODevice::ReadOnly)) return analysis::makeError(ErrorCode::Unsupported, "shader :/shaders/skinned.vert not found");
+    QByteArray bodySource = skinnedSource.readAll();
+    const qsizetype versionEnd = bodySource.indexOf('\n') + 1;
+    bodySource.insert(versionEnd, "#define BODY_JOINTS " + QByteArray::number(analysis::kMaxBodyJoints) + "\n");
+    auto body = std::make_unique<QOpenGLShaderProgram>();
+    if (!body->addShaderFromSourceCode(QOpenGLShader::Vertex, bodySource) ||
+        !body->addShaderFromSourceFile(QOpenGLShader::Fragment, QStringLiteral(":/shaders/scene.frag")) || !body->link())
+        return analysis::makeError(ErrorCode::Unsupported, "shader build failed: " + body->log().toStdString());
+    for (const char* name : {"u_model", "u_viewProjection", "u_normalMatrix", "u_colour", "u_useVertexColour", "u_lit", "u_lightPosition",
+                             "u_partIdBase", "u_boneIds", "u_keyDirection", "u_jointReal", "u_jointDual"})
+        m_bodyUniforms[name] = body->uniformLocation(name);
     m_program = std::move(program);
     m_skinProgram = std::move(skin);
+    m_bodyProgram = std::move(body);
     m_context = context;
     m_gl = context->extraFunctions();
 
     m_box.upload(*m_gl, boxMesh(glm::vec3(1.0f)));
     m_sphere.upload(*m_gl, ellipsoidMesh(glm::vec3(1.0f), 16, 10));
     m_partner.upload(*m_gl, partnerMesh());
+    // The shadow map's sampler reads texture unit 1 in both programs (unit 0 stays free).
+    m_program->bind();
+    m_gl->glUniform1i(m_uniforms.shadowMap, 1);
+    m_gl->glUniform1i(m_uniforms.shadowDepth, 2);
+    m_program->release();
+    for (QOpenGLShaderProgram* skinned : {m_skinProgram.get(), m_bodyProgram.get()}) {
+        skinned->bind();
+        m_gl->glUniform1i(skinned->uniformLocation("u_shadowMap"), 1);
+        m_gl->glUniform1i(skinned->uniformLocation("u_shadowDepth"), 2);
+        skinned->release();
+    }
     return analysis::okStatus();
 }
 
@@ -159,6 +146,7 @@ void Renderer::releaseSceneBuffers()
     }
     m_slots.clear();
     m_grid.release(*m_gl);
+    m_floor.release(*m_gl);
 }
 
 void Renderer::release()
@@ -168,9 +156,12 @@ void Renderer::release()
     m_box.release(*m_gl);
     m_sphere.release(*m_gl);
     m_partner.release(*m_gl);
+    m_shadowMap.release(*m_gl);
+    m_shadowKey.clear();
     m_pickFramebuffer.reset();
     m_program.reset();
     m_skinProgram.reset();
+    m_bodyProgram.reset();
     m_gl = nullptr;
     m_context = nullptr;
 }
@@ -180,6 +171,8 @@ analysis::Status Renderer::setScene(const SceneContent& scene, const LayoutOptio
     if (m_gl == nullptr)
         return analysis::makeError(analysis::ErrorCode::InvalidArgument, "the renderer is not initialised");
     if (auto status = validateScene(scene); !status.ok()) return status;
+    ++m_sceneGeneration;
+    m_shadowKey.clear();
     std::vector<std::shared_ptr<SkeletonFigure>> reusable;
     for (Slot& slot : m_slots)
         if (slot.skeleton) reusable.push_back(std::move(slot.skeleton));
@@ -239,6 +232,11 @@ analysis::Status Renderer::setScene(const SceneContent& scene, const LayoutOptio
             for (const glm::vec3& corner : {m_partBounds[p].lower, m_partBounds[p].upper})
                 if (!m_partBounds[p].empty()) pathBounds.add(glm::vec3(toMatrix(firstPoses[p]) * glm::vec4(corner, 1.0f)));
         slot.orbitRadius = orbitTubeRadius(pathBounds.extent());
+        // The partner stands partnerDistance ahead (+x) of the take's centre, or beyond the
+        // take's furthest reach ahead when the take travels there (a walk towards +x).
+        slot.partnerSpot = slot.centre + glm::vec3(m_layout.partnerDistance, 0.0f, 0.0f);
+        if (!pathBounds.empty()) slot.partnerSpot.x = std::max(slot.partnerSpot.x, pathBounds.upper.x + kPartnerClearance);
+        slot.path = pathBounds;
         for (std::size_t k = 0; k < sensors.size(); ++k) {
             GpuMesh orbit;
             orbit.upload(*m_gl, orbitTubeMesh(paths[k], slot.orbitRadius, orbitColour(int(s), int(k))));
@@ -260,6 +258,8 @@ analysis::Status Renderer::setScene(const SceneContent& scene, const LayoutOptio
         for (const auto& pose : analysis::worldPartPoses(slot.body, slot.binding, slot.take, 0)) partPoses.push_back(toMatrix(pose));
         extent(slotMeshes, partPoses, slot.puppetLowest, slot.puppetHighest);
         if (modelled) {
+            if (const PuppetFigure* puppet = slotPuppet(slot))
+                slot.partnerSkinJoint = analysis::puppetJointPoses(*puppet->mesh, slot.body, analysis::worldPartPoses(slot.body, slot.binding, slot.take, 0));
             Bounds figure;
             addPuppetBounds(figure, slot, 0, glm::mat4(1.0f), {});
             slot.puppetLowest = figure.lower.z;
@@ -281,7 +281,21 @@ analysis::Status Renderer::setScene(const SceneContent& scene, const LayoutOptio
         if (unused && unused.use_count() == 1) unused->release(*m_gl);
     for (auto& unused : reusablePuppets)
         if (unused && unused.use_count() == 1) unused->release(*m_gl);
-    m_grid.upload(*m_gl, gridMesh(m_layout.gridHalfExtent, m_layout.gridSpacing));
+    // The floor reaches past every take's path (a walk), whichever side the camera puts a take.
+    m_floorHalfExtent = m_layout.gridHalfExtent;
+    for (const Slot& slot : m_slots) {
+        if (slot.path.empty()) continue;
+        const glm::vec3 origin = m_layout.centreTakes ? slot.centre : glm::vec3(0.0f);
+        const float reach = std::max({std::abs(slot.path.lower.x - origin.x), std::abs(slot.path.upper.x - origin.x),
+                                      std::abs(slot.path.lower.y - origin.y), std::abs(slot.path.upper.y - origin.y),
+                                      std::abs(slot.partnerSpot.x - origin.x)});
+        const float separation = m_slots.size() > 1 ? 0.5f * m_layout.separation * framedHeight() / kPuppetFramedHeight : 0.0f;
+        // The floor fades from 55 % of its half extent: the path stays on the unfaded part.
+        m_floorHalfExtent = std::max(m_floorHalfExtent, (reach + separation + 40.0f) / 0.55f);
+    }
+    m_floorHalfExtent = std::min(std::ceil(m_floorHalfExtent / m_layout.gridSpacing) * m_layout.gridSpacing, kMaxFloorHalfExtent);
+    m_grid.upload(*m_gl, gridMesh(m_floorHalfExtent, m_layout.gridSpacing));
+    m_floor.upload(*m_gl, floorMesh(m_floorHalfExtent));
     setFrame(0);
     return analysis::okStatus();
 }
@@ -310,30 +324,6 @@ std::shared_ptr<Renderer::PuppetFigure> Renderer::puppetFigure(const analysis::B
     }
     reusable.push_back(figure);
     return figure;
-}
-
-const Renderer::PuppetFigure* Renderer::slotPuppet(const Slot& slot) const
-{
-    return slot.puppet ? slot.puppet.get() : m_puppet.get();
-}
-
-void Renderer::addPuppetBounds(Bounds& bounds, const Slot& slot, Eigen::Index frame, const glm::mat4& root,
-                               const std::function<bool(const std::string&, const std::string&)>& wanted) const
-{
-    const PuppetFigure* figure = slotPuppet(slot);
-    if (!figure) return;
-    const auto joints = analysis::puppetJointPoses(*figure->mesh, slot.body, analysis::worldPartPoses(slot.body, slot.binding, slot.take, frame));
-    const auto partOf = analysis::puppetJointPartIndices(slot.body);
-    for (int j = 0; j < analysis::kPuppetJointCount; ++j) {
-        const Bounds& box = figure->jointBounds[std::size_t(j)];
-        const int p = partOf[std::size_t(j)];
-        if (box.empty() || p < 0) continue;
-        if (wanted && !wanted(slot.body.parts[std::size_t(p)].name, slot.body.parts[std::size_t(p)].drivenBy)) continue;
-        const glm::mat4 world_T_joint = root * toMatrix(joints[std::size_t(j)]);
-        for (int corner = 0; corner < 8; ++corner)
-            bounds.add(glm::vec3(world_T_joint * glm::vec4((corner & 1) ? box.upper.x : box.lower.x, (corner & 2) ? box.upper.y : box.lower.y,
-                                                           (corner & 4) ? box.upper.z : box.lower.z, 1.0f)));
-    }
 }
 
 std::shared_ptr<Renderer::SkeletonFigure> Renderer::skeletonFigure(const analysis::SkeletalMotion& motion,
@@ -390,385 +380,5 @@ bool Renderer::hasScene() const { return !m_slots.empty(); }
 int Renderer::takeCount() const { return int(m_slots.size()); }
 
 Eigen::Index Renderer::frame(int takeSlot) const { return m_slots.at(std::size_t(takeSlot)).frame; }
-
-glm::mat4 Renderer::takeRoot(int takeSlot, const Camera& camera) const
-{
-    const Slot& slot = m_slots.at(std::size_t(takeSlot));
-    LayoutOptions layout = m_layout;
-    layout.separation *= framedHeight() / kPuppetFramedHeight;
-    return slotRoot(slot.centre, takeSlot, int(m_slots.size()), camera, layout);
-}
-
-std::vector<glm::mat4> Renderer::displayedPartTransforms(int takeSlot, const Camera& camera) const
-{
-    const glm::mat4 root = takeRoot(takeSlot, camera);
-    std::vector<glm::mat4> result;
-    for (const glm::mat4& take_T_part : m_slots.at(std::size_t(takeSlot)).take_T_part) result.push_back(root * take_T_part);
-    return result;
-}
-
-std::optional<glm::mat4> Renderer::displayedAxisTransform(int takeSlot, const Camera& camera) const
-{
-    const Slot& slot = m_slots.at(std::size_t(takeSlot));
-    if (slot.world_T_axis.empty()) return std::nullopt;
-    return takeRoot(takeSlot, camera) * toMatrix(slot.world_T_axis[std::size_t(slot.frame)]);
-}
-
-std::vector<glm::vec3> Renderer::displayedSensorPositions(int takeSlot, Eigen::Index frame, const Camera& camera) const
-{
-    const Slot& slot = m_slots.at(std::size_t(takeSlot));
-    const glm::mat4 root = takeRoot(takeSlot, camera);
-    const Eigen::Index f = std::clamp<Eigen::Index>(frame, 0, slot.take.frameCount() - 1);
-    std::vector<glm::vec3> result;
-    for (const Eigen::Index first : slot.sensorFirstChannel)
-        result.push_back(glm::vec3(root * glm::vec4(sensorPosition(slot.take, f, first), 1.0f)));
-    return result;
-}
-
-std::vector<glm::mat4> Renderer::displayedJointTransforms(int takeSlot, const Camera& camera) const
-{
-    const glm::mat4 root = takeRoot(takeSlot, camera);
-    std::vector<glm::mat4> result;
-    for (const glm::mat4& take_T_joint : m_slots.at(std::size_t(takeSlot)).take_T_joint) result.push_back(root * take_T_joint);
-    return result;
-}
-
-bool Renderer::skeletonDrawn(int takeSlot) const
-{
-    const Slot& slot = m_slots.at(std::size_t(takeSlot));
-    return m_visibility.puppet && slot.take.skeleton && m_visibility.figures[std::size_t(takeSlot)] != FigureStyle::Puppet;
-}
-
-bool Renderer::puppetDrawn(int takeSlot) const
-{
-    return m_visibility.puppet && (!skeletonDrawn(takeSlot) || m_visibility.figures[std::size_t(takeSlot)] == FigureStyle::PuppetAndSkeleton);
-}
-
-float Renderer::floorHeight() const
-{
-    float lowest = std::numeric_limits<float>::max();
-    for (std::size_t s = 0; s < m_slots.size(); ++s) {
-        const bool skeleton = skeletonDrawn(int(s));
-        if (!skeleton || puppetDrawn(int(s))) lowest = std::min(lowest, m_slots[s].puppetLowest);
-        if (skeleton) lowest = std::min(lowest, m_slots[s].skeletonLowest);
-    }
-    return lowest == std::numeric_limits<float>::max() ? 0.0f : lowest - 1.0f;
-}
-
-float Renderer::framedHeight() const
-{
-    // A drawn skeleton, or a puppet fitted to a taller performer, is framed by its height (the
-    // shipped puppet by the height the distances were chosen for); two such takes side by side
-    // then stand as far apart as they are tall, so a raised arm does not reach into the other.
-    const float floor = floorHeight();
-    float height = kPuppetFramedHeight;
-    for (std::size_t s = 0; s < m_slots.size(); ++s) {
-        if (skeletonDrawn(int(s))) height = std::max(height, m_slots[s].skeletonHighest - floor);
-        if (puppetDrawn(int(s))) height = std::max(height, m_slots[s].puppetHighest - floor);
-    }
-    return height;
-}
-
-Camera Renderer::framingCamera() const
-{
-    Camera camera;
-    camera.angleDeg = 340.0f;
-    camera.elevationDeg = 15.0f;
-    const float floor = floorHeight();
-    const float height = framedHeight();
-    camera.target = {0.0f, 0.0f, floor + 0.5f * height};
-    camera.distance = (m_slots.size() > 1 ? 300.0f : 230.0f) * height / kPuppetFramedHeight;
-    return camera;
-}
-
-Bounds Renderer::displayedBounds(const Camera& camera, const BoundsQuery& query) const
-{
-    const Eigen::Index sampled = std::max(1, query.sampledFrames);
-    Bounds bounds;
-    for (std::size_t s = 0; s < m_slots.size(); ++s) {
-        if (query.takeSlot >= 0 && query.takeSlot != int(s)) continue;
-        const Slot& slot = m_slots[s];
-        const glm::mat4 root = takeRoot(int(s), camera);
-        std::vector<Eigen::Index> frames{slot.frame};
-        if (query.span == FramingSpan::WholeTake) {
-            frames.clear();
-            const Eigen::Index count = slot.take.frameCount();
-            const Eigen::Index step = std::max<Eigen::Index>(1, count / sampled);
-            for (Eigen::Index f = 0; f < count; f += step) frames.push_back(f);
-            frames.push_back(count - 1);
-        }
-        const auto wanted = [&](const std::string& name, const std::string& drivenBy) {
-            return query.part.empty() || name == query.part || drivenBy == query.part;
-        };
-        if (puppetDrawn(int(s)) && slotPuppet(slot)) {
-            for (const Eigen::Index f : frames) addPuppetBounds(bounds, slot, f, root, wanted);
-        } else if (puppetDrawn(int(s))) {
-            for (const Eigen::Index f : frames) {
-                const auto poses = analysis::worldPartPoses(m_body, slot.binding, slot.take, f);
-                for (std::size_t p = 0; p < poses.size() && p < m_partBounds.size(); ++p) {
-                    if (!wanted(m_body.parts[p].name, m_body.parts[p].drivenBy) || m_partBounds[p].empty()) continue;
-                    const glm::mat4 world_T_part = root * toMatrix(poses[p]);
-                    const Bounds& box = m_partBounds[p];
-                    for (int corner = 0; corner < 8; ++corner)
-                        bounds.add(glm::vec3(world_T_part * glm::vec4((corner & 1) ? box.upper.x : box.lower.x,
-                                                                      (corner & 2) ? box.upper.y : box.lower.y,
-                                                                      (corner & 4) ? box.upper.z : box.lower.z, 1.0f)));
-                }
-            }
-        }
-        // The skeleton: every joint (a sphere of the joint radius; the bones run between them).
-        if (skeletonDrawn(int(s)) && slot.skeleton) {
-            const float radius = slot.skeleton->jointRadius;
-            for (const Eigen::Index f : frames) {
-                const auto poses = slot.take.skeleton->worldPoses(f);
-                for (std::size_t j = 0; j < poses.size(); ++j) {
-                    const std::string& part = j < slot.skeleton->jointParts.size() ? slot.skeleton->jointParts[j] : std::string();
-                    const std::string& name = j < slot.skeleton->jointNames.size() ? slot.skeleton->jointNames[j] : std::string();
-                    if (!wanted(name, part)) continue;
-                    const glm::vec3 joint(root * glm::vec4(float(poses[j].translation.x()), float(poses[j].translation.y()),
-                                                           float(poses[j].translation.z()), 1.0f));
-                    bounds.add(joint - glm::vec3(radius));
-                    bounds.add(joint + glm::vec3(radius));
-                }
-            }
-        }
-        // The orbits, or the sensors standing for a hidden puppet.
-        if (m_visibility.orbitsDrawn() || !m_visibility.puppet) {
-            for (const Eigen::Index first : slot.sensorFirstChannel) {
-                if (!wanted(slot.take.channels[std::size_t(first)].part, {})) continue;
-                for (const Eigen::Index f : frames) bounds.add(glm::vec3(root * glm::vec4(sensorPosition(slot.take, f, first), 1.0f)));
-            }
-        }
-        if (!query.part.empty()) continue;
-        if (m_visibility.partner && !query.figuresOnly) {
-            // partnerMesh: a disc of radius 14 cm on the floor under a cone 46 cm high.
-            const glm::vec3 partner = slot.centre + glm::vec3(m_layout.partnerDistance, 0.0f, 0.0f);
-            for (const glm::vec3 corner : {glm::vec3(-14.0f, -14.0f, 0.0f), glm::vec3(14.0f, 14.0f, 46.0f)})
-                bounds.add(glm::vec3(root * glm::vec4(partner.x + corner.x, partner.y + corner.y, floorHeight() + corner.z, 1.0f)));
-        }
-        if (m_visibility.axis && !slot.world_T_axis.empty()) {
-            for (const Eigen::Index f : frames) {
-                const glm::mat4 world_T_axis = root * toMatrix(slot.world_T_axis[std::size_t(f)]);
-                for (int axis = 0; axis < 3; ++axis) {
-                    glm::vec4 tip(0.0f, 0.0f, 0.0f, 1.0f);
-                    tip[axis] = m_layout.axisBarLength;
-                    bounds.add(glm::vec3(world_T_axis * tip));
-                }
-                bounds.add(glm::vec3(world_T_axis[3]));
-            }
-        }
-    }
-    return bounds;
-}
-
-void Renderer::setModel(const glm::mat4& model)
-{
-    const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(model)));
-    m_gl->glUniformMatrix4fv(m_uniforms.model, 1, GL_FALSE, glm::value_ptr(model));
-    m_gl->glUniformMatrix3fv(m_uniforms.normalMatrix, 1, GL_FALSE, glm::value_ptr(normalMatrix));
-}
-
-void Renderer::setColour(const glm::vec3& colour, bool vertexColour, bool lit)
-{
-    m_gl->glUniform4f(m_uniforms.colour, colour.r, colour.g, colour.b, 1.0f);
-    m_gl->glUniform1i(m_uniforms.useVertexColour, vertexColour ? 1 : 0);
-    m_gl->glUniform1i(m_uniforms.lit, lit ? 1 : 0);
-}
-
-void Renderer::drawScene(const Camera& camera, QSize size, bool partIds)
-{
-    QOpenGLExtraFunctions& gl = *m_gl;
-    gl.glViewport(0, 0, size.width(), size.height());
-    const glm::vec3 background = partIds ? glm::vec3(0.0f) : kBackground;
-    gl.glClearColor(background.r, background.g, background.b, partIds ? 0.0f : 1.0f);
-    gl.glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    gl.glEnable(GL_DEPTH_TEST);
-    gl.glDepthFunc(GL_LESS);
-    gl.glDisable(GL_CULL_FACE);
-    gl.glDisable(GL_BLEND);
-    if (partIds) gl.glDisable(GL_DITHER);
-
-    m_program->bind();
-    gl.glUniform1i(m_uniforms.partIdBase, -1);
-    const glm::mat4 viewProjection = camera.viewProjection(size);
-    gl.glUniformMatrix4fv(m_uniforms.viewProjection, 1, GL_FALSE, glm::value_ptr(viewProjection));
-    const glm::vec3 eye = camera.eye();
-    gl.glUniform3f(m_uniforms.lightPosition, eye.x, eye.y, eye.z);
-
-    if (m_visibility.grid && !partIds && !m_slots.empty()) {
-        setModel(glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, floorHeight())));
-        setColour(glm::vec3(1.0f), true, false);
-        m_grid.draw(gl);
-    }
-
-    for (std::size_t s = 0; s < m_slots.size(); ++s) {
-        const Slot& slot = m_slots[s];
-        const glm::mat4 root = takeRoot(int(s), camera);
-        if (puppetDrawn(int(s)) && slotPuppet(slot)) {
-            drawPuppet(slot, int(s), root, viewProjection, eye, partIds);
-        } else if (puppetDrawn(int(s))) {
-            const std::vector<GpuMesh>& meshes = slot.meshes.empty() ? m_partMeshes : slot.meshes;
-            for (std::size_t p = 0; p < meshes.size() && p < slot.take_T_part.size(); ++p) {
-                setModel(root * slot.take_T_part[p]);
-                if (partIds)
-                    setColour(glm::vec3(float(1 + int(p) + kIdsPerSlot * int(s)) / 255.0f, 0.0f, 0.0f), false, false);
-                else
-                    setColour(glm::vec3(1.0f), true, true);
-                meshes[p].draw(gl);
-            }
-        }
-        if (skeletonDrawn(int(s))) {
-            for (std::size_t j = 0; j < slot.skeleton->meshes.size() && j < slot.take_T_joint.size(); ++j) {
-                if (slot.skeleton->meshes[j].empty()) continue; // End Sites
-                setModel(root * slot.take_T_joint[j]);
-                if (partIds) {
-                    const int id = int(j) + 1;
-                    setColour(glm::vec3(float(kSkeletonId + 1 + kIdsPerSlot * int(s)), float(id % 256), float(id / 256)) / 255.0f, false, false);
-                } else {
-                    setColour(glm::vec3(1.0f), true, true);
-                }
-                slot.skeleton->meshes[j].draw(gl);
-            }
-        }
-        if (partIds) continue;
-        if (m_visibility.partner) {
-            const glm::vec3 partner = slot.centre + glm::vec3(m_layout.partnerDistance, 0.0f, 0.0f);
-            setModel(root * glm::translate(glm::mat4(1.0f), glm::vec3(partner.x, partner.y, floorHeight())));
-            setColour(glm::vec3(1.0f), true, true);
-            m_partner.draw(gl);
-        }
-        if (m_visibility.orbitsDrawn()) {
-            // Over the puppet, like the motion axis: the sensors sit inside its parts.
-            gl.glDepthRangef(0.0f, 0.0005f);
-            setModel(root);
-            setColour(glm::vec3(1.0f), true, true);
-            for (const GpuMesh& orbit : slot.orbits) orbit.draw(gl);
-            const float pointRadius = std::max(m_layout.orbitPointRadius, 2.5f * slot.orbitRadius);
-            for (std::size_t k = 0; k < slot.sensorFirstChannel.size(); ++k) {
-                const glm::vec3 position = sensorPosition(slot.take, slot.frame, slot.sensorFirstChannel[k]);
-                setModel(root * glm::scale(glm::translate(glm::mat4(1.0f), position), glm::vec3(pointRadius)));
-                setColour(orbitColour(int(s), int(k)), false, true);
-                m_sphere.draw(gl);
-            }
-            gl.glDepthRangef(0.0f, 1.0f);
-        }
-    }
-
-    // The motion axis is drawn over the puppet (its centre of mass lies inside the body): its
-    // depths are squeezed in front of everything else, still ordered among its bars. (Cheaper
-    // than clearing the depth buffer mid-frame on tiled software rasterisers.)
-    if (m_visibility.axis && !partIds) {
-        gl.glDepthRangef(0.0f, 0.0005f);
-        const float length = m_layout.axisBarLength;
-        const float thickness = m_layout.axisBarThickness;
-        for (std::size_t s = 0; s < m_slots.size(); ++s) {
-            const auto world_T_axis = displayedAxisTransform(int(s), camera);
-            if (!world_T_axis) continue;
-            for (int axis = 0; axis < 3; ++axis) {
-                glm::vec3 centre(0.0f);
-                glm::vec3 extent(thickness);
-                centre[axis] = length * 0.5f;
-                extent[axis] = length;
-                setModel(*world_T_axis * glm::scale(glm::translate(glm::mat4(1.0f), centre), extent));
-                setColour(axisColour(axis), false, true);
-                m_box.draw(gl);
-            }
-        }
-        gl.glDepthRangef(0.0f, 1.0f);
-    }
-    m_program->release();
-    if (partIds) gl.glEnable(GL_DITHER);
-}
-
-void Renderer::drawPuppet(const Slot& slot, int takeSlot, const glm::mat4& root, const glm::mat4& viewProjection,
-                          const glm::vec3& eye, bool partIds)
-{
-    QOpenGLExtraFunctions& gl = *m_gl;
-    const PuppetFigure& figure = *slotPuppet(slot);
-    m_skinProgram->bind();
-    const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(root)));
-    gl.glUniformMatrix4fv(m_skinUniforms.model, 1, GL_FALSE, glm::value_ptr(root));
-    gl.glUniformMatrix3fv(m_skinUniforms.normalMatrix, 1, GL_FALSE, glm::value_ptr(normalMatrix));
-    gl.glUniformMatrix4fv(m_skinUniforms.viewProjection, 1, GL_FALSE, glm::value_ptr(viewProjection));
-    gl.glUniform3f(m_skinUniforms.lightPosition, eye.x, eye.y, eye.z);
-    gl.glUniform4f(m_skinUniforms.colour, 1.0f, 1.0f, 1.0f, 1.0f);
-    gl.glUniform1i(m_skinUniforms.useVertexColour, 1);
-    gl.glUniform1i(m_skinUniforms.lit, 1);
-    gl.glUniform1i(m_skinUniforms.partIdBase, partIds ? 1 + kIdsPerSlot * takeSlot : -1);
-    const JointDualQuaternions q = jointDualQuaternions(*figure.mesh, slot.take_T_skinJoint);
-    gl.glUniform4fv(m_skinUniforms.jointReal, analysis::kPuppetJointCount, glm::value_ptr(q.real[0]));
-    gl.glUniform4fv(m_skinUniforms.jointDual, analysis::kPuppetJointCount, glm::value_ptr(q.dual[0]));
-    const auto partOf = analysis::puppetJointPartIndices(slot.body);
-    gl.glUniform1iv(m_skinUniforms.partOfJoint, analysis::kPuppetJointCount, partOf.data());
-    figure.gpu.draw(gl);
-    m_program->bind();
-}
-
-void Renderer::render(const Camera& camera, QSize size)
-{
-    if (m_gl == nullptr || size.isEmpty()) return;
-    drawScene(camera, size, false);
-}
-
-QOpenGLFramebufferObject& Renderer::pickFramebuffer(QSize size)
-{
-    if (!m_pickFramebuffer || m_pickFramebuffer->size() != size) {
-        QOpenGLFramebufferObjectFormat format;
-        format.setAttachment(QOpenGLFramebufferObject::Depth);
-        format.setInternalTextureFormat(GL_RGBA8);
-        m_pickFramebuffer = std::make_unique<QOpenGLFramebufferObject>(size, format);
-    }
-    return *m_pickFramebuffer;
-}
-
-QImage Renderer::partIdImage(const Camera& camera, QSize size)
-{
-    if (m_gl == nullptr || size.isEmpty()) return {};
-    GLint previous = 0;
-    m_gl->glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous);
-    QOpenGLFramebufferObject& framebuffer = pickFramebuffer(size);
-    framebuffer.bind();
-    drawScene(camera, size, true);
-    QImage image = framebuffer.toImage();
-    m_gl->glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));
-    return image;
-}
-
-std::optional<PickResult> Renderer::pick(const Camera& camera, QSize size, QPoint pixel)
-{
-    if (m_gl == nullptr || size.isEmpty() || !QRect(QPoint(0, 0), size).contains(pixel)) return std::nullopt;
-    GLint previous = 0;
-    m_gl->glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous);
-    QOpenGLFramebufferObject& framebuffer = pickFramebuffer(size);
-    framebuffer.bind();
-    drawScene(camera, size, true);
-    unsigned char rgba[4] = {0, 0, 0, 0};
-    m_gl->glReadPixels(pixel.x(), size.height() - 1 - pixel.y(), 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
-    m_gl->glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));
-    return decodePartId(qRgba(rgba[0], rgba[1], rgba[2], rgba[3]));
-}
-
-std::optional<PickResult> Renderer::decodePartId(QRgb pixel) const
-{
-    const int id = qRed(pixel);
-    if (id == 0) return std::nullopt;
-    PickResult result;
-    result.takeSlot = (id - 1) / kIdsPerSlot;
-    result.partIndex = (id - 1) % kIdsPerSlot;
-    if (result.takeSlot >= int(m_slots.size())) return std::nullopt;
-    if (result.partIndex == kSkeletonId) {
-        const Slot& slot = m_slots[std::size_t(result.takeSlot)];
-        const int joint = qGreen(pixel) + 256 * qBlue(pixel) - 1;
-        if (!slot.skeleton || joint < 0 || joint >= int(slot.skeleton->jointNames.size())) return std::nullopt;
-        result.partIndex = -1;
-        result.joint = joint;
-        result.jointName = slot.skeleton->jointNames[std::size_t(joint)];
-        result.partName = slot.skeleton->jointParts[std::size_t(joint)];
-        return result;
-    }
-    if (result.partIndex >= int(m_partNames.size())) return std::nullopt;
-    result.partName = m_partNames[std::size_t(result.partIndex)];
-    return result;
-}
 
 } // namespace bunraku::render

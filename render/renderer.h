@@ -12,6 +12,7 @@
 #include "render/camera.h"
 #include "render/framing.h"
 #include "render/gpu_mesh.h"
+#include "render/shadow_map.h"
 #include "render/scene.h"
 #include "render/skinned_puppet.h"
 
@@ -21,6 +22,7 @@
 #include <QSize>
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -103,6 +105,10 @@ public:
     /// Height (cm) of the floor grid: just under the lowest point of the figures drawn (the
     /// puppets, the skeletons) at frame 0.
     float floorHeight() const;
+    /// Half the side (cm) of the square floor and grid around the origin: LayoutOptions'
+    /// gridHalfExtent, or more so that every take's path (a walk) lies on the floor before it
+    /// fades (at 55 % of it), up to 50 m.
+    float floorHalfExtent() const { return m_floorHalfExtent; }
     /// A camera that frames the scene: angle 340 deg (the puppet's left front), elevation 15 deg,
     /// looking at the figures' middle height, far enough back for one or two puppets, or for
     /// skeletons of any height (sized from the take).
@@ -134,9 +140,29 @@ private:
     void updatePoses(Slot& slot) const;
     /// Height (cm) the view is framed for: a puppet's, or the tallest skeleton drawn.
     float framedHeight() const;
+    /// What a pass draws: colours, part IDs (picking), or depths seen from the key light.
+    enum class Pass { Colour, PartIds, Shadow };
     void drawScene(const Camera& camera, QSize size, bool partIds);
+    /// The figures of every slot (puppets, skeletons, the partner except in the ID pass).
+    void drawFigures(const Camera& camera, const glm::mat4& viewProjection, const glm::vec3& eye, Pass pass);
+    /// Draws the figures into the shadow map from the key light and returns the light's
+    /// clip_T_world; nullopt when shadows are off, nothing casts, or the driver lacks the map.
+    std::optional<glm::mat4> drawShadowMap(const Camera& camera, QSize size);
     void drawPuppet(const Slot& slot, int takeSlot, const glm::mat4& root, const glm::mat4& viewProjection,
                     const glm::vec3& eye, bool partIds);
+    /// The performer's body of a slot's skeleton (made and uploaded on first use); false when no
+    /// body can be made for it (the caller draws the capsules).
+    bool drawBody(const Slot& slot, int takeSlot, const glm::mat4& root, const glm::mat4& viewProjection, const glm::vec3& eye,
+                  bool partIds);
+    /// world_T_take of the partner of `slot` (thesis 6: the person greeted or served): the take's
+    /// modelled puppet as it stands at frame 0, turned about its centre to face the take from
+    /// partnerDistance ahead; without a modelled puppet, the cone's frame on the floor there.
+    glm::mat4 partnerTransform(const Slot& slot, const glm::mat4& root) const;
+    /// Whether the partner of a take is drawn: shown, and not inside the other take's figure.
+    bool partnerShown(int takeSlot, const Camera& camera) const;
+    /// The partner in one slate colour (it is not a take), posed as `slot` at frame 0.
+    void drawPartnerPuppet(const Slot& slot, const PuppetFigure& figure, const glm::mat4& world_T_model,
+                           const glm::mat4& viewProjection, const glm::vec3& eye, bool depthOnly);
     void setModel(const glm::mat4& model);
     void setColour(const glm::vec3& colour, bool vertexColour, bool lit);
     QOpenGLFramebufferObject& pickFramebuffer(QSize size);
@@ -146,15 +172,21 @@ private:
     QOpenGLExtraFunctions* m_gl = nullptr;
     std::unique_ptr<QOpenGLShaderProgram> m_program;
     std::unique_ptr<QOpenGLShaderProgram> m_skinProgram; ///< skinned.vert + scene.frag
+    std::unique_ptr<QOpenGLShaderProgram> m_bodyProgram; ///< skinned.vert for a skeleton's joints + scene.frag
+    std::map<std::string, int> m_bodyUniforms;
     std::unique_ptr<QOpenGLFramebufferObject> m_pickFramebuffer;
     struct Uniforms {
         int model = -1, viewProjection = -1, normalMatrix = -1, colour = -1, useVertexColour = -1, lit = -1,
-            lightPosition = -1, partIdBase = -1;
+            lightPosition = -1, partIdBase = -1, keyDirection = -1, floor = -1, floorRadius = -1, background = -1,
+            shadows = -1, shadowMap = -1, shadowDepth = -1, lightViewProjection = -1, shadowUvPerCm = -1, shadowCmPerDepth = -1;
     } m_uniforms;
     struct SkinUniforms {
         int model = -1, viewProjection = -1, normalMatrix = -1, colour = -1, useVertexColour = -1, lit = -1,
-            lightPosition = -1, partIdBase = -1, jointReal = -1, jointDual = -1, partOfJoint = -1;
+            lightPosition = -1, partIdBase = -1, keyDirection = -1, jointReal = -1, jointDual = -1, partOfJoint = -1;
     } m_skinUniforms;
+    ShadowMap m_shadowMap;
+    std::vector<float> m_shadowKey; ///< what the shadow map was drawn for (drawShadowMap)
+    int m_sceneGeneration = 0;      ///< counts setScene calls
     std::shared_ptr<PuppetFigure> m_puppet; ///< the scene body's modelled puppet, or null
 
     analysis::BodyDescription m_body;
@@ -163,6 +195,8 @@ private:
     std::vector<Bounds> m_partBounds;  ///< one per body part: its mesh's box in the part frame
     std::vector<Slot> m_slots;
     GpuMesh m_grid;
+    GpuMesh m_floor;  ///< a square under the grid, shaded by the key light and its shadows
+    float m_floorHalfExtent = 0.0f; ///< cm: the grid's half extent, grown to hold every take's path
     GpuMesh m_box;    ///< unit cube for the axis bars
     GpuMesh m_sphere; ///< unit sphere for the orbits' moving points
     GpuMesh m_partner;

@@ -47,8 +47,10 @@ struct SceneContent {
 };
 
 /// How a take's figure is drawn: the puppet, the performer's skeleton (a take that carries one,
-/// analysis/core/skeleton.h; a take without one shows its puppet), or both overlaid.
-enum class FigureStyle { Puppet, Skeleton, PuppetAndSkeleton };
+/// analysis/core/skeleton.h; a take without one shows its puppet), both overlaid, or the
+/// performer's body (a smooth mannequin skinned to the skeleton, analysis/body/performer_body.h;
+/// its capsules for a skeleton of more joints than a body is made for).
+enum class FigureStyle { Puppet, Skeleton, PuppetAndSkeleton, Body };
 
 enum class OrbitVisibility {
     WhenPuppetHidden, ///< as in the thesis: orbits replace the puppet
@@ -60,7 +62,8 @@ struct SceneVisibility {
     bool puppet = true;
     bool axis = true;
     bool orbits = true;
-    bool grid = true;
+    bool grid = true;    ///< the floor and its grid
+    bool shadows = true; ///< the figures' shadows on the floor (drawn with it)
     bool partner = true;
     OrbitVisibility orbitVisibility = OrbitVisibility::WhenPuppetHidden;
     /// Per take slot, what `puppet` (the figure) shows.
@@ -73,8 +76,10 @@ struct SceneVisibility {
 struct LayoutOptions {
     float separation = 70.0f;      ///< cm between the two puppets' centres, along the screen's right
     bool centreTakes = true;       ///< move each take's centre (takeCentre) to the origin
-    float partnerDistance = 110.0f; ///< cm from a take's centre along +x (towards the partner)
-    float gridHalfExtent = 200.0f; ///< cm
+    /// cm from a take's centre along +x (towards the partner); further for a take that travels
+    /// that way (the partner keeps 60 cm clear of its furthest reach)
+    float partnerDistance = 110.0f;
+    float gridHalfExtent = 200.0f; ///< cm, at least (the floor grows with a take's path)
     float gridSpacing = 20.0f;     ///< cm
     float axisBarLength = 30.0f;   ///< cm, each bar from the centre of mass along +x, +y, +z
     float axisBarThickness = 1.6f; ///< cm

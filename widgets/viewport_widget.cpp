@@ -136,7 +136,20 @@ void ViewportWidget::prepareFrame()
         else renderer.setFrame(m_frame);
         if (m_reframe) adaptCameraToScene();
         m_reframe = false;
+        if (m_follow) {
+            render::BoundsQuery now;
+            now.span = render::FramingSpan::CurrentFrame;
+            now.figuresOnly = true;
+            m_camera = render::followingCamera(m_camera, renderer.displayedBounds(m_camera, now));
+        }
     }
+}
+
+void ViewportWidget::setFollow(bool follow)
+{
+    if (m_follow == follow) return;
+    m_follow = follow;
+    invalidate();
 }
 
 void ViewportWidget::renderImage(int samples)

@@ -67,6 +67,11 @@ public:
     /// elevation 15 deg) framing the whole take; new scenes are framed again until the camera
     /// is moved.
     void resetCamera();
+    /// Follow: while on, every frame shown carries the camera along the floor to the middle of
+    /// the figures at that frame (render::followingCamera: a walking take stays in frame at the
+    /// size it was framed); orbiting and zooming still turn around it. Off by default.
+    void setFollow(bool follow);
+    bool follow() const { return m_follow; }
     /// Whether the camera was moved or set (then a new scene keeps its angle and elevation, and
     /// is reframed only when its box differs from the one the camera was framed for).
     bool cameraChosen() const { return m_cameraChosen; }
@@ -154,6 +159,7 @@ private:
     render::SceneVisibility m_visibility;
     render::Camera m_camera;
     bool m_cameraChosen = false; ///< set by setCamera or the mouse: scenes no longer reset it
+    bool m_follow = false;
     std::optional<render::Bounds> m_framedFor; ///< the box the camera fits; none: adopt the next scene's
     bool m_reframe = false; ///< a new scene, or figures shown or hidden: adapt the camera at the next paint
     int m_frame = 0;

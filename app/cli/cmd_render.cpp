@@ -47,7 +47,7 @@ struct RenderArguments {
     float elevationDeg = 15.0f;
     float distanceCm = 0.0f; // 0: chosen from the scene
     std::string preset;
-    std::string show = "puppet,axis,grid,partner";
+    std::string show = "puppet,axis,grid,shadows,partner";
     std::string figure = "puppet";
     std::string figureB; // empty: as --figure
     std::string size = "1280x720";
@@ -56,6 +56,7 @@ struct RenderArguments {
     std::string body;
     std::vector<std::string> meshes;
     int samples = 4;
+    bool follow = false;
     bool json = false;
     // --multimodal: the thesis's multimodal display (chapter 6), view and graphs in one picture
     bool multimodal = false;
@@ -124,7 +125,7 @@ std::pair<long, long> parseFrameRange(const std::string& text)
 render::SceneVisibility parseShow(const std::string& text)
 {
     render::SceneVisibility visibility;
-    visibility.puppet = visibility.axis = visibility.orbits = visibility.grid = visibility.partner = false;
+    visibility.puppet = visibility.axis = visibility.orbits = visibility.grid = visibility.shadows = visibility.partner = false;
     // Orbits named explicitly are drawn even with the puppet (the thesis shows them instead of it).
     visibility.orbitVisibility = render::OrbitVisibility::Always;
     std::stringstream stream(text);
@@ -133,10 +134,12 @@ render::SceneVisibility parseShow(const std::string& text)
         else if (name == "axis") visibility.axis = true;
         else if (name == "orbits") visibility.orbits = true;
         else if (name == "grid") visibility.grid = true;
+        else if (name == "shadows") visibility.shadows = true;
         else if (name == "partner") visibility.partner = true;
-        else if (name == "all") visibility.puppet = visibility.axis = visibility.orbits = visibility.grid = visibility.partner = true;
+        else if (name == "all")
+            visibility.puppet = visibility.axis = visibility.orbits = visibility.grid = visibility.shadows = visibility.partner = true;
         else if (!name.empty())
-            throw CliError("--show: unknown object '" + name + "' (expected puppet, axis, orbits, grid, partner, all)");
+            throw CliError("--show: unknown object '" + name + "' (expected puppet, axis, orbits, grid, shadows, partner, all)");
     }
     return visibility;
 }
@@ -146,7 +149,8 @@ render::FigureStyle parseFigure(const std::string& text, const std::string& opti
     if (text == "puppet") return render::FigureStyle::Puppet;
     if (text == "skeleton") return render::FigureStyle::Skeleton;
     if (text == "both") return render::FigureStyle::PuppetAndSkeleton;
-    throw CliError(option + " '" + text + "': expected puppet, skeleton or both");
+    if (text == "body") return render::FigureStyle::Body;
+    throw CliError(option + " '" + text + "': expected puppet, skeleton, both or body");
 }
 
 bool hasDisplay() { return std::getenv("DISPLAY") != nullptr || std::getenv("WAYLAND_DISPLAY") != nullptr; }
@@ -394,10 +398,19 @@ void runRender(const RenderArguments& args)
     for (int s = 0; s < int(scene.takes.size()); ++s)
         summary["figures"].push_back({{"puppet", offscreen->renderer().puppetDrawn(s)}, {"skeleton", offscreen->renderer().skeletonDrawn(s)}});
 
+    // --follow: the camera carried along the floor with the figures (as the 3D view's Follow).
+    const auto follow = [&] {
+        if (!args.follow) return;
+        render::BoundsQuery now;
+        now.span = render::FramingSpan::CurrentFrame;
+        now.figuresOnly = true;
+        camera = render::followingCamera(camera, offscreen->renderer().displayedBounds(camera, now));
+    };
     if (!range) {
         offscreen->makeCurrent();
         if (args.time) offscreen->renderer().setTime(*args.time);
         else offscreen->renderer().setFrame(args.frame.value_or(0));
+        follow();
         unwrap(analysis::io::writeFileAtomically(args.output, view(pngBytes(offscreen->render(camera, size), args.output))));
         summary["output"] = args.output;
         summary["frame"] = offscreen->renderer().frame(0);
@@ -409,6 +422,7 @@ void runRender(const RenderArguments& args)
         for (long f = range->first; f <= range->second; ++f) {
             offscreen->makeCurrent();
             offscreen->renderer().setFrame(f);
+            follow();
             char name[32];
             std::snprintf(name, sizeof name, "frame_%05ld.png", f - range->first);
             unwrap(staged.writeFile(name, view(pngBytes(offscreen->render(camera, size), folder / name))));
@@ -442,10 +456,11 @@ void addRenderCommands(CommandSet& commands)
     render->add_option("--elevation", args->elevationDeg, "Camera elevation, deg")->capture_default_str();
     render->add_option("--distance", args->distanceCm, "Camera distance, cm (default: fits the scene)");
     render->add_option("--preset", args->preset, "Camera preset: top or bottom");
-    render->add_option("--show", args->show, "Objects to draw: puppet,axis,orbits,grid,partner or all")
+    render->add_option("--show", args->show, "Objects to draw: puppet,axis,orbits,grid (the floor),shadows (the figures' on the floor),partner or all")
         ->capture_default_str();
     render->add_option("--figure", args->figure,
-                       "Figure of the take(s): puppet, skeleton (the performer's, for takes read from BVH) or both")
+                       "Figure of the take(s): puppet, skeleton (the performer's, for takes read from BVH), both or body "
+                       "(the performer's body, a smooth mannequin skinned to that skeleton)")
         ->capture_default_str();
     render->add_option("--figure-b", args->figureB, "Figure of the second take (default: as --figure)");
     render->add_option("--size", args->size, "Image size WIDTHxHEIGHT")->capture_default_str();
@@ -454,6 +469,8 @@ void addRenderCommands(CommandSet& commands)
     render->add_option("--body", args->body, "Body description JSON (default: the shipped puppet)");
     render->add_option("--mesh", args->meshes, "PART=FILE: a mesh file (glTF, OBJ...) replacing a body part");
     render->add_option("--samples", args->samples, "Multisampling, 0..16")->capture_default_str();
+    render->add_flag("--follow", args->follow,
+                     "Carry the camera along the floor with the figures at every frame (a walking take stays in frame)");
     render->add_flag("--multimodal", args->multimodal,
                      "The thesis's multimodal display: the 3D view and the graphs with a moving time cursor in one picture "
                      "(-o FILE.png: one frame; -o FILE.mp4 or -o FOLDER: the whole take or --frames as MP4 or PNG frames)");

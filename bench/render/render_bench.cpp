@@ -62,11 +62,17 @@ void reportPercentiles(benchmark::State& state, std::vector<double>& millisecond
     state.counters["fps_median"] = 1000.0 / at(0.5);
 }
 
-/// Frame time of a full scene (puppets, axes, orbits, grid, partner) at WxH.
+/// Frame time of a full scene (puppets, axes, orbits, floor, shadows, partner) at WxH; the
+/// fourth argument says what of the lit stage is drawn: 1 the shadows, 2 the partners, 3 both
+/// (0: the scene before the lit stage).
 void drawFrames(benchmark::State& state, int takes)
 {
     Stage& s = stage(takes, int(state.range(2)));
     const QSize size(int(state.range(0)), int(state.range(1)));
+    render::SceneVisibility visibility = s.offscreen->renderer().visibility();
+    visibility.shadows = (state.range(3) & 1) != 0;
+    visibility.partner = (state.range(3) & 2) != 0;
+    s.offscreen->renderer().setVisibility(visibility);
     render::Camera camera;
     camera.angleDeg = 300.0f;
     camera.elevationDeg = 15.0f;
@@ -174,15 +180,19 @@ void BM_FitPuppetMesh(benchmark::State& state)
 
 BENCHMARK(BM_GeneratePuppetMesh)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->Iterations(5);
 BENCHMARK(BM_FitPuppetMesh)->Unit(benchmark::kMillisecond);
-// Arguments: width, height, multisampling (0 = none, 1 = 4x).
+// Arguments: width, height, multisampling (0 = none, 1 = 4x), lit stage (1 shadows + 2 partners).
 BENCHMARK(BM_TwoPuppetsAxesOrbits)
-    ->ArgNames({"w", "h", "msaa4"})
-    ->Args({1280, 720, 0})
-    ->Args({1280, 720, 1})
-    ->Args({640, 360, 1})
+    ->ArgNames({"w", "h", "msaa4", "lit"})
+    ->Args({1280, 720, 0, 3})
+    ->Args({1280, 720, 0, 1})
+    ->Args({1280, 720, 0, 2})
+    ->Args({1280, 720, 0, 0})
+    ->Args({1280, 720, 1, 3})
+    ->Args({1280, 720, 1, 0})
+    ->Args({640, 360, 1, 3})
     ->Unit(benchmark::kMillisecond)
     ->Iterations(300);
-BENCHMARK(BM_OnePuppetAxisOrbits)->ArgNames({"w", "h", "msaa4"})->Args({1280, 720, 0})->Unit(benchmark::kMillisecond)->Iterations(300);
+BENCHMARK(BM_OnePuppetAxisOrbits)->ArgNames({"w", "h", "msaa4", "lit"})->Args({1280, 720, 0, 3})->Unit(benchmark::kMillisecond)->Iterations(300);
 BENCHMARK(BM_EmptyFrame)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SetFrameTwoTakes)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_PickTwoPuppets)->Unit(benchmark::kMillisecond);

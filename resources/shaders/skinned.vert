@@ -12,13 +12,20 @@ layout(location = 4) in vec3 a_paint;       // the shipped puppet's model positi
 layout(location = 5) in uvec4 a_joints;
 layout(location = 6) in vec4 a_weights;
 
+// The performer's body (analysis/body/performer_body.h) is drawn by the same source compiled
+// with BODY_JOINTS defined (analysis::kMaxBodyJoints): its joints are the skeleton's, and the
+// ID pass writes the dominant joint itself.
+#ifdef BODY_JOINTS
+const int kJoints = BODY_JOINTS;
+#else
 const int kJoints = 9; // analysis::kPuppetJointCount
+uniform int u_partOfJoint[kJoints]; // body part index of each joint (picking IDs)
+#endif
 uniform mat4 u_model;
 uniform mat4 u_viewProjection;
 uniform mat3 u_normalMatrix;
 uniform vec4 u_jointReal[kJoints];
 uniform vec4 u_jointDual[kJoints];
-uniform int u_partOfJoint[kJoints]; // body part index of each joint (picking IDs)
 
 out vec3 v_worldPosition;
 out vec3 v_normal;
@@ -57,6 +64,10 @@ void main()
     v_sheen = a_sheenRegion.x;
     v_region = int(a_sheenRegion.y + 0.5);
     v_paint = a_paint;
+#ifdef BODY_JOINTS
+    v_part = int(a_joints[dominant]);
+#else
     v_part = u_partOfJoint[int(a_joints[dominant])];
+#endif
     gl_Position = u_viewProjection * world;
 }

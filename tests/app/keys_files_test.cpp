@@ -23,6 +23,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QCheckBox>
+#include <QComboBox>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QJsonDocument>
@@ -203,6 +204,8 @@ TEST_CASE("Home resets the camera in the focused 3D view and goes to the start e
     auto& document = window->document();
     auto* viewport = window->viewportPanel()->viewport();
     (void)viewport->grabFramebuffer(); // the scene uploaded and framed
+    // The first view at the view's size now (the docks may have widened it since the first paint).
+    viewport->resetCamera();
     const render::Camera first = viewport->camera();
 
     // Orbit with the mouse (the view takes the focus), then Home: the camera, not the time.
@@ -447,4 +450,31 @@ TEST_CASE("a project brings back the graphs' part and DOF, the camera and the em
     CHECK_FALSE(window->files().openProject(broken));
     CHECK(window->files().lastError().contains(QStringLiteral("\"view\".\"camera\"")));
     CHECK(window->graphPanel()->selectedDof() == QStringLiteral("x"));
+}
+
+TEST_CASE("the 3D view's Shadows and Follow boxes reach the view", "[app][viewport]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    widgets::ViewportWidget* viewport = window->viewportPanel()->viewport();
+    auto* shadows = window->findChild<QCheckBox*>("showShadows");
+    auto* follow = window->findChild<QCheckBox*>("followFigures");
+    REQUIRE(shadows != nullptr);
+    REQUIRE(follow != nullptr);
+    // Shadows on and Follow off by default, as the view starts.
+    CHECK(shadows->isChecked());
+    CHECK(viewport->visibility().shadows);
+    CHECK_FALSE(follow->isChecked());
+    CHECK_FALSE(viewport->follow());
+    QTest::mouseClick(shadows, Qt::LeftButton, Qt::NoModifier, QPoint(6, shadows->height() / 2));
+    QTest::mouseClick(follow, Qt::LeftButton, Qt::NoModifier, QPoint(6, follow->height() / 2));
+    CHECK_FALSE(viewport->visibility().shadows);
+    CHECK(viewport->follow());
+    // The figure boxes offer the performer's body, and choosing it reaches the view.
+    QComboBox* figure = window->viewportPanel()->figureBox(0);
+    const int body = figure->findData(int(render::FigureStyle::Body));
+    REQUIRE(body >= 0);
+    CHECK(figure->itemText(body) == QStringLiteral("Body"));
+    figure->setCurrentIndex(body);
+    CHECK(viewport->visibility().figures[0] == render::FigureStyle::Body);
 }

@@ -4,6 +4,7 @@
 // whole inside its visible area; a project brings back the dock layout it was saved with.
 #include "tests/app/app_test_support.h"
 
+#include "app/side_columns.h"
 #include "app/viewport_panel.h"
 
 #include "widgets/graph_panel.h"
@@ -251,5 +252,44 @@ TEST_CASE("a project reopens with its dock layout and ignores a malformed one", 
         settle();
         CHECK(leftWidth(*window) == Approx(before).margin(4));
         for (QDockWidget* dock : window->docks()) CHECK(dock->isVisible());
+    }
+}
+
+TEST_CASE("a project saved at 1366x768 reopens at 1920x1080 with every dock useful and the 3D view a third of the width",
+          "[app][layout][project]")
+{
+    const auto folder = test::scratchDir("project-layout-screens");
+    const QString file = QString::fromStdString((folder / "laptop.bunraku.json").string());
+    const auto settle = [] {
+        for (int pass = 0; pass < 6; ++pass) QCoreApplication::processEvents();
+    };
+    {
+        auto window = test::demoWindow();
+        REQUIRE(window);
+        resetLayoutAt(*window, QSize(1366, 768));
+        settle();
+        REQUIRE(window->files().saveProject(file));
+    }
+    for (const QSize size : {QSize(1920, 1080), QSize(2560, 1440)}) {
+        auto window = test::demoWindow();
+        REQUIRE(window);
+        resetLayoutAt(*window, size);
+        REQUIRE(window->files().openProject(file));
+        settle();
+        INFO("reopened at " << size.width() << "x" << size.height());
+        for (QDockWidget* dock : window->docks()) {
+            // (A tab behind another is "visible" but placed outside the window.)
+            if (!dock->isVisible() || !dock->geometry().intersects(window->rect())) continue;
+            const auto useful = kUsefulSize.find(dock->objectName());
+            if (useful == kUsefulSize.end()) continue;
+            INFO(dock->objectName().toStdString() << " " << dock->width() << "x" << dock->height());
+            CHECK(dock->width() >= useful->second.width());
+            CHECK(dock->height() >= useful->second.height());
+        }
+        const int view = window->dock("viewDock")->width();
+        INFO("3D view " << view << " px wide");
+        CHECK(view * 3 >= size.width());
+        // The left column is as wide as it was on the laptop, not stretched.
+        CHECK(window->dock("corpusDock")->width() <= app::SideColumns::preferredLeftWidth(1366) + 8);
     }
 }

@@ -22,42 +22,10 @@ namespace {
 /// 8-connected components of the puppet's pixels (any part of take slot 0) in an ID image.
 int silhouetteComponents(const render::Renderer& renderer, const QImage& ids, int* pixels = nullptr)
 {
-    const int w = ids.width(), h = ids.height();
-    std::vector<char> on(std::size_t(w) * std::size_t(h), 0);
-    int count = 0;
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) {
-            const auto hit = renderer.decodePartId(ids.pixel(x, y));
-            if (hit && hit->takeSlot == 0 && hit->partIndex >= 0) {
-                on[std::size_t(y) * std::size_t(w) + std::size_t(x)] = 1;
-                ++count;
-            }
-        }
-    if (pixels) *pixels = count;
-    int components = 0;
-    std::vector<int> stack;
-    for (int start = 0; start < w * h; ++start) {
-        if (on[std::size_t(start)] != 1) continue;
-        ++components;
-        on[std::size_t(start)] = 2;
-        stack.push_back(start);
-        while (!stack.empty()) {
-            const int i = stack.back();
-            stack.pop_back();
-            const int x = i % w, y = i / w;
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dx = -1; dx <= 1; ++dx) {
-                    const int nx = x + dx, ny = y + dy;
-                    if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
-                    const int j = ny * w + nx;
-                    if (on[std::size_t(j)] == 1) {
-                        on[std::size_t(j)] = 2;
-                        stack.push_back(j);
-                    }
-                }
-        }
-    }
-    return components;
+    return test::silhouetteComponents(ids, [&renderer](QRgb pixel) {
+        const auto hit = renderer.decodePartId(pixel);
+        return hit && hit->takeSlot == 0 && hit->partIndex >= 0;
+    }, pixels);
 }
 
 /// Renders `frames` of a one-take scene from the front and the side and requires one silhouette.

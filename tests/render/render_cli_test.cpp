@@ -4,6 +4,8 @@
 #include "tests/support/peer.h"
 #include "tests/support/shared_data.h"
 #include "render/take_scene.h"
+#include "analysis/io/take_csv.h"
+#include "render_test_support.h"
 #include "analysis/core/puppet_layout.h"
 #include "tests/support/test_paths.h"
 
@@ -83,6 +85,66 @@ TEST_CASE("bunraku render writes a PNG of a demo take and a frame sequence", "[r
     for (const char* name : {"frame_00000.png", "frame_00001.png", "frame_00002.png"})
         CHECK(QImage(QString::fromStdString((dir / "seq" / name).string())).size() == QSize(64, 48));
     CHECK_FALSE(std::filesystem::exists(dir / "seq" / "frame_00003.png"));
+}
+
+TEST_CASE("bunraku render draws the figures' shadows on the floor unless --show leaves them out", "[render][cli][shadow]")
+{
+    if (!test::requirePeer(std::filesystem::exists(cliPath()), "the bunraku executable (" + cliPath().string() + ")",
+                           "build the target bunraku"))
+        return;
+    const auto dir = test::scratchDir("render_cli_shadows");
+    const std::string take = "render demo:greeting/friendly/2 --frame 40 --camera 200 --elevation 60 --size 320x240 --samples 0 ";
+    for (const char* show : {"puppet,grid,shadows", "puppet,grid"}) {
+        const auto [code, errors] = runCli(take + "--show " + show + " -o " + quoted(dir / (std::string(show) + ".png")), dir);
+        INFO(errors);
+        REQUIRE(code == 0);
+    }
+    const QImage with(QString::fromStdString((dir / "puppet,grid,shadows.png").string()));
+    const QImage without(QString::fromStdString((dir / "puppet,grid.png").string()));
+    REQUIRE(with.size() == without.size());
+    int darker = 0, lighter = 0;
+    for (int y = 0; y < with.height(); ++y)
+        for (int x = 0; x < with.width(); ++x) {
+            const int a = qGray(with.pixel(x, y)), b = qGray(without.pixel(x, y));
+            darker += a < b - 20 ? 1 : 0;
+            lighter += a > b + 1 ? 1 : 0;
+        }
+    CHECK(darker > 200);
+    CHECK(lighter == 0);
+    // "shadows" is one of the names --show knows (its default draws them).
+    const auto [code, errors] = runCli("render demo:greeting/friendly/2 --show puppet,shadow -o " + quoted(dir / "x.png"), dir);
+    CHECK(code != 0);
+    CHECK(errors.find("grid, shadows, partner") != std::string::npos);
+}
+
+TEST_CASE("bunraku render --follow keeps a walking take in the middle of the picture", "[render][cli][travel]")
+{
+    if (!test::requirePeer(std::filesystem::exists(cliPath()), "the bunraku executable (" + cliPath().string() + ")",
+                           "build the target bunraku"))
+        return;
+    const auto dir = test::scratchDir("render_cli_follow");
+    REQUIRE(analysis::io::writeTakeCsv(test::travellingTake(60, 400.0), dir / "walk.csv").ok());
+    // The middle column of the figure's pixels, as a fraction of the width from the centre.
+    const auto offset = [&dir](const std::string& options) {
+        const auto [code, errors] = runCli("render " + quoted(dir / "walk.csv") + " --frame 59 --camera 0 --elevation 10 "
+                                           "--distance 300 --show puppet --size 200x150 --samples 0 " + options + " -o " +
+                                               quoted(dir / "walk.png"), dir);
+        INFO(errors);
+        REQUIRE(code == 0);
+        const QImage image(QString::fromStdString((dir / "walk.png").string()));
+        double sum = 0.0;
+        int count = 0;
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x)
+                if (!test::isBackground(image.pixel(x, y))) {
+                    sum += x;
+                    ++count;
+                }
+        if (count < 50) return 1.0; // out of the picture
+        return std::abs(sum / count - 0.5 * image.width()) / image.width();
+    };
+    CHECK(offset("--follow") < 0.05);
+    CHECK(offset("") > 0.2); // the camera stays where it was framed: the walker has left
 }
 
 TEST_CASE("bunraku render rejects bad input with a one-line error", "[render][cli]")
@@ -190,5 +252,5 @@ TEST_CASE("bunraku render --figure draws a Bandai take's 22-joint skeleton, the 
     CHECK(images["both"] != images["skeleton"]);
     const auto [code, errors] = runCli("render " + quoted(source) + " --figure bones -o " + quoted(dir / "x.png"), dir);
     CHECK(code != 0);
-    CHECK(errors.find("--figure 'bones': expected puppet, skeleton or both") != std::string::npos);
+    CHECK(errors.find("--figure 'bones': expected puppet, skeleton, both or body") != std::string::npos);
 }

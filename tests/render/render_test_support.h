@@ -14,6 +14,7 @@
 #include <cmath>
 #include <functional>
 #include <memory>
+#include <vector>
 
 namespace bunraku::test {
 
@@ -62,6 +63,57 @@ inline analysis::Take spreadArmsTake(Eigen::Index frames, const Eigen::Vector3d&
                                        PartPose{x, y - 27.0, z - 1.0, -90.0, 0, 0},
                                        PartPose{x, y - 43.0, z - 1.0, -90.0, 0, 0}};
     });
+}
+
+/// The spread-arms puppet walking `distance` cm along +x (towards the partner) at an even pace
+/// over `frames` frames, starting `distance` / 2 behind the origin.
+inline analysis::Take travellingTake(Eigen::Index frames, double distance)
+{
+    const analysis::Take still = spreadArmsTake(frames);
+    analysis::Take take = still;
+    for (Eigen::Index f = 0; f < frames; ++f)
+        for (int p = 0; p < 4; ++p) take.values(f, p * 6) += distance * (double(f) / double(frames - 1) - 0.5);
+    return take;
+}
+
+/// 8-connected components of the pixels of `ids` (an ID image) for which `inside` holds; the
+/// number of those pixels in `pixels`.
+inline int silhouetteComponents(const QImage& ids, const std::function<bool(QRgb)>& inside, int* pixels = nullptr)
+{
+    const int w = ids.width(), h = ids.height();
+    std::vector<char> on(std::size_t(w) * std::size_t(h), 0);
+    int count = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            if (inside(ids.pixel(x, y))) {
+                on[std::size_t(y) * std::size_t(w) + std::size_t(x)] = 1;
+                ++count;
+            }
+    if (pixels) *pixels = count;
+    int components = 0;
+    std::vector<int> stack;
+    for (int start = 0; start < w * h; ++start) {
+        if (on[std::size_t(start)] != 1) continue;
+        ++components;
+        on[std::size_t(start)] = 2;
+        stack.push_back(start);
+        while (!stack.empty()) {
+            const int i = stack.back();
+            stack.pop_back();
+            const int x = i % w, y = i / w;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const int nx = x + dx, ny = y + dy;
+                    if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
+                    const int j = ny * w + nx;
+                    if (on[std::size_t(j)] == 1) {
+                        on[std::size_t(j)] = 2;
+                        stack.push_back(j);
+                    }
+                }
+        }
+    }
+    return components;
 }
 
 inline bool isBackground(QRgb pixel)

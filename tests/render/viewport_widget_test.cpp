@@ -207,3 +207,46 @@ TEST_CASE("quick successive frames skip multisampling and the still frame is red
     CHECK(viewport.shownSamples() == 4);
     CHECK(viewport.renderer()->frame(0) == 1);
 }
+
+TEST_CASE("Follow keeps a walking take in the middle of the view at every frame", "[widgets][viewport][travel]")
+{
+    render::SceneContent scene;
+    scene.body = analysis::defaultBodyDescription();
+    scene.takes.push_back(render::TakeSlot{test::travellingTake(60, 400.0), {}});
+    widgets::ViewportWidget viewport;
+    viewport.resize(400, 300);
+    viewport.setScene(scene);
+    render::Camera camera = frontCamera();
+    camera.angleDeg = 0.0f; // on +y, looking across the walk (along -y)
+    camera.distance = 260.0f;
+    viewport.setCamera(camera);
+    viewport.show();
+    REQUIRE(QTest::qWaitForWindowExposed(&viewport));
+    const auto figureOffset = [&viewport](int frame) {
+        viewport.setFrame(frame);
+        const QImage image = viewport.grabFramebuffer();
+        render::BoundsQuery now;
+        now.span = render::FramingSpan::CurrentFrame;
+        now.figuresOnly = true;
+        const render::Bounds figure = viewport.renderer()->displayedBounds(viewport.camera(), now);
+        const QSize pixels = image.size();
+        const QPointF centre = viewport.camera().project(figure.centre(), pixels).pixel;
+        // Also seen: the figure's middle is drawn there, not background.
+        const bool drawn = QRect(QPoint(0, 0), pixels).contains(centre.toPoint()) &&
+                           test::anyPixelNear(image, centre, 4, [](QRgb p) { return !test::isBackground(p); });
+        return std::make_pair(std::abs(centre.x() - 0.5 * pixels.width()) / pixels.width(), drawn);
+    };
+    // Without Follow the walker leaves the view's middle (2 m either side of it).
+    CHECK(figureOffset(0).first > 0.3);
+    CHECK(figureOffset(59).first > 0.3);
+    viewport.setFollow(true);
+    for (const int frame : {0, 20, 40, 59}) {
+        INFO("frame " << frame);
+        const auto [offset, drawn] = figureOffset(frame);
+        CHECK(offset < 0.02);
+        CHECK(drawn);
+    }
+    // The camera kept its angle, elevation and distance.
+    CHECK(viewport.camera().angleDeg == camera.angleDeg);
+    CHECK(viewport.camera().distance == camera.distance);
+}
