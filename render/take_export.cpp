@@ -1,6 +1,7 @@
 #include "render/take_export.h"
 
 #include "analysis/body/body_pose.h"
+#include "analysis/body/performer_body.h"
 #include "analysis/body/puppet_model.h"
 #include "analysis/core/skeleton_take.h"
 #include "analysis/skeleton/puppet_rig_fit.h"
@@ -51,6 +52,33 @@ ExportRig skeletonRig(const std::shared_ptr<const analysis::SkeletalMotion>& mot
     const std::vector<Mesh> meshes = buildSkeletonMeshes(*motion);
     for (std::size_t j = 0; j < meshes.size(); ++j)
         if (!meshes[j].empty()) rig.meshes.push_back(toJointMesh(meshes[j], int(j)));
+    return rig;
+}
+
+ExportRig performerRig(const std::shared_ptr<const analysis::SkeletalMotion>& motion)
+{
+    auto body = analysis::performerBody(*motion);
+    if (!body) return skeletonRig(motion);
+    const analysis::Skeleton& skeleton = *motion->skeleton;
+    ExportRig rig;
+    rig.motion = motion;
+    analysis::io::SkinnedMesh& mesh = rig.skinned;
+    const analysis::PuppetMesh& surface = body->mesh;
+    mesh.positions = surface.positions;
+    mesh.normals = surface.normals;
+    mesh.colours = surface.colours;
+    mesh.indices = surface.indices;
+    mesh.weights = surface.weights;
+    mesh.bindPoses = body->bindPoses;
+    // An End Site moves rigidly with its parent (its bind pose is the parent's, offset): its
+    // weight goes to the parent, which has a node in the file.
+    const auto carrier = [&](int joint) {
+        while (joint >= 0 && skeleton.joints[std::size_t(joint)].endSite) joint = skeleton.joints[std::size_t(joint)].parent;
+        return std::max(joint, 0);
+    };
+    mesh.joints.reserve(surface.vertexCount());
+    for (const auto& influence : surface.joints)
+        mesh.joints.push_back({carrier(influence[0]), carrier(influence[1]), carrier(influence[2]), carrier(influence[3])});
     return rig;
 }
 
@@ -143,7 +171,7 @@ analysis::Status exportTake(const analysis::Take& take, const analysis::BodyDesc
             return analysis::makeError(valid.error().code, file.string() + ": " + valid.error().message);
         ExportRig rig;
         if (shown.skeleton && !analysis::isPuppetRig(*shown.skeleton->skeleton)) {
-            rig = skeletonRig(shown.skeleton);
+            rig = performerRig(shown.skeleton);
         } else {
             // The puppet itself (a take of the puppet's channels, or on its fitted rig).
             analysis::Take channels = shown;

@@ -1,12 +1,12 @@
 #pragma once
 /// Writing a take wherever a take can be written (File > Export Take A/B, `bunraku ... -o`), by
 /// the file's extension: .csv (the take's channels), .bvh (on the take's own skeleton when it
-/// has one, else the part layout) and .glb (glTF 2.0 binary: the skeleton with its bone
-/// capsules as a rigidly skinned mesh, or, for a take without a skeleton, the modelled puppet's
-/// joints under a root with its skinned surface, as the 3D view draws it). The geometry and the
-/// poses are the 3D view's (skeleton_geometry.h; analysis/body/puppet_model.h with
-/// puppetJointPoses; puppet_geometry.h for a body without the puppet's parts), hence this lives
-/// beside the renderer.
+/// has one, else the part layout) and .glb (glTF 2.0 binary: the skeleton with the performer's
+/// body skinned to it, or, for a take without a skeleton, the modelled puppet's joints under a
+/// root with its skinned surface, as the 3D view draws them). The geometry and the poses are the
+/// 3D view's (analysis/body/performer_body.h, skeleton_geometry.h for a skeleton without a body;
+/// analysis/body/puppet_model.h with puppetJointPoses; puppet_geometry.h for a body without the
+/// puppet's parts), hence this lives beside the renderer.
 
 #include "analysis/body/body_description.h"
 #include "analysis/core/result.h"
@@ -39,6 +39,11 @@ struct ExportRig {
 
 /// The take's own skeleton with its bone capsules and joint spheres (skeleton_geometry.h).
 ExportRig skeletonRig(const std::shared_ptr<const analysis::SkeletalMotion>& motion);
+
+/// The take's own skeleton with the performer's body skinned to it (analysis/body/performer_body.h,
+/// the 3D view's "Body" figure; a vertex weighted to an End Site goes to its parent), or, for a
+/// skeleton that has no body (performerBody's errors), skeletonRig's capsules.
+ExportRig performerRig(const std::shared_ptr<const analysis::SkeletalMotion>& motion);
 
 /// The puppet as a skeleton: a root joint "puppet" at the origin and, under it, for a body with
 /// the modelled puppet's parts (bodyHasPuppetParts), the modelled puppet's joints

@@ -133,11 +133,12 @@ for render in job.get("renders", []):
     result["renders"].append({"frame": render["frame"], "png": render["png"], "blender_frame": scene.frame_current})
 
 # Each vertex group's principal axis (Blender's world) in the evaluated mesh.
+# A vertex belongs to the group that weighs most on it.
 members = {}
 for v in mesh.data.vertices:
-    for g in v.groups:
-        if g.weight > 0.0:
-            members.setdefault(mesh.vertex_groups[g.group].name, []).append(v.index)
+    heaviest = max(v.groups, key=lambda g: g.weight, default=None)
+    if heaviest is not None and heaviest.weight > 0.0:
+        members.setdefault(mesh.vertex_groups[heaviest.group].name, []).append(v.index)
 # At rest (the undeformed mesh against the armature's rest bones, head to tail), as a user
 # inspecting the imported file would measure it.
 if job.get("axis_frames"):
