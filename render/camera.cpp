@@ -49,6 +49,10 @@ glm::mat4 Camera::projection(float aspect) const
 {
     const float nearPlane = std::max(1.0f, distance * 0.02f);
     const float farPlane = distance * 4.0f + 2000.0f;
+    if (orthographicHeight > 0.0f) {
+        const float h = 0.5f * orthographicHeight;
+        return glm::ortho(-h * aspect, h * aspect, -h, h, nearPlane, farPlane);
+    }
     return glm::perspective(radians(fieldOfViewDeg), aspect, nearPlane, farPlane);
 }
 
@@ -95,7 +99,8 @@ void Camera::panBy(QPointF pixelDelta, QSize size)
 {
     if (size.height() <= 0) return;
     // World size of one pixel at the target's depth.
-    const float worldPerPixel = 2.0f * distance * std::tan(radians(fieldOfViewDeg) * 0.5f) / float(size.height());
+    const float viewHeight = orthographicHeight > 0.0f ? orthographicHeight : 2.0f * distance * std::tan(radians(fieldOfViewDeg) * 0.5f);
+    const float worldPerPixel = viewHeight / float(size.height());
     target -= right() * float(pixelDelta.x()) * worldPerPixel;
     target += up() * float(pixelDelta.y()) * worldPerPixel;
 }

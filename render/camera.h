@@ -45,6 +45,9 @@ struct Camera {
     float distance = 260.0f;     ///< cm from the target
     glm::vec3 target{0.0f, 0.0f, 0.0f}; ///< the point looked at (the origin until panned)
     float fieldOfViewDeg = 35.0f; ///< vertical
+    /// 0: a perspective camera (fieldOfViewDeg); > 0: orthographic, the view's height (cm) at
+    /// every depth (tests comparing with another renderer's orthographic camera, e.g. Blender's).
+    float orthographicHeight = 0.0f;
 
     /// The same camera moved to a preset (angle, distance and target kept).
     Camera withPreset(CameraPreset preset) const;

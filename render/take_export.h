@@ -1,10 +1,12 @@
 #pragma once
 /// Writing a take wherever a take can be written (File > Export Take A/B, `bunraku ... -o`), by
 /// the file's extension: .csv (the take's channels), .bvh (on the take's own skeleton when it
-/// has one, else the part layout) and .glb (glTF 2.0 binary: the skeleton with its bone
-/// capsules as a rigidly skinned mesh, or, for a take without a skeleton, the puppet's parts as
-/// joints under a root with the puppet's mesh bound to them). The geometry is the 3D view's
-/// (skeleton_geometry.h, puppet_geometry.h), hence this lives beside the renderer.
+/// has one, else the part layout) and .glb (glTF 2.0 binary: the skeleton with the performer's
+/// body skinned to it, or, for a take without a skeleton, the modelled puppet's joints under a
+/// root with its skinned surface, as the 3D view draws them). The geometry and the poses are the
+/// 3D view's (analysis/body/performer_body.h, skeleton_geometry.h for a skeleton without a body;
+/// analysis/body/puppet_model.h with puppetJointPoses; puppet_geometry.h for a body without the
+/// puppet's parts), hence this lives beside the renderer.
 
 #include "analysis/body/body_description.h"
 #include "analysis/core/result.h"
@@ -27,18 +29,30 @@ TakeExportFormat takeExportFormat(const std::filesystem::path& file);
 /// "expected a .bvh, .glb or .csv file name", for error messages.
 const char* takeExportExpectation();
 
-/// A skeletal motion with the meshes its joints carry: what a .glb holds.
+/// A skeletal motion with the mesh skinned to it: what a .glb holds. Either rigid meshes, each
+/// carried by one joint, or (when `meshes` is empty) one smoothly skinned mesh.
 struct ExportRig {
     std::shared_ptr<const analysis::SkeletalMotion> motion;
     std::vector<analysis::io::JointMesh> meshes;
+    analysis::io::SkinnedMesh skinned;
 };
 
 /// The take's own skeleton with its bone capsules and joint spheres (skeleton_geometry.h).
 ExportRig skeletonRig(const std::shared_ptr<const analysis::SkeletalMotion>& motion);
 
-/// The puppet as a skeleton: a root joint "puppet" at the origin and one joint per body part
-/// (named as the body part), each posed by worldPartPoses in every frame, carrying that part's
-/// mesh. Errors when the take cannot drive the body (bindBody).
+/// The take's own skeleton with the performer's body skinned to it (analysis/body/performer_body.h,
+/// the 3D view's "Body" figure; a vertex weighted to an End Site goes to its parent), or, for a
+/// skeleton that has no body (performerBody's errors), skeletonRig's capsules.
+ExportRig performerRig(const std::shared_ptr<const analysis::SkeletalMotion>& motion);
+
+/// The puppet as a skeleton: a root joint "puppet" at the origin and, under it, for a body with
+/// the modelled puppet's parts (bodyHasPuppetParts), the modelled puppet's joints
+/// (analysis::kPuppetJointNames: the six parts, the kimono and the two sleeves) posed in every
+/// frame as the 3D view poses them (worldPartPoses, then puppetJointPoses) with the puppet's
+/// skinned surface (fittedPuppetMesh: its bind poses, its four weights per vertex, its colours)
+/// in `skinned`; for another body, one joint per body part (named as the part) posed by
+/// worldPartPoses, carrying that part's primitives in `meshes`. Errors when the take cannot
+/// drive the body (bindBody).
 analysis::Result<ExportRig> puppetRig(const analysis::BodyDescription& body, const analysis::Take& take);
 
 /// What a user must know about writing `take` to `file`: every format holds the take as one body

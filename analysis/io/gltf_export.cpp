@@ -4,7 +4,11 @@
 
 #include <tiny_gltf.h>
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstring>
+#include <utility>
 #include <limits>
 #include <sstream>
 
@@ -121,7 +125,61 @@ Status checkMeshes(const Skeleton& skeleton, const std::vector<JointMesh>& meshe
     return okStatus();
 }
 
+Status checkSkinnedMesh(const Skeleton& skeleton, const SkinnedMesh& mesh)
+{
+    const std::string where = (skeleton.name.empty() ? std::string("skeleton") : skeleton.name) + ": glTF skinned mesh";
+    const std::size_t n = mesh.positions.size();
+    if (mesh.normals.size() != n || mesh.colours.size() != n || mesh.joints.size() != n || mesh.weights.size() != n)
+        return makeError(ErrorCode::InvalidArgument, where + ": positions, normals, colours, joints and weights differ in count");
+    if (mesh.indices.empty() || mesh.indices.size() % 3 != 0)
+        return makeError(ErrorCode::InvalidArgument, where + ": a glTF skin needs triangles (3 indices each), and none were given");
+    if (mesh.bindPoses.size() != skeleton.joints.size())
+        return makeError(ErrorCode::InvalidArgument, where + ": expected one bind pose per joint (" + std::to_string(skeleton.joints.size()) +
+                                                         "), got " + std::to_string(mesh.bindPoses.size()));
+    if (n > std::size_t(std::numeric_limits<std::uint32_t>::max()))
+        return makeError(ErrorCode::InvalidArgument, where + ": too many vertices");
+    for (std::uint32_t index : mesh.indices)
+        if (index >= n) return makeError(ErrorCode::InvalidArgument, where + ": an index is out of range");
+    for (std::size_t v = 0; v < n; ++v) {
+        float sum = 0.0f;
+        for (int k = 0; k < 4; ++k) {
+            const int j = mesh.joints[v][std::size_t(k)];
+            const float w = mesh.weights[v][k];
+            if (!std::isfinite(w) || w < 0.0f)
+                return makeError(ErrorCode::InvalidArgument, where + ": vertex " + std::to_string(v) + " has a negative or non-finite weight");
+            if (w == 0.0f) continue;
+            if (j < 0 || j >= int(skeleton.joints.size()) || skeleton.joints[std::size_t(j)].endSite)
+                return makeError(ErrorCode::InvalidArgument, where + ": vertex " + std::to_string(v) + " is weighted to no joint of the skeleton");
+            sum += w;
+        }
+        if (!(sum > 0.0f)) return makeError(ErrorCode::InvalidArgument, where + ": vertex " + std::to_string(v) + " has no weight");
+    }
+    return okStatus();
+}
+
 } // namespace
+
+Result<SkinnedMesh> rigidlySkinnedMesh(const SkeletalMotion& motion, const std::vector<JointMesh>& meshes)
+{
+    if (auto valid = validateSkeletalMotion(motion); !valid) return valid.error();
+    if (motion.frameCount() < 1) return makeError(ErrorCode::InvalidArgument, motion.skeleton->name + ": glTF export needs at least one frame");
+    if (auto ok = checkMeshes(*motion.skeleton, meshes); !ok) return ok.error();
+    SkinnedMesh out;
+    out.bindPoses = motion.worldPoses(0);
+    for (const JointMesh& mesh : meshes) {
+        const RigidTransform& bind = out.bindPoses[std::size_t(mesh.joint)];
+        const auto base = std::uint32_t(out.positions.size());
+        for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+            out.positions.push_back(bind.apply(mesh.positions[v].cast<double>()).cast<float>());
+            out.normals.push_back((bind.rotation * mesh.normals[v].cast<double>()).normalized().cast<float>());
+            out.colours.push_back(mesh.colours[v]);
+            out.joints.push_back({mesh.joint, 0, 0, 0});
+            out.weights.emplace_back(1.0f, 0.0f, 0.0f, 0.0f);
+        }
+        for (std::uint32_t index : mesh.indices) out.indices.push_back(base + index);
+    }
+    return out;
+}
 
 Eigen::Quaterniond gltfAxisChange()
 {
@@ -137,10 +195,20 @@ Result<std::string> skeletalMotionToGlb(const SkeletalMotion& motion, double rat
 {
     if (auto valid = validateSkeletalMotion(motion); !valid) return valid.error();
     if (!plausibleRate(rateHz)) return makeError(ErrorCode::InvalidArgument, "glTF export: " + rateExpectation());
+    auto mesh = rigidlySkinnedMesh(motion, meshes);
+    if (!mesh) return mesh.error();
+    return skinnedMotionToGlb(motion, rateHz, *mesh, options);
+}
+
+Result<std::string> skinnedMotionToGlb(const SkeletalMotion& motion, double rateHz, const SkinnedMesh& skinned,
+                                       const GltfExportOptions& options)
+{
+    if (auto valid = validateSkeletalMotion(motion); !valid) return valid.error();
+    if (!plausibleRate(rateHz)) return makeError(ErrorCode::InvalidArgument, "glTF export: " + rateExpectation());
     const Skeleton& skeleton = *motion.skeleton;
     const Eigen::Index frames = motion.frameCount();
     if (frames < 1) return makeError(ErrorCode::InvalidArgument, skeleton.name + ": glTF export needs at least one frame");
-    if (auto ok = checkMeshes(skeleton, meshes); !ok) return ok.error();
+    if (auto ok = checkSkinnedMesh(skeleton, skinned); !ok) return ok.error();
     const Eigen::Quaterniond g = gltfAxisChange();
 
     tinygltf::Model model;
@@ -152,7 +220,6 @@ Result<std::string> skeletalMotionToGlb(const SkeletalMotion& motion, double rat
     const std::size_t slots = skeleton.joints.size();
     std::vector<int> nodeOf(slots, -1);
     std::vector<int> skinJoints;
-    const auto rest = motion.worldPoses(0);
     for (std::size_t j = 0; j < slots; ++j) {
         const SkeletonJoint& joint = skeleton.joints[j];
         if (joint.endSite) continue;
@@ -169,36 +236,63 @@ Result<std::string> skeletalMotionToGlb(const SkeletalMotion& motion, double rat
     std::vector<int> skinIndexOfNode(model.nodes.size(), -1);
     for (std::size_t k = 0; k < skinJoints.size(); ++k) skinIndexOfNode[std::size_t(skinJoints[k])] = int(k);
 
-    // Inverse bind matrices: the first frame's world poses.
+    // Inverse bind matrices: the mesh's bind poses.
     std::vector<float> inverseBind;
     for (std::size_t j = 0; j < slots; ++j) {
         if (nodeOf[j] < 0) continue;
-        const Eigen::Matrix4d m = toGltf(rest[j], g).inverse().isometry().matrix();
+        const Eigen::Matrix4d m = toGltf(skinned.bindPoses[j], g).inverse().isometry().matrix();
         for (int column = 0; column < 4; ++column)
             for (int row = 0; row < 4; ++row) inverseBind.push_back(float(m(row, column)));
     }
 
-    // The mesh, in the bind pose (first frame), each vertex on its joint with weight 1.
+    // The mesh in its bind pose; each vertex's influences by decreasing weight, renormalised
+    // (unused slots: joint 0, weight 0).
     std::vector<float> positions, normals, colours, weights;
     std::vector<std::uint16_t> jointIndices;
-    std::vector<std::uint32_t> indices;
-    for (const JointMesh& mesh : meshes) {
-        const RigidTransform bind = toGltf(rest[std::size_t(mesh.joint)], g);
-        const auto base = std::uint32_t(positions.size() / 3);
-        const auto skinIndex = std::uint16_t(skinIndexOfNode[std::size_t(nodeOf[std::size_t(mesh.joint)])]);
-        for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
-            const Eigen::Vector3d p = bind.apply(kMetresPerCm * mesh.positions[v].cast<double>());
-            const Eigen::Vector3d n = (bind.rotation * mesh.normals[v].cast<double>()).normalized();
-            for (int a = 0; a < 3; ++a) {
-                positions.push_back(float(p[a]));
-                normals.push_back(float(n[a]));
-                colours.push_back(std::clamp(mesh.colours[v][a], 0.0f, 1.0f));
-            }
-            jointIndices.insert(jointIndices.end(), {skinIndex, 0, 0, 0});
-            weights.insert(weights.end(), {1.0f, 0.0f, 0.0f, 0.0f});
+    const std::size_t vertices = skinned.positions.size();
+    positions.reserve(3 * vertices);
+    normals.reserve(3 * vertices);
+    colours.reserve(3 * vertices);
+    weights.reserve(4 * vertices);
+    jointIndices.reserve(4 * vertices);
+    for (std::size_t v = 0; v < vertices; ++v) {
+        const Eigen::Vector3d p = g * (kMetresPerCm * skinned.positions[v].cast<double>());
+        const Eigen::Vector3d n = (g * skinned.normals[v].cast<double>()).normalized();
+        for (int a = 0; a < 3; ++a) {
+            positions.push_back(float(p[a]));
+            normals.push_back(float(n[a]));
+            colours.push_back(std::clamp(skinned.colours[v][a], 0.0f, 1.0f));
         }
-        for (std::uint32_t index : mesh.indices) indices.push_back(base + index);
+        std::array<std::pair<float, int>, 4> influences{};
+        double sum = 0.0;
+        for (int k = 0; k < 4; ++k) {
+            const float w = skinned.weights[v][k];
+            influences[std::size_t(k)] = {w, w > 0.0f ? skinIndexOfNode[std::size_t(nodeOf[std::size_t(skinned.joints[v][std::size_t(k)])])] : 0};
+            sum += double(w);
+        }
+        // The same joint twice (weights split) counts once.
+        for (int a = 0; a < 4; ++a)
+            for (int b = a + 1; b < 4; ++b)
+                if (influences[std::size_t(a)].first > 0.0f && influences[std::size_t(b)].first > 0.0f &&
+                    influences[std::size_t(a)].second == influences[std::size_t(b)].second) {
+                    influences[std::size_t(a)].first += influences[std::size_t(b)].first;
+                    influences[std::size_t(b)] = {0.0f, 0};
+                }
+        std::stable_sort(influences.begin(), influences.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+        float written = 0.0f;
+        for (int k = 0; k < 4; ++k) {
+            auto& [w, joint] = influences[std::size_t(k)];
+            if (w <= 0.0f) joint = 0;
+            w = k == 0 ? 0.0f : float(double(w) / sum);
+            written += w;
+        }
+        influences[0].first = 1.0f - written; // the largest absorbs the rounding: the sum is 1 in float
+        for (const auto& [w, joint] : influences) {
+            weights.push_back(w);
+            jointIndices.push_back(std::uint16_t(joint));
+        }
     }
+    const std::vector<std::uint32_t>& indices = skinned.indices;
     tinygltf::Primitive primitive;
     primitive.mode = TINYGLTF_MODE_TRIANGLES;
     primitive.attributes["POSITION"] = buffer.addFloats(positions, 3, TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER, true);
@@ -294,6 +388,14 @@ Result<std::string> skeletalMotionToGlb(const SkeletalMotion& motion, double rat
     if (!writer.WriteGltfSceneToStream(&model, stream, false, true))
         return makeError(ErrorCode::Io, skeleton.name + ": the glTF writer failed");
     return stream.str();
+}
+
+Status writeSkinnedGlb(const SkeletalMotion& motion, double rateHz, const SkinnedMesh& mesh, const std::filesystem::path& file,
+                       const GltfExportOptions& options)
+{
+    auto bytes = skinnedMotionToGlb(motion, rateHz, mesh, options);
+    if (!bytes) return makeError(bytes.error().code, file.string() + ": " + bytes.error().message);
+    return writeFileAtomically(file, *bytes);
 }
 
 Status writeSkeletalGlb(const SkeletalMotion& motion, double rateHz, const std::vector<JointMesh>& meshes,

@@ -1,7 +1,7 @@
 #pragma once
 /// glTF 2.0 binary (.glb) export of a skeletal motion: the joints as a node hierarchy with a
-/// skin, rigidly skinned triangle meshes (each vertex bound to one joint), and one animation
-/// with the take's times. glTF is y up, metres, the asset facing +Z: the workbench's axes map
+/// skin, one triangle mesh skinned to them (rigidly, each vertex bound to one joint, or smoothly,
+/// up to four joints per vertex), and one animation with the take's times. glTF is y up, metres, the asset facing +Z: the workbench's axes map
 /// as x (forward) -> +Z, y (left) -> +X, z (up) -> +Y, and cm / 100. Written with Debian's
 /// tinygltf. docs/FORMATS.md.
 
@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -26,6 +27,24 @@ struct JointMesh {
     std::vector<Eigen::Vector3f> colours;
     std::vector<std::uint32_t> indices; ///< 3 per triangle
 };
+
+/// A triangle mesh skinned to up to four joints per vertex (the modelled puppet), in its bind
+/// pose: vertices in the frame the bind poses are given in (workbench axes, cm).
+struct SkinnedMesh {
+    std::vector<Eigen::Vector3f> positions;
+    std::vector<Eigen::Vector3f> normals;
+    std::vector<Eigen::Vector3f> colours;       ///< RGB in [0, 1]
+    std::vector<std::array<int, 4>> joints;     ///< indices into Skeleton::joints (not End Sites)
+    std::vector<Eigen::Vector4f> weights;       ///< >= 0, summing to 1 (renormalised when written)
+    std::vector<std::uint32_t> indices;         ///< 3 per triangle
+    /// world_T_joint of every joint of the skeleton in the bind pose (Skeleton::joints order; End
+    /// Sites' entries unused): the inverse bind matrices.
+    std::vector<RigidTransform> bindPoses;
+};
+
+/// Rigid meshes as one skinned mesh bound in the first frame's pose (each vertex on its joint
+/// with weight 1). Errors as skeletalMotionToGlb does for the meshes.
+Result<SkinnedMesh> rigidlySkinnedMesh(const SkeletalMotion& motion, const std::vector<JointMesh>& meshes);
 
 struct GltfExportOptions {
     /// The animation's, the scene's and the mesh's name: short (Blender cuts names at 63 bytes).
@@ -49,8 +68,19 @@ Eigen::Quaterniond gltfAxisChange();
 Result<std::string> skeletalMotionToGlb(const SkeletalMotion& motion, double rateHz, const std::vector<JointMesh>& meshes,
                                         const GltfExportOptions& options = {});
 
+/// The same with a mesh skinned smoothly: the skin's inverse bind matrices are `mesh.bindPoses`,
+/// JOINTS_0 / WEIGHTS_0 the mesh's four influences (a glTF client blends them linearly). Errors
+/// for a mesh whose arrays differ in length, an index, joint or weight out of range, or a
+/// bind pose missing.
+Result<std::string> skinnedMotionToGlb(const SkeletalMotion& motion, double rateHz, const SkinnedMesh& mesh,
+                                       const GltfExportOptions& options = {});
+
 /// Writes skeletalMotionToGlb atomically.
 Status writeSkeletalGlb(const SkeletalMotion& motion, double rateHz, const std::vector<JointMesh>& meshes,
                         const std::filesystem::path& file, const GltfExportOptions& options = {});
+
+/// Writes skinnedMotionToGlb atomically.
+Status writeSkinnedGlb(const SkeletalMotion& motion, double rateHz, const SkinnedMesh& mesh, const std::filesystem::path& file,
+                       const GltfExportOptions& options = {});
 
 } // namespace bunraku::analysis::io

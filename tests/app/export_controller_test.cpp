@@ -31,6 +31,8 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <set>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -131,9 +133,19 @@ TEST_CASE("File > Export Take A and B write BVH on the take's skeleton, glTF and
     CHECK(fileActions.contains(QStringLiteral("exportTakeBAction")));
 
     const auto dir = test::scratchDir("export_controller");
-    // A corpus take has no skeleton: BVH in the part layout, glTF as the puppet.
+    // A corpus take has no skeleton: BVH in the part layout, glTF as the modelled puppet (its
+    // nine joints under a root, one mesh skinned to them with four weights per vertex).
     REQUIRE(window->exports().exportTake(TakeSlot::A, QString::fromStdString((dir / "demo.glb").string())));
     CHECK(bunraku::test::fileBytes(dir / "demo.glb").substr(0, 4) == "glTF");
+    const auto demoGltf = glbJson(dir / "demo.glb");
+    REQUIRE(demoGltf["skins"].size() == 1);
+    CHECK(demoGltf["skins"][0]["joints"].size() == 10);
+    std::set<std::string> nodes;
+    for (const auto& node : demoGltf["nodes"]) nodes.insert(node.value("name", ""));
+    for (const char* joint : {"puppet", "head", "shoulder", "right_hand", "left_arm", "kimono", "right_sleeve", "left_sleeve"})
+        CHECK(nodes.count(joint) == 1);
+    REQUIRE(demoGltf["meshes"].size() == 1);
+    CHECK(demoGltf["meshes"][0]["primitives"][0]["attributes"].contains("WEIGHTS_0"));
     // A file that cannot be written is refused with its name, and nothing appears.
     CHECK_FALSE(window->exports().exportTake(TakeSlot::A, QString::fromStdString((dir / "take.fbx").string())));
     CHECK(window->exports().lastError().contains(QStringLiteral("take.fbx")));

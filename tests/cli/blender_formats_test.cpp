@@ -11,6 +11,7 @@
 // away): that file is compared with Blender's reading, and the variants keep every key. Without Blender or the Bandai files the case fails under CI=true and is
 // reported as skipped otherwise.
 #include "tests/cli/cli_runner.h"
+#include "tests/support/blender_peer.h"
 #include "tests/support/peer.h"
 #include "tests/support/shared_data.h"
 #include "tests/support/test_paths.h"
@@ -34,12 +35,6 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr Eigen::Index kFrames = 40;
-
-bool requireBlender()
-{
-    return bunraku::test::requirePeer(std::system("command -v blender >/dev/null 2>&1") == 0, "blender (Debian's Blender 3.4)",
-                                      "apt-get install blender (scripts/install-deps.sh)");
-}
 
 /// The first kFrames frames of a Bandai take as a BVH file in `dir` (made at test time).
 fs::path trimmedBandai(const std::string& name, const fs::path& dir)
@@ -168,7 +163,7 @@ TEST_CASE("FBX glTF and Collada takes exported by Blender from Bandai BVH files 
     const std::vector<std::string> names{"bye_angry_001.bvh", "wave-right-hand_active_001.bvh"};
     for (const auto& name : names)
         if (!bunraku::test::requireBandaiData(fs::exists(bunraku::test::bandaiDir() / name))) return;
-    if (!requireBlender()) return;
+    if (!bunraku::test::requireBlender()) return;
     const fs::path dir = bunraku::test::scratchDir("blender_formats");
     const fs::path made = dir / "made";
     fs::create_directories(made);

@@ -3,12 +3,14 @@
 // agree with ours within 0.1 cm. Blender runs headless on tests/cli/blender_import.py. Without
 // Blender the cases fail under CI=true and are reported as skipped otherwise.
 #include "tests/cli/cli_runner.h"
+#include "tests/support/blender_peer.h"
 #include "tests/support/peer.h"
 #include "tests/support/shared_data.h"
 #include "tests/support/test_paths.h"
 
 #include "analysis/body/body_description.h"
 #include "analysis/body/body_pose.h"
+#include "analysis/body/puppet_model.h"
 #include "analysis/core/skeleton.h"
 #include "analysis/io/bvh_import.h"
 #include "analysis/io/gltf_export.h"
@@ -28,14 +30,6 @@ using nlohmann::json;
 namespace {
 
 namespace fs = std::filesystem;
-
-/// Debian's Blender 3.4, the real client the exports are checked against (a missing one fails
-/// under CI=true, tests/support/peer.h).
-bool requireBlender()
-{
-    return bunraku::test::requirePeer(std::system("command -v blender >/dev/null 2>&1") == 0, "blender (Debian's Blender 3.4)",
-                                      "apt-get install blender (scripts/install-deps.sh)");
-}
 
 /// What Blender made of a file (blender_import.py's JSON).
 json blenderImport(const std::string& kind, const fs::path& file, const std::vector<Eigen::Index>& frames)
@@ -120,7 +114,7 @@ TEST_CASE("blender imports a bandai take exported by the command line as BVH and
 {
     const fs::path source = bunraku::test::bandaiDir() / "bye_angry_001.bvh";
     if (!bunraku::test::requireBandaiData(fs::exists(source))) return;
-    if (!requireBlender()) return;
+    if (!bunraku::test::requireBlender()) return;
     const auto motion = bandaiMotion(source);
     REQUIRE(motion->skeleton->jointCount() == 22);
     const fs::path dir = bunraku::test::scratchDir("blender_bandai");
@@ -138,7 +132,7 @@ TEST_CASE("blender imports a derived take on the source skeleton", "[cli][blende
 {
     const fs::path source = bunraku::test::bandaiDir() / "bye_normal_001.bvh";
     if (!bunraku::test::requireBandaiData(fs::exists(source))) return;
-    if (!requireBlender()) return;
+    if (!bunraku::test::requireBlender()) return;
     auto file = io::readBvh(source);
     REQUIRE(file.ok());
     auto take = io::bvhToPuppetTake(*file);
@@ -176,7 +170,7 @@ TEST_CASE("blender imports a derived take on the source skeleton", "[cli][blende
 
 TEST_CASE("blender imports a designed demo take as glTF: the puppet's parts as bones with its mesh", "[cli][blender]")
 {
-    if (!requireBlender()) return;
+    if (!bunraku::test::requireBlender()) return;
     const fs::path dir = bunraku::test::scratchDir("blender_puppet");
     REQUIRE(runBunraku({"demo", "-o", (dir / "demo").string(), "--seed", "3"}).exitCode == 0);
     fs::path takeFile;
@@ -193,12 +187,14 @@ TEST_CASE("blender imports a designed demo take as glTF: the puppet's parts as b
     const BodyDescription body = defaultBodyDescription();
     const auto frames = sampledFrames(designed->frameCount());
     const json blender = blenderImport("glb", dir / "designed.glb", frames);
-    CHECK(blender["bones"].get<std::size_t>() == 1 + body.parts.size());
+    // The modelled puppet's joints (its six parts, the kimono, the sleeves) under the root.
+    CHECK(blender["bones"].get<int>() == 1 + kPuppetJointCount);
     CHECK(blender["frames"].get<Eigen::Index>() == designed->frameCount());
+    const PuppetMesh& puppet = shippedPuppetMesh();
     for (Eigen::Index f : frames) {
-        const auto poses = worldPartPoses(body, *designed, f);
+        const auto poses = puppetJointPoses(puppet, body, worldPartPoses(body, *designed, f));
         std::map<std::string, Eigen::Vector3d> expected{{"puppet", Eigen::Vector3d::Zero()}};
-        for (std::size_t p = 0; p < poses.size(); ++p) expected[body.parts[p].name] = poses[p].translation;
+        for (int j = 0; j < kPuppetJointCount; ++j) expected[kPuppetJointNames[std::size_t(j)]] = poses[std::size_t(j)].translation;
         CHECK(worstDistance(blender, f, expected, 0.01) < 0.1);
     }
 }
@@ -211,7 +207,7 @@ TEST_CASE("blender imports a designed Bandai take on the performer's 22-joint sk
     const fs::path angry = bunraku::test::bandaiDir() / "bye_angry_001.bvh";
     if (!bunraku::test::requireBandaiData(fs::exists(normal) && fs::exists(angry)))
         return;
-    if (!requireBlender()) return;
+    if (!bunraku::test::requireBlender()) return;
     const fs::path dir = bunraku::test::scratchDir("blender_designed");
     const std::string warp = (dir / "warp.csv").string();
     const std::string gains = (dir / "gains.json").string();

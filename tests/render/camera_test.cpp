@@ -98,3 +98,30 @@ TEST_CASE("panning keeps the target under the mouse and zooming changes the dist
     camera.orbitBy(0.0f, 500.0f);
     CHECK(camera.elevationDeg == 90.0f);
 }
+
+TEST_CASE("an orthographic camera maps its height to the image at every depth", "[camera]")
+{
+    Camera camera;
+    camera.angleDeg = 270.0f; // on +x, looking along -x
+    camera.elevationDeg = 0.0f;
+    camera.distance = 500.0f;
+    camera.target = {0.0f, 0.0f, 100.0f};
+    camera.orthographicHeight = 200.0f;
+    const QSize size(400, 400);
+    // 1 cm = 2 px, whatever the depth; the target at the centre.
+    for (const float depth : {-80.0f, 0.0f, 150.0f}) {
+        const auto centre = camera.project({depth, 0.0f, 100.0f}, size);
+        CHECK(centre.pixel.x() == Approx(200.0).margin(1e-3));
+        CHECK(centre.pixel.y() == Approx(200.0).margin(1e-3));
+        const auto high = camera.project({depth, 0.0f, 150.0f}, size);
+        CHECK(high.pixel.y() == Approx(100.0).margin(1e-3));
+        const auto right = camera.project({depth, 50.0f, 100.0f}, size); // the screen's right is +y here
+        CHECK(right.pixel.x() == Approx(300.0).margin(1e-3));
+    }
+    // Rays are parallel, along the view.
+    const auto ray = camera.rayThrough(QPointF(20.0, 380.0), size);
+    CHECK(near(ray.direction, camera.forward()));
+    // Dragging 100 px to the right moves the target 50 cm to the screen's left.
+    camera.panBy(QPointF(100.0, 0.0), size);
+    CHECK(near(camera.target, {0.0f, -50.0f, 100.0f}, 1e-3f));
+}

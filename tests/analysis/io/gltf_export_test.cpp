@@ -101,3 +101,56 @@ TEST_CASE("glTF export refuses what a skin cannot hold")
     CHECK_FALSE(skeletalMotionToGlb(motion, 0.0, trianglePerJoint(*skeleton)).ok());
     CHECK(skeletalMotionToGlb(motion, 30.0, trianglePerJoint(*skeleton)).ok());
 }
+
+TEST_CASE("a smoothly skinned glTF mesh keeps four influences summing to one and refuses bad weights")
+{
+    auto skeleton = std::make_shared<Skeleton>();
+    skeleton->joints = {SkeletonJoint{"root", -1, Eigen::Vector3d::Zero(), {}, false},
+                        SkeletonJoint{"arm", 0, Eigen::Vector3d(0, 0, 10), {}, false},
+                        SkeletonJoint{"arm_End", 1, Eigen::Vector3d(0, 0, 10), {}, true}};
+    const SkeletalMotion motion = makeRestMotion(skeleton, 3);
+    SkinnedMesh mesh;
+    mesh.positions = {{0, 0, 0}, {1, 0, 5}, {0, 1, 10}};
+    mesh.normals.assign(3, Eigen::Vector3f(0, 0, 1));
+    mesh.colours.assign(3, Eigen::Vector3f(0.2f, 0.4f, 0.6f));
+    // Unsorted, one joint named twice, weights not quite normalised.
+    mesh.joints = {{{0, 1, 0, 0}}, {{1, 0, 1, 0}}, {{1, 0, 0, 0}}};
+    mesh.weights = {{0.3f, 0.7f, 0.0f, 0.0f}, {0.25f, 0.5f, 0.26f, 0.0f}, {1.0f, 0.0f, 0.0f, 0.0f}};
+    mesh.indices = {0, 1, 2};
+    mesh.bindPoses = motion.worldPoses(0);
+    const auto bytes = skinnedMotionToGlb(motion, 30.0, mesh);
+    REQUIRE(bytes.ok());
+    const tinygltf::Model model = bunraku::test::loadGlbBytes(*bytes);
+    const auto& primitive = model.meshes.at(0).primitives.at(0);
+    const auto weights = bunraku::test::gltfFloats(model, primitive.attributes.at("WEIGHTS_0"));
+    const tinygltf::Accessor& jointsAccessor = model.accessors[std::size_t(primitive.attributes.at("JOINTS_0"))];
+    const tinygltf::BufferView& view = model.bufferViews[std::size_t(jointsAccessor.bufferView)];
+    const auto* joints = reinterpret_cast<const std::uint16_t*>(model.buffers[0].data.data() + view.byteOffset + jointsAccessor.byteOffset);
+    for (std::size_t v = 0; v < 3; ++v) {
+        float sum = 0.0f;
+        for (std::size_t k = 0; k < 4; ++k) sum += weights[4 * v + k];
+        CHECK(std::abs(sum - 1.0f) < 1e-6f);
+        for (std::size_t k = 0; k + 1 < 4; ++k) CHECK(weights[4 * v + k] >= weights[4 * v + k + 1]); // largest first
+    }
+    // Vertex 1: the arm's two entries merged (0.51 of 1.01), then the root's 0.5.
+    CHECK(joints[4] == 1);
+    CHECK(weights[4] == Approx(0.51 / 1.01).epsilon(1e-6));
+    CHECK(joints[5] == 0);
+    CHECK(weights[5] == Approx(0.5 / 1.01).epsilon(1e-6));
+    CHECK(weights[6] == 0.0f);
+
+    SkinnedMesh negative = mesh;
+    negative.weights[0][0] = -0.1f;
+    CHECK_FALSE(skinnedMotionToGlb(motion, 30.0, negative).ok());
+    SkinnedMesh onEnd = mesh;
+    onEnd.joints[0][1] = 2;
+    const auto refused = skinnedMotionToGlb(motion, 30.0, onEnd);
+    REQUIRE_FALSE(refused.ok());
+    CHECK_THAT(refused.error().message, Catch::Contains("vertex 0"));
+    SkinnedMesh noBind = mesh;
+    noBind.bindPoses.pop_back();
+    CHECK_FALSE(skinnedMotionToGlb(motion, 30.0, noBind).ok());
+    SkinnedMesh noWeight = mesh;
+    noWeight.weights[2] = Eigen::Vector4f::Zero();
+    CHECK_FALSE(skinnedMotionToGlb(motion, 30.0, noWeight).ok());
+}
