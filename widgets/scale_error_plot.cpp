@@ -19,18 +19,28 @@ const QColor kDofColours[] = {QColor(0xe6, 0x9f, 0x00), QColor(0x56, 0xb4, 0xe9)
 ScaleErrorPlot::ScaleErrorPlot(QWidget* parent) : QWidget(parent), m_plot(new QCustomPlot(this))
 {
     setObjectName("scaleErrorPlot");
-    m_plot->xAxis->setLabel(tr("largest scale c of the approximation"));
-    m_plot->yAxis->setLabel(tr("eq. 5.18 relative error"));
-    m_plot->legend->setVisible(true);
     QFont small = font();
     small.setPointSizeF(std::max(6.0, small.pointSizeF() - 2.0));
-    m_plot->legend->setFont(small);
+    m_plot->xAxis->setLabel(tr("largest scale c"));
+    m_plot->yAxis->setLabel(tr("rel. error (5.18)"));
+    m_plot->xAxis->setLabelFont(small);
+    m_plot->yAxis->setLabelFont(small);
     m_plot->xAxis->setTickLabelFont(small);
     m_plot->yAxis->setTickLabelFont(small);
-    m_plot->setMinimumHeight(140);
+    m_plot->setMinimumHeight(200);
     auto* title = new QCPTextElement(m_plot, tr("Approximation error per scale (thesis 5.4.1, Fig. 5.16)"), small);
     m_plot->plotLayout()->insertRow(0);
     m_plot->plotLayout()->addElement(0, 0, title);
+    // The legend in its own row under the plot, four entries a line: inside the axes it hid the
+    // curves of a narrow dock.
+    m_plot->legend->setVisible(true);
+    m_plot->legend->setFont(small);
+    m_plot->axisRect()->insetLayout()->take(m_plot->legend);
+    m_plot->plotLayout()->addElement(2, 0, m_plot->legend);
+    m_plot->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
+    m_plot->legend->setWrap(4);
+    m_plot->legend->setMargins(QMargins(2, 0, 2, 0));
+    m_plot->plotLayout()->setRowStretchFactor(2, 0.001);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_plot);

@@ -87,3 +87,27 @@ TEST_CASE("the scale error plot draws one curve per DOF and the mean", "[widgets
     plot.setError({}, {}, {});
     CHECK(plot.curveCount() == 0);
 }
+
+TEST_CASE("the scale error plot's legend and axis titles stay clear of its curves in a narrow dock", "[widgets]")
+{
+    widgets::ScaleErrorPlot plot;
+    analysis::ApproximationError error;
+    error.scales = {1, 2, 3, 4, 5, 6, 7, 8};
+    error.relativeError = Eigen::MatrixXd::Constant(8, 6, 0.4);
+    error.meanRelativeError = Eigen::VectorXd::Constant(8, 0.4);
+    plot.setError(error, {"x", "y", "z", "rot_x", "rot_y", "rot_z"}, "wave/active");
+    // The Design dock at 1366 x 768: about 320 pixels wide.
+    plot.resize(320, 220);
+    plot.show();
+    REQUIRE(QTest::qWaitForWindowExposed(&plot));
+    plot.plot()->replot();
+    QCustomPlot* custom = plot.plot();
+    const QRect axes = custom->axisRect()->outerRect();
+    CHECK_FALSE(custom->legend->outerRect().intersects(custom->axisRect()->rect()));
+    CHECK(custom->graphCount() == 7);
+    // The y axis title fits along the axis (it is drawn rotated): not cut.
+    const QFontMetrics metrics(custom->yAxis->labelFont());
+    CHECK(metrics.horizontalAdvance(custom->yAxis->label()) <= custom->axisRect()->rect().height());
+    CHECK(metrics.horizontalAdvance(custom->xAxis->label()) <= custom->axisRect()->rect().width());
+    CHECK(axes.height() >= 100);
+}
