@@ -111,6 +111,7 @@ NewCorpusDialog::NewCorpusDialog(QWidget* parent) : QDialog(parent)
         remap();
     });
     m_units = makeUnitsBox(this);
+    connect(m_units, &QComboBox::currentIndexChanged, this, &NewCorpusDialog::remap);
     m_side = new QComboBox(this);
     m_side->addItems({tr("Right arm and hand"), tr("Left arm and hand")});
     connect(m_side, &QComboBox::currentIndexChanged, this, &NewCorpusDialog::remap);
@@ -332,7 +333,16 @@ void NewCorpusDialog::remap()
         auto map = start.first ? io::mapPuppetParts(*start.first, given, options) : analysis::Result<io::PartMap>(analysis::Error{});
         const QString error = start.first ? (map ? QString() : QString::fromStdString(map.error().message)) : start.second;
         const QString note = format == io::TakeFileFormat::Scene ? m_animationNotes[file] : QString();
-        item->setText(error.isEmpty() ? note + QString::fromStdString(map->describe()) : error);
+        QString height;
+        if (start.first) {
+            // The performer's height in metres as the Units box reads the file.
+            const auto guess = io::guessBvhUnits(*start.first);
+            const double cmPerUnit = format == io::TakeFileFormat::Scene ? 1.0
+                                     : m_units->currentIndex() > 0   ? m_units->currentData().toDouble()
+                                                                     : guess.cmPerUnit;
+            height = tr("; %1 m tall").arg(guess.height * cmPerUnit / 100.0, 0, 'f', 2);
+        }
+        item->setText(error.isEmpty() ? note + QString::fromStdString(map->describe()) + height : error);
         item->setForeground(error.isEmpty() ? palette().text() : QBrush(QColor(0xb0, 0x00, 0x20)));
         item->setData(Qt::UserRole, error); // non-empty: this file cannot be mapped
     }

@@ -423,13 +423,27 @@ TEST_CASE("File > Import Take of an inch-unit BVH stands at a person's height wh
     }
     CHECK(high - low == Approx(170.0).margin(8.0));
 
-    // New Corpus from Files has the same box, and its choice reaches the corpus's import.
+    // New Corpus from Files has the same box, its choice reaches the corpus's import, and each
+    // file's row says the height it gives.
     app::NewCorpusDialog corpus;
+    corpus.addInputs({QString::fromStdString(file.string())});
     REQUIRE(corpus.unitsBox());
     CHECK(corpus.buildOptions().import.bvh.guessUnits);
+    auto* table = corpus.findChild<QTableWidget*>();
+    REQUIRE(table);
+    const auto rowText = [table] {
+        QString text;
+        for (int column = 0; column < table->columnCount(); ++column)
+            if (table->item(0, column)) text += table->item(0, column)->text() + QStringLiteral(" | ");
+        return text;
+    };
+    INFO(rowText().toStdString());
+    CHECK(rowText().contains(QStringLiteral("0.6")));
     corpus.unitsBox()->setCurrentIndex(corpus.unitsBox()->findText(QStringLiteral("Inches")));
     CHECK_FALSE(corpus.buildOptions().import.bvh.guessUnits);
     CHECK(corpus.buildOptions().import.bvh.unitScale == 2.54);
+    INFO(rowText().toStdString());
+    CHECK(rowText().contains(QStringLiteral("1.7")));
 }
 
 TEST_CASE("six BVH files imported at once ask one dialog for all of them and import every one", "[app][import]")
