@@ -3,6 +3,7 @@
 #include "analysis/core/take.h"
 #include "analysis/io/atomic_file.h"
 #include "analysis/io/bvh_import.h"
+#include "analysis/io/fbx_connections.h"
 #include "analysis/io/gltf_slim.h"
 #include "analysis/io/text_scan.h"
 
@@ -682,6 +683,9 @@ Result<SceneTake> readWithAssimp(const std::string& bytes, const std::string& ex
                                  const fs::path* folder, const SceneTakeOptions& options, const RunControl& control)
 {
     if (bytes.empty()) return makeError(ErrorCode::Parse, source + ": empty file");
+    // assimp follows FBX connections recursively: a cycle overflows its stack (fuzz_scene_take).
+    if (format == SceneFormat::Fbx)
+        if (auto error = checkFbxConnections(bytes, source)) return *error;
     const std::string* input = &bytes;
     std::string slim;
     int meshes = -1;

@@ -13,7 +13,10 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdint>
 #include <cstring>
+#include <functional>
+#include <map>
 #include <fstream>
 #include <numbers>
 
@@ -403,4 +406,104 @@ TEST_CASE("a text glTF reads its buffer from a file beside it and refuses one ou
     auto outside = readSceneTake(dir / "outside.gltf");
     REQUIRE(!outside.ok());
     CHECK(outside.error().message.find("is not a file beside it") != std::string::npos);
+}
+
+namespace {
+
+void put32(std::string& out, std::size_t at, std::uint32_t value) { std::memcpy(out.data() + at, &value, 4); }
+
+/// A binary FBX 7.4 record (32-bit offsets) appended to `out`: `children` appends its nested
+/// records (then the null record that ends them).
+void appendRecord(std::string& out, const std::string& name, const std::string& properties, std::uint32_t propertyCount,
+                  const std::function<void(std::string&)>& children = {})
+{
+    const std::size_t start = out.size();
+    out.append(12, '\0');
+    out += char(name.size());
+    out += name + properties;
+    if (children) {
+        children(out);
+        out.append(13, '\0');
+    }
+    put32(out, start, std::uint32_t(out.size()));
+    put32(out, start + 4, propertyCount);
+    put32(out, start + 8, std::uint32_t(properties.size()));
+}
+
+/// The properties of a binary FBX connection "OO" from `child` to `parent`.
+std::string binaryConnection(std::int64_t child, std::int64_t parent)
+{
+    std::string p = "S";
+    p.append(4, '\0');
+    put32(p, 1, 2);
+    p += "OO";
+    for (const std::int64_t id : {child, parent}) {
+        p += 'L';
+        p.append(reinterpret_cast<const char*>(&id), 8);
+    }
+    return p;
+}
+
+/// A binary FBX 7400 file holding only a Connections record with these connections.
+std::string binaryFbxWithConnections(const std::vector<std::pair<std::int64_t, std::int64_t>>& connections)
+{
+    std::string out("Kaydara FBX Binary  \0\x1a\0", 23);
+    out.append(4, '\0');
+    put32(out, 23, 7400);
+    appendRecord(out, "Connections", "", 0, [&](std::string& o) {
+        for (const auto& [child, parent] : connections) appendRecord(o, "C", binaryConnection(child, parent), 3);
+    });
+    out.append(13, '\0');
+    return out;
+}
+
+std::string replaced(std::string text, const std::string& from, const std::string& to)
+{
+    const auto at = text.find(from);
+    REQUIRE(at != std::string::npos);
+    return text.replace(at, from.size(), to);
+}
+
+} // namespace
+
+TEST_CASE("an FBX file whose object connections form a cycle is refused before assimp recurses into it", "[io][scene]")
+{
+    // Found by fuzz_scene_take (its 10^6-execution run): a model connected to itself as its own
+    // parent overflowed assimp 5.2's stack (a crash, not an error).
+    const fs::path dir = bunraku::test::scratchDir("scene_fbx_cycle");
+    const std::string self = replaced(pivotFbx(), "C: \"OO\",1001,1000", "C: \"OO\",1000,1000");
+    const std::string loop = replaced(pivotFbx(), "C: \"OO\",1000,0", "C: \"OO\",1000,1001");
+    writeText(dir / "self.fbx", self);
+    writeText(dir / "loop.fbx", loop);
+    writeText(dir / "binary_self.fbx", binaryFbxWithConnections({{5, 0}, {7, 7}}));
+    writeText(dir / "binary_loop.fbx", binaryFbxWithConnections({{5, 6}, {6, 7}, {7, 5}}));
+    // A chain of 600 models, each the parent of the next.
+    std::string deep = pivotFbx();
+    std::string chain;
+    for (int k = 0; k < 600; ++k) chain += "\tC: \"OO\"," + std::to_string(5000 + k + 1) + "," + std::to_string(5000 + k) + "\n";
+    deep = replaced(deep, "Connections:  {\n", "Connections:  {\n" + chain);
+    writeText(dir / "deep.fbx", deep);
+    const std::map<std::string, std::string> expected{
+        {"self.fbx", ": FBX object 1000 is connected to itself (expected the objects' connections to form a tree)"},
+        {"loop.fbx", " is connected below itself (expected the objects' connections to form a tree)"},
+        {"binary_self.fbx", ": FBX object 7 is connected to itself"},
+        {"binary_loop.fbx", " is connected below itself"},
+        {"deep.fbx", " levels deep (expected at most that)"}};
+    for (const auto& [name, what] : expected) {
+        INFO(name);
+        auto take = readTakeFile(dir / name);
+        REQUIRE(!take.ok());
+        const std::string& message = take.error().message;
+        INFO(message);
+        CHECK(message.find((dir / name).string() + ": FBX object ") == 0);
+        CHECK(message.find(what) != std::string::npos);
+        CHECK(message.find('\n') == std::string::npos);
+    }
+    // The checker passes a tree: the valid file reads, a binary file of connections only reaches
+    // assimp (which finds no scene in it).
+    writeText(dir / "tree.fbx", binaryFbxWithConnections({{5, 0}, {6, 5}, {7, 5}}));
+    auto tree = readTakeFile(dir / "tree.fbx");
+    REQUIRE(!tree.ok());
+    CHECK(tree.error().message.find("connected") == std::string::npos);
+    CHECK(parseSceneTake(pivotFbx(), ".fbx", "pivot.fbx").ok());
 }
