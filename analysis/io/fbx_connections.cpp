@@ -1,5 +1,6 @@
 #include "analysis/io/fbx_connections.h"
 
+#include <array>
 #include <cstdint>
 #include <cstring>
 #include <map>
@@ -109,6 +110,11 @@ bool binaryConnections(std::string_view bytes, std::vector<Edge>& edges)
 /// (`;` comments, quoted strings, `,` `{` `}` and blanks between tokens, `:` ending a key).
 void asciiConnections(std::string_view text, std::vector<Edge>& edges)
 {
+    static const std::array<bool, 256> delimiters = [] {
+        std::array<bool, 256> table{};
+        for (const char c : std::string_view(",;\" \t\r\n{}:")) table[std::uint8_t(c)] = true;
+        return table;
+    }();
     std::vector<std::string_view> values; // after the last key "C"
     bool inConnection = false;
     const auto finish = [&] {
@@ -149,7 +155,7 @@ void asciiConnections(std::string_view text, std::vector<Edge>& edges)
             ++i;
         } else {
             const std::size_t start = i;
-            while (i < text.size() && std::strchr(",;\" \t\r\n{}:", text[i]) == nullptr) ++i;
+            while (i < text.size() && !delimiters[std::uint8_t(text[i])]) ++i;
             const std::string_view word = text.substr(start, i - start);
             if (i < text.size() && text[i] == ':') { // a key: the previous element ends
                 finish();
