@@ -149,12 +149,14 @@ void asciiConnections(std::string_view text, std::vector<Edge>& edges)
             ++i;
         } else if (c == ',' || c == ' ' || c == '\t' || c == '\r' || c == '\n') {
             ++i;
-        } else if (c == '{' || c == '}') {
+        } else if (c == '{' || c == '}' || c == ':') { // ':' alone: a key without a name
             finish();
             inConnection = false;
             ++i;
         } else {
-            const std::size_t start = i;
+            // Every other byte (NUL too: found by fuzz_scene_take when it ended a word without
+            // being consumed) belongs to a word, so each turn of the loop moves on.
+            const std::size_t start = i++;
             while (i < text.size() && !delimiters[std::uint8_t(text[i])]) ++i;
             const std::string_view word = text.substr(start, i - start);
             if (i < text.size() && text[i] == ':') { // a key: the previous element ends

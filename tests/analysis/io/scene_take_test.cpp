@@ -506,4 +506,11 @@ TEST_CASE("an FBX file whose object connections form a cycle is refused before a
     REQUIRE(!tree.ok());
     CHECK(tree.error().message.find("connected") == std::string::npos);
     CHECK(parseSceneTake(pivotFbx(), ".fbx", "pivot.fbx").ok());
+    // Found by fuzz_scene_take in the check itself: a NUL byte (any byte that is no delimiter)
+    // must not stop the ASCII scan from moving on (it looped forever on "\0").
+    for (const std::string& text : {std::string(1, '\0'), std::string("C:\0,1,1", 7), std::string(" : :C", 5)}) {
+        auto result = parseSceneTake(text, ".fbx", "nul.fbx");
+        REQUIRE(!result.ok());
+        CHECK(result.error().message.rfind("nul.fbx: ", 0) == 0);
+    }
 }
