@@ -173,6 +173,127 @@ void asciiConnections(std::string_view text, std::vector<Edge>& edges)
 
 std::string idText(std::int64_t id) { return std::to_string(id); }
 
+/// Binary FBX: the offsets of "KTime" type strings of Objects > Model > Properties70 > P records.
+void binaryModelTimeProperties(std::string_view bytes, std::vector<std::size_t>& offsets)
+{
+    std::uint32_t version = 0;
+    if (!readLittle(bytes, 23, version)) return;
+    const bool wide = version >= 7500;
+    const std::size_t headerSize = wide ? 25 : 13;
+    struct Record {
+        std::uint64_t end = 0, properties = 0, propertyBytes = 0;
+        std::string_view name;
+        std::size_t propertiesAt = 0, childrenAt = 0;
+    };
+    const auto readRecord = [&](std::size_t at, std::size_t limit, Record& record) {
+        if (wide) {
+            if (!readLittle(bytes, at, record.end) || !readLittle(bytes, at + 8, record.properties)
+                || !readLittle(bytes, at + 16, record.propertyBytes))
+                return false;
+        } else {
+            std::uint32_t end = 0, properties = 0, propertyBytes = 0;
+            if (!readLittle(bytes, at, end) || !readLittle(bytes, at + 4, properties) || !readLittle(bytes, at + 8, propertyBytes)) return false;
+            record.end = end;
+            record.properties = properties;
+            record.propertyBytes = propertyBytes;
+        }
+        std::uint8_t nameLength = 0;
+        if (!readLittle(bytes, at + headerSize - 1, nameLength)) return false;
+        if (bytes.size() - (at + headerSize) < nameLength) return false;
+        record.name = bytes.substr(at + headerSize, nameLength);
+        record.propertiesAt = at + headerSize + nameLength;
+        if (record.propertyBytes > bytes.size() - record.propertiesAt) return false;
+        record.childrenAt = record.propertiesAt + std::size_t(record.propertyBytes);
+        return record.end == 0 || (record.end > at && record.end <= limit && record.end >= record.childrenAt);
+    };
+    // Calls `visit` for each child record of [from, to) until the null record; false when unreadable.
+    const auto children = [&](std::size_t from, std::size_t to, const auto& visit) {
+        for (std::size_t at = from; at < to;) {
+            Record r;
+            if (!readRecord(at, to, r)) return false;
+            if (r.end == 0) return true;
+            if (!visit(r)) return false;
+            at = std::size_t(r.end);
+        }
+        return true;
+    };
+    children(27, bytes.size(), [&](const Record& top) {
+        if (top.name != "Objects") return true;
+        return children(top.childrenAt, std::size_t(top.end), [&](const Record& model) {
+            if (model.name != "Model") return true;
+            return children(model.childrenAt, std::size_t(model.end), [&](const Record& table) {
+                if (table.name != "Properties70") return true;
+                return children(table.childrenAt, std::size_t(table.end), [&](const Record& p) {
+                    // 'S' name, then 'S' type.
+                    std::size_t at = p.propertiesAt;
+                    for (int k = 0; k < 2; ++k) {
+                        char type = 0;
+                        std::uint32_t length = 0;
+                        if (!readLittle(bytes, at, type) || type != 'S' || !readLittle(bytes, at + 1, length)) return true;
+                        if (at + 5 > p.childrenAt || length > p.childrenAt - (at + 5)) return true;
+                        if (k == 1 && p.name == "P" && bytes.substr(at + 5, length) == "KTime") offsets.push_back(at + 5);
+                        at += 5 + length;
+                    }
+                    return true;
+                });
+            });
+        });
+    });
+}
+
+/// FBX ASCII: the same, with the tokens of asciiConnections and the scopes their braces open.
+void asciiModelTimeProperties(std::string_view text, std::vector<std::size_t>& offsets)
+{
+    static const std::array<bool, 256> delimiters = [] {
+        std::array<bool, 256> table{};
+        for (const char c : std::string_view(",;\" \t\r\n{}:")) table[std::uint8_t(c)] = true;
+        return table;
+    }();
+    std::vector<std::string_view> scopes; // the keys whose braces are open
+    std::string_view key;                  // the current element's key
+    int values = 0;                        // values read after it
+    const auto inModelProperties = [&] {
+        return scopes.size() == 3 && scopes[0] == "Objects" && scopes[1] == "Model" && scopes[2] == "Properties70" && key == "P";
+    };
+    std::size_t i = 0;
+    while (i < text.size()) {
+        const char c = text[i];
+        if (c == ';') {
+            while (i < text.size() && text[i] != '\n') ++i;
+        } else if (c == '"') {
+            const std::size_t start = ++i;
+            while (i < text.size() && text[i] != '"') ++i;
+            if (values++ == 1 && inModelProperties() && text.substr(start, i - start) == "KTime") offsets.push_back(start);
+            ++i;
+        } else if (c == ',' || c == ' ' || c == '\t' || c == '\r' || c == '\n') {
+            ++i;
+        } else if (c == '{') {
+            scopes.push_back(key);
+            key = {};
+            ++i;
+        } else if (c == '}') {
+            if (!scopes.empty()) scopes.pop_back();
+            key = {};
+            ++i;
+        } else if (c == ':') {
+            key = {};
+            values = 0;
+            ++i;
+        } else {
+            const std::size_t start = i++;
+            while (i < text.size() && !delimiters[std::uint8_t(text[i])]) ++i;
+            const std::string_view word = text.substr(start, i - start);
+            if (i < text.size() && text[i] == ':') {
+                key = word;
+                values = 0;
+                ++i;
+            } else {
+                ++values;
+            }
+        }
+    }
+}
+
 } // namespace
 
 std::optional<Error> checkFbxConnections(const std::string& bytes, const std::string& source)
@@ -230,6 +351,21 @@ std::optional<Error> checkFbxConnections(const std::string& bytes, const std::st
         }
     }
     return std::nullopt;
+}
+
+} // namespace bunraku::analysis::io
+
+namespace bunraku::analysis::io {
+
+std::vector<std::size_t> fbxModelTimeProperties(const std::string& bytes)
+{
+    std::vector<std::size_t> offsets;
+    const std::string_view view(bytes);
+    if (view.substr(0, kBinaryMagic.size()) == kBinaryMagic)
+        binaryModelTimeProperties(view, offsets);
+    else
+        asciiModelTimeProperties(view, offsets);
+    return offsets;
 }
 
 } // namespace bunraku::analysis::io

@@ -9,6 +9,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace bunraku::analysis::io {
 
@@ -19,5 +20,12 @@ inline constexpr int kMaxFbxConnectionDepth = 512;
 /// chain deeper than kMaxFbxConnectionDepth; nothing otherwise. Bytes that are not FBX, or
 /// whose records cannot be read, are left to assimp (which reports them).
 std::optional<Error> checkFbxConnections(const std::string& bytes, const std::string& source);
+
+/// The byte offsets of the type names of every `KTime` property of a model object
+/// (Objects > Model > Properties70 > P), binary or ASCII. assimp 5.2 keeps a model's properties it
+/// does not read as node metadata and aborts (ai_assert) on a KTime one (found by
+/// fuzz_scene_take); a take reads none of them, so scene_take.cpp renames those types before
+/// assimp sees the file, which then drops the properties.
+std::vector<std::size_t> fbxModelTimeProperties(const std::string& bytes);
 
 } // namespace bunraku::analysis::io

@@ -688,6 +688,16 @@ Result<SceneTake> readWithAssimp(const std::string& bytes, const std::string& ex
         if (auto error = checkFbxConnections(bytes, source)) return *error;
     const std::string* input = &bytes;
     std::string slim;
+    // assimp aborts on a model's KTime property, which it would keep as metadata: renamed to a
+    // type it does not know, it is dropped (a take reads none of them; fuzz_scene_take).
+    if (format == SceneFormat::Fbx) {
+        const auto times = fbxModelTimeProperties(bytes);
+        if (!times.empty()) {
+            slim = bytes;
+            for (const std::size_t at : times) slim[at + 4] = 'x'; // "KTime" -> "KTimx"
+            input = &slim;
+        }
+    }
     int meshes = -1;
     if (format == SceneFormat::Gltf) {
         auto slimmed = slimGltf(bytes, extension == ".glb" ? GltfEncoding::Binary : GltfEncoding::Text, folder, source, meshes);

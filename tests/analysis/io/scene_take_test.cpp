@@ -4,6 +4,7 @@
 // Bandai takes converted by Blender are checked in tests/cli/blender_formats_test.cpp.
 #include "analysis/core/skeleton.h"
 #include "analysis/io/bvh_import.h"
+#include "analysis/io/fbx_connections.h"
 #include "analysis/io/gltf_export.h"
 #include "analysis/io/import_options_json.h"
 #include "analysis/io/scene_take.h"
@@ -513,4 +514,48 @@ TEST_CASE("an FBX file whose object connections form a cycle is refused before a
         REQUIRE(!result.ok());
         CHECK(result.error().message.rfind("nul.fbx: ", 0) == 0);
     }
+}
+
+TEST_CASE("an FBX model's KTime property does not reach assimp's metadata which aborts on it", "[io][scene]")
+{
+    // Found by fuzz_scene_take: assimp 5.2 keeps a model's properties it does not read as node
+    // metadata and aborts (ai_assert) on one of type KTime. Renamed before assimp, it is dropped.
+    const std::string custom = "\t\t\tP: \"PreRotation\", \"Vector3D\", \"Vector\", \"\",0,0,90\n";
+    const std::string withTime =
+        replaced(pivotFbx(), custom, custom + "\t\t\tP: \"CaptureTime\", \"KTime\", \"Time\", \"\",46186158000\n");
+    const auto offsets = fbxModelTimeProperties(withTime);
+    REQUIRE(offsets.size() == 1);
+    CHECK(withTime.compare(offsets[0], 5, "KTime") == 0);
+    CHECK(withTime.compare(offsets[0] - 15, 11, "CaptureTime") == 0);
+    auto take = parseSceneTake(withTime, ".fbx", "time.fbx");
+    INFO((take.ok() ? std::string() : take.error().message));
+    REQUIRE(take.ok());
+    auto plain = parseSceneTake(pivotFbx(), ".fbx", "pivot.fbx");
+    REQUIRE(plain.ok());
+    CHECK(take->bvh.motion.values == plain->bvh.motion.values);
+    // The animation stack's KTime properties (outside models) are left for assimp to read.
+    CHECK(fbxModelTimeProperties(pivotFbx()).empty());
+
+    // Binary: Objects > Model > Properties70 > P "CaptureTime" "KTime".
+    std::string out("Kaydara FBX Binary  \0\x1a\0", 23);
+    out.append(4, '\0');
+    put32(out, 23, 7400);
+    const auto text = [](const std::string& value) {
+        std::string p = "S";
+        p.append(4, '\0');
+        put32(p, 1, std::uint32_t(value.size()));
+        return p + value;
+    };
+    appendRecord(out, "Objects", "", 0, [&](std::string& objects) {
+        appendRecord(objects, "Model", "", 0, [&](std::string& model) {
+            appendRecord(model, "Properties70", "", 0, [&](std::string& table) {
+                appendRecord(table, "P", text("CaptureTime") + text("KTime") + text("Time") + text(""), 4);
+                appendRecord(table, "P", text("Lcl Translation") + text("Lcl Translation") + text("") + text("A"), 4);
+            });
+        });
+    });
+    out.append(13, '\0');
+    const auto binary = fbxModelTimeProperties(out);
+    REQUIRE(binary.size() == 1);
+    CHECK(out.compare(binary[0], 5, "KTime") == 0);
 }
