@@ -24,6 +24,7 @@
 #include <limits>
 #include <numbers>
 #include <optional>
+#include <string_view>
 #include <unordered_map>
 
 namespace bunraku::analysis::io {
@@ -678,6 +679,36 @@ Error assimpError(const std::string& source, SceneFormat format, const Assimp::I
     return makeError(ErrorCode::Parse, source + ": not a readable " + std::string(formatName(format)) + " file: " + oneLine(importer.GetErrorString()));
 }
 
+/// assimp 5.2 crashes (a null read) on a Collada array whose `count` is not a number (found by
+/// fuzz_scene_take: `<float_array count="x">`): such files are refused before it reads them.
+std::optional<Error> checkColladaArrayCounts(const std::string& bytes, const std::string& source)
+{
+    const auto isName = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0; };
+    for (std::size_t at = bytes.find("_array"); at != std::string::npos; at = bytes.find("_array", at + 6)) {
+        const std::size_t open = bytes.rfind('<', at);
+        if (open == std::string::npos || at - open > 16 || open + 1 == at) continue;
+        bool element = true;
+        for (std::size_t i = open + 1; i < at; ++i) element = element && isName(bytes[i]);
+        const std::size_t end = bytes.find('>', at);
+        if (!element || end == std::string::npos) continue;
+        const std::string_view tag(bytes.data() + at + 6, end - at - 6);
+        const std::size_t count = tag.find("count");
+        if (count == std::string_view::npos) continue;
+        std::size_t i = count + 5;
+        while (i < tag.size() && (tag[i] == ' ' || tag[i] == '\t' || tag[i] == '\n' || tag[i] == '\r' || tag[i] == '=')) ++i;
+        if (i >= tag.size() || (tag[i] != '"' && tag[i] != '\'')) continue;
+        const std::size_t close = tag.find(tag[i], i + 1);
+        const std::string_view value = tag.substr(i + 1, close == std::string_view::npos ? std::string_view::npos : close - i - 1);
+        bool number = !value.empty() && value.size() <= 18;
+        for (const char c : value) number = number && c >= '0' && c <= '9';
+        if (!number)
+            return makeError(ErrorCode::Parse, source + ": a Collada " + std::string(bytes, open + 1, at + 6 - open - 1) +
+                                                   "'s count is not a whole number (expected digits, got \"" +
+                                                   oneLine(std::string(value.substr(0, 20))) + "\")");
+    }
+    return std::nullopt;
+}
+
 /// Reads the bytes with assimp (glTF slimmed first) and converts the scene.
 Result<SceneTake> readWithAssimp(const std::string& bytes, const std::string& extension, SceneFormat format, const std::string& source,
                                  const fs::path* folder, const SceneTakeOptions& options, const RunControl& control)
@@ -686,6 +717,8 @@ Result<SceneTake> readWithAssimp(const std::string& bytes, const std::string& ex
     // assimp follows FBX connections recursively: a cycle overflows its stack (fuzz_scene_take).
     if (format == SceneFormat::Fbx)
         if (auto error = checkFbxConnections(bytes, source)) return *error;
+    if (format == SceneFormat::Collada)
+        if (auto error = checkColladaArrayCounts(bytes, source)) return *error;
     const std::string* input = &bytes;
     std::string slim;
     // assimp aborts on a model's KTime property, which it would keep as metadata: renamed to a

@@ -280,6 +280,10 @@ TEST_CASE("bad scene files and scenes without animation get a one-line error nam
     writeText(dir / "noise.fbx", std::string("Kaydara FBX Binary  \0\x1a\0garbage", 30));
     writeText(dir / "empty.glb", "");
     writeText(dir / "text.dae", "<?xml version=\"1.0\"?><COLLADA><broken");
+    // Found by fuzz_scene_take: assimp 5.2 crashed (a null read) on an array count that is no number.
+    writeText(dir / "count.dae", "<?xml version=\"1.0\"?>\n<COLLADA><library_geometries><geometry><mesh><source id=\"s\">"
+                                 "<float_array id=\"a\" count=\"x\">0 0 0</float_array></source></mesh></geometry>"
+                                 "</library_geometries></COLLADA>\n");
     // A Collada scene with one triangle mesh and no animation.
     writeText(dir / "mesh.dae", R"(<?xml version="1.0" encoding="utf-8"?>
 <COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
@@ -294,7 +298,7 @@ TEST_CASE("bad scene files and scenes without animation get a one-line error nam
   <scene><instance_visual_scene url="#scene"/></scene>
 </COLLADA>
 )");
-    for (const std::string name : {"noise.fbx", "empty.glb", "text.dae", "mesh.dae", "absent.fbx"}) {
+    for (const std::string name : {"noise.fbx", "empty.glb", "text.dae", "mesh.dae", "absent.fbx", "count.dae"}) {
         INFO(name);
         auto take = readTakeFile(dir / name);
         REQUIRE(!take.ok());
@@ -303,6 +307,7 @@ TEST_CASE("bad scene files and scenes without animation get a one-line error nam
         CHECK(message.find((dir / name).string()) == 0);
         CHECK(message.find('\n') == std::string::npos);
         if (name == "mesh.dae") CHECK(message.find("no animation in this Collada file (1 meshes, 0 animations)") != std::string::npos);
+        if (name == "count.dae") CHECK(message.find(": a Collada float_array's count is not a whole number (expected digits, got \"x\")") != std::string::npos);
     }
 }
 
