@@ -709,6 +709,29 @@ std::optional<Error> checkColladaArrayCounts(const std::string& bytes, const std
     return std::nullopt;
 }
 
+/// assimp 5.2 reads a Collada index list (`<p>`, `<vcount>`, `<v>`, `<h>`) with a word that is no
+/// number in it into gigabytes (found by fuzz_scene_take: `<p>0 St9exception1 2</p>` grew
+/// `bunraku info` past 12 GB): such lists are refused before it reads them.
+std::optional<Error> checkColladaIndexLists(const std::string& bytes, const std::string& source)
+{
+    for (const char* name : {"p", "vcount", "v", "h"}) {
+        const std::string open = std::string("<") + name + ">";
+        const std::string close = std::string("</") + name + ">";
+        for (std::size_t at = bytes.find(open); at != std::string::npos; at = bytes.find(open, at + open.size())) {
+            const std::size_t from = at + open.size();
+            const std::size_t to = bytes.find(close, from);
+            if (to == std::string::npos) break;
+            for (std::size_t i = from; i < to; ++i) {
+                const char c = bytes[i];
+                if ((c >= '0' && c <= '9') || c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '-' || c == '+') continue;
+                return makeError(ErrorCode::Parse, source + ": a Collada <" + name +
+                                                       "> index list holds something that is not a whole number (expected digits and spaces)");
+            }
+        }
+    }
+    return std::nullopt;
+}
+
 /// Reads the bytes with assimp (glTF slimmed first) and converts the scene.
 Result<SceneTake> readWithAssimp(const std::string& bytes, const std::string& extension, SceneFormat format, const std::string& source,
                                  const fs::path* folder, const SceneTakeOptions& options, const RunControl& control)
@@ -719,6 +742,8 @@ Result<SceneTake> readWithAssimp(const std::string& bytes, const std::string& ex
         if (auto error = checkFbxConnections(bytes, source)) return *error;
     if (format == SceneFormat::Collada)
         if (auto error = checkColladaArrayCounts(bytes, source)) return *error;
+    if (format == SceneFormat::Collada)
+        if (auto error = checkColladaIndexLists(bytes, source)) return *error;
     const std::string* input = &bytes;
     std::string slim;
     // assimp aborts on a model's KTime property, which it would keep as metadata: renamed to a
