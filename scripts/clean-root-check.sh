@@ -388,6 +388,11 @@ check "the file types are known and the workbench is their default application" 
   cp "$BANDAI/wave-right-hand_normal_001.bvh" /root/files/
   printf "HIERARCHY\nROOT x\n" >/root/files/no-extension
   echo "{}" >/root/files/session.bunraku.json
+  # FBX, glTF and Collada takes: their first bytes (the types are known by name and contents).
+  printf "Kaydara FBX Binary  \\000\\032\\000" >/root/files/walk.fbx
+  printf "glTF\\002\\000\\000\\000" >/root/files/walk.glb
+  echo "{\"asset\": {\"version\": \"2.0\"}}" >/root/files/walk.gltf
+  printf "<?xml version=\"1.0\"?>\n<COLLADA xmlns=\"http://www.collada.org/2005/11/COLLADASchema\"/>\n" >/root/files/walk.dae
   bad=0
   expect() { # expect WHAT GOT WANTED
     if [ "$2" = "$3" ]; then echo "$1: $2"; else echo "$1: got \"$2\", expected \"$3\""; bad=1; fi
@@ -396,7 +401,11 @@ check "the file types are known and the workbench is their default application" 
   expect "gio: x.bvh" "$(gio info -a standard::content-type /root/files/wave-right-hand_normal_001.bvh | sed -n "s/^ *standard::content-type: //p")" application/x-bvh
   expect "gio: a file starting with HIERARCHY" "$(gio info -a standard::content-type /root/files/no-extension | sed -n "s/^ *standard::content-type: //p")" application/x-bvh
   expect "xdg-mime query filetype x.bunraku.json" "$(xdg-mime query filetype /root/files/session.bunraku.json)" application/x-bunraku-project
-  for type in application/x-bvh application/x-bunraku-project application/x-bunraku-corpus; do
+  for take in walk.fbx:model/x-fbx walk.glb:model/gltf-binary walk.gltf:model/gltf+json walk.dae:model/vnd.collada+xml; do
+    expect "xdg-mime query filetype ${take%%:*}" "$(xdg-mime query filetype /root/files/${take%%:*})" "${take#*:}"
+    expect "gio: ${take%%:*}" "$(gio info -a standard::content-type /root/files/${take%%:*} | sed -n "s/^ *standard::content-type: //p")" "${take#*:}"
+  done
+  for type in application/x-bvh application/x-bunraku-project application/x-bunraku-corpus model/x-fbx model/gltf-binary model/gltf+json model/vnd.collada+xml; do
     expect "xdg-mime query default $type" "$(xdg-mime query default $type)" "$APP_ID.desktop"
     expect "gio mime $type (default)" "$(gio mime $type | sed -n "1s/^Default application for .*: //p")" "$APP_ID.desktop"
   done

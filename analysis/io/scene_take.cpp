@@ -3,6 +3,7 @@
 #include "analysis/core/take.h"
 #include "analysis/io/atomic_file.h"
 #include "analysis/io/bvh_import.h"
+#include "analysis/io/fbx_connections.h"
 #include "analysis/io/gltf_slim.h"
 #include "analysis/io/text_scan.h"
 
@@ -23,6 +24,7 @@
 #include <limits>
 #include <numbers>
 #include <optional>
+#include <string_view>
 #include <unordered_map>
 
 namespace bunraku::analysis::io {
@@ -677,13 +679,83 @@ Error assimpError(const std::string& source, SceneFormat format, const Assimp::I
     return makeError(ErrorCode::Parse, source + ": not a readable " + std::string(formatName(format)) + " file: " + oneLine(importer.GetErrorString()));
 }
 
+/// assimp 5.2 crashes (a null read) on a Collada array whose `count` is not a number (found by
+/// fuzz_scene_take: `<float_array count="x">`): such files are refused before it reads them.
+std::optional<Error> checkColladaArrayCounts(const std::string& bytes, const std::string& source)
+{
+    const auto isName = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0; };
+    for (std::size_t at = bytes.find("_array"); at != std::string::npos; at = bytes.find("_array", at + 6)) {
+        const std::size_t open = bytes.rfind('<', at);
+        if (open == std::string::npos || at - open > 16 || open + 1 == at) continue;
+        bool element = true;
+        for (std::size_t i = open + 1; i < at; ++i) element = element && isName(bytes[i]);
+        const std::size_t end = bytes.find('>', at);
+        if (!element || end == std::string::npos) continue;
+        const std::string_view tag(bytes.data() + at + 6, end - at - 6);
+        const std::size_t count = tag.find("count");
+        if (count == std::string_view::npos) continue;
+        std::size_t i = count + 5;
+        while (i < tag.size() && (tag[i] == ' ' || tag[i] == '\t' || tag[i] == '\n' || tag[i] == '\r' || tag[i] == '=')) ++i;
+        if (i >= tag.size() || (tag[i] != '"' && tag[i] != '\'')) continue;
+        const std::size_t close = tag.find(tag[i], i + 1);
+        const std::string_view value = tag.substr(i + 1, close == std::string_view::npos ? std::string_view::npos : close - i - 1);
+        bool number = !value.empty() && value.size() <= 18;
+        for (const char c : value) number = number && c >= '0' && c <= '9';
+        if (!number)
+            return makeError(ErrorCode::Parse, source + ": a Collada " + std::string(bytes, open + 1, at + 6 - open - 1) +
+                                                   "'s count is not a whole number (expected digits, got \"" +
+                                                   oneLine(std::string(value.substr(0, 20))) + "\")");
+    }
+    return std::nullopt;
+}
+
+/// assimp 5.2 reads a Collada index list (`<p>`, `<vcount>`, `<v>`, `<h>`) with a word that is no
+/// number in it into gigabytes (found by fuzz_scene_take: `<p>0 St9exception1 2</p>` grew
+/// `bunraku info` past 12 GB): such lists are refused before it reads them.
+std::optional<Error> checkColladaIndexLists(const std::string& bytes, const std::string& source)
+{
+    for (const char* name : {"p", "vcount", "v", "h"}) {
+        const std::string open = std::string("<") + name + ">";
+        const std::string close = std::string("</") + name + ">";
+        for (std::size_t at = bytes.find(open); at != std::string::npos; at = bytes.find(open, at + open.size())) {
+            const std::size_t from = at + open.size();
+            const std::size_t to = bytes.find(close, from);
+            if (to == std::string::npos) break;
+            for (std::size_t i = from; i < to; ++i) {
+                const char c = bytes[i];
+                if ((c >= '0' && c <= '9') || c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '-' || c == '+') continue;
+                return makeError(ErrorCode::Parse, source + ": a Collada <" + name +
+                                                       "> index list holds something that is not a whole number (expected digits and spaces)");
+            }
+        }
+    }
+    return std::nullopt;
+}
+
 /// Reads the bytes with assimp (glTF slimmed first) and converts the scene.
 Result<SceneTake> readWithAssimp(const std::string& bytes, const std::string& extension, SceneFormat format, const std::string& source,
                                  const fs::path* folder, const SceneTakeOptions& options, const RunControl& control)
 {
     if (bytes.empty()) return makeError(ErrorCode::Parse, source + ": empty file");
+    // assimp follows FBX connections recursively: a cycle overflows its stack (fuzz_scene_take).
+    if (format == SceneFormat::Fbx)
+        if (auto error = checkFbxConnections(bytes, source)) return *error;
+    if (format == SceneFormat::Collada)
+        if (auto error = checkColladaArrayCounts(bytes, source)) return *error;
+    if (format == SceneFormat::Collada)
+        if (auto error = checkColladaIndexLists(bytes, source)) return *error;
     const std::string* input = &bytes;
     std::string slim;
+    // assimp aborts on a model's KTime property, which it would keep as metadata: renamed to a
+    // type it does not know, it is dropped (a take reads none of them; fuzz_scene_take).
+    if (format == SceneFormat::Fbx) {
+        const auto times = fbxModelTimeProperties(bytes);
+        if (!times.empty()) {
+            slim = bytes;
+            for (const std::size_t at : times) slim[at + 4] = 'x'; // "KTime" -> "KTimx"
+            input = &slim;
+        }
+    }
     int meshes = -1;
     if (format == SceneFormat::Gltf) {
         auto slimmed = slimGltf(bytes, extension == ".glb" ? GltfEncoding::Binary : GltfEncoding::Text, folder, source, meshes);

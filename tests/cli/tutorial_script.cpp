@@ -61,8 +61,9 @@ std::string replaceAll(std::string text, const std::string& from, const std::str
 
 } // namespace
 
-std::vector<TutorialStep> parseTutorial(const std::string& markdown)
+std::vector<TutorialStep> parseTutorial(const std::string& markdown, const std::string& marker)
 {
+    const std::string fileMarker = "json " + marker + "-file=";
     std::vector<TutorialStep> steps;
     std::istringstream in(markdown);
     std::string line;
@@ -83,14 +84,14 @@ std::vector<TutorialStep> parseTutorial(const std::string& markdown)
             }
             const std::string info = line.substr(3);
             block = Block::Other;
-            if (info == "sh tutorial") block = Block::Commands;
-            if (info.rfind("json tutorial-file=", 0) == 0) {
+            if (info == "sh " + marker) block = Block::Commands;
+            if (info.rfind(fileMarker, 0) == 0) {
                 block = Block::File;
                 file = {};
                 file.line = number;
-                file.fileName = info.substr(std::string("json tutorial-file=").size());
+                file.fileName = info.substr(fileMarker.size());
                 if (file.fileName.empty() || file.fileName.find('/') != std::string::npos)
-                    throw errorAt(number, "expected a plain file name after tutorial-file=");
+                    throw errorAt(number, "expected a plain file name after " + marker + "-file=");
             }
             continue;
         }
@@ -107,7 +108,7 @@ std::vector<TutorialStep> parseTutorial(const std::string& markdown)
         if (first == std::string::npos || text[first] == '#') continue;
         TutorialStep step = splitCommand(text, pendingLine);
         if (step.words.empty() || step.words.front() != "bunraku" || step.words.size() < 2)
-            throw errorAt(pendingLine, "a ```sh tutorial block holds only bunraku commands, got: " + text);
+            throw errorAt(pendingLine, "a ```sh " + marker + " block holds only bunraku commands, got: " + text);
         steps.push_back(std::move(step));
     }
     if (block != Block::None) throw errorAt(number, "unclosed code block");

@@ -21,7 +21,10 @@ struct TutorialStep {
 
 /// The steps of a Markdown page in order. Throws std::runtime_error naming the line when a
 /// marked block holds a line that is not a `bunraku` command or a quote is not closed.
-std::vector<TutorialStep> parseTutorial(const std::string& markdown);
+/// `marker` names the blocks read: ```sh MARKER and ```json MARKER-file=NAME ("tutorial": the
+/// tutorial's main thread, which the clean-root package check also runs; "tutorial-mixamo": its
+/// FBX section, whose files Blender makes at test time).
+std::vector<TutorialStep> parseTutorial(const std::string& markdown, const std::string& marker = "tutorial");
 
 /// A step's arguments (without "bunraku") with `$BANDAI` replaced by `bandai` and every
 /// unquoted `*` pattern of a word's last path component expanded to the matching files, sorted

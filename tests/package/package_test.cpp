@@ -207,7 +207,7 @@ TEST_CASE("the application icon is in the hicolor theme at every size under the 
     CHECK(svg.find("viewBox=\"0 0 256 256\"") != std::string::npos);
 }
 
-TEST_CASE("projects, corpus manifests and BVH files get the workbench's MIME types, which its desktop entry opens", "[package][mime]")
+TEST_CASE("projects, corpus manifests and BVH FBX glTF and Collada takes get MIME types which the desktop entry opens", "[package][mime]")
 {
     requireTools({"update-mime-database"});
     // What dpkg's trigger does on installation: update-mime-database over the installed XML.
@@ -230,6 +230,10 @@ TEST_CASE("projects, corpus manifests and BVH files get the workbench's MIME typ
     std::ofstream(files / "demo" / "corpus.json") << "{\"format\": \"bunraku-corpus\", \"version\": 1}\n";
     std::ofstream(files / "take.bvh") << "HIERARCHY\nROOT Hips\n{\n}\n";
     std::ofstream(files / "other.json") << "{}\n";
+    std::ofstream(files / "walk.fbx", std::ios::binary) << std::string("Kaydara FBX Binary  \0\x1a\0", 23);
+    std::ofstream(files / "walk.glb", std::ios::binary) << std::string("glTF\x02\0\0\0", 8);
+    std::ofstream(files / "walk.gltf") << "{\"asset\": {\"version\": \"2.0\"}}\n";
+    std::ofstream(files / "walk.dae") << "<?xml version=\"1.0\"?>\n<COLLADA xmlns=\"http://www.collada.org/2005/11/COLLADASchema\"/>\n";
     const auto typeOf = [&](const fs::path& file) {
         return database.mimeTypeForFile(QString::fromStdString(file.string())).name().toStdString();
     };
@@ -237,10 +241,15 @@ TEST_CASE("projects, corpus manifests and BVH files get the workbench's MIME typ
     CHECK(typeOf(files / "demo" / "corpus.json") == "application/x-bunraku-corpus");
     CHECK(typeOf(files / "take.bvh") == "application/x-bvh");
     CHECK(typeOf(files / "other.json") == "application/json"); // other JSON files are left alone
+    CHECK(typeOf(files / "walk.fbx") == "model/x-fbx");
+    CHECK(typeOf(files / "walk.glb") == "model/gltf-binary"); // shared-mime-info's own glTF types
+    CHECK(typeOf(files / "walk.gltf") == "model/gltf+json");
+    CHECK(typeOf(files / "walk.dae") == "model/vnd.collada+xml");
     CHECK(database.mimeTypeForName(QStringLiteral("application/x-bunraku-project")).inherits(QStringLiteral("application/json")));
 
     const std::string types = desktopValue(slurp(installedRoot() / kDesktopFile), "MimeType");
-    for (const char* type : {"application/x-bunraku-project;", "application/x-bunraku-corpus;", "application/x-bvh;"})
+    for (const char* type : {"application/x-bunraku-project;", "application/x-bunraku-corpus;", "application/x-bvh;", "model/x-fbx;",
+                             "model/gltf-binary;", "model/gltf+json;", "model/vnd.collada+xml;"})
         CHECK(types.find(type) != std::string::npos);
     CHECK(desktopValue(slurp(installedRoot() / kDesktopFile), "Exec") == "bunraku-workbench %F");
 }

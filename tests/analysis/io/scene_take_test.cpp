@@ -4,6 +4,7 @@
 // Bandai takes converted by Blender are checked in tests/cli/blender_formats_test.cpp.
 #include "analysis/core/skeleton.h"
 #include "analysis/io/bvh_import.h"
+#include "analysis/io/fbx_connections.h"
 #include "analysis/io/gltf_export.h"
 #include "analysis/io/import_options_json.h"
 #include "analysis/io/scene_take.h"
@@ -13,7 +14,10 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdint>
 #include <cstring>
+#include <functional>
+#include <map>
 #include <fstream>
 #include <numbers>
 
@@ -276,6 +280,10 @@ TEST_CASE("bad scene files and scenes without animation get a one-line error nam
     writeText(dir / "noise.fbx", std::string("Kaydara FBX Binary  \0\x1a\0garbage", 30));
     writeText(dir / "empty.glb", "");
     writeText(dir / "text.dae", "<?xml version=\"1.0\"?><COLLADA><broken");
+    // Found by fuzz_scene_take: assimp 5.2 crashed (a null read) on an array count that is no number.
+    writeText(dir / "count.dae", "<?xml version=\"1.0\"?>\n<COLLADA><library_geometries><geometry><mesh><source id=\"s\">"
+                                 "<float_array id=\"a\" count=\"x\">0 0 0</float_array></source></mesh></geometry>"
+                                 "</library_geometries></COLLADA>\n");
     // A Collada scene with one triangle mesh and no animation.
     writeText(dir / "mesh.dae", R"(<?xml version="1.0" encoding="utf-8"?>
 <COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
@@ -290,7 +298,11 @@ TEST_CASE("bad scene files and scenes without animation get a one-line error nam
   <scene><instance_visual_scene url="#scene"/></scene>
 </COLLADA>
 )");
-    for (const std::string name : {"noise.fbx", "empty.glb", "text.dae", "mesh.dae", "absent.fbx"}) {
+    // Found by fuzz_scene_take: assimp 5.2 grew past 12 GB on an index list with a word in it.
+    writeText(dir / "index.dae", "<?xml version=\"1.0\"?>\n<COLLADA><library_geometries><geometry><mesh>"
+                                 "<triangles count=\"1\"><p>0 St9exception1 2</p></triangles></mesh></geometry>"
+                                 "</library_geometries></COLLADA>\n");
+    for (const std::string name : {"noise.fbx", "empty.glb", "text.dae", "mesh.dae", "absent.fbx", "count.dae", "index.dae"}) {
         INFO(name);
         auto take = readTakeFile(dir / name);
         REQUIRE(!take.ok());
@@ -299,6 +311,8 @@ TEST_CASE("bad scene files and scenes without animation get a one-line error nam
         CHECK(message.find((dir / name).string()) == 0);
         CHECK(message.find('\n') == std::string::npos);
         if (name == "mesh.dae") CHECK(message.find("no animation in this Collada file (1 meshes, 0 animations)") != std::string::npos);
+        if (name == "index.dae") CHECK(message.find(": a Collada <p> index list holds something that is not a whole number") != std::string::npos);
+        if (name == "count.dae") CHECK(message.find(": a Collada float_array's count is not a whole number (expected digits, got \"x\")") != std::string::npos);
     }
 }
 
@@ -403,4 +417,155 @@ TEST_CASE("a text glTF reads its buffer from a file beside it and refuses one ou
     auto outside = readSceneTake(dir / "outside.gltf");
     REQUIRE(!outside.ok());
     CHECK(outside.error().message.find("is not a file beside it") != std::string::npos);
+}
+
+namespace {
+
+void put32(std::string& out, std::size_t at, std::uint32_t value) { std::memcpy(out.data() + at, &value, 4); }
+
+/// A binary FBX 7.4 record (32-bit offsets) appended to `out`: `children` appends its nested
+/// records (then the null record that ends them).
+void appendRecord(std::string& out, const std::string& name, const std::string& properties, std::uint32_t propertyCount,
+                  const std::function<void(std::string&)>& children = {})
+{
+    const std::size_t start = out.size();
+    out.append(12, '\0');
+    out += char(name.size());
+    out += name + properties;
+    if (children) {
+        children(out);
+        out.append(13, '\0');
+    }
+    put32(out, start, std::uint32_t(out.size()));
+    put32(out, start + 4, propertyCount);
+    put32(out, start + 8, std::uint32_t(properties.size()));
+}
+
+/// The properties of a binary FBX connection "OO" from `child` to `parent`.
+std::string binaryConnection(std::int64_t child, std::int64_t parent)
+{
+    std::string p = "S";
+    p.append(4, '\0');
+    put32(p, 1, 2);
+    p += "OO";
+    for (const std::int64_t id : {child, parent}) {
+        p += 'L';
+        p.append(reinterpret_cast<const char*>(&id), 8);
+    }
+    return p;
+}
+
+/// A binary FBX 7400 file holding only a Connections record with these connections.
+std::string binaryFbxWithConnections(const std::vector<std::pair<std::int64_t, std::int64_t>>& connections)
+{
+    std::string out("Kaydara FBX Binary  \0\x1a\0", 23);
+    out.append(4, '\0');
+    put32(out, 23, 7400);
+    appendRecord(out, "Connections", "", 0, [&](std::string& o) {
+        for (const auto& [child, parent] : connections) appendRecord(o, "C", binaryConnection(child, parent), 3);
+    });
+    out.append(13, '\0');
+    return out;
+}
+
+std::string replaced(std::string text, const std::string& from, const std::string& to)
+{
+    const auto at = text.find(from);
+    REQUIRE(at != std::string::npos);
+    return text.replace(at, from.size(), to);
+}
+
+} // namespace
+
+TEST_CASE("an FBX file whose object connections form a cycle is refused before assimp recurses into it", "[io][scene]")
+{
+    // Found by fuzz_scene_take (its 10^6-execution run): a model connected to itself as its own
+    // parent overflowed assimp 5.2's stack (a crash, not an error).
+    const fs::path dir = bunraku::test::scratchDir("scene_fbx_cycle");
+    const std::string self = replaced(pivotFbx(), "C: \"OO\",1001,1000", "C: \"OO\",1000,1000");
+    const std::string loop = replaced(pivotFbx(), "C: \"OO\",1000,0", "C: \"OO\",1000,1001");
+    writeText(dir / "self.fbx", self);
+    writeText(dir / "loop.fbx", loop);
+    writeText(dir / "binary_self.fbx", binaryFbxWithConnections({{5, 0}, {7, 7}}));
+    writeText(dir / "binary_loop.fbx", binaryFbxWithConnections({{5, 6}, {6, 7}, {7, 5}}));
+    // A chain of 600 models, each the parent of the next.
+    std::string deep = pivotFbx();
+    std::string chain;
+    for (int k = 0; k < 600; ++k) chain += "\tC: \"OO\"," + std::to_string(5000 + k + 1) + "," + std::to_string(5000 + k) + "\n";
+    deep = replaced(deep, "Connections:  {\n", "Connections:  {\n" + chain);
+    writeText(dir / "deep.fbx", deep);
+    const std::map<std::string, std::string> expected{
+        {"self.fbx", ": FBX object 1000 is connected to itself (expected the objects' connections to form a tree)"},
+        {"loop.fbx", " is connected below itself (expected the objects' connections to form a tree)"},
+        {"binary_self.fbx", ": FBX object 7 is connected to itself"},
+        {"binary_loop.fbx", " is connected below itself"},
+        {"deep.fbx", " levels deep (expected at most that)"}};
+    for (const auto& [name, what] : expected) {
+        INFO(name);
+        auto take = readTakeFile(dir / name);
+        REQUIRE(!take.ok());
+        const std::string& message = take.error().message;
+        INFO(message);
+        CHECK(message.find((dir / name).string() + ": FBX object ") == 0);
+        CHECK(message.find(what) != std::string::npos);
+        CHECK(message.find('\n') == std::string::npos);
+    }
+    // The checker passes a tree: the valid file reads, a binary file of connections only reaches
+    // assimp (which finds no scene in it).
+    writeText(dir / "tree.fbx", binaryFbxWithConnections({{5, 0}, {6, 5}, {7, 5}}));
+    auto tree = readTakeFile(dir / "tree.fbx");
+    REQUIRE(!tree.ok());
+    CHECK(tree.error().message.find("connected") == std::string::npos);
+    CHECK(parseSceneTake(pivotFbx(), ".fbx", "pivot.fbx").ok());
+    // Found by fuzz_scene_take in the check itself: a NUL byte (any byte that is no delimiter)
+    // must not stop the ASCII scan from moving on (it looped forever on "\0").
+    for (const std::string& text : {std::string(1, '\0'), std::string("C:\0,1,1", 7), std::string(" : :C", 5)}) {
+        auto result = parseSceneTake(text, ".fbx", "nul.fbx");
+        REQUIRE(!result.ok());
+        CHECK(result.error().message.rfind("nul.fbx: ", 0) == 0);
+    }
+}
+
+TEST_CASE("an FBX model's KTime property does not reach assimp's metadata which aborts on it", "[io][scene]")
+{
+    // Found by fuzz_scene_take: assimp 5.2 keeps a model's properties it does not read as node
+    // metadata and aborts (ai_assert) on one of type KTime. Renamed before assimp, it is dropped.
+    const std::string custom = "\t\t\tP: \"PreRotation\", \"Vector3D\", \"Vector\", \"\",0,0,90\n";
+    const std::string withTime =
+        replaced(pivotFbx(), custom, custom + "\t\t\tP: \"CaptureTime\", \"KTime\", \"Time\", \"\",46186158000\n");
+    const auto offsets = fbxModelTimeProperties(withTime);
+    REQUIRE(offsets.size() == 1);
+    CHECK(withTime.compare(offsets[0], 5, "KTime") == 0);
+    CHECK(withTime.compare(offsets[0] - 15, 11, "CaptureTime") == 0);
+    auto take = parseSceneTake(withTime, ".fbx", "time.fbx");
+    INFO((take.ok() ? std::string() : take.error().message));
+    REQUIRE(take.ok());
+    auto plain = parseSceneTake(pivotFbx(), ".fbx", "pivot.fbx");
+    REQUIRE(plain.ok());
+    CHECK(take->bvh.motion.values == plain->bvh.motion.values);
+    // The animation stack's KTime properties (outside models) are left for assimp to read.
+    CHECK(fbxModelTimeProperties(pivotFbx()).empty());
+
+    // Binary: Objects > Model > Properties70 > P "CaptureTime" "KTime".
+    std::string out("Kaydara FBX Binary  \0\x1a\0", 23);
+    out.append(4, '\0');
+    put32(out, 23, 7400);
+    const auto text = [](const std::string& value) {
+        std::string p = "S";
+        p.append(4, '\0');
+        put32(p, 1, std::uint32_t(value.size()));
+        return p + value;
+    };
+    appendRecord(out, "Objects", "", 0, [&](std::string& objects) {
+        appendRecord(objects, "Model", "", 0, [&](std::string& model) {
+            appendRecord(model, "Properties70", "", 0, [&](std::string& table) {
+                appendRecord(table, "P", text("CaptureTime") + text("KTime") + text("Time") + text(""), 4);
+                appendRecord(table, "P", text("Lcl Translation") + text("Lcl Translation") + text("") + text("A"), 4);
+            });
+        });
+    });
+    out.append(13, '\0');
+    const auto binary = fbxModelTimeProperties(out);
+    REQUIRE(binary.size() == 1);
+    CHECK(out.compare(binary[0], 5, "KTime") == 0);
 }
