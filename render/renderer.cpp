@@ -80,6 +80,7 @@ analysis::Status Renderer::initialize()
     m_uniforms.shadowDepth = program->uniformLocation("u_shadowDepth");
     m_uniforms.shadowUvPerCm = program->uniformLocation("u_shadowUvPerCm");
     m_uniforms.shadowCmPerDepth = program->uniformLocation("u_shadowCmPerDepth");
+    m_uniforms.shadowDraft = program->uniformLocation("u_shadowDraft");
     auto skin = std::make_unique<QOpenGLShaderProgram>();
     if (!skin->addShaderFromSourceFile(QOpenGLShader::Vertex, QStringLiteral(":/shaders/skinned.vert")) ||
         !skin->addShaderFromSourceFile(QOpenGLShader::Fragment, QStringLiteral(":/shaders/scene.frag")) || !skin->link())

@@ -64,6 +64,11 @@ public:
     int takeCount() const;
 
     void setVisibility(const SceneVisibility& visibility) { m_visibility = visibility; }
+    /// Draft frames (a view moving: playback, a scrub, a drag) filter the shadows with 4
+    /// comparisons instead of a search and 16, and leave the partner out of the shadow pass; the
+    /// still frame drawn after them is the full stage.
+    void setDraft(bool draft) { m_draft = draft; }
+    bool draft() const { return m_draft; }
     const SceneVisibility& visibility() const { return m_visibility; }
     /// Separation and centring only (buffers are not rebuilt).
     void setLayout(const LayoutOptions& layout) { m_layout = layout; }
@@ -181,7 +186,8 @@ private:
     struct Uniforms {
         int model = -1, viewProjection = -1, normalMatrix = -1, colour = -1, useVertexColour = -1, lit = -1,
             lightPosition = -1, partIdBase = -1, keyDirection = -1, floor = -1, floorRadius = -1, background = -1,
-            shadows = -1, shadowMap = -1, shadowDepth = -1, lightViewProjection = -1, shadowUvPerCm = -1, shadowCmPerDepth = -1;
+            shadows = -1, shadowMap = -1, shadowDepth = -1, lightViewProjection = -1, shadowUvPerCm = -1, shadowCmPerDepth = -1,
+            shadowDraft = -1;
     } m_uniforms;
     struct SkinUniforms {
         int model = -1, viewProjection = -1, normalMatrix = -1, colour = -1, useVertexColour = -1, lit = -1,
@@ -189,6 +195,7 @@ private:
     } m_skinUniforms;
     ShadowMap m_shadowMap;
     std::vector<float> m_shadowKey; ///< what the shadow map was drawn for (drawShadowMap)
+    bool m_draft = false;
     int m_sceneGeneration = 0;      ///< counts setScene calls
     std::shared_ptr<PuppetFigure> m_puppet; ///< the scene body's modelled puppet, or null
 

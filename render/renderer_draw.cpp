@@ -85,6 +85,7 @@ std::optional<glm::mat4> Renderer::drawShadowMap(const Camera& camera, QSize siz
     std::vector<float> key(glm::value_ptr(light), glm::value_ptr(light) + 16);
     key.push_back(float(m_sceneGeneration));
     key.push_back(float(m_shadowMap.texture()));
+    key.push_back(m_draft ? 1.0f : 0.0f);
     for (std::size_t s = 0; s < m_slots.size(); ++s) {
         const glm::mat4 root = takeRoot(int(s), camera);
         key.insert(key.end(), glm::value_ptr(root), glm::value_ptr(root) + 16);
@@ -143,7 +144,7 @@ void Renderer::drawFigures(const Camera& camera, const glm::mat4& viewProjection
                 slot.skeleton->meshes[j].draw(gl);
             }
         }
-        if (pass != Pass::PartIds && partnerShown(int(s), camera)) {
+        if (pass != Pass::PartIds && !(pass == Pass::Shadow && m_draft) && partnerShown(int(s), camera)) {
             const glm::mat4 world_T_partner = partnerTransform(slot, root);
             setModel(world_T_partner);
             setColour(glm::vec3(1.0f), true, pass == Pass::Colour);
@@ -189,6 +190,7 @@ void Renderer::drawScene(const Camera& camera, QSize size, bool partIds)
             const glm::mat4& m = *light;
             gl.glUniform1f(m_uniforms.shadowUvPerCm, 0.5f * glm::length(glm::vec3(m[0][0], m[1][0], m[2][0])));
             gl.glUniform1f(m_uniforms.shadowCmPerDepth, 2.0f / glm::length(glm::vec3(m[0][2], m[1][2], m[2][2])));
+            gl.glUniform1i(m_uniforms.shadowDraft, m_draft ? 1 : 0);
         }
         const glm::mat4 floor = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, floorHeight()));
         setModel(floor);

@@ -156,6 +156,8 @@ void ViewportWidget::renderImage(int samples)
 {
     if (!makeCurrent()) return;
     prepareFrame();
+    // A moving view's frames (fewer samples) are drafts: cheaper shadows (Renderer::setDraft).
+    m_offscreen->renderer().setDraft(samples < m_samples);
     m_image = m_offscreen->render(m_camera, pixelSize(), samples);
     m_image.setDevicePixelRatio(devicePixelRatioF());
     m_imageSamples = samples;

@@ -33,6 +33,7 @@ uniform sampler2D u_shadowDepth;     // the same map, read as depths
 uniform mat4 u_lightViewProjection;
 uniform float u_shadowUvPerCm;  // the map's texture coordinates per cm across the light
 uniform float u_shadowCmPerDepth; // cm along the light per unit of the map's depth
+uniform int u_shadowDraft;      // 1: a moving view's frame - 4 comparisons over 1 cm, no search
 
 out vec4 fragColour;
 
@@ -86,6 +87,11 @@ float keyLight(vec3 world)
     vec4 clip = u_lightViewProjection * vec4(world, 1.0);
     vec3 p = clip.xyz / clip.w * 0.5 + 0.5;
     if (p.x <= 0.0 || p.x >= 1.0 || p.y <= 0.0 || p.y >= 1.0 || p.z >= 1.0) return 1.0;
+    if (u_shadowDraft != 0) {
+        vec2 d = vec2(0.5 * u_shadowUvPerCm);
+        return 0.25 * (texture(u_shadowMap, vec3(p.xy + vec2(-d.x, -d.y), p.z)) + texture(u_shadowMap, vec3(p.xy + vec2(d.x, -d.y), p.z)) +
+                       texture(u_shadowMap, vec3(p.xy + vec2(-d.x, d.y), p.z)) + texture(u_shadowMap, vec3(p.xy + vec2(d.x, d.y), p.z)));
+    }
     float blockers = 0.0;
     float count = 0.0;
     for (int i = 0; i < 3; ++i)

@@ -119,8 +119,14 @@ TEST_CASE("the floor under a figure is darker than the floor away from it", "[re
     REQUIRE(qRed(ids.pixel(shadowPixel)) == 0);
     REQUIRE(qRed(ids.pixel(litPixel)) == 0);
     const QImage with = stage.image();
+    // A draft frame (a moving view) has the shadow too, with the cheaper filter.
+    stage.offscreen->renderer().setDraft(true);
+    const QImage draft = stage.image();
+    stage.offscreen->renderer().setDraft(false);
     stage.show(false);
     const QImage without = stage.image();
+    CHECK(luminance(draft.pixel(shadowPixel)) < luminance(without.pixel(shadowPixel)) - 40);
+    CHECK(std::abs(luminance(draft.pixel(litPixel)) - luminance(without.pixel(litPixel))) <= 2);
     INFO("shadow pixel " << shadowPixel.x() << "," << shadowPixel.y() << ": " << luminance(with.pixel(shadowPixel)) << " with shadows, "
                          << luminance(without.pixel(shadowPixel)) << " without; lit pixel " << luminance(with.pixel(litPixel)) << " / "
                          << luminance(without.pixel(litPixel)));
