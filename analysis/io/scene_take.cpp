@@ -15,6 +15,8 @@
 #include <Eigen/SVD>
 
 #include <algorithm>
+#include <cstdint>
+#include <map>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -709,6 +711,93 @@ std::optional<Error> checkColladaArrayCounts(const std::string& bytes, const std
     return std::nullopt;
 }
 
+/// The value of attribute `name` in the tag text `tag` (between its quotes), or empty.
+std::string_view colladaAttribute(std::string_view tag, std::string_view name)
+{
+    for (std::size_t at = tag.find(name); at != std::string_view::npos; at = tag.find(name, at + name.size())) {
+        if (at > 0 && tag[at - 1] != ' ' && tag[at - 1] != '\t' && tag[at - 1] != '\n' && tag[at - 1] != '\r') continue;
+        std::size_t i = at + name.size();
+        while (i < tag.size() && (tag[i] == ' ' || tag[i] == '\t' || tag[i] == '\n' || tag[i] == '\r')) ++i;
+        if (i >= tag.size() || tag[i] != '=') continue;
+        ++i;
+        while (i < tag.size() && (tag[i] == ' ' || tag[i] == '\t' || tag[i] == '\n' || tag[i] == '\r')) ++i;
+        if (i >= tag.size() || (tag[i] != '"' && tag[i] != '\'')) continue;
+        const std::size_t close = tag.find(tag[i], i + 1);
+        if (close == std::string_view::npos) return {};
+        return tag.substr(i + 1, close - i - 1);
+    }
+    return {};
+}
+
+/// A whole number of at most 18 digits, or nullopt.
+std::optional<std::uint64_t> colladaNumber(std::string_view text)
+{
+    if (text.empty() || text.size() > 18) return std::nullopt;
+    std::uint64_t value = 0;
+    for (const char c : text) {
+        if (c < '0' || c > '9') return std::nullopt;
+        value = value * 10 + std::uint64_t(c - '0');
+    }
+    return value;
+}
+
+/// assimp 5.2 reads an accessor's `count` x `stride` values (from `offset`) out of the array it
+/// names without checking the array holds them (found by fuzz_scene_take: `<float_array
+/// count="0">` under an accessor of 3 x 3 crashed `bunraku info` with a null read): every
+/// accessor must fit its array's count, and every array's count must not exceed the values
+/// written in it.
+std::optional<Error> checkColladaAccessors(const std::string& bytes, const std::string& source)
+{
+    // The arrays: id -> count, each count checked against the values in the element.
+    std::map<std::string, std::uint64_t, std::less<>> arrays;
+    for (std::size_t at = bytes.find("_array"); at != std::string::npos; at = bytes.find("_array", at + 6)) {
+        const std::size_t open = bytes.rfind('<', at);
+        if (open == std::string::npos || at - open > 16 || open + 1 == at || bytes[open + 1] == '/') continue;
+        const std::size_t end = bytes.find('>', at);
+        if (end == std::string::npos) continue;
+        const std::string_view tag(bytes.data() + at + 6, end - at - 6);
+        const auto count = colladaNumber(colladaAttribute(tag, "count"));
+        if (!count) continue; // checkColladaArrayCounts says why
+        const std::string element = std::string(bytes, open + 1, at + 6 - open - 1);
+        const std::size_t close = bytes.find("</" + element, end);
+        if (close == std::string::npos) continue;
+        std::uint64_t values = 0;
+        bool inside = false;
+        for (std::size_t i = end + 1; i < close; ++i) {
+            const bool space = bytes[i] == ' ' || bytes[i] == '\t' || bytes[i] == '\n' || bytes[i] == '\r';
+            if (!space && !inside) ++values;
+            inside = !space;
+        }
+        if (*count > values)
+            return makeError(ErrorCode::Parse, source + ": a Collada " + element + " says it holds " + std::to_string(*count) +
+                                                   " values but holds " + std::to_string(values));
+        const std::string_view id = colladaAttribute(tag, "id");
+        if (!id.empty()) arrays[std::string(id)] = *count;
+    }
+    for (std::size_t at = bytes.find("<accessor"); at != std::string::npos; at = bytes.find("<accessor", at + 9)) {
+        const std::size_t end = bytes.find('>', at);
+        if (end == std::string::npos) break;
+        const std::string_view tag(bytes.data() + at + 9, end - at - 9);
+        std::string_view target = colladaAttribute(tag, "source");
+        if (!target.empty() && target.front() == '#') target.remove_prefix(1);
+        const auto array = arrays.find(target);
+        if (array == arrays.end()) continue; // assimp reports an unknown source itself
+        const auto count = colladaNumber(colladaAttribute(tag, "count"));
+        const std::string_view strideText = colladaAttribute(tag, "stride");
+        const std::string_view offsetText = colladaAttribute(tag, "offset");
+        const auto stride = strideText.empty() ? std::optional<std::uint64_t>(1) : colladaNumber(strideText);
+        const auto offset = offsetText.empty() ? std::optional<std::uint64_t>(0) : colladaNumber(offsetText);
+        const std::uint64_t step = stride ? std::max<std::uint64_t>(*stride, 1) : 1;
+        // count x stride + offset <= the array's count, without overflowing.
+        const bool fits = count && stride && offset && *offset <= array->second && *count <= (array->second - *offset) / step;
+        if (!fits)
+            return makeError(ErrorCode::Parse, source + ": a Collada accessor reads past its array '" + oneLine(std::string(target.substr(0, 40))) +
+                                                   "' (expected count x stride + offset within the array's " +
+                                                   std::to_string(array->second) + " values)");
+    }
+    return std::nullopt;
+}
+
 /// assimp 5.2 reads a Collada index list (`<p>`, `<vcount>`, `<v>`, `<h>`) with a word that is no
 /// number in it into gigabytes (found by fuzz_scene_take: `<p>0 St9exception1 2</p>` grew
 /// `bunraku info` past 12 GB): such lists are refused before it reads them.
@@ -744,6 +833,8 @@ Result<SceneTake> readWithAssimp(const std::string& bytes, const std::string& ex
         if (auto error = checkColladaArrayCounts(bytes, source)) return *error;
     if (format == SceneFormat::Collada)
         if (auto error = checkColladaIndexLists(bytes, source)) return *error;
+    if (format == SceneFormat::Collada)
+        if (auto error = checkColladaAccessors(bytes, source)) return *error;
     const std::string* input = &bytes;
     std::string slim;
     // assimp aborts on a model's KTime property, which it would keep as metadata: renamed to a

@@ -302,7 +302,21 @@ TEST_CASE("bad scene files and scenes without animation get a one-line error nam
     writeText(dir / "index.dae", "<?xml version=\"1.0\"?>\n<COLLADA><library_geometries><geometry><mesh>"
                                  "<triangles count=\"1\"><p>0 St9exception1 2</p></triangles></mesh></geometry>"
                                  "</library_geometries></COLLADA>\n");
-    for (const std::string name : {"noise.fbx", "empty.glb", "text.dae", "mesh.dae", "absent.fbx", "count.dae", "index.dae"}) {
+    // Found by fuzz_scene_take: assimp 5.2 read an accessor of 3 x 3 values out of an array of
+    // count 0 (a null read: `bunraku info` ended with SIGSEGV); and an array claiming more values
+    // than it holds.
+    const auto triangle = [](const std::string& arrayCount, const std::string& accessor) {
+        return "<?xml version=\"1.0\"?>\n<COLLADA><library_geometries><geometry id=\"tri\"><mesh><source id=\"tri-pos\">"
+               "<float_array id=\"tri-pos-array\" count=\"" + arrayCount + "\">0 0 0 1 0 0 0 1 0</float_array>"
+               "<technique_common><accessor source=\"#tri-pos-array\" " + accessor + "><param name=\"X\" type=\"float\"/>"
+               "</accessor></technique_common></source></mesh></geometry></library_geometries></COLLADA>\n";
+    };
+    writeText(dir / "accessor.dae", triangle("0", "count=\"3\" stride=\"3\""));
+    writeText(dir / "offset.dae", triangle("9", "count=\"3\" stride=\"3\" offset=\"1\""));
+    writeText(dir / "overflow.dae", triangle("9", "count=\"999999999999999999\" stride=\"999999999999999999\""));
+    writeText(dir / "claims.dae", triangle("12", "count=\"3\" stride=\"3\""));
+    for (const std::string name : {"noise.fbx", "empty.glb", "text.dae", "mesh.dae", "absent.fbx", "count.dae", "index.dae", "accessor.dae",
+                                   "offset.dae", "overflow.dae", "claims.dae"}) {
         INFO(name);
         auto take = readTakeFile(dir / name);
         REQUIRE(!take.ok());
@@ -313,6 +327,9 @@ TEST_CASE("bad scene files and scenes without animation get a one-line error nam
         if (name == "mesh.dae") CHECK(message.find("no animation in this Collada file (1 meshes, 0 animations)") != std::string::npos);
         if (name == "index.dae") CHECK(message.find(": a Collada <p> index list holds something that is not a whole number") != std::string::npos);
         if (name == "count.dae") CHECK(message.find(": a Collada float_array's count is not a whole number (expected digits, got \"x\")") != std::string::npos);
+        if (name == "accessor.dae" || name == "offset.dae" || name == "overflow.dae")
+            CHECK(message.find(": a Collada accessor reads past its array 'tri-pos-array'") != std::string::npos);
+        if (name == "claims.dae") CHECK(message.find(": a Collada float_array says it holds 12 values but holds 9") != std::string::npos);
     }
 }
 
