@@ -51,6 +51,25 @@ QString scratchPath(const std::string& folder, const std::string& name = {})
 
 } // namespace
 
+TEST_CASE("every image the installed guide and tutorial link is installed beside them", "[app][help]")
+{
+    const QString folder = QString::fromStdString(BUNRAKU_BINARY_DIR) + QStringLiteral("/share/bunraku/doc/");
+    const QRegularExpression image(QStringLiteral("!\\[[^\\]]*\\]\\(([^)\\s]+)\\)"));
+    int linked = 0;
+    for (const QString& name : {QStringLiteral("USER-GUIDE.md"), QStringLiteral("TUTORIAL.md")}) {
+        QFile file(folder + name);
+        REQUIRE(file.open(QIODevice::ReadOnly));
+        const QString text = QString::fromUtf8(file.readAll());
+        for (auto match = image.globalMatch(text); match.hasNext();) {
+            const QString link = match.next().captured(1);
+            INFO(name.toStdString() << " links " << link.toStdString());
+            CHECK(QFile::exists(folder + link));
+            ++linked;
+        }
+    }
+    CHECK(linked >= 10);
+}
+
 TEST_CASE("Help > User Guide shows the installed guide rendered from its Markdown, with its screenshot", "[app][help]")
 {
     auto window = test::demoWindow();
