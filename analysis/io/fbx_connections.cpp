@@ -24,6 +24,39 @@ bool readLittle(std::string_view bytes, std::size_t at, T& value)
     return true;
 }
 
+/// One binary FBX node record: its end offset, property count and bytes, name, and where its
+/// properties and children start.
+struct FbxRecord {
+    std::uint64_t end = 0, properties = 0, propertyBytes = 0;
+    std::string_view name;
+    std::size_t propertiesAt = 0, childrenAt = 0;
+};
+
+/// Reads the record at `at` (`wide`: version 7500 and later, 64-bit offsets); false when it does
+/// not fit the bytes or ends past `limit`.
+bool readFbxRecord(std::string_view bytes, bool wide, std::size_t at, std::size_t limit, FbxRecord& record)
+{
+    const std::size_t headerSize = wide ? 25 : 13;
+    if (wide) {
+        if (!readLittle(bytes, at, record.end) || !readLittle(bytes, at + 8, record.properties) || !readLittle(bytes, at + 16, record.propertyBytes))
+            return false;
+    } else {
+        std::uint32_t end = 0, properties = 0, propertyBytes = 0;
+        if (!readLittle(bytes, at, end) || !readLittle(bytes, at + 4, properties) || !readLittle(bytes, at + 8, propertyBytes)) return false;
+        record.end = end;
+        record.properties = properties;
+        record.propertyBytes = propertyBytes;
+    }
+    std::uint8_t nameLength = 0;
+    if (!readLittle(bytes, at + headerSize - 1, nameLength)) return false;
+    if (bytes.size() - (at + headerSize) < nameLength) return false;
+    record.name = bytes.substr(at + headerSize, nameLength);
+    record.propertiesAt = at + headerSize + nameLength;
+    if (record.propertyBytes > bytes.size() - record.propertiesAt) return false;
+    record.childrenAt = record.propertiesAt + std::size_t(record.propertyBytes);
+    return record.end == 0 || (record.end > at && record.end <= limit && record.end >= record.childrenAt);
+}
+
 /// Binary FBX: the top-level "Connections" record's "C" children, each with a type string and
 /// two integer ids. Returns false when the records cannot be walked (assimp then reports it).
 bool binaryConnections(std::string_view bytes, std::vector<Edge>& edges)
@@ -31,33 +64,8 @@ bool binaryConnections(std::string_view bytes, std::vector<Edge>& edges)
     std::uint32_t version = 0;
     if (!readLittle(bytes, 23, version)) return false;
     const bool wide = version >= 7500; // 64-bit record offsets and counts
-    const std::size_t headerSize = wide ? 25 : 13;
-    struct Record {
-        std::uint64_t end = 0, properties = 0, propertyBytes = 0;
-        std::string_view name;
-        std::size_t propertiesAt = 0, childrenAt = 0;
-    };
-    const auto readRecord = [&](std::size_t at, Record& record) {
-        if (wide) {
-            if (!readLittle(bytes, at, record.end) || !readLittle(bytes, at + 8, record.properties)
-                || !readLittle(bytes, at + 16, record.propertyBytes))
-                return false;
-        } else {
-            std::uint32_t end = 0, properties = 0, propertyBytes = 0;
-            if (!readLittle(bytes, at, end) || !readLittle(bytes, at + 4, properties) || !readLittle(bytes, at + 8, propertyBytes)) return false;
-            record.end = end;
-            record.properties = properties;
-            record.propertyBytes = propertyBytes;
-        }
-        std::uint8_t nameLength = 0;
-        if (!readLittle(bytes, at + headerSize - 1, nameLength)) return false;
-        if (bytes.size() - (at + headerSize) < nameLength) return false;
-        record.name = bytes.substr(at + headerSize, nameLength);
-        record.propertiesAt = at + headerSize + nameLength;
-        if (record.propertyBytes > bytes.size() - record.propertiesAt) return false;
-        record.childrenAt = record.propertiesAt + std::size_t(record.propertyBytes);
-        return record.end == 0 || (record.end > at && record.end <= bytes.size() && record.end >= record.childrenAt);
-    };
+    using Record = FbxRecord;
+    const auto readRecord = [&](std::size_t at, Record& record) { return readFbxRecord(bytes, wide, at, bytes.size(), record); };
     // The top-level records, from after the 27-byte header, until the null record.
     std::size_t at = 27;
     Record record;
@@ -179,33 +187,8 @@ void binaryModelTimeProperties(std::string_view bytes, std::vector<std::size_t>&
     std::uint32_t version = 0;
     if (!readLittle(bytes, 23, version)) return;
     const bool wide = version >= 7500;
-    const std::size_t headerSize = wide ? 25 : 13;
-    struct Record {
-        std::uint64_t end = 0, properties = 0, propertyBytes = 0;
-        std::string_view name;
-        std::size_t propertiesAt = 0, childrenAt = 0;
-    };
-    const auto readRecord = [&](std::size_t at, std::size_t limit, Record& record) {
-        if (wide) {
-            if (!readLittle(bytes, at, record.end) || !readLittle(bytes, at + 8, record.properties)
-                || !readLittle(bytes, at + 16, record.propertyBytes))
-                return false;
-        } else {
-            std::uint32_t end = 0, properties = 0, propertyBytes = 0;
-            if (!readLittle(bytes, at, end) || !readLittle(bytes, at + 4, properties) || !readLittle(bytes, at + 8, propertyBytes)) return false;
-            record.end = end;
-            record.properties = properties;
-            record.propertyBytes = propertyBytes;
-        }
-        std::uint8_t nameLength = 0;
-        if (!readLittle(bytes, at + headerSize - 1, nameLength)) return false;
-        if (bytes.size() - (at + headerSize) < nameLength) return false;
-        record.name = bytes.substr(at + headerSize, nameLength);
-        record.propertiesAt = at + headerSize + nameLength;
-        if (record.propertyBytes > bytes.size() - record.propertiesAt) return false;
-        record.childrenAt = record.propertiesAt + std::size_t(record.propertyBytes);
-        return record.end == 0 || (record.end > at && record.end <= limit && record.end >= record.childrenAt);
-    };
+    using Record = FbxRecord;
+    const auto readRecord = [&](std::size_t at, std::size_t limit, Record& record) { return readFbxRecord(bytes, wide, at, limit, record); };
     // Calls `visit` for each child record of [from, to) until the null record; false when unreadable.
     const auto children = [&](std::size_t from, std::size_t to, const auto& visit) {
         for (std::size_t at = from; at < to;) {
