@@ -2,6 +2,7 @@
 // and the puppet region checked on pixels, the export from the main window (PNG, MP4, cancel)
 // and `bunraku render --multimodal` against the plain render of the same frame.
 #include "tests/app/video_export_support.h"
+#include "tests/support/peer.h"
 
 #include "app/multimodal_export.h"
 #include "app/multimodal_export_controller.h"
@@ -283,12 +284,8 @@ TEST_CASE("File > Export Multimodal Video writes PNG frames, cancels without a t
     }
     SECTION("MP4: the frames and size asked for")
     {
-        if (!ffmpegInstalled()) {
-            const char* ci = std::getenv("CI");
-            if (ci && std::string(ci) == "true") FAIL("ffmpeg/ffprobe are not installed; CI=true needs the MP4 export test");
-            WARN("ffmpeg/ffprobe not on PATH (apt-get install ffmpeg): multimodal MP4 export not tested");
+        if (!bunraku::test::requirePeer(ffmpegInstalled(), "ffmpeg and ffprobe (the multimodal MP4 export)", "apt-get install ffmpeg"))
             return;
-        }
         options.format = app::VideoFormat::Mp4;
         options.output = QString::fromStdString((folder / "multimodal.mp4").string());
         options.fps = 10.0; // two video frames per take frame

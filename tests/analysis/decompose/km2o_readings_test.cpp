@@ -53,13 +53,13 @@ TEST_CASE("the km2o experiment's error floor falls with the number of takes, as 
     CHECK(runKm2oExperiment(options).error().code == ErrorCode::InvalidArgument);
 }
 
-TEST_CASE("with one shared noise series the T = 1000 row read in percent is met within 0.8-1.25x for M = 5..11")
+TEST_CASE("with one shared noise series and seeds 1-3 the T = 1000 row read in percent is met within 0.8-1.25x for M = 5..11")
 {
     Km2oExperimentOptions options;
     options.finalTime = 1000;
     options.firstM = 5;
     options.lastM = 11;
-    options.seeds = 3;
+    options.seeds = 3; // seeds 1-3: a mean inside the 40-seed spread docs/KM2O.md reports
     options.noise = NoiseSharing::SharedAcrossCells;
     const auto result = runKm2oExperiment(options);
     REQUIRE(result.ok());
