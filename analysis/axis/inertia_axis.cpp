@@ -1,5 +1,7 @@
 #include "analysis/axis/inertia_axis.h"
 
+#include "analysis/body/puppet_mass.h"
+
 #include "analysis/core/puppet_layout.h"
 
 #include <Eigen/Eigenvalues>
@@ -40,7 +42,7 @@ AxisModel makeAxisModel(const BodyDescription& body, const AxisOptions& options)
 {
     AxisModel model;
     model.body = body;
-    for (const MassPoints& points : sampleMassPoints(body, options.massPoints)) {
+    for (const MassPoints& points : bodyMassPoints(body, options.massPoints, &model.massSource)) {
         model.parts.push_back(partMoments(points));
         model.totalMass += model.parts.back().mass;
     }

@@ -32,7 +32,7 @@ enum class FrontBackAxis {
 };
 
 struct AxisOptions {
-    MassPointOptions massPoints;       ///< lattice step of the mass points
+    MassPointOptions massPoints;       ///< where the mass points come from and their lattice step
     FrontBackAxis frontBack = FrontBackAxis::ShoulderForward;
     /// Two principal moments whose difference is below this fraction of the largest moment are
     /// "equal": the axes in their plane are not determined by the inertia (reported per frame).
@@ -44,6 +44,7 @@ struct AxisModel {
     BodyDescription body;
     std::vector<PartMoments> parts; ///< one per body.parts
     double totalMass = 0.0;         ///< g
+    MassSource massSource = MassSource::Model; ///< where the masses came from (the model's when the body has the puppet's parts)
 };
 AxisModel makeAxisModel(const BodyDescription& body, const AxisOptions& options = {});
 

@@ -80,6 +80,8 @@ std::vector<RigidTransform> worldPartPoses(const BodyDescription& body, const Ta
     return worldPartPoses(body, binding, take, frame);
 }
 
+const char* massSourceName(MassSource source) { return source == MassSource::Model ? "model" : "primitives"; }
+
 std::vector<MassPoints> sampleMassPoints(const BodyDescription& body, const MassPointOptions& options)
 {
     const double spacing = options.spacing > 0.0 ? options.spacing : 1.0;

@@ -40,8 +40,21 @@ std::vector<RigidTransform> worldPartPoses(const BodyDescription& body, const Ta
 std::vector<RigidTransform> worldPartPoses(const BodyDescription& body, const BodyBinding& binding, const Take& take,
                                            Eigen::Index frame);
 
+/// Where the motion axis's masses come from.
+enum class MassSource {
+    /// The modelled puppet's solid cut into its parts (puppet_mass.h): the default for a body
+    /// with the puppet's six parts.
+    Model,
+    /// The body description's primitives (sampleMassPoints), as before the modelled puppet; the
+    /// only source for a body with other parts.
+    Primitives,
+};
+/// "model", "primitives".
+const char* massSourceName(MassSource source);
+
 struct MassPointOptions {
-    double spacing = 1.0; ///< cm, grid step of the sampling lattice inside each primitive
+    double spacing = 1.0; ///< cm, grid step of the sampling lattice (inside each primitive, or the model's solid)
+    MassSource source = MassSource::Model;
 };
 
 /// Point masses of one part in its own frame: a regular lattice (step `spacing`) inside each

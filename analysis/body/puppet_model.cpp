@@ -237,17 +237,42 @@ int PuppetMesh::dominantJoint(std::size_t v) const
 
 float puppetSignedDistance(const Eigen::Vector3f& modelPoint) { return puppet_shapes::evaluate(puppet_shapes::shapes(), modelPoint); }
 
+std::array<RigidTransform, 6> puppetPartBindPoses()
+{
+    const puppet_shapes::RestPose& rest = puppet_shapes::restPose();
+    return {rest.head, rest.shoulder, rest.rightArm, rest.rightHand, mirrored(rest.rightArm), mirrored(rest.rightHand)};
+}
+
+PuppetBounds puppetModelBounds()
+{
+    PuppetBounds bounds{Eigen::Vector3f::Constant(1e9f), Eigen::Vector3f::Constant(-1e9f)};
+    for (const auto& s : puppet_shapes::shapes()) {
+        bounds.lower = bounds.lower.cwiseMin(s.centre - Eigen::Vector3f::Constant(s.radius));
+        bounds.upper = bounds.upper.cwiseMax(s.centre + Eigen::Vector3f::Constant(s.radius));
+    }
+    return bounds;
+}
+
+PuppetJoint puppetDominantJointAt(const Eigen::Vector3f& modelPoint)
+{
+    const std::vector<puppet_shapes::Shape>& list = puppet_shapes::shapes();
+    puppet_shapes::Nearest nearest;
+    puppet_shapes::evaluate(list, modelPoint, &nearest);
+    const Skin skin = blendedSkin(list, list[std::size_t(std::max(nearest.shape, 0))].group, modelPoint);
+    int best = 0;
+    for (int k = 1; k < skin.used; ++k)
+        if (skin.weights[k] > skin.weights[best]) best = k;
+    return PuppetJoint(skin.joints[std::size_t(best)]);
+}
+
 PuppetMesh generatePuppetMesh(const PuppetMeshOptions& options)
 {
     const std::vector<puppet_shapes::Shape>& list = puppet_shapes::shapes();
     const puppet_shapes::RestPose& rest = puppet_shapes::restPose();
     SurfaceNetsGrid grid;
-    grid.lower = Eigen::Vector3f::Constant(1e9f);
-    grid.upper = Eigen::Vector3f::Constant(-1e9f);
-    for (const auto& s : list) {
-        grid.lower = grid.lower.cwiseMin(s.centre - Eigen::Vector3f::Constant(s.radius));
-        grid.upper = grid.upper.cwiseMax(s.centre + Eigen::Vector3f::Constant(s.radius));
-    }
+    const PuppetBounds bounds = puppetModelBounds();
+    grid.lower = bounds.lower;
+    grid.upper = bounds.upper;
     grid.lower -= Eigen::Vector3f::Constant(2.0f * options.cellSize);
     grid.upper += Eigen::Vector3f::Constant(2.0f * options.cellSize);
     grid.cellSize = options.cellSize;
@@ -306,12 +331,8 @@ PuppetMesh generatePuppetMesh(const PuppetMeshOptions& options)
     mesh.paintPositions = mesh.positions;
     if (options.targetTriangles > 0) simplify(mesh, options);
 
-    mesh.bindPoses[std::size_t(PuppetJoint::Head)] = rest.head;
-    mesh.bindPoses[std::size_t(PuppetJoint::Shoulder)] = rest.shoulder;
-    mesh.bindPoses[std::size_t(PuppetJoint::RightArm)] = rest.rightArm;
-    mesh.bindPoses[std::size_t(PuppetJoint::RightHand)] = rest.rightHand;
-    mesh.bindPoses[std::size_t(PuppetJoint::LeftArm)] = mirrored(rest.rightArm);
-    mesh.bindPoses[std::size_t(PuppetJoint::LeftHand)] = mirrored(rest.rightHand);
+    const auto parts = puppetPartBindPoses();
+    for (int j = 0; j < 6; ++j) mesh.bindPoses[std::size_t(j)] = parts[std::size_t(j)];
     mesh.bindPoses[std::size_t(PuppetJoint::Kimono)] = RigidTransform{Eigen::Quaterniond::Identity(), rest.dowa};
     mesh.dowaInShoulder = rest.dowa;
     mesh.restArmHeadingDeg = std::atan2(rest.armDirection.y(), rest.armDirection.x()) * 180.0 / M_PI;

@@ -96,6 +96,21 @@ const PuppetMesh& shippedPuppetMesh();
 /// The signed distance of the puppet's surface at a model-space point (cm; negative inside).
 float puppetSignedDistance(const Eigen::Vector3f& modelPoint);
 
+/// model_T_joint at rest of the six part joints (head, shoulder, right arm and hand, left arm and
+/// hand), as in every PuppetMesh::bindPoses, without generating the mesh.
+std::array<RigidTransform, 6> puppetPartBindPoses();
+
+/// A box (model space, cm) holding the whole solid.
+struct PuppetBounds {
+    Eigen::Vector3f lower, upper;
+};
+PuppetBounds puppetModelBounds();
+
+/// The joint a model-space point moves with most: the largest weight of the skin rule of the
+/// shape nearest it (the rule that weights the surface, so a point inside the solid belongs to
+/// the joint the surface over it moves with).
+PuppetJoint puppetDominantJointAt(const Eigen::Vector3f& modelPoint);
+
 /// True when `body` has the six parts the puppet's joints move with (head, shoulder, right_arm,
 /// right_hand, left_arm, left_hand), so the modelled puppet can stand for it.
 bool bodyHasPuppetParts(const BodyDescription& body);

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <map>
 #include <mutex>
+#include <tuple>
 #include <vector>
 
 namespace bunraku::analysis::pipeline {
@@ -21,9 +22,9 @@ namespace {
 std::shared_ptr<const AxisModel> defaultAxisModel(const AxisOptions& options)
 {
     static std::mutex mutex;
-    static std::map<std::pair<double, int>, std::shared_ptr<const AxisModel>> models;
+    static std::map<std::tuple<double, int, int>, std::shared_ptr<const AxisModel>> models;
     const std::lock_guard lock(mutex);
-    auto& model = models[{options.massPoints.spacing, int(options.frontBack)}];
+    auto& model = models[{options.massPoints.spacing, int(options.frontBack), int(options.massPoints.source)}];
     if (!model) model = std::make_shared<const AxisModel>(makeAxisModel(defaultBodyDescription(), options));
     return model;
 }
@@ -57,6 +58,7 @@ StageKey axisKey(StageKey normalised, const AxisParameters& p)
         .add(normalised)
         .add(int(p.frontBack))
         .add(p.massSpacing)
+        .add(int(p.masses))
         .add(p.tau)
         .add(p.searchBand)
         .add(p.maxScale)
@@ -147,7 +149,7 @@ Result<AxisOutput> runAxes(const NormaliseOutput& normalised, const std::string&
 
 StageKey takeAxisKey(StageKey take, const AxisParameters& p)
 {
-    return KeyBuilder("take-axis").add(take).add(int(p.frontBack)).add(p.massSpacing).key();
+    return KeyBuilder("take-axis").add(take).add(int(p.frontBack)).add(p.massSpacing).add(int(p.masses)).key();
 }
 
 Result<TakeAxis> runTakeAxis(const Take& take, const AxisParameters& parameters, const RunControl& control)

@@ -12,7 +12,7 @@
 ///                "reference": "suggested"|"average"|K, "cellReferences": {"f/e": ...}, "averageExcludesOutliers"},
 ///  "decompose": {"input": "normalised"|"preprocessed", "method": "km2o"|"least-squares", "M"},
 ///  "fluctuations": {"armaP", "armaQ", "welchSegment"},
-///  "axis": {"frontBack": "shoulder"|"principal", "massSpacing", "tau", "searchBand", "maxScale",
+///  "axis": {"frontBack": "shoulder"|"principal", "massSpacing", "masses": "model"|"primitives", "tau", "searchBand", "maxScale",
 ///           "approximationWeight", "level": "first-frame"|"none", "path", "controlSpacing", "refinementPasses"},
 ///  "design": {"emotionWeight", "warp": [[output, source], ...] | null,
 ///             "gains": [{"phrase", "dof", "g0", "g1"}], "boundaries": "suggested" | [frame, ...]}}

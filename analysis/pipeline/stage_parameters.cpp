@@ -93,6 +93,7 @@ AxisOptions AxisParameters::axisOptions() const
     AxisOptions options;
     options.frontBack = frontBack;
     options.massPoints.spacing = massSpacing;
+    options.massPoints.source = masses;
     return options;
 }
 

@@ -117,6 +117,9 @@ struct FluctuationParameters {
 struct AxisParameters {
     FrontBackAxis frontBack = FrontBackAxis::ShoulderForward;
     double massSpacing = 1.0;     ///< cm between mass points
+    /// The masses from the modelled puppet's solid (default) or the description's primitives
+    /// (analysis/body/puppet_mass.h, docs/MOTION-AXIS.md "Masses").
+    MassSource masses = MassSource::Model;
     int tau = 4;                  ///< 5.3.4
     int searchBand = 30;          ///< T_cmp (docs/MOTION-AXIS.md)
     int maxScale = 16;            ///< scales 1..16

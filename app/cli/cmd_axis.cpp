@@ -35,6 +35,7 @@ struct AxisArguments {
     std::string body;
     std::string frontBack = "shoulder";
     double spacing = 1.0;
+    std::string masses = "model";
 };
 
 void addAxisOptions(CLI::App* command, AxisArguments& arguments)
@@ -46,12 +47,17 @@ void addAxisOptions(CLI::App* command, AxisArguments& arguments)
         ->check(CLI::IsMember({"shoulder", "principal"}));
     command->add_option("--spacing", arguments.spacing, "Mass point lattice step, cm (default 1)")
         ->check(CLI::Range(pl::kMinMassSpacing, pl::kMaxMassSpacing));
+    command->add_option("--masses", arguments.masses,
+                        "Where the masses come from: 'model' (the modelled puppet's solid, default) or 'primitives' (the body "
+                        "description's primitives); a --body with other parts than the puppet's uses its primitives")
+        ->check(CLI::IsMember({"model", "primitives"}));
 }
 
 an::AxisOptions axisOptions(const AxisArguments& arguments)
 {
     an::AxisOptions options;
     options.massPoints.spacing = arguments.spacing;
+    options.massPoints.source = arguments.masses == "primitives" ? an::MassSource::Primitives : an::MassSource::Model;
     options.frontBack = arguments.frontBack == "principal" ? an::FrontBackAxis::Principal : an::FrontBackAxis::ShoulderForward;
     return options;
 }
@@ -108,6 +114,19 @@ void runAxis(const AxisCommandArguments& arguments)
         printJson({{"take", take.displayName()},
                    {"frames", axis.frameCount()},
                    {"mass_g", axis.totalMass},
+                   {"mass_source", an::massSourceName(model.massSource)},
+                   {"part_masses_g", [&] {
+                        nlohmann::json parts = nlohmann::json::object();
+                        for (std::size_t p = 0; p < model.parts.size() && p < model.body.parts.size(); ++p)
+                            parts[model.body.parts[p].name] = model.parts[p].mass;
+                        return parts;
+                    }()},
+                   {"part_centres_cm", [&] {
+                        nlohmann::json parts = nlohmann::json::object();
+                        for (std::size_t p = 0; p < model.parts.size() && p < model.body.parts.size(); ++p)
+                            parts[model.body.parts[p].name] = {model.parts[p].centre.x(), model.parts[p].centre.y(), model.parts[p].centre.z()};
+                        return parts;
+                    }()},
                    {"channels", [&] {
                         std::vector<std::string> names;
                         for (const an::Channel& c : out.channels) names.push_back(c.name());
@@ -118,7 +137,8 @@ void runAxis(const AxisCommandArguments& arguments)
         return;
     }
     std::cout << "axis of " << take.displayName() << ": " << axis.frameCount() << " frames, body mass "
-              << std::fixed << std::setprecision(0) << axis.totalMass << " g -> " << arguments.output << "\n";
+              << std::fixed << std::setprecision(0) << axis.totalMass << " g (masses from the "
+              << (model.massSource == an::MassSource::Model ? "modelled puppet" : "body's primitives") << ") -> " << arguments.output << "\n";
 }
 
 // ---- phase --------------------------------------------------------------------------------

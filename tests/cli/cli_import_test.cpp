@@ -11,6 +11,9 @@
 
 #include <Eigen/Geometry>
 
+#include <map>
+#include <string>
+
 using bunraku::test::runBunraku;
 using Catch::Matchers::Contains;
 using nlohmann::json;
@@ -198,4 +201,32 @@ TEST_CASE("corpus of the bandai files: every take mapped, the neutral emotion fo
     CHECK(report["neutral_emotion"] == "normal");
     CHECK(report["emotions"].size() == 5);
     for (const auto& take : report["takes"]) CHECK_THAT(take["part_map"].get<std::string>(), Contains("hand=Hand_R (name)"));
+}
+
+TEST_CASE("axis --json says where the masses come from: the modelled puppet fitted to the skeleton or the primitives")
+{
+    const auto dir = bunraku::test::scratchDir("cli_axis_masses");
+    const auto family = bunraku::test::bvhFamilies().front();
+    const auto file = writeFixture(dir, family);
+    std::map<std::string, json> answers;
+    for (const std::string masses : {"model", "primitives"}) {
+        const auto run = runBunraku({"axis", file.string(), "--masses", masses, "--json", "-o", (dir / (masses + ".csv")).string()});
+        INFO(run.err);
+        REQUIRE(run.exitCode == 0);
+        answers[masses] = json::parse(run.out);
+        CHECK(answers[masses]["mass_source"] == masses);
+        double sum = 0.0;
+        for (const auto& [part, grams] : answers[masses]["part_masses_g"].items()) sum += grams.get<double>();
+        CHECK(sum == Approx(answers[masses]["mass_g"].get<double>()));
+        // The mirrored left arm weighs what the right one does.
+        CHECK(answers[masses]["part_masses_g"]["left_arm"].get<double>() ==
+              Approx(answers[masses]["part_masses_g"]["right_arm"].get<double>()).epsilon(1e-9));
+    }
+    // The model's solid is lighter than the overlapping primitives (its skirt and sleeves thinner).
+    CHECK(answers["model"]["mass_g"].get<double>() < 0.8 * answers["primitives"]["mass_g"].get<double>());
+    // Both stand the first frame's axis up.
+    CHECK(firstAxisTilt(file, dir / "tilt.csv") < 15.0);
+    const auto bad = runBunraku({"axis", file.string(), "--masses", "clay", "-o", (dir / "clay.csv").string()});
+    CHECK(bad.exitCode != 0);
+    CHECK_THAT(bad.err, Contains("--masses"));
 }

@@ -208,11 +208,11 @@ TEST_CASE("the tutorial's commands run in order on the Bandai waves and write wh
         CHECK(references == std::map<std::string, int>{{"normal", 5}, {"active", 3}, {"exhausted", 2}});
         for (const auto& axes : summary["axes"]) {
             INFO(axes["emotion"]);
-            CHECK(axes["phrase_boundaries"] == nlohmann::json::array({0, 69, 80, 113, 125, 146, 168, 202, 215}));
+            CHECK(axes["phrase_boundaries"] == nlohmann::json::array({0, 45, 69, 113, 125, 146, 168, 203, 215}));
             CHECK(axes["design_relative_error"].get<double>() < 0.5 * axes["undesigned_relative_error"].get<double>());
             if (axes["emotion"] == "exhausted") {
                 CHECK(axes["undesigned_relative_error"].get<double>() == Approx(0.096).margin(0.005));
-                CHECK(axes["design_relative_error"].get<double>() == Approx(0.030).margin(0.005));
+                CHECK(axes["design_relative_error"].get<double>() == Approx(0.024).margin(0.005));
             }
         }
         for (const char* file : {"report.html", "warp_wave-right-hand_exhausted.csv", "gains_wave-right-hand_exhausted.csv",
@@ -238,11 +238,11 @@ TEST_CASE("the tutorial's commands run in order on the Bandai waves and write wh
             CHECK(warp.rows[i][0] > warp.rows[i - 1][0]);
             CHECK(warp.rows[i][1] >= warp.rows[i - 1][1]);
         }
-        CHECK(shift == Approx(15.95).margin(0.5));
+        CHECK(shift == Approx(15.70).margin(0.5));
     }
     {
         INFO("the gains: 8 phrases from frame 0 to 215, a g0 and a g1 per phrase and axis DOF");
-        CHECK(runs[10].out.find("8 phrases (boundaries 0 79 91 103 113 138 149 160 215") != std::string::npos);
+        CHECK(runs[10].out.find("8 phrases (boundaries 0 68 79 91 114 138 149 160 215") != std::string::npos);
         const auto gains = nlohmann::json::parse(readTextFile(dir / "gains.json"));
         REQUIRE(gains["phrases"].size() == 8);
         CHECK(gains["phrases"].front()["begin"] == 0);

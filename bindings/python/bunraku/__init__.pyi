@@ -355,8 +355,8 @@ def fluctuations(source: Union[Corpus, Preprocessed, Normalisation, Decompositio
 def emotion_weight(source: Union[Corpus, Preprocessed, Normalisation, Decomposition, Analysis], function: str,
                    emotion: str, *, emotionWeight: float = 1.0, threads: int = 0) -> Take: ...
 def motion_axis(source: Union[Take, Corpus, Preprocessed, Normalisation, Analysis], *, frontBack: str = "shoulder",
-                massSpacing: float = 1.0, tau: int = 4, searchBand: int = 30, maxScale: int = 16,
-                approximationWeight: float = 8.0, level: str = "first-frame", path: str = "greedy",
+                massSpacing: float = 1.0, masses: str = "model", tau: int = 4, searchBand: int = 30,
+                maxScale: int = 16, approximationWeight: float = 8.0, level: str = "first-frame", path: str = "greedy",
                 controlSpacing: int = 8, refinementPasses: int = 2, threads: int = 0) -> Union[TakeAxis, Axes]: ...
 def phase(source: Union[Axes, Corpus, Preprocessed, Normalisation, Analysis], function: str, emotion: str, *,
           threads: int = 0, **axis: Any) -> Phase: ...
