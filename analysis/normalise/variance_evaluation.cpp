@@ -117,19 +117,26 @@ Result<ReferenceSuggestion> suggestReference(const std::vector<const Take*>& giv
     // standardised values, so timing differences do not count) beyond twice the median.
     std::vector<Eigen::MatrixXd> standardised;
     for (const Take* take : takes) standardised.push_back(take->values * deviation.cwiseInverse().asDiagonal());
+    // Up to kOutlierPeers + 1 takes every pair is compared; in a larger cell each take is compared
+    // with kOutlierPeers others spread evenly over the cell (every step-th take after it), so
+    // the work grows as n, not n^2 (issue 30: a cell of 1,000 takes).
+    const std::size_t peers = std::min(count - 1, kOutlierPeers);
     std::vector<double> meanDistance(count, 0.0);
     for (std::size_t k = 0; k < count; ++k) {
         if (control.cancelled()) return makeError(ErrorCode::Cancelled, "reference suggestion: cancelled");
-        for (std::size_t l = 0; l < count; ++l) {
+        for (std::size_t i = 0; i < peers; ++i) {
+            // Offsets 1 .. count-1, evenly spaced: all of them when peers = count - 1.
+            const std::size_t l = (k + 1 + (i * (count - 1)) / std::max<std::size_t>(peers, 1)) % count;
             if (k == l) continue;
             AmplitudeMatchOptions options;
             options.searchBand = int(std::max<Eigen::Index>(20, std::abs(takes[k]->frameCount() - takes[l]->frameCount()) + 1));
             auto aligned = matchAmplitudes(standardised[k], standardised[l], options);
+            ++suggestion.alignments;
             const double distance = aligned ? aligned->cost
                                             : summedSquares(takes[k]->values, takes[l]->values).cwiseQuotient(deviation.cwiseAbs2()).sum();
             meanDistance[k] += distance / double(takes[k]->frameCount());
         }
-        if (count > 1) meanDistance[k] /= double(count - 1);
+        if (peers > 0) meanDistance[k] /= double(peers);
     }
     std::vector<double> sorted = meanDistance;
     std::sort(sorted.begin(), sorted.end());

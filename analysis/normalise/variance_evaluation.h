@@ -42,6 +42,7 @@ struct ReferenceSuggestion {
     std::vector<Eigen::Index> activeFrames; ///< per take: frames before the final rest
     std::vector<Eigen::Index> startFrame;   ///< per take: first frame of motion
     std::string reason;
+    std::size_t alignments = 0; ///< timing alignments the outlier test made (at most n * kOutlierPeers)
 };
 
 /// Thesis 3.6.1: among takes that are not outliers, the one starting earliest, then the longest.
@@ -50,8 +51,11 @@ struct ReferenceSuggestion {
 /// aligning timing (amplitude DTW, band 20) above twice the median of those means (3+ takes).
 /// Motion starts at the first frame whose distance from the first frame exceeds 10% of its
 /// maximum; the active part ends at the last frame that far from the final frame.
+/// In a cell of more than kOutlierPeers + 1 takes, each take's mean distance is taken over
+/// kOutlierPeers others spread evenly over the cell (n * kOutlierPeers alignments, not n^2).
 /// InvalidArgument for no takes, differing channels or takes under 2 frames; Cancelled when
-/// `control` is (checked for every take: the outlier test compares every pair, n^2 alignments).
+/// `control` is (checked for every take).
+inline constexpr std::size_t kOutlierPeers = 32;
 Result<ReferenceSuggestion> suggestReference(const std::vector<const Take*>& takes, const RunControl& control = {});
 
 } // namespace bunraku::analysis

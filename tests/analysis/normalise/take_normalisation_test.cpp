@@ -210,6 +210,32 @@ TEST_CASE("the reference suggestion avoids the late outlier (thesis 3.6.1)", "[e
     CHECK_FALSE(suggestReference({}).ok());
 }
 
+TEST_CASE("a cell of 120 takes is suggested with 32 alignments a take and still finds its late outliers", "[evaluation]")
+{
+    // Issue 30: the outlier test compared every pair (n^2 timing alignments: 1,000 takes took
+    // 92 s). Beyond 33 takes each take meets 32 others spread over the cell.
+    std::vector<Take> cell;
+    for (int k = 0; k < 120; ++k) {
+        const bool late = k % 40 == 7; // 3 outliers: the first take's late start and its extra event
+        if (late) cell.push_back(warpedTake([](double u) { return u - 6.0 + 4.0 * std::sin(u / 30.0); }, 106, k + 1, 0.3, 1, 100 + k));
+        else cell.push_back(warpedTake(sineWarp(double(k % 11) - 5.0, 106, double(k % 5) - 2.0), 106, k + 1, 0.3, 0, 100 + k));
+    }
+    auto suggestion = suggestReference(pointers(cell));
+    REQUIRE(suggestion.ok());
+    CHECK(suggestion->alignments == 120u * kOutlierPeers);
+    for (int k = 0; k < 120; ++k) {
+        INFO("take " << k + 1);
+        CHECK(suggestion->outlier[std::size_t(k)] == (k % 40 == 7));
+    }
+    CHECK(suggestion->takeIndex % 40 != 7);
+
+    // Up to 33 takes every pair is still compared (the thesis's cells of 5 unchanged).
+    const std::vector<Take> five = makeCell();
+    auto small = suggestReference(pointers(five));
+    REQUIRE(small.ok());
+    CHECK(small->alignments == 5u * 4u);
+}
+
 TEST_CASE("long takes, transformed one coupling set at a time, recover a known shift", "[normalise]")
 {
     // Above about 20,800 frames of 24 channels x 16 scales the features are computed a coupling
