@@ -235,6 +235,15 @@ void Document::insertImportedTake(const DerivedTake& take, int position)
     emit derivedTakesChanged();
 }
 
+void Document::appendImportedTakes(std::vector<DerivedTake> takes)
+{
+    if (takes.empty()) return;
+    m_derived.reserve(m_derived.size() + takes.size());
+    for (DerivedTake& take : takes) m_derived.push_back(std::move(take));
+    ++m_version;
+    emit derivedTakesChanged();
+}
+
 void Document::removeImportedTake(const QString& id)
 {
     const int index = indexOfDerived(id);

@@ -160,6 +160,9 @@ public:
     // --- mutators for commands only (app/commands.cpp) ---
     void applyParameters(const AnalysisParameters& values);
     void insertImportedTake(const DerivedTake& take, int position);
+    /// Appends a project's imported takes with one derivedTakesChanged (one rebuild of the corpus
+    /// browser for 10,000 takes, not one per take).
+    void appendImportedTakes(std::vector<DerivedTake> takes);
     void removeImportedTake(const QString& id);
     int indexOfDerived(const QString& id) const;
     /// The next unused "imported/<n>" id.

@@ -427,6 +427,7 @@ bool FileController::applyStateNow(const ProjectState& state)
     }
     const bool opened = state.corpus == QStringLiteral("demo") ? openDemoCorpus() : openCorpusFolder(state.corpus);
     if (!opened) return false;
+    std::vector<DerivedTake> imported;
     for (qsizetype i = 0; i < state.imported.size(); ++i) {
         const auto& recipe = state.imported[i];
         auto& take = takes[std::size_t(i)];
@@ -435,11 +436,11 @@ bool FileController::applyStateNow(const ProjectState& state)
             report(tr("Cannot re-import the take '%1' of the project").arg(recipe.label), take.error());
             continue;
         }
-        m_document.insertImportedTake(
-            DerivedTake{m_document.nextImportedId(), recipe.label, std::make_shared<const analysis::Take>(std::move(take).value()),
-                        recipe.path, QString(), std::make_shared<const analysis::io::ImportOptions>(recipe.options), nullptr, {}},
-            int(m_document.derivedTakes().size()));
+        imported.push_back(DerivedTake{m_document.nextImportedId(), recipe.label,
+                                       std::make_shared<const analysis::Take>(std::move(take).value()), recipe.path, QString(),
+                                       std::make_shared<const analysis::io::ImportOptions>(recipe.options), nullptr, {}});
     }
+    m_document.appendImportedTakes(std::move(imported));
     m_document.restoreParameters(state.parameters);
     // Live results are recomputed after opening: a live take shown as A or B is awaited and
     // shown when published (showPendingLiveTakes); until then A keeps the corpus's first take.

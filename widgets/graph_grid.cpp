@@ -232,7 +232,14 @@ void GraphGrid::setSelectedChannel(const std::string& part, const std::string& d
 void GraphGrid::rebuild(bool allData)
 {
     m_options.hasTakeB = m_takes[1] != nullptr;
-    const std::vector<GraphCell> cells = m_takes[0] ? layoutGraphs(m_takes[0]->channels, m_options) : std::vector<GraphCell>{};
+    std::vector<GraphCell> cells = m_takes[0] ? layoutGraphs(m_takes[0]->channels, m_options) : std::vector<GraphCell>{};
+    const int total = int(cells.size());
+    const int hidden = std::max(0, total - kMaxGraphs);
+    if (hidden > 0) cells.resize(std::size_t(kMaxGraphs));
+    if (hidden != m_hiddenGraphs) {
+        m_hiddenGraphs = hidden;
+        emit graphsLimited(hidden, total);
+    }
     std::vector<GraphCell> current;
     for (const auto& graph : m_graphs) current.push_back(graph.cell);
     const bool sameStructure = !m_graphs.empty() && sameCells(cells, current) &&

@@ -121,6 +121,12 @@ public:
     QString graphValueLabel(int graph) const;
 
     int graphCount() const { return int(m_graphs.size()); }
+    /// Most graphs the grid builds: a take of more channels than that shows its first
+    /// kMaxGraphs (a take of 10,000 channels would build 10,000 plots, and QCustomPlot's layout
+    /// work grows with their square); the 'one part' and 'single' layouts reach every channel.
+    static constexpr int kMaxGraphs = 96;
+    /// How many graphs the layout asks for beyond kMaxGraphs (0 normally).
+    int hiddenGraphCount() const { return m_hiddenGraphs; }
     const GraphCell& graphCell(int graph) const;
     /// The time (seconds) at which graph `graph` draws its cursor line.
     double graphCursorTime(int graph) const;
@@ -146,6 +152,8 @@ public:
 signals:
     /// The user pressed or dragged at `seconds` in a graph.
     void timeScrubbed(double seconds);
+    /// The grid was rebuilt with `hidden` graphs of the layout left out (kMaxGraphs), of `total`.
+    void graphsLimited(int hidden, int total);
     /// The shared time range changed (zoom, pan or reset).
     void timeRangeChanged(double lower, double upper);
 
@@ -204,6 +212,7 @@ private:
     bool m_thesisTicks = false;
     GraphColours m_colours;
     std::vector<Graph> m_graphs;
+    int m_hiddenGraphs = 0;
     double m_cursorTime = 0.0;
     double m_rangeLower = 0.0;
     double m_rangeUpper = 1.0;

@@ -8,6 +8,7 @@
 #include <QComboBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QSet>
 #include <QSignalBlocker>
 #include <QVBoxLayout>
 
@@ -87,6 +88,18 @@ GraphPanel::GraphPanel(QWidget* parent) : QWidget(parent), m_grid(new GraphGrid(
     m_ghostCaption->setContentsMargins(8, 0, 8, 0);
     m_ghostCaption->setVisible(false);
     layout->addWidget(m_ghostCaption);
+    m_limitCaption = new QLabel(this);
+    m_limitCaption->setObjectName("graphLimitCaption");
+    m_limitCaption->setWordWrap(true);
+    m_limitCaption->setContentsMargins(8, 0, 8, 0);
+    m_limitCaption->setVisible(false);
+    layout->addWidget(m_limitCaption);
+    connect(m_grid, &GraphGrid::graphsLimited, this, [this](int hidden, int total) {
+        m_limitCaption->setText(tr("Showing the first %1 of %2 graphs: the 'one part' and 'single' layouts show any channel.")
+                                    .arg(total - hidden)
+                                    .arg(total));
+        m_limitCaption->setVisible(hidden > 0);
+    });
     layout->addWidget(m_grid, 1);
 
     connect(m_layout, &QComboBox::currentIndexChanged, this,
@@ -107,11 +120,19 @@ void GraphPanel::setTakes(std::shared_ptr<const analysis::Take> takeA, std::shar
     QStringList parts;
     QStringList dofs;
     if (takeA) {
+        // In order of first appearance; the sets keep it linear in the channels (10,000 parts).
+        QSet<QString> seenParts, seenDofs;
         for (const auto& channel : takeA->channels) {
             const QString part = QString::fromStdString(channel.part);
             const QString dof = QString::fromStdString(channel.dof);
-            if (!parts.contains(part)) parts << part;
-            if (!dofs.contains(dof)) dofs << dof;
+            if (!seenParts.contains(part)) {
+                seenParts.insert(part);
+                parts << part;
+            }
+            if (!seenDofs.contains(dof)) {
+                seenDofs.insert(dof);
+                dofs << dof;
+            }
         }
     }
     refill(m_part, parts);

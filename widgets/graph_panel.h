@@ -73,6 +73,7 @@ private:
     QComboBox* m_angles = nullptr;
     QCheckBox* m_thesisTicks = nullptr;
     QLabel* m_ghostCaption = nullptr;
+    QLabel* m_limitCaption = nullptr; ///< says how many graphs a take of very many channels leaves out
     std::shared_ptr<const analysis::Take> m_takeA, m_takeB, m_ghost, m_perChannel; ///< as given
     std::shared_ptr<const analysis::Take> m_shownA, m_shownB;         ///< as drawn
 };

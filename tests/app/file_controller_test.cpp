@@ -322,6 +322,38 @@ TEST_CASE("a project whose imported takes cannot be read opens saying which take
     std::filesystem::remove(fifo);
 }
 
+TEST_CASE("a project of 2000 imported takes adds them to the document in one change", "[app][files]")
+{
+    // Issue 30: a project of 10,000 imported takes took 300 s to open - each take added was one
+    // document change and one rebuild of the corpus browser (n^2). Now they come in one change.
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    const auto dir = test::scratchDir("project-many-takes");
+    const std::string take = (dir / "t.csv").string();
+    {
+        std::ofstream out(take);
+        out << "time_s,a.x\n0,1\n0.2,2\n0.4,3\n";
+    }
+    const QString file = QString::fromStdString((dir / "p.bunraku.json").string());
+    {
+        std::ofstream out(file.toStdString());
+        out << R"({"format": "bunraku-project", "version": 2, "corpus": "demo", "imported": [)";
+        for (int i = 0; i < 2000; ++i) out << (i ? ", " : "") << R"({"path": ")" << take << R"(", "label": "t)" << i << R"("})";
+        out << "]}";
+    }
+    int changes = 0;
+    QObject::connect(&window->document(), &app::Document::derivedTakesChanged, [&] { ++changes; });
+    REQUIRE(window->files().openProject(file));
+    const auto imported = importedTakes(window->document());
+    REQUIRE(imported.size() == 2000);
+    CHECK(imported.front().label == QStringLiteral("t0"));
+    CHECK(imported.back().label == QStringLiteral("t1999"));
+    CHECK(imported.front().id != imported.back().id);
+    CHECK(changes <= 3); // the corpus, the imported takes, the live takes: not one per take
+    auto* browser = window->findChild<widgets::CorpusBrowser*>();
+    REQUIRE(browser);
+}
+
 TEST_CASE("a project holding a number beyond a double is refused naming the file and line", "[app][files]")
 {
     auto window = test::demoWindow();

@@ -1,4 +1,5 @@
 #include "widgets/graph_grid.h"
+#include "widgets/graph_panel.h"
 
 #include "widgets/take_series.h"
 
@@ -7,6 +8,8 @@
 #include <catch2/catch.hpp>
 #include <qcustomplot.h>
 
+#include <QComboBox>
+#include <QLabel>
 #include <QSignalSpy>
 #include <QTest>
 
@@ -357,4 +360,45 @@ TEST_CASE("48 graphs at a laptop's size show every name and value without overla
         CHECK(overlapping == 0);
         CHECK(empty == 0);
     }
+}
+
+TEST_CASE("a take of 10000 channels builds the first 96 graphs and says how many it leaves out", "[widgets][graph_grid]")
+{
+    // Issue 30: a take of 10,000 channels x 20 frames showed no window after 600 s (a plot per
+    // channel; QCustomPlot's layout work grows with the square of the plots).
+    auto wide = std::make_shared<analysis::Take>();
+    wide->rateHz = 5.0;
+    for (int c = 0; c < 10000; ++c) wide->channels.push_back({"c" + std::to_string(c), "x", "cm"});
+    wide->values.resize(20, 10000);
+    for (Eigen::Index k = 0; k < 20; ++k)
+        for (Eigen::Index c = 0; c < 10000; ++c) wide->values(k, c) = test::syntheticValue(k, c % 50, 0.0);
+    wide->labels = {"wide", "none", 1, "synthetic"};
+
+    widgets::GraphPanel panel;
+    panel.resize(900, 700);
+    panel.setTakes(wide, nullptr, QStringLiteral("wide"));
+    panel.show();
+    REQUIRE(QTest::qWaitForWindowExposed(&panel));
+    auto* grid = panel.findChild<widgets::GraphGrid*>();
+    REQUIRE(grid);
+    CHECK(grid->graphCount() == widgets::GraphGrid::kMaxGraphs);
+    CHECK(grid->hiddenGraphCount() == 10000 - widgets::GraphGrid::kMaxGraphs);
+    CHECK(grid->graphCell(0).part == "c0");
+    CHECK(grid->graphCell(95).part == "c95");
+    auto* caption = panel.findChild<QLabel*>(QStringLiteral("graphLimitCaption"));
+    REQUIRE(caption);
+    CHECK(caption->isVisible());
+    CHECK(caption->text().contains(QStringLiteral("96 of 10000")));
+    // Every part is one choice away: the part box lists all 10,000, and 'one part' shows any.
+    const auto parts = panel.findChildren<QComboBox*>();
+    bool listed = false;
+    for (auto* box : parts)
+        if (box->count() == 10000 && box->itemText(9999) == QStringLiteral("c9999")) listed = true;
+    CHECK(listed);
+
+    // A take of 24 channels: every graph, no caption.
+    panel.setTakes(test::syntheticPuppetTake(20), nullptr, QStringLiteral("puppet"));
+    CHECK(grid->graphCount() == 24);
+    CHECK(grid->hiddenGraphCount() == 0);
+    CHECK_FALSE(caption->isVisible());
 }
