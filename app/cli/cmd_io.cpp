@@ -4,8 +4,10 @@
 #include "app/cli/take_output.h"
 #include "app/cli/output_guard.h"
 
+#include "analysis/cloth/kimono_cloth.h"
 #include "analysis/core/puppet_layout.h"
 #include "analysis/io/bvh.h"
+#include "analysis/io/take_csv.h"
 #include "analysis/io/bvh_joint_map.h"
 #include "analysis/io/corpus_io.h"
 #include "analysis/io/take_reader.h"
@@ -352,6 +354,8 @@ struct ConvertArguments {
     std::string input;
     std::string output;
     bool json = false;
+    bool kimono = false;
+    analysis::ClothParameters cloth;
     ImportArguments import;
 };
 
@@ -367,6 +371,16 @@ void runConvert(const ConvertArguments& arguments)
             throw CliError(output.string() + ": a corpus converts to a corpus folder, not to a single file");
         unwrap(io::writeCorpus(loaded.corpus, output));
         written = "corpus";
+    } else if (arguments.kimono) {
+        // The kimono's measured points as 18 more channels (analysis/cloth/kimono_cloth.h): only a
+        // CSV take holds channels that are not a skeleton's.
+        if (io::takeFileFormat(output) != io::TakeFileFormat::Csv)
+            throw CliError(output.string() + ": --kimono writes a .csv take (the kimono's points are channels beside the take's)");
+        const Take& take = loaded.corpus.takes.front();
+        const auto simulation = analysis::simulateKimono(take, arguments.cloth);
+        if (!simulation) throw CliError(arguments.input + ": " + simulation.error().message);
+        unwrap(io::writeTakeCsv(analysis::withKimonoChannels(take, *simulation), output));
+        written = "csv";
     } else {
         requireTakeOutput(output.string());
         writeTakeOutput(loaded.corpus.takes.front(), output.string());
@@ -374,13 +388,14 @@ void runConvert(const ConvertArguments& arguments)
         std::transform(written.begin(), written.end(), written.begin(), [](unsigned char c) { return char(std::tolower(c)); });
     }
     const Take& first = loaded.corpus.takes.front();
+    const Eigen::Index channels = first.channelCount() + (arguments.kimono && !loaded.isCorpus ? Eigen::Index(analysis::kimonoChannels().size()) : 0);
     if (arguments.json) {
         json document{{"input", arguments.input},
                       {"output", output.string()},
                       {"input_format", loaded.format},
                       {"output_format", written},
                       {"takes", loaded.corpus.takes.size()},
-                      {"channels", first.channelCount()},
+                      {"channels", channels},
                       {"frames", first.frameCount()},
                       {"rate_hz", loaded.corpus.rateHz}};
         if (loaded.map) document["part_map"] = partMapJson(*loaded.map);
@@ -388,7 +403,8 @@ void runConvert(const ConvertArguments& arguments)
     } else {
         if (loaded.map) std::cout << "part map: " << loaded.map->describe() << "\n";
         std::cout << "wrote " << output.string() << " (" << written << ": " << loaded.corpus.takes.size() << " take(s), "
-                  << first.channelCount() << " channels, " << loaded.corpus.rateHz << " Hz)\n";
+                  << channels << " channels" << (arguments.kimono && !loaded.isCorpus ? ", the kimono's 18 among them" : "") << ", "
+                  << loaded.corpus.rateHz << " Hz)\n";
     }
 }
 
@@ -500,6 +516,18 @@ void addIoCommands(CommandSet& commands)
         convert->add_option("IN", arguments->input, "Input take file or corpus folder")->required();
         convert->add_option("-o,--output", arguments->output, "Output file (.bvh, .glb or .csv) or corpus folder")->required();
         convert->add_flag("--json", arguments->json, "Print a machine-readable summary");
+        convert->add_flag("--kimono", arguments->kimono,
+                          "Simulate the puppet's kimono as cloth over the take and append its measured points (sleeve tips, hem "
+                          "front/back/left/right; x y z cm) as 18 channels of a .csv output (docs/KIMONO.md)");
+        convert->add_option("--cloth-mass", arguments->cloth.massPerArea, "Kimono cloth: mass per area, g/cm^2 (default 0.015, silk crepe)")
+            ->check(CLI::Range(1e-4, 1.0));
+        convert->add_option("--cloth-bend", arguments->cloth.bendCompliance, "Kimono cloth: bending compliance, cm/dyn (default 2e-4)")
+            ->check(CLI::Range(0.0, 1.0));
+        convert->add_option("--cloth-damping", arguments->cloth.damping, "Kimono cloth: damping towards the body's motion, 1/s (default 1.5)")
+            ->check(CLI::Range(0.0, 100.0));
+        convert->add_option("--cloth-drag", arguments->cloth.drag, "Kimono cloth: air drag, 1/s (default 0.6)")->check(CLI::Range(0.0, 100.0));
+        convert->add_option("--cloth-substeps", arguments->cloth.substepRate, "Kimono cloth: simulation substeps per second (default 240)")
+            ->check(CLI::Range(30.0, 10000.0));
         addImportOptions(convert, arguments->import);
         convert->callback([arguments] { runConvert(*arguments); });
     }

@@ -1,0 +1,73 @@
+// `bunraku convert TAKE --kimono -o FILE.csv`: the kimono simulated as cloth over the take, its
+// measured points appended as 18 channels (analysis/cloth/kimono_cloth.h).
+#include "tests/cli/cli_files.h"
+#include "tests/cli/cli_runner.h"
+#include "tests/support/shared_data.h"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+
+using bunraku::test::runBunraku;
+
+namespace {
+
+/// The column of `name` in a CSV header, or -1.
+int column(const std::vector<std::string>& header, const std::string& name)
+{
+    const auto found = std::find(header.begin(), header.end(), name);
+    return found == header.end() ? -1 : int(found - header.begin());
+}
+
+void checkKimonoCsv(const std::filesystem::path& csvFile, std::size_t takeChannels)
+{
+    const auto csv = bunraku::test::readNumericCsv(csvFile);
+    REQUIRE(csv.header.size() == 1 + takeChannels + 18);
+    CHECK(csv.header[1 + takeChannels] == "sleeve_right_tip.x");
+    CHECK(csv.header.back() == "hem_right.z");
+    const int shoulderZ = column(csv.header, "shoulder.z");
+    REQUIRE(shoulderZ > 0);
+    for (const char* point : {"hem_front", "hem_back", "hem_left", "hem_right"}) {
+        const int z = column(csv.header, std::string(point) + ".z");
+        REQUIRE(z > 0);
+        for (const auto& row : csv.rows) {
+            INFO(point << " at " << row[0] << " s");
+            // The hem hangs well below the shoulder sensor (the dō-wa is 24 cm below it).
+            CHECK(row[std::size_t(z)] < row[std::size_t(shoulderZ)] - 24.0);
+            CHECK(std::isfinite(row[std::size_t(z)]));
+        }
+    }
+}
+
+} // namespace
+
+TEST_CASE("convert --kimono appends the kimono's 18 channels to a demo take and refuses a .bvh output", "[cli][kimono]")
+{
+    const auto dir = bunraku::test::scratchDir("cli_kimono");
+    auto run = runBunraku({"demo", "-o", (dir / "demo").string()});
+    REQUIRE(run.exitCode == 0);
+    const auto take = dir / "demo" / "greeting_hostile_1.csv";
+    run = runBunraku({"convert", take.string(), "--kimono", "-o", (dir / "kimono.csv").string()});
+    INFO(run.err);
+    REQUIRE(run.exitCode == 0);
+    CHECK(run.out.find("42 channels, the kimono's 18 among them") != std::string::npos);
+    checkKimonoCsv(dir / "kimono.csv", 24);
+
+    run = runBunraku({"convert", take.string(), "--kimono", "-o", (dir / "kimono.bvh").string()});
+    CHECK(run.exitCode != 0);
+    CHECK(run.err.find("--kimono writes a .csv take") != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(dir / "kimono.bvh"));
+    run = runBunraku({"convert", take.string(), "--kimono", "--cloth-mass", "0", "-o", (dir / "bad.csv").string()});
+    CHECK(run.exitCode == 2); // outside the option's range
+}
+
+TEST_CASE("convert --kimono on a Bandai wave dresses the puppet fitted to the performer", "[cli][kimono][bandai]")
+{
+    const auto bvh = bunraku::test::bandaiDir() / "wave-right-hand_active_001.bvh";
+    if (!bunraku::test::requireBandaiData(std::filesystem::exists(bvh))) return;
+    const auto dir = bunraku::test::scratchDir("cli_kimono_bandai");
+    const auto run = runBunraku({"convert", bvh.string(), "--kimono", "-o", (dir / "wave.csv").string()});
+    INFO(run.err);
+    REQUIRE(run.exitCode == 0);
+    checkKimonoCsv(dir / "wave.csv", 24);
+}
