@@ -387,6 +387,76 @@ Result<std::vector<Eigen::Vector3d>> kimonoFrame(const KimonoSimulation& simulat
     return solver.x;
 }
 
+Result<KimonoMeasures> measureKimono(const Take& take, const KimonoSimulation& simulation)
+{
+    const Eigen::Index frames = take.frameCount();
+    if (frames < 3 || simulation.frameCount() != frames) return makeError(ErrorCode::InvalidArgument, take.displayName() + ": the kimono's measures need 3 frames or more");
+    const auto hand = take.channelIndex("hand", "x");
+    if (!hand) return makeError(ErrorCode::InvalidArgument, take.displayName() + ": the kimono's measures need the hand part");
+    const KimonoCloth& cloth = *simulation.cloth;
+    KimonoMeasures measures;
+    // Displacement from rigid carrying, per frame: right tip, left tip, the hem's four points.
+    // Its slow part is where the cloth hangs as the pose changes (a raised arm's sleeve hangs
+    // along it); what swings is the rest: the RMS about a centred moving mean of 0.5 s.
+    const int half = std::max(1, int(std::lround(0.25 * take.rateHz)));
+    const auto spread = [&](const std::vector<Eigen::Vector3d>& values) {
+        const long n = long(values.size());
+        double sum = 0.0;
+        for (long k = 0; k < n; ++k) {
+            Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+            const long from = std::max(0L, k - half), to = std::min(n - 1, k + half);
+            for (long j = from; j <= to; ++j) mean += values[std::size_t(j)];
+            mean /= double(to - from + 1);
+            sum += (values[std::size_t(k)] - mean).squaredNorm();
+        }
+        return std::sqrt(sum / double(n));
+    };
+    std::array<std::vector<Eigen::Vector3d>, kKimonoPointCount> displacement;
+    for (Eigen::Index k = 0; k < frames; ++k) {
+        auto holders = kimonoHolderPoses(simulation.body, take, k);
+        if (!holders) return holders.error();
+        for (int p = 0; p < kKimonoPointCount; ++p) {
+            const std::uint32_t i = cloth.measured[std::size_t(p)];
+            const Eigen::Vector3d carried = (*holders)[cloth.holder[i]].apply(cloth.restLocal[i]);
+            displacement[std::size_t(p)].push_back(simulation.points.block<1, 3>(k, 3 * p).transpose() - carried);
+        }
+    }
+    measures.sleeveSwingCm[0] = spread(displacement[0]);
+    measures.sleeveSwingCm[1] = spread(displacement[1]);
+    double hem = 0.0;
+    for (int p = 2; p < kKimonoPointCount; ++p) hem += spread(displacement[std::size_t(p)]) / 4.0;
+    measures.hemSwingCm = hem;
+    std::vector<Eigen::Vector3d> handPositions;
+    for (Eigen::Index k = 0; k < frames; ++k) handPositions.push_back(take.values.block<1, 3>(k, *hand).transpose());
+    measures.handSwingCm = spread(handPositions);
+    // The lag: velocities of the hand's sensor and the right sleeve tip.
+    std::vector<Eigen::Vector3d> handVelocity, tipVelocity;
+    for (Eigen::Index k = 1; k < frames; ++k) {
+        handVelocity.push_back((take.values.block<1, 3>(k, *hand) - take.values.block<1, 3>(k - 1, *hand)).transpose());
+        tipVelocity.push_back((simulation.points.block<1, 3>(k, 0) - simulation.points.block<1, 3>(k - 1, 0)).transpose());
+    }
+    const int window = std::max(1, int(std::lround(0.5 * take.rateHz)));
+    const auto correlation = [&](int lag) {
+        double sum = 0.0;
+        for (std::size_t t = 0; t < handVelocity.size(); ++t) {
+            const long u = long(t) + lag;
+            if (u >= 0 && std::size_t(u) < tipVelocity.size()) sum += handVelocity[t].dot(tipVelocity[std::size_t(u)]);
+        }
+        return sum;
+    };
+    int best = 0;
+    for (int lag = -window; lag <= window; ++lag)
+        if (correlation(lag) > correlation(best)) best = lag;
+    double lag = best;
+    if (best > -window && best < window) {
+        const double before = correlation(best - 1), at = correlation(best), after = correlation(best + 1);
+        const double curvature = before - 2.0 * at + after;
+        if (curvature < 0.0) lag += 0.5 * (before - after) / curvature;
+    }
+    measures.sleeveLagSeconds = lag / take.rateHz;
+    return measures;
+}
+
 Take withKimonoChannels(const Take& take, const KimonoSimulation& simulation)
 {
     Take out = take;

@@ -115,6 +115,26 @@ Result<KimonoSimulation> simulateKimono(const Take& take, const ClothParameters&
 /// values as simulating from frame 0.
 Result<std::vector<Eigen::Vector3d>> kimonoFrame(const KimonoSimulation& simulation, const Take& take, Eigen::Index frame);
 
+/// How the kimono moves beyond what the parts' motion predicts (issue "The kimono", item 4).
+struct KimonoMeasures {
+    /// RMS (cm) of a sleeve tip's displacement from where its arm would carry it rigidly (its rest
+    /// point in the arm's frame), about the displacement's centred moving mean over 0.5 s (the
+    /// slow part is how the sleeve hangs in the pose; the rest is its own swing). Right, left.
+    double sleeveSwingCm[2] = {0.0, 0.0};
+    /// s by which the right sleeve tip's velocity follows the right hand's (the lag of the best
+    /// cross-correlation of the two velocities within +-0.5 s, refined between frames).
+    double sleeveLagSeconds = 0.0;
+    /// RMS (cm) of the hem's four points' displacement from where the shoulder would carry them
+    /// rigidly, about its 0.5 s moving mean (as for the sleeves): the skirt's own swing.
+    double hemSwingCm = 0.0;
+    /// The hand sensor's own swing by the same measure (its position about its 0.5 s moving
+    /// mean): what the arm does, to set the sleeves' swing against.
+    double handSwingCm = 0.0;
+};
+/// The measures of a simulated take (the take the simulation was made of). Errors when the take
+/// has no hand part or fewer than 3 frames.
+Result<KimonoMeasures> measureKimono(const Take& take, const KimonoSimulation& simulation);
+
 /// The take with the kimono's 18 channels appended (measured points), e.g. for
 /// `bunraku convert TAKE --kimono -o FILE.csv` and the analysis chain.
 Take withKimonoChannels(const Take& take, const KimonoSimulation& simulation);

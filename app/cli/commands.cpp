@@ -11,6 +11,7 @@ void addAllCommands(CommandSet& commands)
     addDecompositionCommands(commands);
     addMotionAxisCommands(commands);
     addApproximationCommands(commands);
+    addKimonoCommands(commands);
     addAnalyseCommands(commands);
     addSummaryCommands(commands);
     addRenderCommands(commands);

@@ -18,6 +18,8 @@ void addDecompositionCommands(CommandSet& commands);
 void addMotionAxisCommands(CommandSet& commands);
 /// experiment approximation (cmd_approximation.cpp)
 void addApproximationCommands(CommandSet& commands);
+/// experiment kimono (cmd_kimono.cpp)
+void addKimonoCommands(CommandSet& commands);
 /// analyse (cmd_analyse.cpp)
 void addAnalyseCommands(CommandSet& commands);
 /// summary (cmd_summary.cpp)

@@ -5,6 +5,7 @@
 #include "tests/support/shared_data.h"
 
 #include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 
@@ -70,4 +71,32 @@ TEST_CASE("convert --kimono on a Bandai wave dresses the puppet fitted to the pe
     INFO(run.err);
     REQUIRE(run.exitCode == 0);
     checkKimonoCsv(dir / "wave.csv", 24);
+}
+
+TEST_CASE("experiment kimono measures every take of a corpus and the means per cell", "[cli][kimono]")
+{
+    const auto dir = bunraku::test::scratchDir("cli_kimono_experiment");
+    auto run = runBunraku({"demo", "-o", (dir / "demo").string()});
+    REQUIRE(run.exitCode == 0);
+    // Two cells of two takes (the whole demo corpus takes some 15 s).
+    run = runBunraku({"corpus", (dir / "demo" / "greeting_none_1.csv").string(), (dir / "demo" / "greeting_none_2.csv").string(),
+                      (dir / "demo" / "greeting_hostile_1.csv").string(), (dir / "demo" / "greeting_hostile_2.csv").string(), "-o",
+                      (dir / "small").string()});
+    INFO(run.err);
+    REQUIRE(run.exitCode == 0);
+    run = runBunraku({"experiment", "kimono", (dir / "small").string(), "--json"});
+    INFO(run.err);
+    REQUIRE(run.exitCode == 0);
+    const auto report = nlohmann::json::parse(run.out);
+    REQUIRE(report["takes"].size() == 4);
+    REQUIRE(report["cells"].size() == 2);
+    for (const auto& take : report["takes"]) {
+        CHECK(take["sleeve_swing_right_cm"].get<double>() > 0.0);
+        CHECK(take["sleeve_swing_right_cm"].get<double>() < 20.0);
+        CHECK(std::abs(take["sleeve_lag_s"].get<double>()) <= 0.5 + 1e-9);
+        CHECK(take["hem_swing_cm"].get<double>() > 0.0);
+        // The left sleeve mirrors the right one's arm: a swing of the same size.
+        CHECK(take["sleeve_swing_left_cm"].get<double>() == Approx(take["sleeve_swing_right_cm"].get<double>()).epsilon(0.5));
+    }
+    for (const auto& cell : report["cells"]) CHECK(cell["takes"] == 2);
 }

@@ -1,0 +1,111 @@
+// bunraku experiment kimono: the kimono simulated over every take of a corpus and measured
+// (analysis/cloth/kimono_cloth.h; docs/KIMONO.md): per take and per emotion, the sleeves' and
+// the hem's own swing and the sleeve's lag behind the hand.
+#include "app/cli/commands.h"
+
+#include "analysis/cloth/kimono_cloth.h"
+#include "analysis/pipeline/stages.h"
+
+#include <nlohmann/json.hpp>
+
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <memory>
+
+namespace bunraku::app::cli {
+namespace {
+
+namespace an = bunraku::analysis;
+namespace pl = bunraku::analysis::pipeline;
+
+struct KimonoArguments {
+    std::string corpus;
+    bool json = false;
+    an::ClothParameters cloth;
+};
+
+void runKimonoExperiment(const KimonoArguments& arguments)
+{
+    const pl::CorpusInput input = unwrap(pl::importCorpus(arguments.corpus));
+    struct Row {
+        std::string take, function, emotion;
+        an::KimonoMeasures measures;
+    };
+    std::vector<Row> rows;
+    for (const an::Take& take : input.corpus->takes) {
+        const auto simulation = an::simulateKimono(take, arguments.cloth);
+        if (!simulation) throw CliError(take.displayName() + ": " + simulation.error().message);
+        const auto measures = an::measureKimono(take, *simulation);
+        if (!measures) throw CliError(take.displayName() + ": " + measures.error().message);
+        rows.push_back({take.displayName(), take.labels.function, take.labels.emotion, *measures});
+    }
+    // Means per function and emotion, in the corpus's order.
+    struct Mean {
+        int takes = 0;
+        double swingRight = 0.0, swingLeft = 0.0, lag = 0.0, hem = 0.0, hand = 0.0;
+    };
+    std::vector<std::pair<std::string, std::string>> cells;
+    std::map<std::pair<std::string, std::string>, Mean> means;
+    for (const Row& row : rows) {
+        const auto cell = std::make_pair(row.function, row.emotion);
+        if (!means.count(cell)) cells.push_back(cell);
+        Mean& m = means[cell];
+        ++m.takes;
+        m.swingRight += row.measures.sleeveSwingCm[0];
+        m.swingLeft += row.measures.sleeveSwingCm[1];
+        m.lag += row.measures.sleeveLagSeconds;
+        m.hem += row.measures.hemSwingCm;
+        m.hand += row.measures.handSwingCm;
+    }
+    if (arguments.json) {
+        nlohmann::json takes = nlohmann::json::array(), summary = nlohmann::json::array();
+        for (const Row& row : rows)
+            takes.push_back({{"take", row.take}, {"function", row.function}, {"emotion", row.emotion},
+                             {"sleeve_swing_right_cm", row.measures.sleeveSwingCm[0]}, {"sleeve_swing_left_cm", row.measures.sleeveSwingCm[1]},
+                             {"sleeve_lag_s", row.measures.sleeveLagSeconds}, {"hem_swing_cm", row.measures.hemSwingCm},
+                             {"hand_swing_cm", row.measures.handSwingCm}});
+        for (const auto& cell : cells) {
+            const Mean& m = means[cell];
+            const double n = double(m.takes);
+            summary.push_back({{"function", cell.first}, {"emotion", cell.second}, {"takes", m.takes},
+                               {"sleeve_swing_right_cm", m.swingRight / n}, {"sleeve_swing_left_cm", m.swingLeft / n},
+                               {"sleeve_lag_s", m.lag / n}, {"hem_swing_cm", m.hem / n}, {"hand_swing_cm", m.hand / n},
+                               {"sleeve_per_hand", m.hand > 0.0 ? m.swingRight / m.hand : 0.0}});
+        }
+        printJson({{"corpus", arguments.corpus}, {"takes", takes}, {"cells", summary}});
+        return;
+    }
+    std::cout << "the kimono's own motion (beyond carrying by the parts), mean per cell:\n"
+              << std::left << std::setw(18) << "function" << std::setw(12) << "emotion" << std::right << std::setw(6) << "takes"
+              << std::setw(16) << "sleeve R (cm)" << std::setw(16) << "sleeve L (cm)" << std::setw(14) << "lag (s)" << std::setw(14)
+              << "hem (cm)" << std::setw(14) << "hand (cm)" << std::setw(16) << "sleeve R/hand" << "\n";
+    for (const auto& cell : cells) {
+        const Mean& m = means[cell];
+        const double n = double(m.takes);
+        std::cout << std::left << std::setw(18) << cell.first << std::setw(12) << cell.second << std::right << std::setw(6) << m.takes
+                  << std::fixed << std::setprecision(2) << std::setw(16) << m.swingRight / n << std::setw(16) << m.swingLeft / n
+                  << std::setprecision(3) << std::setw(14) << m.lag / n << std::setprecision(2) << std::setw(14) << m.hem / n
+                  << std::setw(14) << m.hand / n << std::setw(16) << (m.hand > 0.0 ? m.swingRight / m.hand : 0.0) << "\n";
+    }
+}
+
+} // namespace
+
+void addKimonoCommands(CommandSet& commands)
+{
+    auto arguments = std::make_shared<KimonoArguments>();
+    CLI::App* command = commands.experiment.add_subcommand(
+        "kimono", "The kimono simulated as cloth over every take of a corpus: per take and per emotion, each sleeve's and the hem's "
+                  "own swing (RMS cm beyond what the parts carry) and the sleeve's lag behind the hand (docs/KIMONO.md)");
+    command->add_option("CORPUS", arguments->corpus, "Corpus folder (corpus.json), or 'demo' for the embedded synthetic corpus")->required();
+    command->add_flag("--json", arguments->json, "Print JSON (every take and the means per cell)");
+    command->add_option("--cloth-mass", arguments->cloth.massPerArea, "Mass per area, g/cm^2 (default 0.015)")->check(CLI::Range(1e-4, 1.0));
+    command->add_option("--cloth-bend", arguments->cloth.bendCompliance, "Bending compliance, cm/dyn (default 2e-4)")->check(CLI::Range(0.0, 1.0));
+    command->add_option("--cloth-damping", arguments->cloth.damping, "Damping towards the body's motion, 1/s (default 1.5)")
+        ->check(CLI::Range(0.0, 100.0));
+    command->add_option("--cloth-drag", arguments->cloth.drag, "Air drag, 1/s (default 0.6)")->check(CLI::Range(0.0, 100.0));
+    command->callback([arguments] { runKimonoExperiment(*arguments); });
+}
+
+} // namespace bunraku::app::cli
