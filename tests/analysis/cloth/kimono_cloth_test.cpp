@@ -192,3 +192,25 @@ TEST_CASE("the kimono's channels and parameters")
     CHECK(with.channelCount() == take.channelCount() + 18);
     CHECK(with.values.leftCols(take.channelCount()) == take.values);
 }
+
+TEST_CASE("in a deep bow the simulated hem stays below the dō-wa")
+{
+    // The body pitches forward 70 deg about a point at the dō-wa's height over 2 s and holds.
+    const Eigen::Vector3d hips(0.0, 0.0, 76.0);
+    Take take = puppetTake(120, [&](Eigen::Index f) {
+        const double degrees = 70.0 * std::min(1.0, double(f) / 60.0);
+        return bunraku::test::rotationAbout(Eigen::Vector3d::UnitY(), degrees, hips - Eigen::Quaterniond(Eigen::AngleAxisd(degrees * M_PI / 180.0, Eigen::Vector3d::UnitY())) * hips);
+    });
+    take.rateHz = 30.0;
+    const auto simulation = simulateKimono(take);
+    REQUIRE(simulation.ok());
+    for (const Eigen::Index frame : {Eigen::Index(30), Eigen::Index(60), Eigen::Index(119)}) {
+        const auto holders = kimonoHolderPoses(simulation->body, take, frame);
+        REQUIRE(holders.ok());
+        const double dowaZ = (*holders)[0].apply(Eigen::Vector3d(0.0, 0.0, -24.0)).z();
+        for (int point : {2, 3, 4, 5}) {
+            INFO("frame " << frame << " " << kimonoPointName(KimonoPoint(point)));
+            CHECK(simulation->points(frame, 3 * point + 2) < dowaZ - 10.0);
+        }
+    }
+}
