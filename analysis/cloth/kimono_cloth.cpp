@@ -173,13 +173,15 @@ struct Solver {
     }
 };
 
-/// The holders' world poses at every frame of the take.
-Result<std::vector<HolderPoses>> holderPoses(const BodyDescription& body, const Take& take, const std::array<int, 3>& parts)
+/// The holders' world poses at frames [from, to] of the take (the others left at rest).
+Result<std::vector<HolderPoses>> holderPoses(const BodyDescription& body, const Take& take, const std::array<int, 3>& parts,
+                                             Eigen::Index from = 0, Eigen::Index to = -1)
 {
     auto binding = bindBody(body, take);
     if (!binding) return binding.error();
+    if (to < 0) to = take.frameCount() - 1;
     std::vector<HolderPoses> poses(std::size_t(take.frameCount()));
-    for (Eigen::Index k = 0; k < take.frameCount(); ++k) {
+    for (Eigen::Index k = from; k <= to; ++k) {
         const auto world = worldPartPoses(body, *binding, take, k);
         for (int h = 0; h < 3; ++h) poses[std::size_t(k)][std::size_t(h)] = world[std::size_t(parts[std::size_t(h)])];
     }
@@ -376,9 +378,9 @@ Result<std::vector<Eigen::Vector3d>> kimonoFrame(const KimonoSimulation& simulat
         return makeError(ErrorCode::InvalidArgument, take.displayName() + ": frame " + std::to_string(frame) + " is not a frame of the simulated take");
     auto parts = holderParts(simulation.body);
     if (!parts) return parts.error();
-    auto poses = holderPoses(simulation.body, take, *parts);
-    if (!poses) return poses.error();
     const std::size_t checkpoint = std::size_t(frame / simulation.checkpointInterval);
+    auto poses = holderPoses(simulation.body, take, *parts, Eigen::Index(checkpoint) * simulation.checkpointInterval, frame);
+    if (!poses) return poses.error();
     if (checkpoint >= simulation.checkpointPositions.size()) return makeError(ErrorCode::InvalidArgument, "kimono: no state kept before that frame");
     const std::vector<Capsule> capsules = colliders(simulation.body, *parts);
     Solver solver{*simulation.cloth, simulation.parameters, capsules, simulation.checkpointPositions[checkpoint],
