@@ -347,7 +347,7 @@ Result<KimonoSimulation> simulateKimono(const Take& take, const ClothParameters&
     if (!poses) return makeError(poses.error().code, take.displayName() + ": " + poses.error().message);
     const Eigen::Index frames = take.frameCount();
     // At most about 2,000 kept states whatever the take's length (an hour at 120 Hz keeps one
-    // every 216 frames, some 70 MB).
+    // every 216 frames, 47 MB).
     simulation.checkpointInterval = int(std::max<Eigen::Index>(30, (frames + 1999) / 2000));
     simulation.points.resize(frames, 3 * kKimonoPointCount);
 
