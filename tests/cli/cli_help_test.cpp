@@ -125,7 +125,7 @@ TEST_CASE("bunraku help with an unknown subcommand names the ones there are", "[
 
     const auto nested = runBunraku({"help", "experiment", "nope"});
     CHECK(nested.exitCode == 2);
-    CHECK(nested.err.find("'bunraku experiment' has no subcommand 'nope' (expected one of: noise, truth, km2o, design, approximation)")
+    CHECK(nested.err.find("'bunraku experiment' has no subcommand 'nope' (expected one of: noise, truth, km2o, design, approximation, kimono)")
           != std::string::npos);
     CHECK(runBunraku({"help", "demo", "extra"}).exitCode == 2);
 }
@@ -205,6 +205,7 @@ TEST_CASE("every subcommand that does work offers a --json summary for batch job
         {"experiment km2o", {"experiment", "km2o", "--seeds", "1", "--M", "3:4"}},
         {"experiment design", {"experiment", "design", demo}},
         {"experiment approximation", {"experiment", "approximation", "demo", "--max-scale", "4"}},
+        {"experiment kimono", {"experiment", "kimono", s("two")}},
     };
     std::set<std::string> run;
     for (auto [name, arguments] : runs) {
