@@ -10,8 +10,10 @@
 #include "analysis/core/skeleton.h"
 #include "analysis/core/skeleton_mesh.h"
 #include "analysis/io/bvh_import.h"
+#include "analysis/io/take_reader.h"
 #include "render/take_export.h"
 #include "tests/support/bvh_fixtures.h"
+#include "tests/support/shared_data.h"
 #include "tests/support/test_paths.h"
 #include "widgets/viewport_widget.h"
 
@@ -19,7 +21,11 @@
 
 #include <QComboBox>
 #include <QLabel>
+#include <QImage>
 #include <QStandardItemModel>
+
+#include <cstdlib>
+#include <sys/wait.h>
 
 using namespace bunraku;
 using app::TakeSlot;
@@ -89,4 +95,31 @@ TEST_CASE("the File's mesh figure is offered for a take whose file carries one a
     auto* label = window->findChild<QLabel*>("skeletonGap");
     REQUIRE(label != nullptr);
     CHECK(label->text().contains(QStringLiteral("carries no skinned mesh")));
+}
+
+TEST_CASE("bunraku-workbench --figure mesh shows the file's mesh of a Bandai take's glTF", "[app][mesh]")
+{
+    const auto source = test::bandaiDir() / "bye_angry_001.bvh";
+    if (!test::requireBandaiData(std::filesystem::exists(source))) return;
+    const auto dir = test::scratchDir("workbench_figure_mesh");
+    auto take = analysis::io::readTakeFile(source);
+    REQUIRE(take.ok());
+    const auto glb = dir / "bye_angry_001.glb";
+    REQUIRE(render::exportTake(*take, analysis::defaultBodyDescription(), glb).ok());
+    const auto run = [&](const std::string& figure) {
+        const auto png = dir / (figure + ".png");
+        const std::string command = "'" + std::string(BUNRAKU_WORKBENCH) + "' '" + glb.string() + "' --figure " + figure +
+                                    " --default-layout --screenshot '" + png.string() + "' >/dev/null 2>'" + (dir / "err.txt").string() +
+                                    "' </dev/null";
+        const int status = std::system(command.c_str());
+        INFO(figure << ": " << test::fileBytes(dir / "err.txt"));
+        REQUIRE(WIFEXITED(status));
+        REQUIRE(WEXITSTATUS(status) == 0);
+        return QImage(QString::fromStdString(png.string()));
+    };
+    const QImage mesh = run("mesh");
+    const QImage skeleton = run("skeleton");
+    REQUIRE(!mesh.isNull());
+    REQUIRE(mesh.size() == skeleton.size());
+    CHECK(mesh != skeleton);
 }
