@@ -5,13 +5,13 @@
 # rings at a bone's head blended with its parent (and a little with the grandparent), those at its
 # tail with its first child - so that vertices carry one to three weights; the mesh is deformed by
 # an armature modifier (Blender's default linear blending). The character is exported as binary
-# glTF and as binary FBX with Blender's defaults, and Blender's own evaluated (depsgraph) vertex
-# positions - at rest and at the frames asked for - and bone heads are written as JSON, in
-# Blender's world (metres, z up). Never committed: made at test time from the shared data.
+# glTF, as binary FBX and as Collada with Blender's defaults (every frame sampled), and Blender's
+# own evaluated (depsgraph) vertex positions - at rest and at the frames asked for - and bone
+# heads are written as JSON, in Blender's world (metres, z up). Never committed: made at test time from the shared data.
 #
 #   blender -b --factory-startup --python-exit-code 1 -P blender_skinned_mesh.py -- OUTDIR BVH FRAME...
 #
-# writes OUTDIR/character.glb, OUTDIR/character.fbx and OUTDIR/evaluated.json; FRAME numbers are
+# writes OUTDIR/character.glb, .fbx, .dae and OUTDIR/evaluated.json; FRAME numbers are
 # Blender's (the BVH's first frame is 1).
 import builtins
 import json
@@ -141,5 +141,7 @@ scene.frame_set(int(first))
 
 bpy.ops.export_scene.gltf(filepath=os.path.join(outdir, "character.glb"), export_format="GLB")
 bpy.ops.export_scene.fbx(filepath=os.path.join(outdir, "character.fbx"), bake_anim_simplify_factor=0.0)
+bpy.ops.wm.collada_export(filepath=os.path.join(outdir, "character.dae"), include_animations=True, sampling_rate=1,
+                          keep_smooth_curves=False)
 with open(os.path.join(outdir, "evaluated.json"), "w") as f:
     json.dump(out, f)

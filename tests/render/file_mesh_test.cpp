@@ -1,7 +1,7 @@
 // The file's own mesh (the "File's mesh" figure, FigureStyle::FileMesh; analysis/core/skeleton_mesh.h)
 // against Blender 3.4: one Blender run (tests/render/blender_skinned_mesh.py) makes a character
 // from a Bandai BVH - a tube along every bone, weighted by hand to one, two or three joints -
-// exports it as binary glTF and FBX and writes Blender's own evaluated (depsgraph) vertex
+// exports it as binary glTF, FBX and Collada and writes Blender's own evaluated (depsgraph) vertex
 // positions at rest and at three frames. Our reading of each file, skinned by the take on the
 // CPU as the shader does, must put every vertex where Blender does within 0.1 cm; the figure is
 // drawn as one piece over the skeleton's bones, picks by bone, and `bunraku info` / `bunraku
@@ -64,7 +64,8 @@ const Character& character()
         if (std::system(command.str().c_str()) != 0) return c;
         std::ifstream in(c.dir / "evaluated.json");
         c.evaluated = json::parse(in, nullptr, false);
-        c.made = !c.evaluated.is_discarded() && fs::exists(c.dir / "character.glb") && fs::exists(c.dir / "character.fbx");
+        c.made = !c.evaluated.is_discarded() && fs::exists(c.dir / "character.glb") && fs::exists(c.dir / "character.fbx") &&
+                 fs::exists(c.dir / "character.dae");
         return c;
     }();
     return made;
@@ -204,10 +205,10 @@ std::string joinGlb(const json& document, const std::string& rest)
 
 } // namespace
 
-TEST_CASE("the file's mesh skinned by the take is where Blender puts it in glTF and FBX", "[render][mesh][blender]")
+TEST_CASE("the file's mesh skinned by the take is where Blender puts it in glTF and FBX and Collada", "[render][mesh][blender]")
 {
     if (!requireCharacter()) return;
-    for (const char* name : {"character.glb", "character.fbx"}) {
+    for (const char* name : {"character.glb", "character.fbx", "character.dae"}) {
         const fs::path file = character().dir / name;
         const auto worst = compareWithBlender(file);
         std::cout << "file mesh vs Blender, " << name << ": largest vertex distance";
