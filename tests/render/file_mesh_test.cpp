@@ -31,6 +31,7 @@
 #include <iostream>
 #include <sstream>
 #include <sys/wait.h>
+#include <unistd.h>
 
 using namespace bunraku;
 using json = nlohmann::json;
@@ -49,23 +50,42 @@ struct Character {
     json evaluated;
 };
 
-/// The character made once per process (one Blender run for this file's cases).
+/// The character, made by one Blender run for all of this file's cases: ctest runs each case in a
+/// process of its own, so the files are kept in the build tree under a key of the script and its
+/// arguments (a changed script makes them again), made in a folder of this process and renamed
+/// into place (a case running beside it uses whichever finished first).
 const Character& character()
 {
     static const Character made = [] {
         Character c;
-        c.dir = test::scratchDir("file_mesh");
-        std::ostringstream command;
-        command << "blender -b --factory-startup --python-exit-code 1 -P '"
-                << (test::sourceDir() / "tests" / "render" / "blender_skinned_mesh.py").string() << "' -- '" << c.dir.string() << "' '"
-                << (test::bandaiDir() / kSource).string() << "'";
-        for (const int f : kFrames) command << ' ' << f;
-        command << " > '" << (c.dir / "blender.log").string() << "' 2>&1";
-        if (std::system(command.str().c_str()) != 0) return c;
-        std::ifstream in(c.dir / "evaluated.json");
-        c.evaluated = json::parse(in, nullptr, false);
-        c.made = !c.evaluated.is_discarded() && fs::exists(c.dir / "character.glb") && fs::exists(c.dir / "character.fbx") &&
-                 fs::exists(c.dir / "character.dae");
+        const fs::path script = test::sourceDir() / "tests" / "render" / "blender_skinned_mesh.py";
+        std::ostringstream arguments;
+        arguments << "'" << (test::bandaiDir() / kSource).string() << "'";
+        for (const int f : kFrames) arguments << ' ' << f;
+        const std::size_t key = std::hash<std::string>{}(test::fileBytes(script) + arguments.str());
+        const fs::path root = fs::path(BUNRAKU_BINARY_DIR) / "test-scratch";
+        c.dir = root / ("file_mesh-" + std::to_string(key));
+        const auto load = [](Character& into) {
+            std::ifstream in(into.dir / "evaluated.json");
+            into.evaluated = json::parse(in, nullptr, false);
+            into.made = !into.evaluated.is_discarded() && fs::exists(into.dir / "character.glb") && fs::exists(into.dir / "character.fbx") &&
+                        fs::exists(into.dir / "character.dae");
+        };
+        load(c);
+        if (c.made) return c;
+        const fs::path mine = root / ("file_mesh-" + std::to_string(key) + ".making-" + std::to_string(::getpid()));
+        fs::remove_all(mine);
+        fs::create_directories(mine);
+        const std::string command = "blender -b --factory-startup --python-exit-code 1 -P '" + script.string() + "' -- '" + mine.string() +
+                                    "' " + arguments.str() + " > '" + (mine / "blender.log").string() + "' 2>&1";
+        const bool ran = std::system(command.c_str()) == 0;
+        std::error_code error;
+        if (ran) fs::rename(mine, c.dir, error); // fails when another process got there first: theirs is used
+        if (!ran || error) {
+            if (!ran) c.dir = mine; // its log says why
+            else fs::remove_all(mine);
+        }
+        load(c);
         return c;
     }();
     return made;
