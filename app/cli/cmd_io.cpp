@@ -227,8 +227,8 @@ void printBvh(const Loaded& loaded)
             std::cout << "\nskinned mesh: " << scene.meshVertices << " vertices, " << scene.meshTriangles << " triangles, "
                       << scene.meshBones.size() << " bones (" << joinedNames(scene.meshBones) << "), of " << scene.meshes
                       << " meshes in the file (figure \"mesh\")";
-        else
-            std::cout << "\nskinned mesh: none (" << scene.meshes << " meshes in the file)";
+        else if (scene.meshes > 0)
+            std::cout << "\nskinned mesh: none (" << scene.meshes << " meshes in the file, none kept for the skeleton)";
         for (const std::string& note : scene.meshNotes) std::cout << "\n  mesh note: " << note;
         std::cout << "\nconverted skeleton as BVH:";
     }
