@@ -399,7 +399,9 @@ void runRender(const RenderArguments& args)
                          {"distance_cm", camera.distance}};
     for (const auto& slot : scene.takes) summary["takes"].push_back(slot.take.displayName());
     for (int s = 0; s < int(scene.takes.size()); ++s)
-        summary["figures"].push_back({{"puppet", offscreen->renderer().puppetDrawn(s)}, {"skeleton", offscreen->renderer().skeletonDrawn(s)}});
+        summary["figures"].push_back({{"puppet", offscreen->renderer().puppetDrawn(s)},
+                                      {"skeleton", offscreen->renderer().skeletonDrawn(s)},
+                                      {"mesh", offscreen->renderer().skeletonDrawn(s) && visibility.figures[std::size_t(s)] == render::FigureStyle::FileMesh}});
 
     // --follow: the camera carried along the floor with the figures (as the 3D view's Follow).
     const auto follow = [&] {

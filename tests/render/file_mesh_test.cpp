@@ -326,12 +326,15 @@ TEST_CASE("bunraku info and bunraku render --figure mesh show the file's mesh", 
         CHECK(out.find(" vertices, ") != std::string::npos);
     }
     {
-        const auto [code, out, err] = runCli("render '" + glb.string() + "' --figure mesh --frame 40 --size 200x200 --samples 0 -o '" +
+        const auto [code, out, err] = runCli("render '" + glb.string() + "' --figure mesh --frame 40 --size 200x200 --samples 0 --json -o '" +
                                                  (dir / "mesh.png").string() + "'",
                                              dir);
         INFO(err);
         REQUIRE(code == 0);
         CHECK(QImage(QString::fromStdString((dir / "mesh.png").string())).size() == QSize(200, 200));
+        const json summary = json::parse(out, nullptr, false);
+        REQUIRE(!summary.is_discarded());
+        CHECK(summary["figures"][0]["mesh"] == true);
     }
     {
         // A take without a mesh asked for one: an error naming the take.
