@@ -363,7 +363,6 @@ FileSkins skinsFromAssimp(const aiScene& scene)
 
 /// What binding the file's meshes to the take's joints needs from the conversion.
 struct SkinBinding {
-    const std::vector<SceneNode>* nodes = nullptr;
     const std::unordered_map<std::string, int>* byName = nullptr;
     const std::vector<int>* jointOf = nullptr;        ///< per node, its joint or -1
     std::vector<Eigen::Matrix4d> restWorld;           ///< per node (joints and their ancestors), file
@@ -866,7 +865,6 @@ Result<SceneTake> convertScene(const aiScene& scene, SceneFormat format, const s
 
     // The file's skinned meshes on these joints.
     if (!fileSkins.skins.empty() || !fileSkins.notes.empty()) {
-        skinBinding.nodes = &nodes;
         skinBinding.byName = &byName;
         skinBinding.jointOf = &jointOf;
         skinBinding.convert.topLeftCorner<3, 3>() = convert;
