@@ -34,7 +34,7 @@ struct ViewRange {
     const char* key;
     double low, high;
 };
-constexpr ViewRange kViewRanges[] = {{"graphLayout", 0, 3}, {"twoTakeMode", 0, 1}, {"valueScale", 0, 1}, {"angleDisplay", 0, 1}, {"figureA", 0, 3}, {"figureB", 0, 3}, {"speed", 0.1, 4.0}, {"leftWidth", 0, 100000}};
+constexpr ViewRange kViewRanges[] = {{"graphLayout", 0, 3}, {"twoTakeMode", 0, 1}, {"valueScale", 0, 1}, {"angleDisplay", 0, 1}, {"figureA", 0, 4}, {"figureB", 0, 4}, {"speed", 0.1, 4.0}, {"leftWidth", 0, 100000}};
 
 long lineOfOffset(const QByteArray& text, int offset) { return 1 + long(text.left(offset).count('\n')); }
 

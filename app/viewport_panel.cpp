@@ -13,6 +13,8 @@
 #include <QComboBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QStandardItem>
+#include <QStandardItemModel>
 #include <QStringList>
 #include <QVBoxLayout>
 
@@ -90,8 +92,11 @@ ViewportPanel::ViewportPanel(Document& document, AnalysisController& analysis, Q
         box->addItem(tr("Skeleton"), int(render::FigureStyle::Skeleton));
         box->addItem(tr("Both"), int(render::FigureStyle::PuppetAndSkeleton));
         box->addItem(tr("Body"), int(render::FigureStyle::Body));
-        box->setToolTip(slot == 0 ? tr("Figure of take A: the puppet, the performer's skeleton (takes read from BVH), or both")
-                                  : tr("Figure of take B: the puppet, the performer's skeleton (takes read from BVH), or both"));
+        box->addItem(tr("File's mesh"), int(render::FigureStyle::FileMesh)); // enabled for a take whose file carries one
+        box->setToolTip(slot == 0 ? tr("Figure of take A: the puppet, the performer's skeleton (takes read from BVH, FBX, glTF, Collada), "
+                                       "both, the performer's body, or the file's own skinned mesh (FBX, glTF and Collada characters)")
+                                  : tr("Figure of take B: the puppet, the performer's skeleton (takes read from BVH, FBX, glTF, Collada), "
+                                       "both, the performer's body, or the file's own skinned mesh (FBX, glTF and Collada characters)"));
         connect(box, &QComboBox::currentIndexChanged, this, &ViewportPanel::applyVisibility);
         // The label and its box as one item: they never part at a row's end.
         auto* pair = new QWidget(toggles);
@@ -194,6 +199,19 @@ void ViewportPanel::applyVisibility()
     const auto shown = shownTakes(m_document);
     for (std::size_t s = 0; s < shown.size() && s < visibility.figures.size(); ++s)
         visibility.figures[s] = render::FigureStyle(m_figures[int(shown[s].first)]->currentData().toInt());
+    // "File's mesh" is offered for takes whose file carries a skinned mesh; a take without one
+    // shows its skeleton (the label says so).
+    for (int slot = 0; slot < 2; ++slot) {
+        bool hasMesh = false;
+        for (const auto& [s, t] : shown)
+            if (int(s) == slot && t) hasMesh = render::takeHasFileMesh(*t);
+        if (auto* model = qobject_cast<QStandardItemModel*>(m_figures[slot]->model()))
+            if (QStandardItem* item = model->item(m_figures[slot]->findData(int(render::FigureStyle::FileMesh))))
+                item->setEnabled(hasMesh);
+    }
+    for (std::size_t s = 0; s < shown.size() && s < visibility.figures.size(); ++s)
+        if (visibility.figures[s] == render::FigureStyle::FileMesh && !(shown[s].second && render::takeHasFileMesh(*shown[s].second)))
+            visibility.figures[s] = render::FigureStyle::Skeleton;
     m_viewport->setVisibility(visibility);
     updateGapLabels();
 }
@@ -218,6 +236,13 @@ void ViewportPanel::updateGapLabels()
             lines << tr("%1: skeleton off the channels by %2")
                          .arg(slot == 0 ? QStringLiteral("A") : QStringLiteral("B"),
                               QString::fromStdString(analysis::describeSkeletonChannelGap(*gap)));
+    }
+    for (int slot = 0; slot < 2; ++slot) {
+        if (render::FigureStyle(m_figures[slot]->currentData().toInt()) != render::FigureStyle::FileMesh) continue;
+        for (const auto& [s, t] : shown)
+            if (int(s) == slot && t && !render::takeHasFileMesh(*t))
+                lines << tr("%1: the take's file carries no skinned mesh: its skeleton is shown")
+                             .arg(slot == 0 ? QStringLiteral("A") : QStringLiteral("B"));
     }
     m_gapLabel->setText(lines.join(QLatin1Char('\n')));
     m_gapLabel->setVisible(!lines.isEmpty());

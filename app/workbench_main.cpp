@@ -41,7 +41,7 @@ void describeOptions(QCommandLineParser& parser)
     parser.addOption({QStringLiteral("screenshot"), QStringLiteral("Save a PNG of the window once shown, then quit."), QStringLiteral("file")});
     parser.addOption({QStringLiteral("default-layout"), QStringLiteral("Ignore the saved window layout.")});
     parser.addOption({QStringLiteral("figure"),
-                      QStringLiteral("The 3D view's figure for takes A and B: puppet, skeleton (the performer's, for takes read from BVH), both or body (the performer's body on that skeleton)."),
+                      QStringLiteral("The 3D view's figure for takes A and B: puppet, skeleton (the performer's, for takes read from BVH), both, body (the performer's body on that skeleton) or mesh (the skinned mesh of an FBX, glTF or Collada take's file; the skeleton for a take without one)."),
                       QStringLiteral("figure")});
     addScreenshotOptions(parser);
 }
@@ -116,13 +116,10 @@ int runWorkbench(int argc, char** argv)
     MainWindow window;
     if (parser.isSet(QStringLiteral("figure"))) {
         const QString value = parser.value(QStringLiteral("figure"));
-        const int style = value == QStringLiteral("puppet")     ? int(render::FigureStyle::Puppet)
-                          : value == QStringLiteral("skeleton") ? int(render::FigureStyle::Skeleton)
-                          : value == QStringLiteral("both")     ? int(render::FigureStyle::PuppetAndSkeleton)
-                          : value == QStringLiteral("body")     ? int(render::FigureStyle::Body)
-                                                                : -1;
+        const auto figure = render::figureStyleFromName(value.toStdString());
+        const int style = figure ? int(*figure) : -1;
         if (style < 0) {
-            std::fprintf(stderr, "bunraku-workbench: --figure '%s': expected puppet, skeleton, both or body\n", qPrintable(value));
+            std::fprintf(stderr, "bunraku-workbench: --figure '%s': expected puppet, skeleton, both, body or mesh\n", qPrintable(value));
             return 1;
         }
         for (int slot = 0; slot < 2; ++slot) {

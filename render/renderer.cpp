@@ -108,7 +108,7 @@ analysis::Status Renderer::initialize()
         !body->addShaderFromSourceFile(QOpenGLShader::Fragment, QStringLiteral(":/shaders/scene.frag")) || !body->link())
         return analysis::makeError(ErrorCode::Unsupported, "shader build failed: " + body->log().toStdString());
     for (const char* name : {"u_model", "u_viewProjection", "u_normalMatrix", "u_colour", "u_useVertexColour", "u_lit", "u_lightPosition",
-                             "u_partIdBase", "u_boneIds", "u_keyDirection", "u_jointReal", "u_jointDual"})
+                             "u_partIdBase", "u_boneIds", "u_keyDirection", "u_jointReal", "u_jointDual", "u_linearBlend"})
         m_bodyUniforms[name] = body->uniformLocation(name);
     m_program = std::move(program);
     m_skinProgram = std::move(skin);
@@ -281,6 +281,18 @@ analysis::Status Renderer::setScene(const SceneContent& scene, const LayoutOptio
                 slot.skeletonLowest = std::min(slot.skeletonLowest, float(pose.translation.z()) - slot.skeleton->jointRadius);
                 slot.skeletonHighest = std::max(slot.skeletonHighest, float(pose.translation.z()) + slot.skeleton->jointRadius);
             }
+            // The file's mesh at frame 0 (its soles may be below the ankles' spheres).
+            if (takeHasFileMesh(slot.take)) {
+                const analysis::SkeletonMesh& mesh = *slot.take.skeleton->skeleton->mesh;
+                const auto skinned = analysis::skinSkeletonMesh(mesh, slot.take.skeleton->worldPoses(0));
+                slot.fileMeshLowest = std::numeric_limits<float>::max();
+                slot.fileMeshHighest = std::numeric_limits<float>::lowest();
+                for (const Eigen::Vector3d& p : skinned) {
+                    slot.fileMeshLowest = std::min(slot.fileMeshLowest, float(p.z()));
+                    slot.fileMeshHighest = std::max(slot.fileMeshHighest, float(p.z()));
+                }
+                if (skinned.empty()) slot.fileMeshLowest = slot.fileMeshHighest = 0.0f;
+            }
         }
         m_slots.push_back(std::move(slot));
     }
@@ -369,6 +381,16 @@ std::shared_ptr<Renderer::SkeletonFigure> Renderer::skeletonFigure(const analysi
     figure->bones = motion.staticTranslations;
     figure->movingJoints = motion.movingJoints;
     figure->jointRadius = skeletonJointRadius(motion);
+    // The file's mesh's reach from its joints, in the bind pose (rigid skinning keeps it).
+    if (const auto& mesh = motion.skeleton->mesh; mesh && analysis::meshFitsSkeleton(*mesh, *motion.skeleton)) {
+        for (std::size_t v = 0; v < mesh->vertexCount(); ++v)
+            for (int k = 0; k < 4; ++k) {
+                const std::size_t j = mesh->joints[v][std::size_t(k)];
+                if (mesh->weights[v][k] > 0.0f && j < mesh->bindPoses.size())
+                    figure->fileMeshReach = std::max(figure->fileMeshReach,
+                                                     float((mesh->positions[v].cast<double>() - mesh->bindPoses[j].translation).norm()));
+            }
+    }
     const std::vector<Mesh> meshes = buildSkeletonMeshes(motion);
     figure->meshes.resize(meshes.size());
     for (std::size_t j = 0; j < meshes.size(); ++j) figure->meshes[j].upload(*m_gl, meshes[j]);

@@ -160,10 +160,10 @@ private:
     std::optional<glm::mat4> drawShadowMap(const Camera& camera, QSize size);
     void drawPuppet(const Slot& slot, int takeSlot, const glm::mat4& root, const glm::mat4& viewProjection,
                     const glm::vec3& eye, bool partIds);
-    /// The performer's body of a slot's skeleton (made and uploaded on first use); false when no
-    /// body can be made for it (the caller draws the capsules).
+    /// The performer's body of a slot's skeleton, or with `fileMesh` the file's own mesh (made
+    /// and uploaded on first use); false when it cannot be made (the caller draws the capsules).
     bool drawBody(const Slot& slot, int takeSlot, const glm::mat4& root, const glm::mat4& viewProjection, const glm::vec3& eye,
-                  bool partIds);
+                  bool partIds, bool fileMesh);
     /// world_T_take of the partner of `slot` (thesis 6: the person greeted or served): the take's
     /// modelled puppet as it stands at frame 0, turned about its centre to face the take from
     /// partnerDistance ahead; without a modelled puppet, the cone's frame on the floor there.

@@ -16,10 +16,10 @@
 namespace bunraku::render {
 
 bool Renderer::drawBody(const Slot& slot, int takeSlot, const glm::mat4& root, const glm::mat4& viewProjection, const glm::vec3& eye,
-                        bool partIds)
+                        bool partIds, bool fileMesh)
 {
     SkeletonFigure& figure = *slot.skeleton;
-    if (!figure.bodyTried) {
+    if (!fileMesh && !figure.bodyTried) {
         figure.bodyTried = true;
         auto made = analysis::performerBody(*slot.take.skeleton);
         if (made.ok()) {
@@ -27,7 +27,19 @@ bool Renderer::drawBody(const Slot& slot, int takeSlot, const glm::mat4& root, c
             figure.bodyGpu.upload(*m_gl, figure.body->mesh);
         }
     }
-    if (!figure.body) return false;
+    if (fileMesh && !figure.fileMeshTried) {
+        figure.fileMeshTried = true;
+        const analysis::Skeleton& skeleton = *slot.take.skeleton->skeleton;
+        if (skeleton.mesh) {
+            auto made = analysis::skeletonMeshBody(*skeleton.mesh, skeleton);
+            if (made.ok()) {
+                figure.fileMesh = std::make_shared<const analysis::PerformerBody>(std::move(made).value());
+                figure.fileMeshGpu.upload(*m_gl, figure.fileMesh->mesh);
+            }
+        }
+    }
+    const analysis::PerformerBody* body = fileMesh ? figure.fileMesh.get() : figure.body.get();
+    if (!body) return false;
     QOpenGLExtraFunctions& gl = *m_gl;
     m_bodyProgram->bind();
     const auto at = [this](const char* name) { return m_bodyUniforms.at(name); };
@@ -43,7 +55,8 @@ bool Renderer::drawBody(const Slot& slot, int takeSlot, const glm::mat4& root, c
     gl.glUniform1i(at("u_lit"), 1);
     gl.glUniform1i(at("u_partIdBase"), partIds ? kSkeletonId + 1 + kIdsPerSlot * takeSlot : -1);
     gl.glUniform1i(at("u_boneIds"), 1);
-    const auto skinning = analysis::bodySkinningTransforms(*figure.body, slot.take.skeleton->worldPoses(slot.frame));
+    gl.glUniform1i(at("u_linearBlend"), fileMesh ? 1 : 0);
+    const auto skinning = analysis::bodySkinningTransforms(*body, slot.take.skeleton->worldPoses(slot.frame));
     std::vector<glm::vec4> real(skinning.size()), dual(skinning.size());
     for (std::size_t j = 0; j < skinning.size(); ++j) {
         const analysis::DualQuaternion q = analysis::DualQuaternion::fromRigid(skinning[j]);
@@ -52,7 +65,7 @@ bool Renderer::drawBody(const Slot& slot, int takeSlot, const glm::mat4& root, c
     }
     gl.glUniform4fv(at("u_jointReal"), GLsizei(real.size()), glm::value_ptr(real[0]));
     gl.glUniform4fv(at("u_jointDual"), GLsizei(dual.size()), glm::value_ptr(dual[0]));
-    figure.bodyGpu.draw(gl);
+    (fileMesh ? figure.fileMeshGpu : figure.bodyGpu).draw(gl);
     m_program->bind();
     return true;
 }
@@ -91,6 +104,7 @@ std::optional<glm::mat4> Renderer::drawShadowMap(const Camera& camera, QSize siz
         key.insert(key.end(), glm::value_ptr(root), glm::value_ptr(root) + 16);
         key.push_back(float(m_slots[s].frame));
         key.push_back(float(int(puppetDrawn(int(s))) + 2 * int(skeletonDrawn(int(s))) + 4 * int(partnerShown(int(s), camera))));
+        key.push_back(float(int(m_visibility.figures[s]))); // the skeleton's capsules, body or mesh
     }
     if (key == m_shadowKey) return light;
     m_shadowKey = std::move(key);
@@ -129,8 +143,10 @@ void Renderer::drawFigures(const Camera& camera, const glm::mat4& viewProjection
                 meshes[p].draw(gl);
             }
         }
-        if (skeletonDrawn(int(s)) && m_visibility.figures[s] == FigureStyle::Body && drawBody(slot, int(s), root, viewProjection, eye, ids)) {
-            // the performer's body, skinned to the skeleton
+        const FigureStyle style = m_visibility.figures[s];
+        if (skeletonDrawn(int(s)) && (style == FigureStyle::Body || style == FigureStyle::FileMesh) &&
+            drawBody(slot, int(s), root, viewProjection, eye, ids, style == FigureStyle::FileMesh)) {
+            // the performer's body, or the file's own mesh, skinned to the skeleton
         } else if (skeletonDrawn(int(s))) {
             for (std::size_t j = 0; j < slot.skeleton->meshes.size() && j < slot.take_T_joint.size(); ++j) {
                 if (slot.skeleton->meshes[j].empty()) continue; // End Sites

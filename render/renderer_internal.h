@@ -90,6 +90,7 @@ struct Renderer::Slot {
     glm::vec3 partnerSpot{0.0f}; ///< take coordinates, on z = 0: where the partner stands
     float puppetLowest = 0.0f, puppetHighest = 0.0f;     ///< cm, at frame 0
     float skeletonLowest = 0.0f, skeletonHighest = 0.0f; ///< cm, at frame 0
+    float fileMeshLowest = 0.0f, fileMeshHighest = 0.0f; ///< cm, the file's mesh at frame 0 (when the take has one)
 };
 
 struct Renderer::SkeletonFigure {
@@ -105,11 +106,20 @@ struct Renderer::SkeletonFigure {
     std::shared_ptr<const analysis::PerformerBody> body;
     SkinnedPuppetGpu bodyGpu;
     bool bodyTried = false;
+    /// The file's own mesh (FigureStyle::FileMesh, Skeleton::mesh), made on first use; null
+    /// when the skeleton has none that can be drawn (then the capsules are drawn).
+    std::shared_ptr<const analysis::PerformerBody> fileMesh;
+    SkinnedPuppetGpu fileMeshGpu;
+    bool fileMeshTried = false;
+    /// cm: no vertex of the file's mesh is further than this from a joint it is weighted to
+    /// (bounds: the joints' box grown by it holds the mesh in any pose); 0 without a mesh.
+    float fileMeshReach = 0.0f;
 
     void release(QOpenGLExtraFunctions& gl)
     {
         for (GpuMesh& mesh : meshes) mesh.release(gl);
         bodyGpu.release(gl);
+        fileMeshGpu.release(gl);
     }
 };
 

@@ -94,6 +94,8 @@ float Renderer::floorHeight() const
         const bool skeleton = skeletonDrawn(int(s));
         if (!skeleton || puppetDrawn(int(s))) lowest = std::min(lowest, m_slots[s].puppetLowest);
         if (skeleton) lowest = std::min(lowest, m_slots[s].skeletonLowest);
+        if (skeleton && m_visibility.figures[s] == FigureStyle::FileMesh && takeHasFileMesh(m_slots[s].take))
+            lowest = std::min(lowest, m_slots[s].fileMeshLowest);
     }
     return lowest == std::numeric_limits<float>::max() ? 0.0f : lowest - 1.0f;
 }
@@ -162,8 +164,10 @@ Bounds Renderer::displayedBounds(const Camera& camera, const BoundsQuery& query)
         // The skeleton: every joint (a sphere of the joint radius; the bones run between them;
         // the body's trunk is up to 7.5 % of the height thick).
         if (skeletonDrawn(int(s)) && slot.skeleton) {
-            const float radius = m_visibility.figures[s] == FigureStyle::Body
-                                     ? std::max(slot.skeleton->jointRadius, 0.08f * (slot.skeletonHighest - slot.skeletonLowest))
+            const FigureStyle style = m_visibility.figures[s];
+            const float radius = style == FigureStyle::Body ? std::max(slot.skeleton->jointRadius, 0.08f * (slot.skeletonHighest - slot.skeletonLowest))
+                                 : style == FigureStyle::FileMesh && slot.skeleton->fileMeshReach > 0.0f
+                                     ? std::max(slot.skeleton->jointRadius, slot.skeleton->fileMeshReach)
                                      : slot.skeleton->jointRadius;
             for (const Eigen::Index f : frames) {
                 const auto poses = slot.take.skeleton->worldPoses(f);

@@ -2,6 +2,8 @@
 
 #include "analysis/body/body_pose.h"
 #include "analysis/core/puppet_layout.h"
+#include "analysis/core/skeleton.h"
+#include "analysis/core/skeleton_mesh.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -11,6 +13,22 @@
 #include <cmath>
 
 namespace bunraku::render {
+
+std::optional<FigureStyle> figureStyleFromName(std::string_view name)
+{
+    if (name == "puppet") return FigureStyle::Puppet;
+    if (name == "skeleton") return FigureStyle::Skeleton;
+    if (name == "both") return FigureStyle::PuppetAndSkeleton;
+    if (name == "body") return FigureStyle::Body;
+    if (name == "mesh") return FigureStyle::FileMesh;
+    return std::nullopt;
+}
+
+bool takeHasFileMesh(const analysis::Take& take)
+{
+    return take.skeleton && take.skeleton->skeleton && take.skeleton->skeleton->mesh &&
+           analysis::meshFitsSkeleton(*take.skeleton->skeleton->mesh, *take.skeleton->skeleton);
+}
 
 analysis::Status validateScene(const SceneContent& scene)
 {

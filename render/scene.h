@@ -15,6 +15,7 @@
 #include <array>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -47,10 +48,19 @@ struct SceneContent {
 };
 
 /// How a take's figure is drawn: the puppet, the performer's skeleton (a take that carries one,
-/// analysis/core/skeleton.h; a take without one shows its puppet), both overlaid, or the
+/// analysis/core/skeleton.h; a take without one shows its puppet), both overlaid, the
 /// performer's body (a smooth mannequin skinned to the skeleton, analysis/body/performer_body.h;
-/// its capsules for a skeleton of more joints than a body is made for).
-enum class FigureStyle { Puppet, Skeleton, PuppetAndSkeleton, Body };
+/// its capsules for a skeleton of more joints than a body is made for), or the file's own mesh
+/// (the skinned mesh an FBX/glTF/Collada file carries for its skeleton, Skeleton::mesh; the
+/// skeleton's capsules for a take without one: takeHasFileMesh).
+enum class FigureStyle { Puppet, Skeleton, PuppetAndSkeleton, Body, FileMesh };
+
+/// The figure styles by their command-line names ("puppet", "skeleton", "both", "body", "mesh"),
+/// as `bunraku render --figure` and the workbench's `--figure` spell them; nullopt for others.
+std::optional<FigureStyle> figureStyleFromName(std::string_view name);
+/// True when the take carries a skinned mesh of its file that fits its skeleton (the "File's
+/// mesh" figure can show it).
+bool takeHasFileMesh(const analysis::Take& take);
 
 enum class OrbitVisibility {
     WhenPuppetHidden, ///< as in the thesis: orbits replace the puppet

@@ -265,6 +265,38 @@ Result<PerformerBody> performerBody(const SkeletalMotion& motion)
     return body;
 }
 
+Result<PerformerBody> skeletonMeshBody(const SkeletonMesh& mesh, const Skeleton& skeleton)
+{
+    const std::string name = skeleton.name.empty() ? std::string("skeleton") : skeleton.name;
+    if (!meshFitsSkeleton(mesh, skeleton)) return makeError(ErrorCode::InvalidArgument, name + ": the file's mesh was made for other joints");
+    if (mesh.bindPoses.size() > std::size_t(kMaxBodyJoints))
+        return makeError(ErrorCode::Unsupported, name + ": the file's mesh moves with " + std::to_string(mesh.bindPoses.size()) + " joints (at most " +
+                                                     std::to_string(kMaxBodyJoints) + " are drawn)");
+    if (auto valid = validateSkeletonMesh(mesh); !valid) return makeError(valid.error().code, name + ": " + valid.error().message);
+    PerformerBody body;
+    PuppetMesh& out = body.mesh;
+    const std::size_t n = mesh.vertexCount();
+    out.positions = mesh.positions;
+    out.normals = mesh.normals;
+    out.colours.assign(n, Eigen::Vector3f(0.74f, 0.70f, 0.66f));
+    out.sheen.assign(n, 0.15f);
+    out.regions.assign(n, PuppetRegion::None);
+    out.paintPositions = mesh.positions;
+    out.joints.resize(n);
+    for (std::size_t v = 0; v < n; ++v)
+        for (std::size_t k = 0; k < 4; ++k) out.joints[v][k] = std::uint8_t(mesh.joints[v][k]);
+    out.weights = mesh.weights;
+    out.indices = mesh.indices;
+    body.bindPoses = mesh.bindPoses;
+    float lowest = std::numeric_limits<float>::max(), highest = std::numeric_limits<float>::lowest();
+    for (const Eigen::Vector3f& p : mesh.positions) {
+        lowest = std::min(lowest, p.z());
+        highest = std::max(highest, p.z());
+    }
+    body.height = n > 0 ? highest - lowest : 0.0f;
+    return body;
+}
+
 std::vector<RigidTransform> bodySkinningTransforms(const PerformerBody& body, const std::vector<RigidTransform>& world_T_joint)
 {
     std::vector<RigidTransform> skinning(body.bindPoses.size());

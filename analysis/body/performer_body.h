@@ -22,6 +22,7 @@
 #include "analysis/body/puppet_model.h"
 #include "analysis/core/result.h"
 #include "analysis/core/skeleton.h"
+#include "analysis/core/skeleton_mesh.h"
 
 #include <vector>
 
@@ -43,6 +44,11 @@ struct PerformerBody {
 /// The body of `motion`'s skeleton (its bones as they are at the first frame). Errors for a
 /// skeleton of more than kMaxBodyJoints joints or of no extent.
 Result<PerformerBody> performerBody(const SkeletalMotion& motion);
+
+/// The file's own mesh (Skeleton::mesh) as a body the renderer draws as it draws the performer's
+/// (the "File's mesh" figure, blended linearly as the file means it): one clay colour. Errors for
+/// a mesh of more than kMaxBodyJoints joints (its skeleton's), or one made for other joints.
+Result<PerformerBody> skeletonMeshBody(const SkeletonMesh& mesh, const Skeleton& skeleton);
 
 /// The joints' skinning transforms world_T_joint * inverse(bind) of `body` at the given joint
 /// poses (one per joint), as what the renderer blends.

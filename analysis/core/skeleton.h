@@ -25,6 +25,8 @@
 
 namespace bunraku::analysis {
 
+struct SkeletonMesh; // analysis/core/skeleton_mesh.h
+
 /// One channel of a joint as the source file lists it (BVH's names), in the source's axes.
 enum class JointChannel { Xposition, Yposition, Zposition, Xrotation, Yrotation, Zrotation };
 
@@ -69,6 +71,9 @@ struct Skeleton {
     PositionChannelMode positionMode = PositionChannelMode::ReplaceOffset;
     /// The puppet parts mapped onto this skeleton (empty when no map was applied).
     std::vector<PartBinding> parts;
+    /// The skinned mesh the source file carries for this skeleton (skeleton_mesh.h), null when
+    /// it has none. Kept by copies of the skeleton; a user checks meshFitsSkeleton.
+    std::shared_ptr<const SkeletonMesh> mesh;
 
     /// Index of the joint (or End Site) with this exact name, -1 when absent.
     int find(std::string_view jointName) const;

@@ -6,11 +6,13 @@
 #include "analysis/core/pose.h"
 #include "analysis/core/result.h"
 #include "analysis/core/run_control.h"
+#include "analysis/core/skeleton_mesh.h"
 
 #include <Eigen/Core>
 
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -64,6 +66,9 @@ struct BvhFile {
     BvhSkeleton skeleton;
     BvhMotion motion;
     std::string source;
+    /// A skinned mesh for this skeleton in the file's axes and units (a scene file's, converted
+    /// by scene_take.h; never in a .bvh): the import puts it on the Skeleton (Skeleton::mesh).
+    std::shared_ptr<const SkeletonMesh> mesh;
 };
 
 /// The longest frame time accepted (s): one frame an hour. Larger values (a corrupt

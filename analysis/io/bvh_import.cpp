@@ -1,8 +1,11 @@
 #include "analysis/io/bvh_import.h"
 
+#include "analysis/core/skeleton_mesh.h"
+
 #include "analysis/core/puppet_layout.h"
 #include "analysis/core/puppet_rig_layout.h"
 #include "analysis/core/skeleton_calibration.h"
+#include "analysis/core/skeleton_mesh.h"
 #include "analysis/core/skeleton_take.h"
 #include "analysis/io/atomic_file.h"
 #include "analysis/io/bvh_export.h"
@@ -286,6 +289,11 @@ Result<std::shared_ptr<const SkeletalMotion>> bvhToSkeletalMotion(const BvhFile&
         skeleton->joints.push_back(std::move(out));
     }
     if (auto valid = validateSkeleton(*skeleton); !valid) return makeError(valid.error().code, file.source + ": " + valid.error().message);
+    // The file's skinned mesh, in the workbench's axes and cm as the joints are.
+    if (file.mesh && meshFitsSkeleton(*file.mesh, *skeleton)) {
+        auto mesh = std::make_shared<SkeletonMesh>(transformedSkeletonMesh(*file.mesh, world_R_file, scale));
+        if (validateSkeletonMesh(*mesh).ok()) skeleton->mesh = std::move(mesh);
+    }
 
     // A joint moves when one of its position channels changes over the take.
     auto motion = std::make_shared<SkeletalMotion>();

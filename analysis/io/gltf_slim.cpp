@@ -1,6 +1,7 @@
 #include "analysis/io/gltf_slim.h"
 
 #include "analysis/io/atomic_file.h"
+#include "analysis/io/scene_mesh.h"
 #include "analysis/io/scene_take.h"
 #include "analysis/io/text_scan.h"
 
@@ -33,7 +34,8 @@ std::string base64(std::string_view bytes)
 
 } // namespace
 
-Result<std::string> slimGltf(const std::string& bytes, GltfEncoding encoding, const fs::path* folder, const std::string& source, int& meshes)
+Result<std::string> slimGltf(const std::string& bytes, GltfEncoding encoding, const fs::path* folder, const std::string& source, int& meshes,
+                             FileSkins* skins)
 {
     const bool binary = encoding == GltfEncoding::Binary;
     const auto bad = [&](const std::string& what) { return parseError(source, 0, "not a readable glTF file: " + what); };
@@ -55,16 +57,36 @@ Result<std::string> slimGltf(const std::string& bytes, GltfEncoding encoding, co
     nlohmann::json document = nlohmann::json::parse(json.begin(), json.end(), nullptr, false);
     if (document.is_discarded() || !document.is_object()) return bad("its JSON does not parse");
     meshes = document.contains("meshes") && document["meshes"].is_array() ? int(document["meshes"].size()) : 0;
-    for (const char* key : {"meshes", "skins", "materials", "textures", "images", "samplers", "cameras"}) document.erase(key);
-    if (document.contains("nodes") && document["nodes"].is_array())
-        for (auto& node : document["nodes"])
-            if (node.is_object())
-                for (const char* key : {"mesh", "skin", "camera", "weights"}) node.erase(key);
-    if (!binary && document.contains("buffers") && document["buffers"].is_array()) {
+    // Every buffer's bytes (for the skins): a binary file's BIN chunk, data URIs decoded, files
+    // beside a text file read (and embedded as data URIs for assimp).
+    std::vector<std::string> held;
+    std::vector<std::string_view> buffers;
+    if (document.contains("buffers") && document["buffers"].is_array()) {
+        held.reserve(document["buffers"].size());
         for (auto& buffer : document["buffers"]) {
-            if (!buffer.is_object() || !buffer.contains("uri") || !buffer["uri"].is_string()) continue;
+            buffers.emplace_back();
+            if (!buffer.is_object()) continue;
+            if (!buffer.contains("uri")) {
+                // The binary chunk: its length, "BIN\0", then the bytes.
+                if (binary && buffers.size() == 1 && rest.size() >= 8) {
+                    std::uint32_t length = 0, type = 0;
+                    std::memcpy(&length, rest.data(), 4);
+                    std::memcpy(&type, rest.data() + 4, 4);
+                    if (type == 0x004E4942u && length <= rest.size() - 8) buffers.back() = std::string_view(rest).substr(8, length);
+                }
+                continue;
+            }
+            if (!buffer["uri"].is_string()) continue;
             const std::string uri = buffer["uri"].get<std::string>();
-            if (uri.rfind("data:", 0) == 0) continue;
+            if (uri.rfind("data:", 0) == 0) {
+                const std::size_t comma = uri.find(";base64,");
+                if (!skins || comma == std::string::npos) continue;
+                bool ok = false;
+                held.push_back(decodeBase64(std::string_view(uri).substr(comma + 8), ok));
+                if (ok) buffers.back() = held.back();
+                continue;
+            }
+            if (binary) continue;
             if (!folder) return bad("its buffer '" + detail::quoted(uri) + "' is in another file");
             const fs::path relative(uri);
             if (relative.is_absolute() || uri.find("..") != std::string::npos || uri.find('%') != std::string::npos)
@@ -72,8 +94,16 @@ Result<std::string> slimGltf(const std::string& bytes, GltfEncoding encoding, co
             auto data = readTextFile(*folder / relative, kMaxSceneFileBytes);
             if (!data) return data.error();
             buffer["uri"] = "data:application/octet-stream;base64," + base64(*data);
+            held.push_back(std::move(*data));
+            buffers.back() = held.back();
         }
     }
+    if (skins) *skins = readGltfSkins(document, buffers);
+    for (const char* key : {"meshes", "skins", "materials", "textures", "images", "samplers", "cameras"}) document.erase(key);
+    if (document.contains("nodes") && document["nodes"].is_array())
+        for (auto& node : document["nodes"])
+            if (node.is_object())
+                for (const char* key : {"mesh", "skin", "camera", "weights"}) node.erase(key);
     std::string text = document.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
     if (!binary) return text;
     while (text.size() % 4 != 0) text += ' ';

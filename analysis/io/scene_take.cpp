@@ -1,10 +1,12 @@
 #include "analysis/io/scene_take.h"
 
+#include "analysis/core/skeleton_mesh.h"
 #include "analysis/core/take.h"
 #include "analysis/io/atomic_file.h"
 #include "analysis/io/bvh_import.h"
 #include "analysis/io/fbx_connections.h"
 #include "analysis/io/gltf_slim.h"
+#include "analysis/io/scene_mesh.h"
 #include "analysis/io/text_scan.h"
 
 #include <assimp/Importer.hpp>
@@ -273,8 +275,260 @@ std::optional<double> fbxTimeModeRate(int mode, std::optional<double> custom)
     return std::nullopt;
 }
 
+/// The global rest transform of the first node holding mesh `mesh` (assimp's offsets map from
+/// that node's space), or nullopt when no node holds it.
+std::optional<Eigen::Matrix4d> meshNodeGlobal(const aiScene& scene, unsigned mesh)
+{
+    std::vector<const aiNode*> stack{scene.mRootNode};
+    for (std::size_t visited = 0; !stack.empty() && visited < 1000000; ++visited) {
+        const aiNode* node = stack.back();
+        stack.pop_back();
+        if (!node) continue;
+        for (unsigned k = 0; k < node->mNumMeshes && node->mMeshes; ++k) {
+            if (node->mMeshes[k] != mesh) continue;
+            Eigen::Matrix4d global = Eigen::Matrix4d::Identity();
+            int depth = 0;
+            for (const aiNode* at = node; at && depth < 100000; at = at->mParent, ++depth) global = toEigen(at->mTransformation) * global;
+            if (!global.allFinite()) return std::nullopt;
+            return global;
+        }
+        for (unsigned c = 0; c < node->mNumChildren && node->mChildren; ++c) stack.push_back(node->mChildren[c]);
+    }
+    return std::nullopt;
+}
+
+/// The skinned meshes assimp read (FBX, Collada): polygons fanned into triangles, every bone's
+/// weights kept four per vertex; a mesh with inconsistent data is dropped with a note.
+FileSkins skinsFromAssimp(const aiScene& scene)
+{
+    FileSkins out;
+    std::size_t total = 0;
+    for (unsigned m = 0; m < scene.mNumMeshes && scene.mMeshes; ++m) {
+        const aiMesh* mesh = scene.mMeshes[m];
+        if (!mesh) continue;
+        if (mesh->mNumBones == 0 || !mesh->mBones) {
+            ++out.unskinnedMeshes;
+            continue;
+        }
+        std::string name = mesh->mName.C_Str();
+        if (!detail::isUtf8(name)) name = detail::quoted(name);
+        const std::string label = "mesh " + std::to_string(m) + (name.empty() ? "" : " '" + name + "'");
+        const auto drop = [&](const std::string& why) { out.notes.push_back(label + " dropped: " + why); };
+        const std::size_t n = mesh->mNumVertices;
+        if (n == 0 || !mesh->mVertices) { drop("it has no vertices"); continue; }
+        if (n > kMaxSkeletonMeshVertices - std::min(total, kMaxSkeletonMeshVertices)) { drop("more than " + std::to_string(kMaxSkeletonMeshVertices) + " vertices in all"); continue; }
+        FileSkin skin;
+        skin.name = name;
+        skin.meshToWorld = meshNodeGlobal(scene, m);
+        skin.positions.resize(n);
+        skin.normals.assign(n, Eigen::Vector3f::Zero());
+        bool finite = true;
+        for (std::size_t v = 0; v < n; ++v) {
+            skin.positions[v] = Eigen::Vector3f(mesh->mVertices[v].x, mesh->mVertices[v].y, mesh->mVertices[v].z);
+            if (mesh->mNormals) skin.normals[v] = Eigen::Vector3f(mesh->mNormals[v].x, mesh->mNormals[v].y, mesh->mNormals[v].z);
+            finite = finite && skin.positions[v].allFinite();
+            if (!skin.normals[v].allFinite()) skin.normals[v].setZero();
+        }
+        if (!finite) { drop("a vertex is not a number"); continue; }
+        bool faces = true;
+        for (unsigned f = 0; f < mesh->mNumFaces && mesh->mFaces && faces; ++f) {
+            const aiFace& face = mesh->mFaces[f];
+            if (face.mNumIndices < 3 || !face.mIndices) continue; // points and lines
+            for (unsigned k = 0; k < face.mNumIndices; ++k) faces = faces && face.mIndices[k] < n;
+            for (unsigned k = 1; k + 1 < face.mNumIndices && faces; ++k)
+                skin.indices.insert(skin.indices.end(), {face.mIndices[0], face.mIndices[k], face.mIndices[k + 1]});
+            if (skin.indices.size() / 3 > kMaxSkeletonMeshTriangles) faces = false;
+        }
+        if (!faces) { drop("a face names a vertex it does not have, or more than " + std::to_string(kMaxSkeletonMeshTriangles) + " triangles"); continue; }
+        resizeInfluences(skin, n);
+        bool weights = true;
+        for (unsigned b = 0; b < mesh->mNumBones && weights; ++b) {
+            const aiBone* bone = mesh->mBones[b];
+            if (!bone) continue;
+            skin.boneNames.emplace_back(bone->mName.C_Str());
+            skin.offsets.push_back(toEigen(bone->mOffsetMatrix));
+            if (bone->mNumWeights > 0 && !bone->mWeights) weights = false;
+            for (unsigned w = 0; w < bone->mNumWeights && weights; ++w) {
+                const aiVertexWeight& weight = bone->mWeights[w];
+                if (weight.mVertexId >= n || !std::isfinite(weight.mWeight)) weights = false;
+                else addInfluence(skin, weight.mVertexId, int(skin.boneNames.size() - 1), weight.mWeight);
+            }
+        }
+        if (!weights) { drop("a bone's weight names a vertex it does not have, or is not a number"); continue; }
+        total += n;
+        out.skins.push_back(std::move(skin));
+    }
+    return out;
+}
+
+/// What binding the file's meshes to the take's joints needs from the conversion.
+struct SkinBinding {
+    const std::unordered_map<std::string, int>* byName = nullptr;
+    const std::vector<int>* jointOf = nullptr;        ///< per node, its joint or -1
+    std::vector<Eigen::Matrix4d> restWorld;           ///< per node (joints and their ancestors), file
+    std::vector<Eigen::Matrix4d> firstWorld;          ///< per node at frame 0, file
+    std::vector<Eigen::Matrix3d> firstRotation;       ///< per joint at frame 0: BVH world_R_joint
+    std::vector<Eigen::Vector3d> firstPosition;       ///< per joint at frame 0: BVH, cm
+    Eigen::Matrix4d convert = Eigen::Matrix4d::Identity(); ///< file -> BVH axes and cm
+    std::vector<std::string> jointNames;
+};
+
+/// The file's skinned meshes on the take's joints, in BVH's axes and cm (a vertex at
+/// sum_k w_k A_j(t) bind_j^-1 v, A_j the joint's world pose as the take gives it): each bone's
+/// offset brought to the joint's frame at the first frame, where the file's and the take's
+/// poses are known together. Meshes that cannot be bound are dropped with a note.
+std::shared_ptr<const SkeletonMesh> bindSkins(const FileSkins& file, const SkinBinding& binding, SceneTakeInfo& info)
+{
+    info.meshNotes.insert(info.meshNotes.end(), file.notes.begin(), file.notes.end());
+    const std::size_t joints = binding.jointNames.size();
+    if (file.skins.empty() || binding.firstRotation.size() != joints || binding.firstPosition.size() != joints) return nullptr;
+    if (joints > 65535) {
+        info.meshNotes.push_back("meshes dropped: the skeleton has more than 65535 joints");
+        return nullptr;
+    }
+    auto out = std::make_shared<SkeletonMesh>();
+    out->jointNames = binding.jointNames;
+    out->bindPoses.assign(joints, RigidTransform{});
+    std::vector<char> bound(joints, 0);
+    std::vector<Eigen::Matrix4d> inverseBind(joints, Eigen::Matrix4d::Identity());
+    const auto jointPose = [&](std::size_t j) {
+        Eigen::Matrix4d a = Eigen::Matrix4d::Identity();
+        a.topLeftCorner<3, 3>() = binding.firstRotation[j];
+        a.topRightCorner<3, 1>() = binding.firstPosition[j];
+        return a;
+    };
+    for (const FileSkin& skin : file.skins) {
+        const std::string label = "mesh '" + skin.name + "'";
+        const auto drop = [&](const std::string& why) { info.meshNotes.push_back(label + " dropped: " + why); };
+        // The bones' joints; every weighted bone must be one.
+        std::vector<int> jointOfBone(skin.boneNames.size(), -1);
+        std::vector<char> weighted(skin.boneNames.size(), 0);
+        for (std::size_t v = 0; v < skin.bones.size(); ++v)
+            for (int k = 0; k < 4; ++k)
+                if (skin.bones[v][std::size_t(k)] >= 0 && skin.weights[v][k] > 0.0f) weighted[std::size_t(skin.bones[v][std::size_t(k)])] = 1;
+        std::string missing;
+        int reference = -1;
+        for (std::size_t b = 0; b < skin.boneNames.size(); ++b) {
+            if (!weighted[b]) continue;
+            const auto node = binding.byName->find(skin.boneNames[b]);
+            const int joint = node == binding.byName->end() ? -1 : (*binding.jointOf)[std::size_t(node->second)];
+            if (joint < 0) {
+                if (missing.empty()) missing = skin.boneNames[b];
+                continue;
+            }
+            jointOfBone[b] = joint;
+            if (reference < 0) reference = int(b);
+        }
+        if (!missing.empty()) { drop("it is weighted to '" + (detail::isUtf8(missing) ? missing : detail::quoted(missing)) + "', which is not a joint of the take"); continue; }
+        if (reference < 0) { drop("no vertex is weighted to a bone"); continue; }
+        // The mesh's space in the bind pose: its node's (FBX, Collada), else where the reference
+        // bone's rest and offset put it (glTF). Any invertible choice skins the same; this one
+        // keeps the bind pose where the file's rest has it.
+        const int referenceNode = binding.byName->at(skin.boneNames[std::size_t(reference)]);
+        const Eigen::Matrix4d meshToWorld =
+            binding.convert * (skin.meshToWorld ? *skin.meshToWorld : Eigen::Matrix4d(binding.restWorld[std::size_t(referenceNode)] * skin.offsets[std::size_t(reference)]));
+        const Eigen::Matrix3d linear = meshToWorld.topLeftCorner<3, 3>();
+        if (!meshToWorld.allFinite() || !(std::abs(linear.determinant()) > 1e-12)) { drop("its bind pose is degenerate"); continue; }
+        const Eigen::Matrix4d worldToMesh = meshToWorld.inverse();
+        // Each weighted bone's inverse bind in the joint's (world-aligned) frame.
+        std::vector<std::pair<int, Eigen::Matrix4d>> binds;
+        std::string problem;
+        for (std::size_t b = 0; b < skin.boneNames.size() && problem.empty(); ++b) {
+            if (jointOfBone[b] < 0) continue;
+            const int node = binding.byName->at(skin.boneNames[b]);
+            const Eigen::Matrix4d k = jointPose(std::size_t(jointOfBone[b])).inverse() * binding.convert * binding.firstWorld[std::size_t(node)] * skin.offsets[b] * worldToMesh;
+            const Eigen::Matrix3d l = k.topLeftCorner<3, 3>();
+            if (!k.allFinite() || (l.transpose() * l - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff() > 1e-3)
+                problem = "its bind of '" + skin.boneNames[b] + "' is not rigid (scaled or sheared)";
+            binds.emplace_back(jointOfBone[b], k);
+        }
+        if (!problem.empty()) { drop(problem); continue; }
+        // A joint bound by an earlier mesh must be bound the same way.
+        for (const auto& [joint, k] : binds)
+            if (bound[std::size_t(joint)] && (k - inverseBind[std::size_t(joint)]).cwiseAbs().maxCoeff() > 1e-3)
+                problem = "it is bound to '" + binding.jointNames[std::size_t(joint)] + "' in another pose than an earlier mesh";
+        if (!problem.empty()) { drop(problem); continue; }
+        for (const auto& [joint, k] : binds) {
+            inverseBind[std::size_t(joint)] = k;
+            bound[std::size_t(joint)] = 1;
+        }
+        // Vertices into the world (BVH axes, cm) of the bind pose; weights normalised.
+        const std::size_t first = out->positions.size();
+        const Eigen::Matrix3d normalMatrix = meshToWorld.topLeftCorner<3, 3>().inverse().transpose();
+        std::size_t unweighted = 0;
+        for (std::size_t v = 0; v < skin.positions.size(); ++v) {
+            const Eigen::Vector3d p = (meshToWorld * skin.positions[v].cast<double>().homogeneous()).head<3>();
+            Eigen::Vector3d n = normalMatrix * skin.normals[v].cast<double>();
+            n = n.norm() > 1e-12 ? Eigen::Vector3d(n.normalized()) : Eigen::Vector3d::Zero();
+            std::array<std::pair<float, int>, 4> influences{};
+            float sum = 0.0f;
+            for (int k = 0; k < 4; ++k) {
+                const int bone = skin.bones[v][std::size_t(k)];
+                const float w = bone >= 0 ? skin.weights[v][k] : 0.0f;
+                influences[std::size_t(k)] = {w > 0.0f ? w : 0.0f, bone >= 0 && w > 0.0f ? jointOfBone[std::size_t(bone)] : 0};
+                sum += influences[std::size_t(k)].first;
+            }
+            if (!(sum > 0.0f)) { // follows the root, where the first frame has it
+                ++unweighted;
+                influences = {std::pair{1.0f, 0}, std::pair{0.0f, 0}, std::pair{0.0f, 0}, std::pair{0.0f, 0}};
+                sum = 1.0f;
+            }
+            std::sort(influences.begin(), influences.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+            std::array<std::uint16_t, 4> ids{};
+            Eigen::Vector4f weights;
+            for (int k = 0; k < 4; ++k) {
+                ids[std::size_t(k)] = std::uint16_t(influences[std::size_t(k)].second);
+                weights[k] = influences[std::size_t(k)].first / sum;
+            }
+            out->positions.push_back(p.cast<float>());
+            out->normals.push_back(n.cast<float>());
+            out->joints.push_back(ids);
+            out->weights.push_back(weights);
+        }
+        for (const std::uint32_t i : skin.indices) out->indices.push_back(std::uint32_t(first + i));
+        // Normals the file did not give: the area-weighted mean of the triangles'.
+        std::vector<Eigen::Vector3f> made(skin.positions.size(), Eigen::Vector3f::Zero());
+        bool needed = false;
+        for (std::size_t v = first; v < out->positions.size(); ++v) needed = needed || out->normals[v].isZero();
+        if (needed) {
+            for (std::size_t t = 0; t + 2 < skin.indices.size(); t += 3) {
+                const std::uint32_t a = skin.indices[t], b = skin.indices[t + 1], c = skin.indices[t + 2];
+                const Eigen::Vector3f face = (out->positions[first + b] - out->positions[first + a]).cross(out->positions[first + c] - out->positions[first + a]);
+                made[a] += face, made[b] += face, made[c] += face;
+            }
+            for (std::size_t v = 0; v < made.size(); ++v)
+                if (out->normals[first + v].isZero()) out->normals[first + v] = made[v].norm() > 0.0f ? made[v].normalized() : Eigen::Vector3f::UnitZ();
+        }
+        if (unweighted > 0) {
+            info.meshNotes.push_back(label + ": " + std::to_string(unweighted) + " vertices without weights follow the root joint");
+            if (!bound[0]) { // the root's bind: its pose at the first frame (those vertices stand as they were then)
+                inverseBind[0] = jointPose(0).inverse();
+                bound[0] = 1;
+            }
+        }
+        if (skin.extraInfluences > 0)
+            info.meshNotes.push_back(label + ": " + std::to_string(skin.extraInfluences) + " influences beyond a vertex's four largest dropped");
+        ++out->fileMeshes;
+    }
+    if (out->positions.empty()) return nullptr;
+    for (std::size_t j = 0; j < joints; ++j) {
+        if (!bound[j]) continue;
+        const Eigen::Matrix3d rotation = rotationPart(inverseBind[j].topLeftCorner<3, 3>(), nullptr);
+        const RigidTransform inverse{Eigen::Quaterniond(rotation).normalized(), inverseBind[j].topRightCorner<3, 1>()};
+        out->bindPoses[j] = inverse.inverse();
+    }
+    if (auto valid = validateSkeletonMesh(*out); !valid) {
+        info.meshNotes.push_back("meshes dropped: " + valid.error().message);
+        return nullptr;
+    }
+    info.meshVertices = out->vertexCount();
+    info.meshTriangles = out->triangleCount();
+    for (const int j : out->bonesUsed()) info.meshBones.push_back(binding.jointNames[std::size_t(j)]);
+    return out;
+}
+
 Result<SceneTake> convertScene(const aiScene& scene, SceneFormat format, const std::string& source, const SceneTakeOptions& options,
-                               const RunControl& control)
+                               const RunControl& control, const FileSkins* gltfSkins)
 {
     SceneTake out;
     SceneTakeInfo& info = out.info;
@@ -544,6 +798,10 @@ Result<SceneTake> convertScene(const aiScene& scene, SceneFormat format, const s
         }
     };
     worldAt(std::nullopt);
+    SkinBinding skinBinding;
+    const FileSkins assimpSkins = gltfSkins ? FileSkins{} : skinsFromAssimp(scene);
+    const FileSkins& fileSkins = gltfSkins ? *gltfSkins : assimpSkins;
+    if (!fileSkins.skins.empty()) skinBinding.restWorld = world;
     bool scaled = false;
     for (int j = 0; j < jointCount; ++j) {
         const Eigen::Matrix4d& w = world[std::size_t(jointNodes[std::size_t(j)])];
@@ -579,6 +837,11 @@ Result<SceneTake> convertScene(const aiScene& scene, SceneFormat format, const s
             localTranslation.block<1, 3>(f, 3 * j) = translation.transpose();
         }
         if (!localTranslation.row(f).allFinite()) return parseError(source, 0, "the animation gives joint positions that are not numbers at frame " + std::to_string(f));
+        if (f == 0 && !fileSkins.skins.empty()) {
+            skinBinding.firstWorld = world;
+            skinBinding.firstRotation = frameRotation;
+            skinBinding.firstPosition = framePosition;
+        }
     }
     info.scaleDropped = scaled;
     control.report(1.0);
@@ -598,6 +861,16 @@ Result<SceneTake> convertScene(const aiScene& scene, SceneFormat format, const s
             used.emplace(unique, j);
             jointNames[std::size_t(j)] = unique;
         }
+    }
+
+    // The file's skinned meshes on these joints.
+    if (!fileSkins.skins.empty() || !fileSkins.notes.empty()) {
+        skinBinding.byName = &byName;
+        skinBinding.jointOf = &jointOf;
+        skinBinding.convert.topLeftCorner<3, 3>() = convert;
+        skinBinding.jointNames = jointNames;
+        if (skinBinding.firstWorld.empty()) skinBinding.firstWorld = skinBinding.restWorld; // no frames
+        out.bvh.mesh = bindSkins(fileSkins, skinBinding, info);
     }
 
     // The BVH structure: offsets are the rest pose's, End Sites the leaves that never move.
@@ -848,8 +1121,9 @@ Result<SceneTake> readWithAssimp(const std::string& bytes, const std::string& ex
         }
     }
     int meshes = -1;
+    FileSkins skins;
     if (format == SceneFormat::Gltf) {
-        auto slimmed = slimGltf(bytes, extension == ".glb" ? GltfEncoding::Binary : GltfEncoding::Text, folder, source, meshes);
+        auto slimmed = slimGltf(bytes, extension == ".glb" ? GltfEncoding::Binary : GltfEncoding::Text, folder, source, meshes, &skins);
         if (!slimmed) return slimmed.error();
         slim = std::move(slimmed).value();
         input = &slim;
@@ -858,7 +1132,7 @@ Result<SceneTake> readWithAssimp(const std::string& bytes, const std::string& ex
     configure(importer);
     const aiScene* scene = importer.ReadFileFromMemory(input->data(), input->size(), 0, extension.substr(1).c_str());
     if (!scene) return assimpError(source, format, importer);
-    auto take = convertScene(*scene, format, source, options, control);
+    auto take = convertScene(*scene, format, source, options, control, format == SceneFormat::Gltf ? &skins : nullptr);
     if (take && meshes >= 0) take->info.meshes = meshes;
     return take;
 }

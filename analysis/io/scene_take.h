@@ -53,12 +53,21 @@ struct SceneTakeInfo {
     double rateHz = 0.0;                 ///< the rate sampled at
     double startTime = 0.0;              ///< the first key's time (s) = frame 0
     int helperNodesFolded = 0;           ///< FBX pivot nodes ($AssimpFbx$) folded into their joints
-    int meshes = 0;                      ///< meshes in the file (not read)
+    int meshes = 0;                      ///< meshes in the file
+    /// The skinned mesh kept for the skeleton (Skeleton::mesh; all the file's skinned meshes
+    /// merged): its vertices, triangles and the joints it is weighted to (0 and empty: none).
+    std::size_t meshVertices = 0;
+    std::size_t meshTriangles = 0;
+    std::vector<std::string> meshBones;
+    /// What of the meshes was dropped or changed, and why (one line each).
+    std::vector<std::string> meshNotes;
     bool scaleDropped = false;           ///< a joint had a non-unit scale (kept in positions, not in the skeleton)
 };
 
 struct SceneTake {
-    BvhFile bvh; ///< y up, +Z forward, cm; joint frames world-aligned at rest; rate of the samples
+    /// y up, +Z forward, cm; joint frames world-aligned at rest; rate of the samples. Its `mesh`:
+    /// the file's skinned meshes bound to these joints (docs/FORMATS.md), null without any.
+    BvhFile bvh;
     SceneTakeInfo info;
 };
 

@@ -193,9 +193,22 @@ json bvhJson(const Loaded& loaded)
                         {"rate_source", scene.rateSource},
                         {"start_time_s", scene.startTime},
                         {"fbx_helper_nodes_folded", scene.helperNodesFolded},
-                        {"meshes_not_read", scene.meshes},
+                        {"meshes", scene.meshes},
                         {"scale_dropped", scene.scaleDropped}};
+        // The skinned mesh kept for the skeleton (the "mesh" figure), and what was dropped.
+        json mesh = nullptr;
+        if (scene.meshVertices > 0)
+            mesh = {{"vertices", scene.meshVertices}, {"triangles", scene.meshTriangles}, {"bones", scene.meshBones}};
+        out["scene"]["skinned_mesh"] = mesh;
+        out["scene"]["mesh_notes"] = scene.meshNotes;
     }
+    return out;
+}
+
+std::string joinedNames(const std::vector<std::string>& names)
+{
+    std::string out;
+    for (std::size_t i = 0; i < names.size(); ++i) out += (i ? ", " : "") + names[i];
     return out;
 }
 
@@ -211,8 +224,14 @@ void printBvh(const Loaded& loaded)
                   << " rate) from " << scene.startTime << " s; file unit " << scene.unit << ", up axis " << scene.upAxis
                   << ": converted to cm, y up (then the workbench's z up)";
         if (scene.helperNodesFolded > 0) std::cout << "; " << scene.helperNodesFolded << " FBX pivot nodes folded into their joints";
-        if (scene.meshes > 0) std::cout << "; " << scene.meshes << " meshes not read";
         if (scene.scaleDropped) std::cout << "; joint scale dropped (kept in positions)";
+        if (scene.meshVertices > 0)
+            std::cout << "\nskinned mesh: " << scene.meshVertices << " vertices, " << scene.meshTriangles << " triangles, "
+                      << scene.meshBones.size() << " bones (" << joinedNames(scene.meshBones) << "), of " << scene.meshes
+                      << " meshes in the file (figure \"mesh\")";
+        else if (scene.meshes > 0)
+            std::cout << "\nskinned mesh: none (" << scene.meshes << " meshes in the file, none kept for the skeleton)";
+        for (const std::string& note : scene.meshNotes) std::cout << "\n  mesh note: " << note;
         std::cout << "\nconverted skeleton as BVH:";
     }
     std::cout << "\nBVH: " << skeleton.jointCount() << " joints + " << skeleton.endSiteCount() << " End Sites, "

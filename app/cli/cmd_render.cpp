@@ -146,11 +146,8 @@ render::SceneVisibility parseShow(const std::string& text)
 
 render::FigureStyle parseFigure(const std::string& text, const std::string& option)
 {
-    if (text == "puppet") return render::FigureStyle::Puppet;
-    if (text == "skeleton") return render::FigureStyle::Skeleton;
-    if (text == "both") return render::FigureStyle::PuppetAndSkeleton;
-    if (text == "body") return render::FigureStyle::Body;
-    throw CliError(option + " '" + text + "': expected puppet, skeleton, both or body");
+    if (const auto style = render::figureStyleFromName(text)) return *style;
+    throw CliError(option + " '" + text + "': expected puppet, skeleton, both, body or mesh");
 }
 
 bool hasDisplay() { return std::getenv("DISPLAY") != nullptr || std::getenv("WAYLAND_DISPLAY") != nullptr; }
@@ -346,6 +343,12 @@ void runRender(const RenderArguments& args)
     std::optional<analysis::synth::DemoCorpus> demo;
     std::vector<analysis::Take> takes{loadTake(args.take, demo)};
     if (!args.takeB.empty()) takes.push_back(loadTake(args.takeB, demo));
+    // "mesh" asks for the skinned mesh a take's file carries: a take without one is an error.
+    for (std::size_t t = 0; t < takes.size(); ++t)
+        if (visibility.figures[t] == render::FigureStyle::FileMesh && !render::takeHasFileMesh(takes[t]))
+            throw CliError(std::string(t == 0 ? "--figure" : "--figure-b") + " mesh: the take " + (t == 0 ? args.take : args.takeB) +
+                           " carries no skinned mesh of its file (expected an FBX, glTF or Collada take with a mesh skinned to its skeleton; "
+                           "`bunraku info` says why a file's mesh was dropped)");
     const analysis::BodyDescription body =
         args.body.empty() ? analysis::defaultBodyDescription() : unwrap(analysis::loadBodyDescription(args.body));
 
@@ -396,7 +399,9 @@ void runRender(const RenderArguments& args)
                          {"distance_cm", camera.distance}};
     for (const auto& slot : scene.takes) summary["takes"].push_back(slot.take.displayName());
     for (int s = 0; s < int(scene.takes.size()); ++s)
-        summary["figures"].push_back({{"puppet", offscreen->renderer().puppetDrawn(s)}, {"skeleton", offscreen->renderer().skeletonDrawn(s)}});
+        summary["figures"].push_back({{"puppet", offscreen->renderer().puppetDrawn(s)},
+                                      {"skeleton", offscreen->renderer().skeletonDrawn(s)},
+                                      {"mesh", offscreen->renderer().skeletonDrawn(s) && visibility.figures[std::size_t(s)] == render::FigureStyle::FileMesh}});
 
     // --follow: the camera carried along the floor with the figures (as the 3D view's Follow).
     const auto follow = [&] {
@@ -459,8 +464,9 @@ void addRenderCommands(CommandSet& commands)
     render->add_option("--show", args->show, "Objects to draw: puppet,axis,orbits,grid (the floor),shadows (the figures' on the floor),partner or all")
         ->capture_default_str();
     render->add_option("--figure", args->figure,
-                       "Figure of the take(s): puppet, skeleton (the performer's, for takes read from BVH), both or body "
-                       "(the performer's body, a smooth mannequin skinned to that skeleton)")
+                       "Figure of the take(s): puppet, skeleton (the performer's, for takes read from BVH), both, body "
+                       "(the performer's body, a smooth mannequin skinned to that skeleton) or mesh (the skinned mesh an "
+                       "FBX, glTF or Collada take's file carries, moved by the take)")
         ->capture_default_str();
     render->add_option("--figure-b", args->figureB, "Figure of the second take (default: as --figure)");
     render->add_option("--size", args->size, "Image size WIDTHxHEIGHT")->capture_default_str();

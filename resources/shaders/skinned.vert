@@ -17,6 +17,10 @@ layout(location = 6) in vec4 a_weights;
 // ID pass writes the dominant joint itself.
 #ifdef BODY_JOINTS
 const int kJoints = BODY_JOINTS;
+// A file's own mesh (analysis/core/skeleton_mesh.h) is blended linearly, as its format means it
+// (glTF's and FBX's linear blend skinning; the CPU twin is analysis::skinSkeletonMesh): each
+// joint's rigid transform applied, the results weighted.
+uniform int u_linearBlend;
 #else
 const int kJoints = 9; // analysis::kPuppetJointCount
 uniform int u_partOfJoint[kJoints]; // body part index of each joint (picking IDs)
@@ -42,24 +46,41 @@ void main()
     vec4 first = u_jointReal[a_joints.x];
     vec4 real = vec4(0.0);
     vec4 dual = vec4(0.0);
+    vec3 position = vec3(0.0);
+    vec3 normal = vec3(0.0);
     int dominant = 0;
+#ifdef BODY_JOINTS
+    bool linear = u_linearBlend != 0;
+#else
+    bool linear = false;
+#endif
     for (int k = 0; k < 4; ++k) {
         float w = a_weights[k];
         int j = int(a_joints[k]);
         vec4 r = u_jointReal[j];
-        float s = dot(r, first) < 0.0 ? -1.0 : 1.0;
-        real += s * w * r;
-        dual += s * w * u_jointDual[j];
+        if (linear) {
+            vec4 d = u_jointDual[j];
+            vec3 t = 2.0 * (r.w * d.xyz - d.w * r.xyz + cross(r.xyz, d.xyz));
+            position += w * (rotate(r, a_position) + t);
+            normal += w * rotate(r, a_normal);
+        } else {
+            float s = dot(r, first) < 0.0 ? -1.0 : 1.0;
+            real += s * w * r;
+            dual += s * w * u_jointDual[j];
+        }
         if (a_weights[k] > a_weights[dominant]) dominant = k;
     }
-    float norm = length(real);
-    real /= norm;
-    dual /= norm;
-    vec3 translation = 2.0 * (real.w * dual.xyz - dual.w * real.xyz + cross(real.xyz, dual.xyz));
-    vec3 position = rotate(real, a_position) + translation;
+    if (!linear) {
+        float norm = length(real);
+        real /= norm;
+        dual /= norm;
+        vec3 translation = 2.0 * (real.w * dual.xyz - dual.w * real.xyz + cross(real.xyz, dual.xyz));
+        position = rotate(real, a_position) + translation;
+        normal = rotate(real, a_normal);
+    }
     vec4 world = u_model * vec4(position, 1.0);
     v_worldPosition = world.xyz;
-    v_normal = u_normalMatrix * rotate(real, a_normal);
+    v_normal = u_normalMatrix * normal;
     v_colour = a_colour;
     v_sheen = a_sheenRegion.x;
     v_region = int(a_sheenRegion.y + 0.5);

@@ -52,5 +52,5 @@ TEST_CASE("bunraku-workbench --figure shows a Bandai take's skeleton in the wind
     CHECK(runWorkbench(std::string("--figure bones --screenshot ").append(quoted(dir / "x.png")), dir / "err.txt") == 1);
     std::ifstream errors(dir / "err.txt");
     const std::string text((std::istreambuf_iterator<char>(errors)), std::istreambuf_iterator<char>());
-    CHECK(text.find("--figure 'bones': expected puppet, skeleton, both or body") != std::string::npos);
+    CHECK(text.find("--figure 'bones': expected puppet, skeleton, both, body or mesh") != std::string::npos);
 }

@@ -252,5 +252,5 @@ TEST_CASE("bunraku render --figure draws a Bandai take's 22-joint skeleton, the 
     CHECK(images["both"] != images["skeleton"]);
     const auto [code, errors] = runCli("render " + quoted(source) + " --figure bones -o " + quoted(dir / "x.png"), dir);
     CHECK(code != 0);
-    CHECK(errors.find("--figure 'bones': expected puppet, skeleton, both or body") != std::string::npos);
+    CHECK(errors.find("--figure 'bones': expected puppet, skeleton, both, body or mesh") != std::string::npos);
 }
