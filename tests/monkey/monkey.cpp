@@ -163,7 +163,7 @@ void Monkey::note(std::string action)
 
 std::string Monkey::log(std::size_t count) const
 {
-    std::string text;
+    std::string text = "  (seed " + std::to_string(m_seed) + ")\n";
     const std::size_t first = m_log.size() > count ? m_log.size() - count : 0;
     for (std::size_t k = first; k < m_log.size(); ++k) text += "  " + m_log[k] + "\n";
     return text;
