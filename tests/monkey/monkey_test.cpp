@@ -2,7 +2,7 @@
 //   BUNRAKU_MONKEY_SEED     the first seed (default 1)
 //   BUNRAKU_MONKEY_SEEDS    how many seeds, each a new window (default 2: one on the demo corpus,
 //                           one on the Bandai corpus)
-//   BUNRAKU_MONKEY_ACTIONS  actions per seed (default 1000)
+//   BUNRAKU_MONKEY_ACTIONS  actions per seed (default 750 in the ASan build, 250 in others)
 //   BUNRAKU_MONKEY_VERBOSE  1: print every action as it is done
 // A failure prints the seed, the step and the last actions, and the command that replays it.
 
@@ -164,7 +164,12 @@ TEST_CASE("the monkey: random user actions on the demo and Bandai corpora keep e
     test::isolateSettings();
     const auto firstSeed = envNumber("BUNRAKU_MONKEY_SEED", 1);
     const auto seeds = envNumber("BUNRAKU_MONKEY_SEEDS", 2);
-    const auto actions = envNumber("BUNRAKU_MONKEY_ACTIONS", 1000);
+#ifdef BUNRAKU_MONKEY_ASAN
+    const std::uint64_t defaultActions = 750; // the sanitizer build's run: 1,500 actions (ctest gives a case 600 s)
+#else
+    const std::uint64_t defaultActions = 250; // the Release build's short run (its other suites cover the rest)
+#endif
+    const auto actions = envNumber("BUNRAKU_MONKEY_ACTIONS", defaultActions);
     const bool verbose = envNumber("BUNRAKU_MONKEY_VERBOSE", 0) != 0;
     const auto files = monkeyFiles();
     std::uint64_t total = 0;
