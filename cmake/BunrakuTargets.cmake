@@ -87,11 +87,14 @@ function(bunraku_analysis_module name)
   set_property(GLOBAL APPEND PROPERTY BUNRAKU_ANALYSIS_MODULES ${target})
 endfunction()
 
-# bunraku_add_test(NAME SOURCES ... LIBS ... [QT])
+# bunraku_add_test(NAME SOURCES ... LIBS ... [QT] [TIMEOUT seconds])
 # A Catch2 v2 executable whose cases ctest lists one by one. QT tests use a main that creates
 # a QApplication (run them under xvfb-run).
 function(bunraku_add_test name)
-  cmake_parse_arguments(T "QT" "" "SOURCES;LIBS" ${ARGN})
+  cmake_parse_arguments(T "QT" "TIMEOUT" "SOURCES;LIBS" ${ARGN})
+  if(NOT T_TIMEOUT)
+    set(T_TIMEOUT 600)
+  endif()
   add_executable(${name} ${T_SOURCES})
   if(T_QT)
     target_link_libraries(${name} PRIVATE bunraku_catch_qt_main)
@@ -115,5 +118,5 @@ function(bunraku_add_test name)
   endif()
   # A case whose peer is missing prints "bunraku-test: skipped:" (tests/support/peer.h): ctest
   # reports it as skipped, not passed (under CI=true it fails instead).
-  catch_discover_tests(${name} TEST_PREFIX "${name}: " PROPERTIES TIMEOUT 600 SKIP_REGULAR_EXPRESSION "bunraku-test: skipped:")
+  catch_discover_tests(${name} TEST_PREFIX "${name}: " PROPERTIES TIMEOUT ${T_TIMEOUT} SKIP_REGULAR_EXPRESSION "bunraku-test: skipped:")
 endfunction()
