@@ -318,7 +318,8 @@ void AnalysisController::synthesiseWeighted()
         m_pendingWeightedLabel = label;
         const pl::StageKey key = pl::KeyBuilder("weighted body").add(m_keys.decompose).add(function).add(emotion).add(weight).key();
         m_scheduler->request(kWeightedSlot, key,
-                             [decomposed = m_decomposed, function, emotion, weight](const analysis::RunControl& control)
+                             // Init-captures: clang 14 (the sanitizer builds) cannot capture structured bindings.
+                             [decomposed = m_decomposed, function = function, emotion = emotion, weight](const analysis::RunControl& control)
                                  -> analysis::Result<StageValue> {
                                  auto take = pl::weightedTake(*decomposed, function, emotion, weight);
                                  if (!take) return take.error();

@@ -108,7 +108,7 @@ QWidget* scrolled(QWidget* panel)
 
 } // namespace
 
-MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_document(new Document(this))
+MainWindow::MainWindow(QWidget* parent, std::shared_ptr<Executor> executor) : QMainWindow(parent), m_document(new Document(this))
 {
     setObjectName("mainWindow");
     setAcceptDrops(true);
@@ -138,7 +138,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_document(new Do
     statusBar()->addPermanentWidget(m_shownTakes);
     statusBar()->addPermanentWidget(m_stages);
     statusBar()->addPermanentWidget(m_progress);
-    createViews();
+    createViews(std::move(executor));
     createMenus();
     connectDocument();
 
@@ -184,13 +184,13 @@ QDockWidget* MainWindow::dock(const QString& objectName) const
     return nullptr;
 }
 
-void MainWindow::createViews()
+void MainWindow::createViews(std::shared_ptr<Executor> executor)
 {
     m_browser = new widgets::CorpusBrowser(this);
     m_inspector = new widgets::InspectorWidget(this);
     m_graphs = new widgets::GraphPanel(this);
     m_timeline = new widgets::TimelineWidget(this);
-    m_analysis = new AnalysisController(*m_document, this);
+    m_analysis = new AnalysisController(*m_document, this, std::move(executor));
     m_viewportPanel = new ViewportPanel(*m_document, *m_analysis, this);
     m_design = new DesignController(*m_document, *m_analysis, this);
     m_designPanel = new DesignPanel(*m_document, *m_design, this);

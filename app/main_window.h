@@ -10,7 +10,7 @@
 #include <QMainWindow>
 
 #include <map>
-
+#include <memory>
 #include <vector>
 
 class QDockWidget;
@@ -33,6 +33,7 @@ class AnalysisController;
 class DesignController;
 class DesignPanel;
 class EmotionPanel;
+class Executor;
 class NormalisePanel;
 class ExportController;
 class FileController;
@@ -45,7 +46,9 @@ class ViewportPanel;
 class MainWindow : public QMainWindow {
     Q_OBJECT
 public:
-    explicit MainWindow(QWidget* parent = nullptr);
+    /// `executor` runs the analysis jobs (stage_scheduler.h); null: the thread pool. The monkey
+    /// test (tests/monkey) passes a manual one, so that results arrive when its seed says.
+    explicit MainWindow(QWidget* parent = nullptr, std::shared_ptr<Executor> executor = {});
     ~MainWindow() override;
 
     Document& document() { return *m_document; }
@@ -109,7 +112,7 @@ protected:
 
 private:
     QDockWidget* addDock(QWidget* widget, const QString& title, const QString& objectName, Qt::DockWidgetArea area);
-    void createViews();
+    void createViews(std::shared_ptr<Executor> executor);
     void createMenus();
     void connectDocument();
     void refreshEntries();

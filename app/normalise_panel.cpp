@@ -142,11 +142,14 @@ NormalisePanel::NormalisePanel(Document& document, AnalysisController& analysis,
         pl::ReferenceChoice choice;
         if (data == QStringLiteral("average")) choice.kind = pl::ReferenceKind::Average;
         else if (data != QStringLiteral("suggested")) choice = {pl::ReferenceKind::Take, data.toInt()};
-        const QString cell = QString::fromStdString(pl::cellName(function, emotion));
+        // A name, not the bindings, in the lambda: clang 14 (the sanitizer builds) cannot capture
+        // structured bindings.
+        const std::string name = pl::cellName(function, emotion);
+        const QString cell = QString::fromStdString(name);
         edit(QStringLiteral("reference"), tr("Set the reference of %1 to %2").arg(cell, m_reference->currentText()),
              [&](pl::NormaliseParameters& p) {
-                 if (choice == p.reference) p.cellReferences.erase(pl::cellName(function, emotion));
-                 else p.cellReferences[pl::cellName(function, emotion)] = choice;
+                 if (choice == p.reference) p.cellReferences.erase(name);
+                 else p.cellReferences[name] = choice;
              });
     });
     connect(m_tau, &QSpinBox::valueChanged, this, [edit](int value) {

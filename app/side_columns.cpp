@@ -35,7 +35,10 @@ SideColumns::SideColumns(QMainWindow* window) : QObject(window), m_window(window
 
 bool SideColumns::eventFilter(QObject* watched, QEvent* event)
 {
-    if (!m_window || event->type() != QEvent::Resize) return false;
+    // The event's type first: while the window is destroyed its children's removal comes here
+    // (ChildRemoved) when it is a QWidget no more a QMainWindow, and reading m_window then is a
+    // cast to what the object no longer is (UBSan's vptr check, found by tests/monkey).
+    if (event->type() != QEvent::Resize || !m_window) return false;
     if (watched == m_window) {
         // After the layout has placed the docks for the new size: give the left column its width back.
         if (m_window->size() != m_windowSize) QTimer::singleShot(0, this, &SideColumns::keepLeftWidth);

@@ -31,8 +31,7 @@ VideoExportJob::VideoExportJob(VideoExportOptions options, FramePlan plan, Frame
 
 VideoExportJob::~VideoExportJob()
 {
-    m_cancel = true;
-    m_wake.notify_all();
+    requestCancel();
     if (m_worker.joinable()) m_worker.join();
 }
 
@@ -50,7 +49,18 @@ void VideoExportJob::cancel()
     if (!m_started || m_done || m_pending) return;
     m_pending = VideoExportResult{};
     m_pending->cancelled = true;
-    m_cancel = true;
+    requestCancel();
+}
+
+void VideoExportJob::requestCancel()
+{
+    // Set under the mutex: the worker tests m_cancel under it before it sleeps, so the wake-up
+    // cannot fall between its test and its sleep (a worker that slept through it would keep an
+    // export or the destructor's join waiting for a wake-up that never comes).
+    {
+        std::lock_guard lock(m_mutex);
+        m_cancel = true;
+    }
     m_wake.notify_all();
 }
 
@@ -111,8 +121,7 @@ void VideoExportJob::stopWithError(const QString& error)
 {
     m_pending = VideoExportResult{};
     m_pending->error = error;
-    m_cancel = true;
-    m_wake.notify_all();
+    requestCancel();
 }
 
 std::unique_ptr<FrameSink> VideoExportJob::makeSink() const

@@ -55,6 +55,8 @@ private:
     void renderNext();
     /// Stops the worker; finished() reports `error` once it has exited.
     void stopWithError(const QString& error);
+    /// Tells the worker to stop (m_cancel, set under m_mutex) and wakes it.
+    void requestCancel();
     std::unique_ptr<FrameSink> makeSink() const;
     void workerLoop();
     /// Called on the GUI thread when the worker consumed a frame, failed or finished.

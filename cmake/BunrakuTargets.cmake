@@ -10,6 +10,10 @@ function(bunraku_configure_target target)
     target_compile_options(${target} PRIVATE -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all)
     target_link_options(${target} PRIVATE -fsanitize=address,undefined)
   endif()
+  if(BUNRAKU_TSAN) # scripts/tsan.sh: the workbench's threads (docs/RELIABILITY.md)
+    target_compile_options(${target} PRIVATE -fsanitize=thread -fno-omit-frame-pointer)
+    target_link_options(${target} PRIVATE -fsanitize=thread)
+  endif()
   if(BUNRAKU_FUZZ) # coverage for libFuzzer, and the sanitizers that turn bugs into findings
     target_compile_options(${target} PRIVATE -fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer
                                              -fno-sanitize-recover=all)
@@ -83,11 +87,14 @@ function(bunraku_analysis_module name)
   set_property(GLOBAL APPEND PROPERTY BUNRAKU_ANALYSIS_MODULES ${target})
 endfunction()
 
-# bunraku_add_test(NAME SOURCES ... LIBS ... [QT])
+# bunraku_add_test(NAME SOURCES ... LIBS ... [QT] [TIMEOUT seconds])
 # A Catch2 v2 executable whose cases ctest lists one by one. QT tests use a main that creates
 # a QApplication (run them under xvfb-run).
 function(bunraku_add_test name)
-  cmake_parse_arguments(T "QT" "" "SOURCES;LIBS" ${ARGN})
+  cmake_parse_arguments(T "QT" "TIMEOUT" "SOURCES;LIBS" ${ARGN})
+  if(NOT T_TIMEOUT)
+    set(T_TIMEOUT 600)
+  endif()
   add_executable(${name} ${T_SOURCES})
   if(T_QT)
     target_link_libraries(${name} PRIVATE bunraku_catch_qt_main)
@@ -111,5 +118,5 @@ function(bunraku_add_test name)
   endif()
   # A case whose peer is missing prints "bunraku-test: skipped:" (tests/support/peer.h): ctest
   # reports it as skipped, not passed (under CI=true it fails instead).
-  catch_discover_tests(${name} TEST_PREFIX "${name}: " PROPERTIES TIMEOUT 600 SKIP_REGULAR_EXPRESSION "bunraku-test: skipped:")
+  catch_discover_tests(${name} TEST_PREFIX "${name}: " PROPERTIES TIMEOUT ${T_TIMEOUT} SKIP_REGULAR_EXPRESSION "bunraku-test: skipped:")
 endfunction()

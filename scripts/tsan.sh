@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# The workbench's threads under ThreadSanitizer (docs/RELIABILITY.md, "Threads"): the stage
+# scheduler, the import and export workers (progress_task, file_controller, export_controller)
+# and the video writer (video_export_job, ffmpeg_encoder), in one test executable,
+# tests_app_threads, built alone in build-tsan with clang-14 and -fsanitize=thread (the analysis
+# layer, render, widgets and app instrumented; Qt is Debian's, not instrumented: see
+# tests/tsan_qt.supp for what that means and what is suppressed). Not part of scripts/test.sh
+# (CI time): run it by hand. Usage: scripts/tsan.sh [Catch2 test spec...]
+# Fails on any ThreadSanitizer report that is not suppressed (halt_on_error) or any failed case.
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+build="${BUNRAKU_TSAN_BUILD:-$root/build-tsan}"
+generator=()
+if command -v ninja >/dev/null 2>&1 && [ ! -f "$build/CMakeCache.txt" ]; then generator=(-G Ninja); fi
+# -O0: the build is what costs (every layer compiled once more, about 250 files); the tests it
+# runs are short. Line tables for the reports' stacks.
+cmake -S "$root" -B "$build" "${generator[@]}" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O0 -gline-tables-only" \
+  -DCMAKE_CXX_COMPILER=clang++-14 -DBUNRAKU_TSAN=ON -DBUNRAKU_PYTHON=OFF -DBUNRAKU_BUILD_BENCHMARKS=OFF \
+  -DBUNRAKU_WERROR=OFF >/dev/null
+cmake --build "$build" --target tests_app_threads --parallel "$(nproc)"
+# Every case of the executable (or the given spec), under Xvfb (the tests open windows).
+(cd "$build" && TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1 suppressions=$root/tests/tsan_qt.supp" \
+   xvfb-run -a -s "-screen 0 1920x1080x24 -noreset" ./bin/tests_app_threads "${@:-*}")
