@@ -413,13 +413,17 @@ Result<KimonoMeasures> measureKimono(const Take& take, const KimonoSimulation& s
         }
         return std::sqrt(sum / double(n));
     };
+    auto parts = holderParts(simulation.body);
+    if (!parts) return parts.error();
+    // The holders' poses of every frame, bound once (as the simulation does).
+    auto poses = holderPoses(simulation.body, take, *parts);
+    if (!poses) return poses.error();
     std::array<std::vector<Eigen::Vector3d>, kKimonoPointCount> displacement;
     for (Eigen::Index k = 0; k < frames; ++k) {
-        auto holders = kimonoHolderPoses(simulation.body, take, k);
-        if (!holders) return holders.error();
+        const HolderPoses& holders = (*poses)[std::size_t(k)];
         for (int p = 0; p < kKimonoPointCount; ++p) {
             const std::uint32_t i = cloth.measured[std::size_t(p)];
-            const Eigen::Vector3d carried = (*holders)[cloth.holder[i]].apply(cloth.restLocal[i]);
+            const Eigen::Vector3d carried = holders[cloth.holder[i]].apply(cloth.restLocal[i]);
             displacement[std::size_t(p)].push_back(simulation.points.block<1, 3>(k, 3 * p).transpose() - carried);
         }
     }

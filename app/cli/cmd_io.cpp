@@ -538,15 +538,7 @@ void addIoCommands(CommandSet& commands)
         convert->add_flag("--kimono", arguments->kimono,
                           "Simulate the puppet's kimono as cloth over the take and append its measured points (sleeve tips, hem "
                           "front/back/left/right; x y z cm) as 18 channels of a .csv output (docs/KIMONO.md)");
-        convert->add_option("--cloth-mass", arguments->cloth.massPerArea, "Kimono cloth: mass per area, g/cm^2 (default 0.015, silk crepe)")
-            ->check(CLI::Range(1e-4, 1.0));
-        convert->add_option("--cloth-bend", arguments->cloth.bendCompliance, "Kimono cloth: bending compliance, cm/dyn (default 2e-4)")
-            ->check(CLI::Range(0.0, 1.0));
-        convert->add_option("--cloth-damping", arguments->cloth.damping, "Kimono cloth: damping towards the body's motion, 1/s (default 1.5)")
-            ->check(CLI::Range(0.0, 100.0));
-        convert->add_option("--cloth-drag", arguments->cloth.drag, "Kimono cloth: air drag, 1/s (default 0.6)")->check(CLI::Range(0.0, 100.0));
-        convert->add_option("--cloth-substeps", arguments->cloth.substepRate, "Kimono cloth: simulation substeps per second (default 240)")
-            ->check(CLI::Range(30.0, 10000.0));
+        addClothOptions(convert, arguments->cloth);
         addImportOptions(convert, arguments->import);
         convert->callback([arguments] { runConvert(*arguments); });
     }

@@ -92,6 +92,19 @@ void runKimonoExperiment(const KimonoArguments& arguments)
 
 } // namespace
 
+void addClothOptions(CLI::App* command, analysis::ClothParameters& cloth)
+{
+    command->add_option("--cloth-mass", cloth.massPerArea, "Kimono cloth: mass per area, g/cm^2 (default 0.015, silk crepe)")
+        ->check(CLI::Range(1e-4, 1.0));
+    command->add_option("--cloth-bend", cloth.bendCompliance, "Kimono cloth: bending compliance, cm/dyn (default 2e-4)")
+        ->check(CLI::Range(0.0, 1.0));
+    command->add_option("--cloth-damping", cloth.damping, "Kimono cloth: damping towards the body's motion, 1/s (default 1.5)")
+        ->check(CLI::Range(0.0, 100.0));
+    command->add_option("--cloth-drag", cloth.drag, "Kimono cloth: air drag, 1/s (default 0.6)")->check(CLI::Range(0.0, 100.0));
+    command->add_option("--cloth-substeps", cloth.substepRate, "Kimono cloth: simulation substeps per second (default 240)")
+        ->check(CLI::Range(30.0, 10000.0));
+}
+
 void addKimonoCommands(CommandSet& commands)
 {
     auto arguments = std::make_shared<KimonoArguments>();
@@ -100,11 +113,7 @@ void addKimonoCommands(CommandSet& commands)
                   "own swing (RMS cm beyond what the parts carry) and the sleeve's lag behind the hand (docs/KIMONO.md)");
     command->add_option("CORPUS", arguments->corpus, "Corpus folder (corpus.json), or 'demo' for the embedded synthetic corpus")->required();
     command->add_flag("--json", arguments->json, "Print JSON (every take and the means per cell)");
-    command->add_option("--cloth-mass", arguments->cloth.massPerArea, "Mass per area, g/cm^2 (default 0.015)")->check(CLI::Range(1e-4, 1.0));
-    command->add_option("--cloth-bend", arguments->cloth.bendCompliance, "Bending compliance, cm/dyn (default 2e-4)")->check(CLI::Range(0.0, 1.0));
-    command->add_option("--cloth-damping", arguments->cloth.damping, "Damping towards the body's motion, 1/s (default 1.5)")
-        ->check(CLI::Range(0.0, 100.0));
-    command->add_option("--cloth-drag", arguments->cloth.drag, "Air drag, 1/s (default 0.6)")->check(CLI::Range(0.0, 100.0));
+    addClothOptions(command, arguments->cloth);
     command->callback([arguments] { runKimonoExperiment(*arguments); });
 }
 

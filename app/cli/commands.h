@@ -2,6 +2,8 @@
 /// One registration function per command family; each lives in its own cmd_*.cpp file.
 #include "app/cli/cli.h"
 
+#include "analysis/cloth/kimono_cloth.h"
+
 namespace bunraku::app::cli {
 
 /// info, convert, preprocess (cmd_io.cpp)
@@ -20,6 +22,9 @@ void addMotionAxisCommands(CommandSet& commands);
 void addApproximationCommands(CommandSet& commands);
 /// experiment kimono (cmd_kimono.cpp)
 void addKimonoCommands(CommandSet& commands);
+/// The kimono cloth's options (--cloth-mass, -bend, -damping, -drag, -substeps) onto `cloth`, with
+/// the ranges analysis::validate checks; for convert --kimono and experiment kimono.
+void addClothOptions(CLI::App* command, analysis::ClothParameters& cloth);
 /// analyse (cmd_analyse.cpp)
 void addAnalyseCommands(CommandSet& commands);
 /// summary (cmd_summary.cpp)
