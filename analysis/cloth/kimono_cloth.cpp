@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace bunraku::analysis {
 namespace {
@@ -83,7 +84,9 @@ void addGrid(KimonoCloth& cloth, const std::vector<Eigen::Vector3d>& model, std:
             if (i < lastColumn && j + 1 < rows) {
                 constrain(index(i, j), index(i + 1, j + 1), false);
                 constrain(index(i + 1, j), index(i, j + 1), false);
-                for (const std::uint32_t v : {index(i, j), index(i + 1, j), index(i + 1, j + 1), index(i, j), index(i + 1, j + 1), index(i, j + 1)})
+                // Counter-clockwise seen from outside the skirt (columns go round
+                // counter-clockwise seen from above, rows down).
+                for (const std::uint32_t v : {index(i, j), index(i + 1, j + 1), index(i + 1, j), index(i, j), index(i, j + 1), index(i + 1, j + 1)})
                     cloth.triangles.push_back(v);
             }
             if ((periodic || i + 2 < columns)) constrain(index(i, j), index(i + 2, j), true);
@@ -173,19 +176,24 @@ struct Solver {
     }
 };
 
-/// The holders' world poses at frames [from, to] of the take (the others left at rest).
-Result<std::vector<HolderPoses>> holderPoses(const BodyDescription& body, const Take& take, const std::array<int, 3>& parts,
-                                             Eigen::Index from = 0, Eigen::Index to = -1)
+/// The holders' world poses at frames [from, to] of the take (element k - from for frame k).
+std::vector<HolderPoses> holderPoses(const BodyDescription& body, const BodyBinding& binding, const Take& take, const std::array<int, 3>& parts,
+                                     Eigen::Index from, Eigen::Index to)
+{
+    std::vector<HolderPoses> poses(std::size_t(std::max<Eigen::Index>(0, to - from + 1)));
+    for (Eigen::Index k = from; k <= to; ++k) {
+        const auto world = worldPartPoses(body, binding, take, k);
+        for (int h = 0; h < 3; ++h) poses[std::size_t(k - from)][std::size_t(h)] = world[std::size_t(parts[std::size_t(h)])];
+    }
+    return poses;
+}
+
+/// The holders' world poses of every frame (the take bound to the body once).
+Result<std::vector<HolderPoses>> allHolderPoses(const BodyDescription& body, const Take& take, const std::array<int, 3>& parts)
 {
     auto binding = bindBody(body, take);
     if (!binding) return binding.error();
-    if (to < 0) to = take.frameCount() - 1;
-    std::vector<HolderPoses> poses(std::size_t(take.frameCount()));
-    for (Eigen::Index k = from; k <= to; ++k) {
-        const auto world = worldPartPoses(body, *binding, take, k);
-        for (int h = 0; h < 3; ++h) poses[std::size_t(k)][std::size_t(h)] = world[std::size_t(parts[std::size_t(h)])];
-    }
-    return poses;
+    return holderPoses(body, *binding, take, parts, 0, take.frameCount() - 1);
 }
 
 int substepsPerFrame(const ClothParameters& parameters, double rateHz)
@@ -193,15 +201,16 @@ int substepsPerFrame(const ClothParameters& parameters, double rateHz)
     return std::max(1, int(std::ceil(parameters.substepRate / rateHz - 1e-9)));
 }
 
-/// Simulates frames (from, to] from the solver's state at `from`, recording each.
-void simulateFrames(Solver& solver, const std::vector<HolderPoses>& poses, double rateHz, Eigen::Index from, Eigen::Index to,
-                    Eigen::MatrixXd* points)
+/// Simulates frames (from, to] from the solver's state at `from`, recording each; `poses` holds
+/// the holders from frame `first` on (element k - first for frame k).
+void simulateFrames(Solver& solver, const std::vector<HolderPoses>& poses, Eigen::Index first, double rateHz, Eigen::Index from,
+                    Eigen::Index to, Eigen::MatrixXd* points)
 {
     const int substeps = substepsPerFrame(solver.parameters, rateHz);
     const double h = 1.0 / (rateHz * substeps);
     for (Eigen::Index k = from; k < to; ++k) {
-        const HolderPoses& a = poses[std::size_t(k)];
-        const HolderPoses& b = poses[std::size_t(k + 1)];
+        const HolderPoses& a = poses[std::size_t(k - first)];
+        const HolderPoses& b = poses[std::size_t(k + 1 - first)];
         HolderPoses before = a;
         for (int s = 0; s < substeps; ++s) {
             const double f = double(s + 1) / double(substeps);
@@ -274,6 +283,7 @@ Result<KimonoCloth> makeKimonoCloth(const BodyDescription& body, const ClothPara
         const RigidTransform& model_T_part = bind[std::size_t(joint)];
         const Eigen::Vector3d local = fit * model_T_part.inverse().apply(modelPoint);
         cloth.restLocal.push_back(local);
+        cloth.paintPositions.push_back(modelPoint.cast<float>());
         cloth.holder.push_back(holder);
         cloth.pinned.push_back(pinned);
         model.push_back(model_T_part.apply(local));
@@ -343,7 +353,7 @@ Result<KimonoSimulation> simulateKimono(const Take& take, const ClothParameters&
     simulation.cloth = std::make_shared<const KimonoCloth>(std::move(*cloth));
     simulation.parameters = parameters;
     simulation.rateHz = take.rateHz;
-    auto poses = holderPoses(simulation.body, take, *parts);
+    auto poses = allHolderPoses(simulation.body, take, *parts);
     if (!poses) return makeError(poses.error().code, take.displayName() + ": " + poses.error().message);
     const Eigen::Index frames = take.frameCount();
     // At most about 2,000 kept states whatever the take's length (an hour at 120 Hz keeps one
@@ -364,7 +374,7 @@ Result<KimonoSimulation> simulateKimono(const Take& take, const ClothParameters&
     keep();
     for (Eigen::Index k = 0; k + 1 < frames; ++k) {
         if (control.cancelled()) return makeError(ErrorCode::Cancelled, take.displayName() + ": the kimono's simulation was cancelled");
-        simulateFrames(solver, *poses, take.rateHz, k, k + 1, &simulation.points);
+        simulateFrames(solver, *poses, 0, take.rateHz, k, k + 1, &simulation.points);
         if ((k + 1) % simulation.checkpointInterval == 0) keep();
         if (k % 64 == 0) control.report(double(k + 1) / double(frames));
     }
@@ -374,19 +384,66 @@ Result<KimonoSimulation> simulateKimono(const Take& take, const ClothParameters&
 
 Result<std::vector<Eigen::Vector3d>> kimonoFrame(const KimonoSimulation& simulation, const Take& take, Eigen::Index frame)
 {
+    // A player of its own, whose first frame is simulated from the checkpoint before it.
+    KimonoPlayer player(std::shared_ptr<const KimonoSimulation>(&simulation, [](const KimonoSimulation*) {}),
+                        std::shared_ptr<const Take>(&take, [](const Take*) {}));
+    auto particles = player.frame(frame);
+    if (!particles) return particles.error();
+    return *particles.value();
+}
+
+struct KimonoPlayer::State {
+    std::optional<BodyBinding> binding;
+    std::array<int, 3> parts{};
+    std::vector<Capsule> capsules;
+    std::unique_ptr<Solver> solver;
+};
+
+KimonoPlayer::KimonoPlayer(std::shared_ptr<const KimonoSimulation> simulation, std::shared_ptr<const Take> take)
+    : simulation_(std::move(simulation)), take_(std::move(take)), state_(std::make_unique<State>())
+{
+}
+
+KimonoPlayer::~KimonoPlayer() = default;
+KimonoPlayer::KimonoPlayer(KimonoPlayer&&) noexcept = default;
+KimonoPlayer& KimonoPlayer::operator=(KimonoPlayer&&) noexcept = default;
+
+Result<const std::vector<Eigen::Vector3d>*> KimonoPlayer::frame(Eigen::Index frame)
+{
+    const KimonoSimulation& simulation = *simulation_;
+    const Take& take = *take_;
     if (frame < 0 || frame >= simulation.frameCount() || take.frameCount() != simulation.frameCount())
         return makeError(ErrorCode::InvalidArgument, take.displayName() + ": frame " + std::to_string(frame) + " is not a frame of the simulated take");
-    auto parts = holderParts(simulation.body);
-    if (!parts) return parts.error();
-    const std::size_t checkpoint = std::size_t(frame / simulation.checkpointInterval);
-    auto poses = holderPoses(simulation.body, take, *parts, Eigen::Index(checkpoint) * simulation.checkpointInterval, frame);
-    if (!poses) return poses.error();
-    if (checkpoint >= simulation.checkpointPositions.size()) return makeError(ErrorCode::InvalidArgument, "kimono: no state kept before that frame");
-    const std::vector<Capsule> capsules = colliders(simulation.body, *parts);
-    Solver solver{*simulation.cloth, simulation.parameters, capsules, simulation.checkpointPositions[checkpoint],
-                  simulation.checkpointVelocities[checkpoint], std::vector<Eigen::Vector3d>(simulation.cloth->size())};
-    simulateFrames(solver, *poses, simulation.rateHz, Eigen::Index(checkpoint) * simulation.checkpointInterval, frame, nullptr);
-    return solver.x;
+    State& state = *state_;
+    if (!state.binding) {
+        auto parts = holderParts(simulation.body);
+        if (!parts) return parts.error();
+        auto binding = bindBody(simulation.body, take);
+        if (!binding) return binding.error();
+        state.parts = *parts;
+        state.binding = std::move(*binding);
+        state.capsules = colliders(simulation.body, state.parts);
+    }
+    const Eigen::Index interval = simulation.checkpointInterval;
+    const Eigen::Index checkpointFrame = (frame / interval) * interval;
+    // Step on from the frame shown last when it is behind `frame` and no farther than the
+    // checkpoint; else start again from the checkpoint (the same bits either way: the state is
+    // the particles' positions and velocities).
+    const bool stepOn = state.solver && current_ <= frame && current_ >= checkpointFrame;
+    if (!stepOn) {
+        const std::size_t checkpoint = std::size_t(frame / interval);
+        if (checkpoint >= simulation.checkpointPositions.size()) return makeError(ErrorCode::InvalidArgument, "kimono: no state kept before that frame");
+        state.solver = std::make_unique<Solver>(Solver{*simulation.cloth, simulation.parameters, state.capsules, simulation.checkpointPositions[checkpoint],
+                                                       simulation.checkpointVelocities[checkpoint],
+                                                       std::vector<Eigen::Vector3d>(simulation.cloth->size())});
+        current_ = checkpointFrame;
+    }
+    if (current_ < frame) {
+        const auto poses = holderPoses(simulation.body, *state.binding, take, state.parts, current_, frame);
+        simulateFrames(*state.solver, poses, current_, simulation.rateHz, current_, frame, nullptr);
+        current_ = frame;
+    }
+    return &state.solver->x;
 }
 
 Result<KimonoMeasures> measureKimono(const Take& take, const KimonoSimulation& simulation)
@@ -416,7 +473,7 @@ Result<KimonoMeasures> measureKimono(const Take& take, const KimonoSimulation& s
     auto parts = holderParts(simulation.body);
     if (!parts) return parts.error();
     // The holders' poses of every frame, bound once (as the simulation does).
-    auto poses = holderPoses(simulation.body, take, *parts);
+    auto poses = allHolderPoses(simulation.body, take, *parts);
     if (!poses) return poses.error();
     std::array<std::vector<Eigen::Vector3d>, kKimonoPointCount> displacement;
     for (Eigen::Index k = 0; k < frames; ++k) {

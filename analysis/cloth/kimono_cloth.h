@@ -60,6 +60,9 @@ std::vector<Channel> kimonoChannels();
 struct KimonoCloth {
     enum Holder : std::uint8_t { Shoulder = 0, RightArm = 1, LeftArm = 2 };
     std::vector<Eigen::Vector3d> restLocal; ///< cm, in the holder part's frame at rest
+    /// cm, where the particle lies on the shipped (unfitted) puppet in model space: the
+    /// coordinates the kimono's paint is evaluated at, as PuppetMesh::paintPositions.
+    std::vector<Eigen::Vector3f> paintPositions;
     std::vector<Holder> holder;
     std::vector<bool> pinned;               ///< moves with its holder, not simulated
     std::vector<double> inverseMass;        ///< 1/g; 0 when pinned
@@ -114,6 +117,29 @@ Result<KimonoSimulation> simulateKimono(const Take& take, const ClothParameters&
 /// The cloth's particles (world, cm) at `frame`, rebuilt from the checkpoint before it: the same
 /// values as simulating from frame 0.
 Result<std::vector<Eigen::Vector3d>> kimonoFrame(const KimonoSimulation& simulation, const Take& take, Eigen::Index frame);
+
+/// Plays a simulation: the cloth's particles at any frame, the same bits as kimonoFrame, cheaply
+/// frame after frame (it steps on from the frame asked last when that lies between the checkpoint
+/// before the new frame and the new frame; else it starts again from that checkpoint, at most
+/// `checkpointInterval` - 1 frames of simulation). Not thread-safe: one player per thread.
+class KimonoPlayer {
+public:
+    KimonoPlayer(std::shared_ptr<const KimonoSimulation> simulation, std::shared_ptr<const Take> take);
+    ~KimonoPlayer();
+    KimonoPlayer(KimonoPlayer&&) noexcept;
+    KimonoPlayer& operator=(KimonoPlayer&&) noexcept;
+    /// The particles (world, cm) at `frame`; valid until the next call.
+    Result<const std::vector<Eigen::Vector3d>*> frame(Eigen::Index frame);
+    const KimonoSimulation& simulation() const { return *simulation_; }
+    const Take& take() const { return *take_; }
+
+private:
+    struct State;
+    std::shared_ptr<const KimonoSimulation> simulation_;
+    std::shared_ptr<const Take> take_;
+    std::unique_ptr<State> state_;
+    Eigen::Index current_ = -1;
+};
 
 /// How the kimono moves beyond what the parts' motion predicts (issue "The kimono", item 4).
 struct KimonoMeasures {

@@ -214,3 +214,34 @@ TEST_CASE("in a deep bow the simulated hem stays below the dō-wa")
         }
     }
 }
+
+TEST_CASE("one player gives every frame the same cloth as a fresh simulation from the checkpoint whatever the order")
+{
+    Take take = bunraku::test::livelyTake(106);
+    take.rateHz = 30.0;
+    auto simulation = simulateKimono(take);
+    REQUIRE(simulation.ok());
+    const auto shared = std::make_shared<const KimonoSimulation>(std::move(*simulation));
+    const auto sharedTake = std::make_shared<const Take>(take);
+    KimonoPlayer player(shared, sharedTake);
+    std::vector<Eigen::Index> order;
+    for (Eigen::Index f = 0; f < 106; ++f) order.push_back(f); // playing
+    for (Eigen::Index f = 105; f >= 0; f -= 7) order.push_back(f); // scrubbing back
+    for (const Eigen::Index f : {40, 41, 43, 12, 95, 95, 59, 60, 61}) order.push_back(f); // jumps and steps
+    int compared = 0;
+    for (const Eigen::Index frame : order) {
+        const auto played = player.frame(frame);
+        REQUIRE(played.ok());
+        const auto fresh = kimonoFrame(*shared, take, frame);
+        REQUIRE(fresh.ok());
+        REQUIRE(played.value()->size() == fresh->size());
+        bool same = true;
+        for (std::size_t i = 0; i < fresh->size(); ++i) same = same && ((*played.value())[i].array() == (*fresh)[i].array()).all();
+        INFO("frame " << frame);
+        CHECK(same);
+        ++compared;
+    }
+    CHECK(compared == int(order.size()));
+    CHECK_FALSE(player.frame(106).ok());
+    CHECK_FALSE(player.frame(-1).ok());
+}
