@@ -142,6 +142,8 @@ void Renderer::releaseSceneBuffers()
     for (Slot& slot : m_slots) {
         if (slot.puppet) slot.puppet->release(*m_gl);
         for (GpuMesh& orbit : slot.orbits) orbit.release(*m_gl);
+        for (GpuMesh& orbit : slot.kimonoOrbits) orbit.release(*m_gl);
+        if (slot.cloth && slot.cloth.use_count() == 1) slot.cloth->release(*m_gl);
         for (GpuMesh& mesh : slot.meshes) mesh.release(*m_gl);
         if (slot.skeleton) slot.skeleton->release(*m_gl);
         if (slot.partner) slot.partner->release(*m_gl);
@@ -185,6 +187,10 @@ analysis::Status Renderer::setScene(const SceneContent& scene, const LayoutOptio
     std::vector<std::shared_ptr<PartnerFigure>> reusablePartners;
     for (Slot& slot : m_slots)
         if (slot.partner) reusablePartners.push_back(std::move(slot.partner));
+    // The cloth's buffers, by the cloth they hold (a scene is replaced on every step of a drag).
+    std::vector<std::pair<std::shared_ptr<const analysis::KimonoCloth>, std::shared_ptr<ClothGpu>>> reusableCloths;
+    for (Slot& slot : m_slots)
+        if (slot.cloth && slot.kimono) reusableCloths.emplace_back(slot.kimono->cloth, std::move(slot.cloth));
     releaseSceneBuffers();
     m_layout = layout;
     m_body = scene.body;
@@ -294,8 +300,11 @@ analysis::Status Renderer::setScene(const SceneContent& scene, const LayoutOptio
                 if (skinned.empty()) slot.fileMeshLowest = slot.fileMeshHighest = 0.0f;
             }
         }
+        if (modelled && source.kimono) attachKimono(slot, source.kimono, int(s), reusableCloths);
         m_slots.push_back(std::move(slot));
     }
+    for (auto& [cloth, gpu] : reusableCloths)
+        if (gpu && gpu.use_count() == 1) gpu->release(*m_gl);
     for (auto& unused : reusable)
         if (unused && unused.use_count() == 1) unused->release(*m_gl);
     for (auto& unused : reusablePuppets)
@@ -334,7 +343,7 @@ std::shared_ptr<Renderer::PuppetFigure> Renderer::puppetFigure(const analysis::B
     const bool identity = std::all_of(fits.begin(), fits.end(), [](const Eigen::Matrix4d& m) { return m.isIdentity(0.0); });
     figure->mesh = identity ? std::shared_ptr<const analysis::PuppetMesh>(&shipped, [](const analysis::PuppetMesh*) {})
                             : std::make_shared<const analysis::PuppetMesh>(analysis::fittedPuppetMesh(shipped, body));
-    figure->gpu.upload(*m_gl, *figure->mesh);
+    figure->gpu.upload(*m_gl, *figure->mesh, true);
     const analysis::PuppetMesh& mesh = *figure->mesh;
     std::array<analysis::RigidTransform, analysis::kPuppetJointCount> joint_T_model;
     for (int j = 0; j < analysis::kPuppetJointCount; ++j) joint_T_model[std::size_t(j)] = mesh.bindPoses[std::size_t(j)].inverse();
@@ -402,8 +411,60 @@ std::shared_ptr<Renderer::SkeletonFigure> Renderer::skeletonFigure(const analysi
     return figure;
 }
 
+void Renderer::attachKimono(Slot& slot, const std::shared_ptr<const analysis::KimonoSimulation>& kimono, int slotIndex,
+                            std::vector<std::pair<std::shared_ptr<const analysis::KimonoCloth>, std::shared_ptr<ClothGpu>>>& reusable)
+{
+    const PuppetFigure* puppet = slotPuppet(slot);
+    if (!puppet || !kimono->cloth || kimono->frameCount() != slot.take.frameCount() || kimono->body.parts.size() != slot.body.parts.size())
+        return;
+    // Simulated on the body this take is drawn with, or not shown (the skinned kimono is).
+    for (std::size_t p = 0; p < slot.body.parts.size(); ++p)
+        if (kimono->body.parts[p].name != slot.body.parts[p].name || !kimono->body.parts[p].fit.matrix().isApprox(slot.body.parts[p].fit.matrix(), 0.0))
+            return;
+    slot.kimono = kimono;
+    slot.kimonoPlayer = std::make_unique<analysis::KimonoPlayer>(kimono, std::make_shared<const analysis::Take>(slot.take));
+    for (auto& [cloth, gpu] : reusable)
+        if (gpu && cloth == kimono->cloth) slot.cloth = gpu;
+    if (!slot.cloth) {
+        slot.cloth = std::make_shared<ClothGpu>();
+        slot.cloth->upload(*m_gl, *kimono->cloth, *puppet->mesh);
+    }
+    // The measured points' orbits: the sleeve tips and the hem over the whole take.
+    for (int point = 0; point < analysis::kKimonoPointCount; ++point) {
+        std::vector<glm::vec3> path;
+        path.reserve(std::size_t(kimono->frameCount()));
+        for (Eigen::Index f = 0; f < kimono->frameCount(); ++f)
+            path.emplace_back(float(kimono->points(f, 3 * point)), float(kimono->points(f, 3 * point + 1)), float(kimono->points(f, 3 * point + 2)));
+        GpuMesh orbit;
+        orbit.upload(*m_gl, orbitTubeMesh(path, slot.orbitRadius, kimonoOrbitColour(slotIndex, point)));
+        slot.kimonoOrbits.push_back(std::move(orbit));
+    }
+    updateCloth(slot);
+}
+
+void Renderer::updateCloth(Slot& slot) const
+{
+    slot.clothReady = false;
+    slot.clothUploaded = false;
+    if (!slot.kimonoPlayer) return;
+    const auto particles = slot.kimonoPlayer->frame(slot.frame);
+    if (!particles) return; // the skinned kimono is drawn
+    const std::vector<Eigen::Vector3d>& x = *particles.value();
+    const std::vector<Eigen::Vector3f> normals = analysis::kimonoNormals(*slot.kimono->cloth, x);
+    slot.clothVertices.resize(x.size() * 6);
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        float* out = &slot.clothVertices[6 * i];
+        for (int k = 0; k < 3; ++k) {
+            out[k] = float(x[i][k]);
+            out[3 + k] = normals[i][k];
+        }
+    }
+    slot.clothReady = true;
+}
+
 void Renderer::updatePoses(Slot& slot) const
 {
+    updateCloth(slot);
     const auto poses = analysis::worldPartPoses(slot.body, slot.binding, slot.take, slot.frame);
     slot.take_T_part.resize(poses.size());
     for (std::size_t p = 0; p < poses.size(); ++p) slot.take_T_part[p] = toMatrix(poses[p]);

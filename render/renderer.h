@@ -104,6 +104,9 @@ public:
     /// Displayed world_T_joint of every skeleton joint at the current frame (take root included);
     /// empty when the take has no skeleton.
     std::vector<glm::mat4> displayedJointTransforms(int takeSlot, const Camera& camera) const;
+    /// Whether take `takeSlot`'s puppet is dressed in its simulated kimono now (TakeSlot::kimono
+    /// fits the take and body, and the cloth of the current frame is ready).
+    bool clothDrawn(int takeSlot) const;
     /// Whether take `takeSlot`'s puppet / skeleton is drawn under the current visibility.
     bool puppetDrawn(int takeSlot) const;
     bool skeletonDrawn(int takeSlot) const;
@@ -148,6 +151,14 @@ private:
     std::shared_ptr<SkeletonFigure> skeletonFigure(const analysis::SkeletalMotion& motion,
                                                    std::vector<std::shared_ptr<SkeletonFigure>>& reusable);
     void updatePoses(Slot& slot) const;
+    /// The slot's cloth at its frame (positions and normals for the GPU); not ready when the slot
+    /// has none or its player fails (the skinned kimono is drawn then).
+    void updateCloth(Slot& slot) const;
+    /// Dresses the slot's modelled puppet in `kimono` when it was simulated for this take and
+    /// body: its player, its GPU buffers (reused from `reusable` for the same cloth) and the
+    /// orbits of its measured points.
+    void attachKimono(Slot& slot, const std::shared_ptr<const analysis::KimonoSimulation>& kimono, int slotIndex,
+                      std::vector<std::pair<std::shared_ptr<const analysis::KimonoCloth>, std::shared_ptr<ClothGpu>>>& reusable);
     /// Height (cm) the view is framed for: a puppet's, or the tallest skeleton drawn.
     float framedHeight() const;
     /// What a pass draws: colours, part IDs (picking), or depths seen from the key light.

@@ -231,6 +231,10 @@ void Renderer::drawScene(const Camera& camera, QSize size, bool partIds)
             setModel(root);
             setColour(glm::vec3(1.0f), true, true);
             for (const GpuMesh& orbit : slot.orbits) orbit.draw(gl);
+            // The kimono's measured points, while the puppet wears its simulated cloth.
+            const bool kimonoOrbits = clothDrawn(int(s)) || (!m_visibility.puppet && slot.kimono);
+            if (kimonoOrbits)
+                for (const GpuMesh& orbit : slot.kimonoOrbits) orbit.draw(gl);
             const float pointRadius = std::max(m_layout.orbitPointRadius, 2.5f * slot.orbitRadius);
             for (std::size_t k = 0; k < slot.sensorFirstChannel.size(); ++k) {
                 const glm::vec3 position = sensorPosition(slot.take, slot.frame, slot.sensorFirstChannel[k]);
@@ -238,6 +242,14 @@ void Renderer::drawScene(const Camera& camera, QSize size, bool partIds)
                 setColour(orbitColour(int(s), int(k)), false, true);
                 m_sphere.draw(gl);
             }
+            if (kimonoOrbits && slot.frame < slot.kimono->frameCount())
+                for (int point = 0; point < analysis::kKimonoPointCount; ++point) {
+                    const glm::vec3 position(float(slot.kimono->points(slot.frame, 3 * point)), float(slot.kimono->points(slot.frame, 3 * point + 1)),
+                                             float(slot.kimono->points(slot.frame, 3 * point + 2)));
+                    setModel(root * glm::scale(glm::translate(glm::mat4(1.0f), position), glm::vec3(pointRadius)));
+                    setColour(kimonoOrbitColour(int(s), point), false, true);
+                    m_sphere.draw(gl);
+                }
             gl.glDepthRangef(0.0f, 1.0f);
         }
     }
@@ -290,7 +302,25 @@ void Renderer::drawPuppet(const Slot& slot, int takeSlot, const glm::mat4& root,
     gl.glUniform4fv(m_skinUniforms.jointDual, analysis::kPuppetJointCount, glm::value_ptr(q.dual[0]));
     const auto partOf = analysis::puppetJointPartIndices(slot.body);
     gl.glUniform1iv(m_skinUniforms.partOfJoint, analysis::kPuppetJointCount, partOf.data());
-    figure.gpu.draw(gl);
+    if (!clothDrawn(takeSlot)) {
+        figure.gpu.draw(gl);
+        m_program->bind();
+        return;
+    }
+    // Dressed in the simulated kimono: the puppet without its skinned skirt and sleeves, then
+    // the cloth, whose positions are in take coordinates already (every joint at the identity;
+    // each particle keeps its hanging joint for the ID pass).
+    figure.gpu.drawUnderCloth(gl);
+    if (!slot.clothUploaded) {
+        slot.cloth->update(gl, slot.clothVertices);
+        slot.clothUploaded = true;
+    }
+    std::array<glm::vec4, analysis::kPuppetJointCount> identityReal, identityDual;
+    identityReal.fill(glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+    identityDual.fill(glm::vec4(0.0f));
+    gl.glUniform4fv(m_skinUniforms.jointReal, analysis::kPuppetJointCount, glm::value_ptr(identityReal[0]));
+    gl.glUniform4fv(m_skinUniforms.jointDual, analysis::kPuppetJointCount, glm::value_ptr(identityDual[0]));
+    slot.cloth->draw(gl);
     m_program->bind();
 }
 

@@ -8,6 +8,7 @@
 
 #include "analysis/body/performer_body.h"
 #include "analysis/core/puppet_layout.h"
+#include "analysis/cloth/kimono_mesh.h"
 
 #include <glm/glm.hpp>
 
@@ -91,6 +92,16 @@ struct Renderer::Slot {
     float puppetLowest = 0.0f, puppetHighest = 0.0f;     ///< cm, at frame 0
     float skeletonLowest = 0.0f, skeletonHighest = 0.0f; ///< cm, at frame 0
     float fileMeshLowest = 0.0f, fileMeshHighest = 0.0f; ///< cm, the file's mesh at frame 0 (when the take has one)
+    /// The simulated kimono (TakeSlot::kimono) when it fits this take and body; its player
+    /// (the cloth at `frame`, stepped on during playback), the particles' positions and normals
+    /// at `frame` (take coordinates) and whether they reached the GPU.
+    std::shared_ptr<const analysis::KimonoSimulation> kimono;
+    std::unique_ptr<analysis::KimonoPlayer> kimonoPlayer;
+    std::vector<float> clothVertices;
+    bool clothReady = false;
+    mutable bool clothUploaded = false;
+    std::shared_ptr<ClothGpu> cloth;     ///< shared with the next scene when it shows the same cloth
+    std::vector<GpuMesh> kimonoOrbits;   ///< the measured points' paths, take coordinates
 };
 
 struct Renderer::SkeletonFigure {

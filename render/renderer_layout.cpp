@@ -82,6 +82,12 @@ bool Renderer::skeletonDrawn(int takeSlot) const
     return m_visibility.puppet && slot.take.skeleton && m_visibility.figures[std::size_t(takeSlot)] != FigureStyle::Puppet;
 }
 
+bool Renderer::clothDrawn(int takeSlot) const
+{
+    const Slot& slot = m_slots.at(std::size_t(takeSlot));
+    return puppetDrawn(takeSlot) && slot.cloth && slot.clothReady && slotPuppet(slot) != nullptr;
+}
+
 bool Renderer::puppetDrawn(int takeSlot) const
 {
     return m_visibility.puppet && (!skeletonDrawn(takeSlot) || m_visibility.figures[std::size_t(takeSlot)] == FigureStyle::PuppetAndSkeleton);

@@ -121,6 +121,13 @@ glm::vec3 orbitColour(int slotIndex, int sensorIndex)
     return colour;
 }
 
+glm::vec3 kimonoOrbitColour(int slotIndex, int point)
+{
+    glm::vec3 colour = point < 2 ? glm::vec3(0.80f, 0.10f, 0.25f) : glm::vec3(0.55f, 0.25f, 0.50f);
+    if (slotIndex > 0) colour *= 0.7f;
+    return colour;
+}
+
 glm::vec3 axisColour(int axis)
 {
     switch (axis) {

@@ -4,6 +4,7 @@
 /// for the partner. Plain data and the CPU-side layout rules; the Renderer uploads it.
 
 #include "analysis/body/body_description.h"
+#include "analysis/cloth/kimono_cloth.h"
 #include "analysis/core/pose.h"
 #include "analysis/core/result.h"
 #include "analysis/core/take.h"
@@ -36,6 +37,11 @@ struct TakeSlot {
     /// take's skeleton, analysis/body/body_fit.h); null: SceneContent::body. Drawn from its
     /// primitives (SceneContent::partMeshes replace the shared body's only).
     std::shared_ptr<const analysis::BodyDescription> body = nullptr;
+    /// The take's kimono simulated as cloth (analysis/cloth) on the body the take is drawn with:
+    /// the modelled puppet is then dressed in it (its skinned skirt and sleeves left out) and the
+    /// orbits show the sleeve tips and the hem. Null, or simulated for another take or body: the
+    /// skinned kimono.
+    std::shared_ptr<const analysis::KimonoSimulation> kimono = nullptr;
 };
 
 struct SceneContent {
@@ -119,6 +125,10 @@ glm::mat4 toMatrix(const analysis::RigidTransform& a_T_b);
 
 /// Display colour of the orbit of sensor `sensorIndex` (0..) of take `slotIndex`.
 glm::vec3 orbitColour(int slotIndex, int sensorIndex);
+
+/// Display colour of the orbit of the kimono's measured point `point` (analysis::KimonoPoint) of
+/// take `slotIndex`: the sleeve tips crimson, the hem's points plum.
+glm::vec3 kimonoOrbitColour(int slotIndex, int point);
 
 /// Colours of the motion axis bars: x red, y green, z blue.
 glm::vec3 axisColour(int axis);

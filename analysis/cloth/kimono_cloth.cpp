@@ -342,10 +342,16 @@ Result<KimonoCloth> makeKimonoCloth(const BodyDescription& body, const ClothPara
 
 Result<KimonoSimulation> simulateKimono(const Take& take, const ClothParameters& parameters, const RunControl& control)
 {
+    return simulateKimono(take, take.skeleton ? bodyForTake(defaultBodyDescription(), take) : defaultBodyDescription(), parameters, control);
+}
+
+Result<KimonoSimulation> simulateKimono(const Take& take, const BodyDescription& body, const ClothParameters& parameters,
+                                        const RunControl& control)
+{
     if (auto status = validate(parameters); !status) return status.error();
     if (take.frameCount() < 1 || !(take.rateHz > 0.0)) return makeError(ErrorCode::InvalidArgument, take.displayName() + ": the kimono needs frames and a rate");
     KimonoSimulation simulation;
-    simulation.body = take.skeleton ? bodyForTake(defaultBodyDescription(), take) : defaultBodyDescription();
+    simulation.body = body;
     auto parts = holderParts(simulation.body);
     if (!parts) return parts.error();
     auto cloth = makeKimonoCloth(simulation.body, parameters);

@@ -113,6 +113,10 @@ Result<std::array<RigidTransform, 3>> kimonoHolderPoses(const BodyDescription& b
 /// Simulates the kimono over every frame of `take` (a take with the puppet's parts; a skeleton
 /// take's puppet is fitted to it: bodyForTake). Reports progress and stops when cancelled.
 Result<KimonoSimulation> simulateKimono(const Take& take, const ClothParameters& parameters = {}, const RunControl& control = {});
+/// The same on a given body (the one the view draws the take with: the default puppet, or the
+/// puppet fitted to the take's skeleton, bodyForTake; it needs the shoulder and the arms).
+Result<KimonoSimulation> simulateKimono(const Take& take, const BodyDescription& body, const ClothParameters& parameters = {},
+                                        const RunControl& control = {});
 
 /// The cloth's particles (world, cm) at `frame`, rebuilt from the checkpoint before it: the same
 /// values as simulating from frame 0.

@@ -8,6 +8,7 @@
 ///                                                      \-> motion axes, phase, gains (5)
 ///   decompose -> emotion weight (4.5); motion axes -> design (5.5): cheap, run on demand.
 
+#include "analysis/cloth/kimono_cloth.h"
 #include "analysis/core/corpus.h"
 #include "analysis/core/result.h"
 #include "analysis/core/run_control.h"
@@ -181,6 +182,15 @@ struct TakeAxis {
 StageKey takeAxisKey(StageKey take, const AxisParameters& parameters);
 /// On the default body, with the parameters' axis options (as the motion-axes stage).
 Result<TakeAxis> runTakeAxis(const Take& take, const AxisParameters& parameters, const RunControl& control = {});
+
+// ---- the kimono as cloth of one take (thesis 6, future work), on demand: what the 3D view draws --
+
+/// Keyed on the take's content (takeKey), the body it is drawn with (each part's fit) and every
+/// cloth parameter, so each take's cloth is simulated once per body and parameters.
+StageKey kimonoKey(StageKey take, const BodyDescription& body, const ClothParameters& parameters);
+/// The take's kimono simulated on `body` (simulateKimono), the error naming the take.
+Result<KimonoSimulation> runKimono(const Take& take, const BodyDescription& body, const ClothParameters& parameters,
+                                   const RunControl& control = {});
 
 // ---- emotion weight and design (thesis 4.5, 5.5): cheap, computed on demand -------------------
 
