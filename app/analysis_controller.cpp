@@ -1,6 +1,9 @@
 #include "app/analysis_controller.h"
 
+#include "analysis/body/body_description.h"
+#include "analysis/body/body_fit.h"
 #include "analysis/core/puppet_layout.h"
+#include "analysis/core/skeleton.h"
 #include "analysis/io/atomic_file.h"
 #include "analysis/pipeline/parameters_json.h"
 #include "analysis/report/html_report.h"
@@ -36,6 +39,8 @@ QString AnalysisController::slotTitle(int slot)
     case kTakeAxisBSlot: return tr("Motion axis of take B");
     case kNormalisedBodySlot: return tr("Normalised take as one body");
     case kWeightedSlot: return tr("Weighted take");
+    case kKimonoSlot: return tr("Kimono of take A");
+    case kKimonoBSlot: return tr("Kimono of take B");
     }
     return QString();
 }
@@ -69,6 +74,7 @@ AnalysisController::AnalysisController(Document& document, QObject* parent, std:
     });
     connect(&document, &Document::selectionChanged, this, [this](TakeSlot slot) {
         requestTakeAxis(slot);
+        requestKimono(slot);
         if (slot != TakeSlot::A) return;
         resolveCell();
         publishNormalised();
@@ -101,6 +107,8 @@ void AnalysisController::corpusChanged()
     update();
     requestTakeAxis(TakeSlot::A);
     requestTakeAxis(TakeSlot::B);
+    requestKimono(TakeSlot::A);
+    requestKimono(TakeSlot::B);
 }
 
 void AnalysisController::update()
@@ -376,6 +384,63 @@ void AnalysisController::requestTakeAxis(TakeSlot slot)
                              if (!axis) return axis.error();
                              return erase<pl::TakeAxis>(std::make_shared<const pl::TakeAxis>(std::move(axis).value()));
                          });
+}
+
+analysis::BodyDescription AnalysisController::viewBody(const analysis::Take& take)
+{
+    return take.skeleton ? analysis::bodyForTake(analysis::defaultBodyDescription(), take) : analysis::defaultBodyDescription();
+}
+
+void AnalysisController::setKimonoShown(bool shown)
+{
+    if (shown == m_kimonoShown) return;
+    m_kimonoShown = shown;
+    requestKimono(TakeSlot::A);
+    requestKimono(TakeSlot::B);
+}
+
+analysis::Status AnalysisController::setClothParameters(const analysis::ClothParameters& parameters)
+{
+    if (auto status = analysis::validate(parameters); !status) return status;
+    m_clothParameters = parameters;
+    requestKimono(TakeSlot::A);
+    requestKimono(TakeSlot::B);
+    return analysis::okStatus();
+}
+
+void AnalysisController::requestKimono(TakeSlot slot)
+{
+    const int id = kimonoSlot(slot);
+    const TakePointer take = m_document.selectedTake(slot);
+    TakePointer& asked = m_kimonoTakes[slot == TakeSlot::A ? 0 : 1];
+    if (!m_kimonoShown || !take || !analysis::hasPuppetLayout(*take)) {
+        asked.reset();
+        m_scheduler->clear(id);
+        return;
+    }
+    asked = take;
+    // The key: the take's content, its skeleton's bones (the body is fitted to them) and the
+    // cloth parameters; the body itself is fitted in the job, off the GUI thread.
+    pl::KeyBuilder key("view-kimono");
+    key.add(pl::kimonoKey(pl::takeKey(*take), analysis::defaultBodyDescription(), m_clothParameters));
+    if (take->skeleton && take->skeleton->skeleton) {
+        const analysis::Skeleton& skeleton = *take->skeleton->skeleton;
+        key.add(std::int64_t(skeleton.joints.size()));
+        for (const auto& joint : skeleton.joints) key.add(joint.name).add(joint.offset.x()).add(joint.offset.y()).add(joint.offset.z());
+        for (const Eigen::Vector3d& t : take->skeleton->staticTranslations) key.add(t.x()).add(t.y()).add(t.z());
+    }
+    const analysis::ClothParameters parameters = m_clothParameters;
+    m_scheduler->request(id, key.key(), [take, parameters](const analysis::RunControl& control) -> analysis::Result<StageValue> {
+        auto kimono = pl::runKimono(*take, viewBody(*take), parameters, control);
+        if (!kimono) return kimono.error();
+        return erase<analysis::KimonoSimulation>(std::make_shared<const analysis::KimonoSimulation>(std::move(kimono).value()));
+    });
+}
+
+pl::Shared<analysis::KimonoSimulation> AnalysisController::kimono(TakeSlot slot, const TakePointer& take) const
+{
+    if (!take || m_kimonoTakes[slot == TakeSlot::A ? 0 : 1] != take) return nullptr;
+    return m_scheduler->result<analysis::KimonoSimulation>(kimonoSlot(slot));
 }
 
 pl::Shared<pl::TakeAxis> AnalysisController::takeAxis(TakeSlot slot, const TakePointer& take) const

@@ -41,9 +41,12 @@ public:
         kTakeAxisSlot = 10,
         kTakeAxisBSlot = 11,
         kNormalisedBodySlot = 12,
-        kWeightedSlot = 13
+        kWeightedSlot = 13,
+        kKimonoSlot = 14,
+        kKimonoBSlot = 15
     };
     static int takeAxisSlot(TakeSlot slot) { return slot == TakeSlot::A ? kTakeAxisSlot : kTakeAxisBSlot; }
+    static int kimonoSlot(TakeSlot slot) { return slot == TakeSlot::A ? kKimonoSlot : kKimonoBSlot; }
     static QString slotTitle(int slot);
 
     /// `executor` null: the thread pool (tests pass a manual one).
@@ -63,6 +66,22 @@ public:
     /// asked for and that axis is computed for the current axis parameters (never another
     /// take's or older parameters').
     analysis::pipeline::Shared<analysis::pipeline::TakeAxis> takeAxis(TakeSlot slot, const TakePointer& take) const;
+    /// The kimono as cloth (analysis/cloth) of the shown takes A and B: scheduler jobs keyed by
+    /// each take's content, the body it is drawn with and the cloth parameters, run while
+    /// `shown` (the 3D view's Cloth box), cleared when not.
+    void setKimonoShown(bool shown);
+    bool kimonoShown() const { return m_kimonoShown; }
+    /// The cloth parameters (the 3D view's cloth settings); invalid ones are refused with the
+    /// message of analysis::validate.
+    analysis::Status setClothParameters(const analysis::ClothParameters& parameters);
+    const analysis::ClothParameters& clothParameters() const { return m_clothParameters; }
+    /// The kimono of `take` shown in `slot`: null unless it is the take the slot's kimono was
+    /// asked for and it is simulated for the current cloth parameters.
+    analysis::pipeline::Shared<analysis::KimonoSimulation> kimono(TakeSlot slot, const TakePointer& take) const;
+    /// The body the 3D view draws a take with (and its kimono is simulated on): the puppet,
+    /// fitted to the take's skeleton when it has one.
+    static analysis::BodyDescription viewBody(const analysis::Take& take);
+
     /// The keys of every stage for the document's corpus and parameters.
     analysis::pipeline::ChainKeys keys() const { return m_keys; }
 
@@ -117,6 +136,7 @@ private:
     void publishNormalised();
     void synthesiseWeighted();
     void requestTakeAxis(TakeSlot slot);
+    void requestKimono(TakeSlot slot);
     /// Publishes take A's computed motion axis as the "axis" live take.
     void publishAxis();
 
@@ -142,6 +162,9 @@ private:
     QString m_pendingWeightedLabel;
     QString m_pendingNormalisedLabel;
     QString m_pendingNormalisedGhost;
+    TakePointer m_kimonoTakes[2]; ///< the takes the kimono slots were last asked for
+    bool m_kimonoShown = false;
+    analysis::ClothParameters m_clothParameters;
     TakePointer m_axisTakes[2]; ///< the takes the axis slots were last asked for
     QString m_axisLabels[2];    ///< and their labels then (what the "axis" take's label names)
 };

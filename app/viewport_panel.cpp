@@ -17,6 +17,18 @@
 #include <QStandardItemModel>
 #include <QStringList>
 #include <QVBoxLayout>
+#include <QToolButton>
+#include <QAction>
+#include <QDialog>
+#include <QDialogButtonBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QMessageBox>
+#include <QPushButton>
+
+#include <map>
+#include <string>
+#include <tuple>
 
 #include <utility>
 
@@ -52,6 +64,21 @@ ViewportPanel::ViewportPanel(Document& document, AnalysisController& analysis, Q
     m_follow->setToolTip(tr("Carry the camera along the floor with the figures as the take plays (a walking take "
                             "stays in frame); orbit and zoom still work around them"));
     connect(m_follow, &QCheckBox::toggled, m_viewport, &widgets::ViewportWidget::setFollow);
+    m_cloth = new QCheckBox(tr("Cloth"), this);
+    m_cloth->setObjectName("showCloth");
+    m_cloth->setToolTip(tr("Dress the puppet in its kimono simulated as cloth: the skirt and the long sleeves swing, lag and "
+                           "settle with the motion (simulated in the background for each take shown; the kimono moving with "
+                           "the body shows until then). Off: the kimono moves with the body. The orbits then include the "
+                           "sleeve tips and the hem."));
+    connect(m_cloth, &QCheckBox::toggled, this, [this](bool on) {
+        m_analysis.setKimonoShown(on);
+        refreshAxes();
+        updateGapLabels();
+    });
+    m_clothSettings = new QAction(tr("Cloth Settings..."), this);
+    m_clothSettings->setObjectName("clothSettings");
+    m_clothSettings->setToolTip(tr("The cloth's mass per area, stiffness, damping, air drag, substeps and the margin it keeps off the body"));
+    connect(m_clothSettings, &QAction::triggered, this, [this] { editClothSettings(); });
     const auto visibility = m_viewport->visibility();
     m_puppet->setChecked(visibility.puppet);
     m_axis->setChecked(visibility.axis);
@@ -85,6 +112,11 @@ ViewportPanel::ViewportPanel(Document& document, AnalysisController& analysis, Q
         connect(box, &QCheckBox::toggled, this, &ViewportPanel::applyVisibility);
     }
     flow->addWidget(m_follow);
+    flow->addWidget(m_cloth);
+    auto* clothButton = new QToolButton(toggles);
+    clothButton->setDefaultAction(m_clothSettings);
+    clothButton->setObjectName("clothSettingsButton");
+    flow->addWidget(clothButton);
     for (int slot = 0; slot < 2; ++slot) {
         auto* box = new QComboBox(this);
         box->setObjectName(slot == 0 ? "figureA" : "figureB");
@@ -131,7 +163,11 @@ ViewportPanel::ViewportPanel(Document& document, AnalysisController& analysis, Q
     connect(&document, &Document::corpusChanged, this, &ViewportPanel::rebuildScene);
     // An axis slot that finished, restarted for other inputs or was cleared.
     connect(&analysis.scheduler(), &StageScheduler::stateChanged, this, [this](int slot) {
-        if (slot == AnalysisController::kTakeAxisSlot || slot == AnalysisController::kTakeAxisBSlot) refreshAxes();
+        if (slot == AnalysisController::kTakeAxisSlot || slot == AnalysisController::kTakeAxisBSlot ||
+            slot == AnalysisController::kKimonoSlot || slot == AnalysisController::kKimonoBSlot) {
+            refreshAxes();
+            updateGapLabels();
+        }
     });
     connect(&document, &Document::currentTimeChanged, m_viewport, &widgets::ViewportWidget::setTime);
     // A body part (face, torso, ...) selects the graphs of the take part that drives it.
@@ -158,6 +194,7 @@ void ViewportPanel::rebuildScene()
 {
     const auto takes = shownTakes(m_document);
     m_drawnAxes.clear();
+    m_drawnKimonos.clear();
     if (takes.empty()) return;
     render::SceneContent scene;
     scene.body = analysis::defaultBodyDescription();
@@ -171,6 +208,10 @@ void ViewportPanel::rebuildScene()
         const auto axis = m_analysis.takeAxis(slot, take);
         if (axis) shown.world_T_axis = axis->world_T_axis;
         m_drawnAxes.push_back(axis);
+        // The kimono of this very take, body and cloth parameters, or the skinned one until then.
+        const auto kimono = m_analysis.kimono(slot, take);
+        shown.kimono = kimono;
+        m_drawnKimonos.push_back(kimono);
         scene.takes.push_back(std::move(shown));
     }
     m_viewport->setScene(std::move(scene));
@@ -181,9 +222,11 @@ void ViewportPanel::rebuildScene()
 void ViewportPanel::refreshAxes()
 {
     const auto takes = shownTakes(m_document);
-    if (takes.size() != m_drawnAxes.size()) return rebuildScene();
+    if (takes.size() != m_drawnAxes.size() || takes.size() != m_drawnKimonos.size()) return rebuildScene();
     for (std::size_t i = 0; i < takes.size(); ++i)
-        if (m_analysis.takeAxis(takes[i].first, takes[i].second) != m_drawnAxes[i]) return rebuildScene();
+        if (m_analysis.takeAxis(takes[i].first, takes[i].second) != m_drawnAxes[i] ||
+            m_analysis.kimono(takes[i].first, takes[i].second) != m_drawnKimonos[i])
+            return rebuildScene();
 }
 
 void ViewportPanel::applyVisibility()
@@ -244,8 +287,74 @@ void ViewportPanel::updateGapLabels()
                 lines << tr("%1: the take's file carries no skinned mesh: its skeleton is shown")
                              .arg(slot == 0 ? QStringLiteral("A") : QStringLiteral("B"));
     }
+    // While a shown take's cloth is simulated, the view says what it shows meanwhile.
+    if (m_cloth->isChecked())
+        for (const auto& [slot, take] : shown) {
+            if (render::FigureStyle(m_figures[int(slot)]->currentData().toInt()) == render::FigureStyle::Skeleton) continue;
+            const int job = AnalysisController::kimonoSlot(slot);
+            const QString name = slot == TakeSlot::A ? QStringLiteral("A") : QStringLiteral("B");
+            if (m_analysis.kimono(slot, take)) continue;
+            if (m_analysis.scheduler().state(job) == SlotState::Failed)
+                lines << tr("%1: the kimono could not be simulated (%2): the kimono moving with the body is shown")
+                             .arg(name, m_analysis.scheduler().error(job));
+            else
+                lines << tr("%1: simulating the kimono's cloth: the kimono moving with the body is shown until it is ready").arg(name);
+        }
     m_gapLabel->setText(lines.join(QLatin1Char('\n')));
     m_gapLabel->setVisible(!lines.isEmpty());
+}
+
+bool ViewportPanel::editClothSettings()
+{
+    QDialog dialog(this);
+    dialog.setObjectName("clothSettingsDialog");
+    dialog.setWindowTitle(tr("Cloth Settings"));
+    auto* form = new QFormLayout(&dialog);
+    const analysis::ClothParameters current = m_analysis.clothParameters();
+    // What each parameter means; its range is analysis's one table (clothParameterLimits).
+    const std::map<std::string, std::tuple<QString, int, QString>> described{
+        {"massPerArea", {tr("Mass per area (g/cm²)"), 5, tr("Silk crepe (chirimen) is about 0.015 g/cm² (150 g/m²)")}},
+        {"stretchCompliance", {tr("Stretch compliance (cm/dyn)"), 6, tr("The inverse of the stiffness of the cloth's threads: 0 is inextensible")}},
+        {"bendCompliance", {tr("Bend compliance (cm/dyn)"), 6, tr("How easily the cloth folds: larger is softer")}},
+        {"damping", {tr("Damping (1/s)"), 3, tr("The velocity relative to the body lost per second (the cloth's internal friction)")}},
+        {"drag", {tr("Air drag (1/s)"), 3, tr("The velocity lost to the air per second")}},
+        {"substepRate", {tr("Substeps per second (Hz)"), 0, tr("Simulation steps per second of take (at least one per frame): more is stiffer and slower")}},
+        {"collisionMargin", {tr("Margin off the body (cm)"), 2, tr("How far the cloth keeps off the puppet's torso and arms")}},
+        {"settleSeconds", {tr("Settling before the take (s)"), 2,
+                           tr("Seconds the first pose is held before frame 0, so that the kimono hangs at rest when the take starts")}},
+    };
+    const auto& fields = analysis::clothParameterLimits();
+    std::vector<QDoubleSpinBox*> boxes;
+    for (const analysis::ClothParameterLimit& field : fields) {
+        const auto found = described.find(field.name);
+        const auto [label, decimals, tip] = found != described.end() ? found->second : std::tuple<QString, int, QString>{QString::fromLatin1(field.name), 6, QString()};
+        auto* box = new QDoubleSpinBox(&dialog);
+        box->setObjectName(QString::fromLatin1(field.name));
+        box->setDecimals(decimals);
+        box->setRange(field.low, field.high);
+        box->setValue(current.*(field.member));
+        box->setToolTip(tip);
+        form->addRow(label, box);
+        boxes.push_back(box);
+    }
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel | QDialogButtonBox::RestoreDefaults, &dialog);
+    connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
+    connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
+    connect(buttons->button(QDialogButtonBox::RestoreDefaults), &QPushButton::clicked, &dialog, [&] {
+        const analysis::ClothParameters defaults;
+        for (std::size_t i = 0; i < fields.size(); ++i) boxes[i]->setValue(defaults.*(fields[i].member));
+    });
+    form->addRow(buttons);
+    if (dialog.exec() != QDialog::Accepted) return false;
+    analysis::ClothParameters chosen;
+    for (std::size_t i = 0; i < fields.size(); ++i) chosen.*(fields[i].member) = boxes[i]->value();
+    if (auto status = m_analysis.setClothParameters(chosen); !status) {
+        QMessageBox::warning(this, tr("Cloth Settings"), QString::fromStdString(status.error().message));
+        return false;
+    }
+    refreshAxes();
+    updateGapLabels();
+    return true;
 }
 
 } // namespace bunraku::app

@@ -66,6 +66,15 @@ signals:
 public:
     /// The figure shown for take A (0) or B (1): the combo box in the panel's tool row.
     QComboBox* figureBox(int slot) const { return m_figures[slot]; }
+    /// "Cloth": the puppet dressed in its kimono simulated as cloth (AnalysisController's kimono
+    /// jobs), off: the skinned kimono. "Cloth Settings..." opens the cloth's parameters.
+    QCheckBox* clothBox() const { return m_cloth; }
+    QAction* clothSettingsAction() const { return m_clothSettings; }
+    /// Per take in the scene: the kimono drawn with it, null while it is being simulated (or
+    /// with the Cloth box off).
+    const std::vector<analysis::pipeline::Shared<analysis::KimonoSimulation>>& drawnKimonos() const { return m_drawnKimonos; }
+    /// Opens the cloth settings dialog (modal); true when its values were applied.
+    bool editClothSettings();
     /// A line under the tool bar, one sentence per shown take whose skeleton is drawn and differs
     /// from its 24 channels (a derived take: analysis::noticeableSkeletonGap), saying by how much;
     /// hidden when there is none.
@@ -73,7 +82,7 @@ public:
 
 private:
     void rebuildScene();
-    /// Rebuilds the scene when an axis to draw is no longer the one drawn.
+    /// Rebuilds the scene when an axis or a kimono to draw is no longer the one drawn.
     void refreshAxes();
     void applyVisibility();
     /// Shows or hides the gap labels for the figures now chosen.
@@ -91,6 +100,8 @@ private:
     QCheckBox* m_shadows = nullptr;
     QCheckBox* m_partner = nullptr;
     QCheckBox* m_follow = nullptr;
+    QCheckBox* m_cloth = nullptr;
+    QAction* m_clothSettings = nullptr;
     QAction* m_frameAll = nullptr;
     QAction* m_frameSelected = nullptr;
     QAction* m_resetCamera = nullptr;
@@ -104,6 +115,7 @@ private:
     };
     GapMemo m_gapMemo[2];
     std::vector<analysis::pipeline::Shared<analysis::pipeline::TakeAxis>> m_drawnAxes;
+    std::vector<analysis::pipeline::Shared<analysis::KimonoSimulation>> m_drawnKimonos;
 };
 
 } // namespace bunraku::app

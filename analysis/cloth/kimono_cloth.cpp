@@ -250,12 +250,19 @@ Status validate(const ClothParameters& p)
                                                               std::to_string(high) + ", got " + std::to_string(value));
         return okStatus();
     };
-    for (const Status& status : {check("massPerArea", p.massPerArea, 1e-4, 1.0), check("stretchCompliance", p.stretchCompliance, 0.0, 1.0),
-                                 check("bendCompliance", p.bendCompliance, 0.0, 1.0), check("damping", p.damping, 0.0, 100.0),
-                                 check("drag", p.drag, 0.0, 100.0), check("substepRate", p.substepRate, 30.0, 10000.0),
-                                 check("collisionMargin", p.collisionMargin, 0.0, 5.0), check("settleSeconds", p.settleSeconds, 0.0, 10.0)})
-        if (!status) return status;
+    for (const ClothParameterLimit& limit : clothParameterLimits())
+        if (auto status = check(limit.name, p.*(limit.member), limit.low, limit.high); !status) return status;
     return okStatus();
+}
+
+const std::vector<ClothParameterLimit>& clothParameterLimits()
+{
+    static const std::vector<ClothParameterLimit> limits{
+        {"massPerArea", &ClothParameters::massPerArea, 1e-4, 1.0},       {"stretchCompliance", &ClothParameters::stretchCompliance, 0.0, 1.0},
+        {"bendCompliance", &ClothParameters::bendCompliance, 0.0, 1.0},  {"damping", &ClothParameters::damping, 0.0, 100.0},
+        {"drag", &ClothParameters::drag, 0.0, 100.0},                    {"substepRate", &ClothParameters::substepRate, 30.0, 10000.0},
+        {"collisionMargin", &ClothParameters::collisionMargin, 0.0, 5.0}, {"settleSeconds", &ClothParameters::settleSeconds, 0.0, 10.0}};
+    return limits;
 }
 
 const char* kimonoPointName(KimonoPoint point) { return kPointNames[int(point)]; }

@@ -45,6 +45,17 @@ struct ClothParameters {
     double settleSeconds = 0.5;       ///< s of the first pose held before frame 0, so frame 0 hangs at rest
 };
 
+/// One parameter's name (as `cloth.<name>` in errors and `--cloth-<name>` spelt in dashes on the
+/// command line), the member it sets and the closed range validate accepts.
+struct ClothParameterLimit {
+    const char* name;
+    double ClothParameters::*member;
+    double low, high;
+};
+/// Every parameter with its range, in ClothParameters order: the one table of limits that
+/// validate, the command line and the 3D view's cloth settings use.
+const std::vector<ClothParameterLimit>& clothParameterLimits();
+
 /// Range checks of the parameters (the error names the parameter and its range).
 Status validate(const ClothParameters& parameters);
 

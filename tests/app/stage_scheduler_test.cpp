@@ -9,11 +9,14 @@
 #include "analysis/axis/axis_channels.h"
 #include "analysis/axis/inertia_axis.h"
 #include "analysis/body/body_description.h"
+#include "analysis/cloth/kimono_cloth.h"
 #include "analysis/synth/demo_corpus.h"
 
 #include <catch2/catch.hpp>
 
+#include <QCheckBox>
 #include <QCoreApplication>
+#include <QLabel>
 
 #include <algorithm>
 #include <deque>
@@ -360,4 +363,69 @@ TEST_CASE("destroying the scheduler does not wait for a job that ignores cancell
     executor->runNext(); // the job ends after its scheduler is gone: told to stop, its result dropped
     CHECK(ran);
     CHECK(stopRequested);
+}
+
+TEST_CASE("the 3D view dresses each shown take in its kimono simulated by the scheduler and never in a stale one",
+          "[app][scheduler][viewport][kimono]")
+{
+    auto executor = std::make_shared<ManualExecutor>();
+    Document document;
+    AnalysisController analysis(document, nullptr, executor);
+    ViewportPanel panel(document, analysis);
+    document.setCorpus(analysis::synth::generateDemoCorpus().corpus, QStringLiteral("demo"));
+    document.selectTake(TakeSlot::A, Document::corpusTakeId(1));
+    document.selectTake(TakeSlot::B, Document::corpusTakeId(7));
+    executor->drain();
+    auto& scheduler = analysis.scheduler();
+    // Off by default: no cloth is simulated.
+    CHECK_FALSE(panel.clothBox()->isChecked());
+    CHECK(scheduler.starts(AnalysisController::kKimonoSlot) == 0);
+    REQUIRE(panel.drawnKimonos().size() == 2);
+    CHECK(panel.drawnKimonos()[0] == nullptr);
+
+    // On: the skinned kimono shows (and the view says so) until the jobs finish.
+    panel.clothBox()->setChecked(true);
+    CHECK(panel.drawnKimonos()[0] == nullptr);
+    CHECK(panel.skeletonGapLabel()->text().contains(QStringLiteral("A: simulating the kimono")));
+    CHECK(panel.skeletonGapLabel()->text().contains(QStringLiteral("B: simulating the kimono")));
+    executor->drain();
+    REQUIRE(panel.drawnKimonos().size() == 2);
+    REQUIRE(panel.drawnKimonos()[0]);
+    REQUIRE(panel.drawnKimonos()[1]);
+    CHECK_FALSE(panel.skeletonGapLabel()->text().contains(QStringLiteral("simulating")));
+    // The same cloth as the analysis function on the take and the body it is drawn with.
+    const auto takeA = document.selectedTake(TakeSlot::A);
+    const auto truth = analysis::simulateKimono(*takeA, analysis::defaultBodyDescription());
+    REQUIRE(truth.ok());
+    CHECK((panel.drawnKimonos()[0]->points.array() == truth->points.array()).all());
+    CHECK(scheduler.starts(AnalysisController::kKimonoSlot) == 1);
+    CHECK(scheduler.starts(AnalysisController::kKimonoBSlot) == 1);
+
+    // Another take A: its cloth is simulated, the old one never drawn on it.
+    document.selectTake(TakeSlot::A, Document::corpusTakeId(2));
+    CHECK(panel.drawnKimonos()[0] == nullptr);
+    CHECK(analysis.kimono(TakeSlot::A, takeA) == nullptr);
+    executor->drain();
+    REQUIRE(panel.drawnKimonos()[0]);
+    CHECK(panel.drawnKimonos()[0]->frameCount() == document.selectedTake(TakeSlot::A)->frameCount());
+
+    // Other cloth parameters: simulated again; values out of the documented range refused.
+    analysis::ClothParameters heavier = analysis.clothParameters();
+    heavier.damping = 3.0;
+    REQUIRE(analysis.setClothParameters(heavier).ok());
+    CHECK(panel.drawnKimonos()[0] == nullptr);
+    executor->drain();
+    REQUIRE(panel.drawnKimonos()[0]);
+    CHECK(panel.drawnKimonos()[0]->parameters.damping == 3.0);
+    analysis::ClothParameters wrong = heavier;
+    wrong.damping = -1.0;
+    const auto refused = analysis.setClothParameters(wrong);
+    REQUIRE_FALSE(refused.ok());
+    CHECK(refused.error().message.find("cloth.damping") != std::string::npos);
+    CHECK(analysis.clothParameters().damping == 3.0);
+
+    // Off again: the jobs are cleared and the skinned kimono drawn.
+    panel.clothBox()->setChecked(false);
+    CHECK(panel.drawnKimonos()[0] == nullptr);
+    CHECK(panel.drawnKimonos()[1] == nullptr);
 }
