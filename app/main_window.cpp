@@ -559,6 +559,16 @@ void MainWindow::chooseScreenshot()
     saveScreenshot(file, target);
 }
 
+namespace {
+/// The cloth parameters as project view state ({"massPerArea": 0.015, ...}).
+QVariantMap clothParametersState(const analysis::ClothParameters& cloth)
+{
+    QVariantMap values;
+    for (const analysis::ClothParameterLimit& limit : analysis::clothParameterLimits()) values[QLatin1String(limit.name)] = cloth.*(limit.member);
+    return values;
+}
+} // namespace
+
 QVariantMap MainWindow::viewState() const
 {
     return {{"graphLayout", int(m_graphs->grid()->graphLayout())},
@@ -571,6 +581,8 @@ QVariantMap MainWindow::viewState() const
             {"camera", m_viewportPanel->cameraState()},
             {"figureA", m_viewportPanel->figureBox(0)->currentIndex()},
             {"figureB", m_viewportPanel->figureBox(1)->currentIndex()},
+            {"cloth", m_viewportPanel->clothBox()->isChecked() ? 1 : 0},
+            {"clothParameters", clothParametersState(m_analysis->clothParameters())},
             {"weightEmotion", m_analysis->weightEmotion()},
             {"speed", m_timeline->speed()},
             // The docks' places and sizes (QMainWindow::saveState), so the project reopens as laid out.
@@ -593,6 +605,15 @@ void MainWindow::restoreViewState(const QVariantMap& state)
     // The 3D view's figure per take: puppet, skeleton, both or body (the boxes' order).
     if (state.contains("figureA")) m_viewportPanel->figureBox(0)->setCurrentIndex(state["figureA"].toInt());
     if (state.contains("figureB")) m_viewportPanel->figureBox(1)->setCurrentIndex(state["figureB"].toInt());
+    // The kimono as cloth and its settings (checked by the project reader against their ranges).
+    if (state.contains("clothParameters")) {
+        analysis::ClothParameters cloth;
+        const QVariantMap values = state["clothParameters"].toMap();
+        for (const analysis::ClothParameterLimit& limit : analysis::clothParameterLimits())
+            if (values.contains(QLatin1String(limit.name))) cloth.*(limit.member) = values[QLatin1String(limit.name)].toDouble();
+        (void)m_analysis->setClothParameters(cloth); // out of range: the reader refused the project already
+    }
+    if (state.contains("cloth")) m_viewportPanel->clothBox()->setChecked(state["cloth"].toInt() != 0);
     if (state.contains("weightEmotion")) m_analysis->setWeightEmotion(state["weightEmotion"].toString());
     if (state.contains("graphLayout")) m_graphs->setGraphLayout(widgets::GraphLayout(state["graphLayout"].toInt()));
     if (state.contains("speed")) m_timeline->setSpeed(state["speed"].toDouble());

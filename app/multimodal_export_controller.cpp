@@ -68,7 +68,8 @@ VideoExportResult MultimodalExportController::exportVideo(const MultimodalOption
         if (take && analysis::hasPuppetLayout(*take)) puppets.push_back(*take);
     auto* view = m_viewport.viewport();
     const std::optional<render::Camera> camera = view->renderer() ? std::optional<render::Camera>(view->camera()) : std::nullopt;
-    auto offscreen = OffscreenView::create(std::move(puppets), camera, view->visibility(), frame->geometry().view.size());
+    auto offscreen = OffscreenView::create(std::move(puppets), camera, view->visibility(), frame->geometry().view.size(),
+                                           m_viewport.drawnKimonos()); // the kimonos the view dresses them in
     if (!offscreen) {
         refused.error = tr("Cannot draw the 3D view offscreen: %1").arg(QString::fromStdString(offscreen.error().message));
         return finish(refused);

@@ -7,7 +7,8 @@ namespace bunraku::app {
 
 analysis::Result<std::unique_ptr<OffscreenView>> OffscreenView::create(std::vector<analysis::Take> takes,
                                                                        const std::optional<render::Camera>& camera,
-                                                                       const render::SceneVisibility& visibility, QSize size)
+                                                                       const render::SceneVisibility& visibility, QSize size,
+                                                                       const std::vector<std::shared_ptr<const analysis::KimonoSimulation>>& kimonos)
 {
     if (takes.empty())
         return analysis::makeError(analysis::ErrorCode::InvalidArgument, "no take that can pose the puppet is shown");
@@ -16,6 +17,7 @@ analysis::Result<std::unique_ptr<OffscreenView>> OffscreenView::create(std::vect
     sceneOptions.computeAxes = visibility.axis;
     auto scene = render::makeTakeScene(analysis::defaultBodyDescription(), std::move(takes), sceneOptions);
     if (!scene) return scene.error();
+    for (std::size_t t = 0; t < kimonos.size() && t < scene->takes.size(); ++t) scene->takes[t].kimono = kimonos[t];
     auto renderer = render::OffscreenRenderer::create();
     if (!renderer) return renderer.error();
     std::unique_ptr<OffscreenView> view(new OffscreenView);

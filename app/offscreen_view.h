@@ -22,10 +22,13 @@ class OffscreenView {
 public:
     /// The takes (one or two, each with the puppet layout) on the default body; the motion axes
     /// are computed here when `visibility.axis` is set. Without a camera, the renderer's
-    /// framingCamera. Errors: no takes, no OpenGL 3.3 context.
+    /// framingCamera. `kimonos` (per take, may be shorter or hold nulls): the kimono each take's
+    /// puppet wears as cloth, as the 3D view draws it (ViewportPanel::drawnKimonos). Errors: no
+    /// takes, no OpenGL 3.3 context.
     static analysis::Result<std::unique_ptr<OffscreenView>> create(std::vector<analysis::Take> takes,
                                                                    const std::optional<render::Camera>& camera,
-                                                                   const render::SceneVisibility& visibility, QSize size);
+                                                                   const render::SceneVisibility& visibility, QSize size,
+                                                                   const std::vector<std::shared_ptr<const analysis::KimonoSimulation>>& kimonos = {});
 
     /// The scene at `seconds` (the frame nearest it in every take), `size` pixels, opaque.
     QImage render(double seconds);

@@ -1,5 +1,6 @@
 #include "app/project_file.h"
 
+#include "analysis/cloth/kimono_cloth.h"
 #include "analysis/pipeline/parameters_json.h"
 
 #include "analysis/io/atomic_file.h"
@@ -16,6 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace bunraku::app {
@@ -34,7 +36,7 @@ struct ViewRange {
     const char* key;
     double low, high;
 };
-constexpr ViewRange kViewRanges[] = {{"graphLayout", 0, 3}, {"twoTakeMode", 0, 1}, {"valueScale", 0, 1}, {"angleDisplay", 0, 1}, {"figureA", 0, 4}, {"figureB", 0, 4}, {"speed", 0.1, 4.0}, {"leftWidth", 0, 100000}};
+constexpr ViewRange kViewRanges[] = {{"graphLayout", 0, 3}, {"twoTakeMode", 0, 1}, {"valueScale", 0, 1}, {"angleDisplay", 0, 1}, {"figureA", 0, 4}, {"figureB", 0, 4}, {"cloth", 0, 1}, {"speed", 0.1, 4.0}, {"leftWidth", 0, 100000}};
 
 long lineOfOffset(const QByteArray& text, int offset) { return 1 + long(text.left(offset).count('\n')); }
 
@@ -217,6 +219,20 @@ analysis::Result<ProjectState> parseProject(const QByteArray& text, const QStrin
         if (!valid)
             return parseError(name, 0, "expected \"view\".\"camera\": {\"angle\": deg, \"elevation\": deg in -90..90, "
                                        "\"distance\": cm in 10..5000, \"target\": [x, y, z] cm, \"fov\": deg in 1..170}");
+    }
+    if (viewObject.contains("clothParameters")) {
+        // The 3D view's cloth settings: every key a cloth parameter in its range (one table).
+        const QJsonValue cloth = viewObject["clothParameters"];
+        if (!cloth.isObject()) return parseError(name, 0, "expected \"view\".\"clothParameters\": an object of cloth parameters");
+        for (auto it = cloth.toObject().begin(); it != cloth.toObject().end(); ++it) {
+            const auto& limits = analysis::clothParameterLimits();
+            const auto limit = std::find_if(limits.begin(), limits.end(), [&](const analysis::ClothParameterLimit& l) { return it.key() == QLatin1String(l.name); });
+            if (limit == limits.end())
+                return parseError(name, 0, "\"view\".\"clothParameters\": unknown parameter \"" + it.key().left(64).toStdString() + "\"");
+            if (!it.value().isDouble() || !(it.value().toDouble() >= limit->low && it.value().toDouble() <= limit->high))
+                return parseError(name, 0, std::string("expected \"view\".\"clothParameters\".\"") + limit->name + "\" in " +
+                                               QString::number(limit->low).toStdString() + ".." + QString::number(limit->high).toStdString());
+        }
     }
     state.view = viewObject.toVariantMap();
     // The window's dock layout (base64 of QMainWindow::saveState): a malformed one is ignored,

@@ -89,7 +89,7 @@ VideoExportResult ViewVideoController::exportVideo(const VideoExportOptions& opt
         const std::optional<render::Camera> camera =
             view->renderer() ? std::optional<render::Camera>(view->camera()) : std::nullopt;
         auto made = OffscreenView::create(std::move(takes), camera, view->visibility(),
-                                          options.size.isEmpty() ? viewPixels : options.size);
+                                          options.size.isEmpty() ? viewPixels : options.size, m_viewport.drawnKimonos());
         if (!made) {
             refused.error = tr("Cannot draw the 3D view offscreen: %1").arg(QString::fromStdString(made.error().message));
             return refused;

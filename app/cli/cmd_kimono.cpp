@@ -94,15 +94,22 @@ void runKimonoExperiment(const KimonoArguments& arguments)
 
 void addClothOptions(CLI::App* command, analysis::ClothParameters& cloth)
 {
-    command->add_option("--cloth-mass", cloth.massPerArea, "Kimono cloth: mass per area, g/cm^2 (default 0.015, silk crepe)")
-        ->check(CLI::Range(1e-4, 1.0));
-    command->add_option("--cloth-bend", cloth.bendCompliance, "Kimono cloth: bending compliance, cm/dyn (default 2e-4)")
-        ->check(CLI::Range(0.0, 1.0));
-    command->add_option("--cloth-damping", cloth.damping, "Kimono cloth: damping towards the body's motion, 1/s (default 1.5)")
-        ->check(CLI::Range(0.0, 100.0));
-    command->add_option("--cloth-drag", cloth.drag, "Kimono cloth: air drag, 1/s (default 0.6)")->check(CLI::Range(0.0, 100.0));
-    command->add_option("--cloth-substeps", cloth.substepRate, "Kimono cloth: simulation substeps per second (default 240)")
-        ->check(CLI::Range(30.0, 10000.0));
+    // The option and its help per parameter; the range is analysis's one table
+    // (clothParameterLimits), as the workbench's Cloth Settings use it.
+    const std::map<std::string, std::pair<const char*, const char*>> options{
+        {"massPerArea", {"--cloth-mass", "Kimono cloth: mass per area, g/cm^2 (default 0.015, silk crepe)"}},
+        {"stretchCompliance", {"--cloth-stretch", "Kimono cloth: stretch compliance of its threads, cm/dyn (default 0: inextensible)"}},
+        {"bendCompliance", {"--cloth-bend", "Kimono cloth: bending compliance, cm/dyn (default 2e-4)"}},
+        {"damping", {"--cloth-damping", "Kimono cloth: damping towards the body's motion, 1/s (default 1.5)"}},
+        {"drag", {"--cloth-drag", "Kimono cloth: air drag, 1/s (default 0.6)"}},
+        {"substepRate", {"--cloth-substeps", "Kimono cloth: simulation substeps per second (default 240)"}},
+        {"collisionMargin", {"--cloth-margin", "Kimono cloth: cm it keeps off the torso and arms (default 0.3)"}},
+        {"settleSeconds", {"--cloth-settle", "Kimono cloth: s the first pose is held before frame 0 so it hangs at rest (default 0.5)"}},
+    };
+    for (const analysis::ClothParameterLimit& limit : analysis::clothParameterLimits()) {
+        const auto& [name, help] = options.at(limit.name);
+        command->add_option(name, cloth.*(limit.member), help)->check(CLI::Range(limit.low, limit.high));
+    }
 }
 
 void addKimonoCommands(CommandSet& commands)

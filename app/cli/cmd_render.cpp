@@ -8,6 +8,7 @@
 #include "analysis/io/atomic_file.h"
 #include "analysis/io/staged_folder.h"
 #include "analysis/io/take_reader.h"
+#include "analysis/pipeline/stages.h"
 #include "analysis/synth/demo_corpus.h"
 #include "render/mesh_file.h"
 #include "render/offscreen_renderer.h"
@@ -57,6 +58,8 @@ struct RenderArguments {
     std::vector<std::string> meshes;
     int samples = 4;
     bool follow = false;
+    bool kimono = false;
+    analysis::ClothParameters cloth;
     bool json = false;
     // --multimodal: the thesis's multimodal display (chapter 6), view and graphs in one picture
     bool multimodal = false;
@@ -362,6 +365,15 @@ void runRender(const RenderArguments& args)
             throw CliError("--mesh '" + entry + "': expected PART=FILE, e.g. head=scans/head.glb");
         scene.partMeshes[entry.substr(0, equals)] = unwrap(render::loadMeshFile(entry.substr(equals + 1)));
     }
+    // The kimono as cloth: each take's simulated on the body it is drawn with (the workbench's
+    // Cloth box runs the same stage).
+    if (args.kimono) {
+        if (!scene.partMeshes.empty() || !analysis::bodyHasPuppetParts(scene.body))
+            throw CliError("--kimono dresses the modelled puppet: it needs the shipped body's six parts and no --mesh");
+        for (auto& slot : scene.takes)
+            slot.kimono = std::make_shared<const analysis::KimonoSimulation>(
+                unwrap(analysis::pipeline::runKimono(slot.take, slot.body ? *slot.body : scene.body, args.cloth)));
+    }
 
     const long frameCount = long(scene.takes.front().take.frameCount());
     long lastFrame = frameCount - 1;
@@ -492,6 +504,10 @@ void addRenderCommands(CommandSet& commands)
     render->add_option("--fps", args->fps, "--multimodal video: frames per second (default: the take's rate)");
     render->add_flag("--overwrite", args->overwrite, "--multimodal PNG frames: replace the frame_*.png of an earlier export");
     render->add_flag("--json", args->json, "Print a JSON summary");
+    render->add_flag("--kimono", args->kimono,
+                     "Dress the puppet in its kimono simulated as cloth (the skirt and long sleeves swing with the motion; "
+                     "the orbits then include the sleeve tips and the hem); the --cloth-* options set the cloth");
+    addClothOptions(render, args->cloth);
     render->callback([args] { runRender(*args); });
 }
 

@@ -1,0 +1,89 @@
+// The kimono as cloth in the workbench (issue "The kimono", item 2): the 3D view's Cloth box and
+// Cloth Settings dialog reach the scheduler's kimono jobs, the dressed view draws the cloth the
+// analysis function simulates, and a project keeps the box and the settings (values outside
+// their documented range are refused with the key named).
+#include "tests/app/app_test_support.h"
+#include "app/analysis_controller.h"
+#include "app/viewport_panel.h"
+
+#include "analysis/body/body_description.h"
+#include "analysis/cloth/kimono_cloth.h"
+#include "tests/support/test_paths.h"
+
+#include <catch2/catch.hpp>
+
+#include <QAction>
+#include <QApplication>
+#include <QCheckBox>
+#include <QDialog>
+#include <QDialogButtonBox>
+#include <QDoubleSpinBox>
+#include <QFile>
+#include <QTimer>
+
+using namespace bunraku;
+using app::TakeSlot;
+
+TEST_CASE("the Cloth box and Cloth Settings dress the view and a project keeps them", "[app][kimono]")
+{
+    const auto dir = test::scratchDir("kimono_view");
+    const QString project = QString::fromStdString((dir / "cloth.bunraku.json").string());
+    {
+        auto window = test::demoWindow();
+        REQUIRE(window);
+        app::ViewportPanel* panel = window->viewportPanel();
+        REQUIRE(panel->clothBox() == window->findChild<QCheckBox*>("showCloth"));
+        panel->clothBox()->setChecked(true);
+        REQUIRE(test::waitUntilIdle(*window));
+        REQUIRE_FALSE(panel->drawnKimonos().empty());
+        REQUIRE(panel->drawnKimonos()[0]);
+        const auto takeA = window->document().selectedTake(TakeSlot::A);
+        const auto truth = analysis::simulateKimono(*takeA, analysis::defaultBodyDescription());
+        REQUIRE(truth.ok());
+        CHECK((panel->drawnKimonos()[0]->points.array() == truth->points.array()).all());
+
+        // The settings dialog: a softer, less damped cloth, simulated again.
+        bool sawDialog = false;
+        QTimer::singleShot(0, [&] {
+            auto* dialog = qobject_cast<QDialog*>(QApplication::activeModalWidget());
+            REQUIRE(dialog);
+            CHECK(dialog->objectName() == QStringLiteral("clothSettingsDialog"));
+            sawDialog = true;
+            auto* damping = dialog->findChild<QDoubleSpinBox*>("damping");
+            REQUIRE(damping);
+            CHECK(damping->value() == 1.5);
+            damping->setValue(0.25);
+            dialog->findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok)->click();
+        });
+        CHECK(panel->editClothSettings());
+        CHECK(sawDialog);
+        CHECK(window->analysis().clothParameters().damping == 0.25);
+        REQUIRE(test::waitUntilIdle(*window));
+        REQUIRE(panel->drawnKimonos()[0]);
+        CHECK(panel->drawnKimonos()[0]->parameters.damping == 0.25);
+        REQUIRE(window->files().saveProject(project));
+    }
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    REQUIRE(window->files().openProject(project));
+    CHECK(window->viewportPanel()->clothBox()->isChecked());
+    CHECK(window->analysis().clothParameters().damping == 0.25);
+    REQUIRE(test::waitUntilIdle(*window));
+    REQUIRE(window->viewportPanel()->drawnKimonos()[0]);
+
+    // A project whose cloth damping is outside 0..100 is refused, naming the key.
+    QFile file(project);
+    REQUIRE(file.open(QIODevice::ReadOnly));
+    QByteArray text = file.readAll();
+    file.close();
+    REQUIRE(text.contains("\"damping\": 0.25"));
+    text.replace("\"damping\": 0.25", "\"damping\": -3");
+    const QString bad = QString::fromStdString((dir / "bad.bunraku.json").string());
+    QFile out(bad);
+    REQUIRE(out.open(QIODevice::WriteOnly));
+    out.write(text);
+    out.close();
+    CHECK_FALSE(window->files().openProject(bad));
+    CHECK(window->files().lastError().contains(QStringLiteral("clothParameters")));
+    CHECK(window->files().lastError().contains(QStringLiteral("damping")));
+}
