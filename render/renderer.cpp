@@ -447,9 +447,17 @@ void Renderer::updateCloth(Slot& slot) const
     slot.clothReady = false;
     slot.clothUploaded = false;
     if (!slot.kimonoPlayer) return;
-    const auto particles = slot.kimonoPlayer->frame(slot.frame);
-    if (!particles) return; // the skinned kimono is drawn
-    const std::vector<Eigen::Vector3d>& x = *particles.value();
+    // The frame's particles as simulated (stored), or stepped on by the player from the last
+    // frame shown or the checkpoint before it (a take too long to store every frame).
+    // Either way rounded to floats first, so both draw the same pixels.
+    std::vector<Eigen::Vector3d> x(slot.kimono->cloth->size());
+    if (const float* frame = slot.kimono->storedFrame(slot.frame)) {
+        for (std::size_t i = 0; i < x.size(); ++i) x[i] = Eigen::Vector3d(frame[3 * i], frame[3 * i + 1], frame[3 * i + 2]);
+    } else {
+        auto played = slot.kimonoPlayer->frame(slot.frame);
+        if (!played || played.value()->size() != x.size()) return; // the skinned kimono is drawn
+        for (std::size_t i = 0; i < x.size(); ++i) x[i] = (*played.value())[i].cast<float>().cast<double>();
+    }
     const std::vector<Eigen::Vector3f> normals = analysis::kimonoNormals(*slot.kimono->cloth, x);
     slot.clothVertices.resize(x.size() * 6);
     for (std::size_t i = 0; i < x.size(); ++i) {

@@ -384,10 +384,21 @@ Result<KimonoSimulation> simulateKimono(const Take& take, const BodyDescription&
         simulation.checkpointPositions.push_back(solver.x);
         simulation.checkpointVelocities.push_back(solver.v);
     };
+    // Every frame's particles too when they fit the budget (a view plays them back without
+    // simulating).
+    const std::size_t particles = simulation.cloth->size();
+    const bool store = double(frames) * double(particles) * 3.0 * sizeof(float) <= double(kKimonoStoredFramesBytes);
+    const auto storeFrame = [&] {
+        if (!store) return;
+        for (const Eigen::Vector3d& p : solver.x) simulation.particleFrames.insert(simulation.particleFrames.end(), {float(p.x()), float(p.y()), float(p.z())});
+    };
+    if (store) simulation.particleFrames.reserve(std::size_t(frames) * particles * 3);
     keep();
+    storeFrame();
     for (Eigen::Index k = 0; k + 1 < frames; ++k) {
         if (control.cancelled()) return makeError(ErrorCode::Cancelled, take.displayName() + ": the kimono's simulation was cancelled");
         simulateFrames(solver, *poses, 0, take.rateHz, k, k + 1, &simulation.points);
+        storeFrame();
         if ((k + 1) % simulation.checkpointInterval == 0) keep();
         if (k % 64 == 0) control.report(double(k + 1) / double(frames));
     }

@@ -67,6 +67,9 @@ const char* kimonoPointName(KimonoPoint point);
 /// The 18 channels of the measured points, in KimonoPoint order, x y z each.
 std::vector<Channel> kimonoChannels();
 
+/// The most a simulation keeps of every frame's particles (KimonoSimulation::particleFrames).
+inline constexpr std::size_t kKimonoStoredFramesBytes = 16u << 20;
+
 /// The cloth at rest: particles in the frames of the parts that hold them.
 struct KimonoCloth {
     enum Holder : std::uint8_t { Shoulder = 0, RightArm = 1, LeftArm = 2 };
@@ -105,7 +108,18 @@ struct KimonoSimulation {
     int checkpointInterval = 30;   ///< frames between kept states
     /// The state (positions and velocities, world, cm and cm/s) at frames 0, k, 2k, ...
     std::vector<std::vector<Eigen::Vector3d>> checkpointPositions, checkpointVelocities;
+    /// Every frame's particles (world, cm, x y z per particle, frame after frame) as floats, when
+    /// they take at most kKimonoStoredFramesBytes (about 2,700 frames: 90 s at 30 Hz); else empty
+    /// and a view steps the cloth on from the checkpoints (KimonoPlayer).
+    std::vector<float> particleFrames;
     Eigen::Index frameCount() const { return points.rows(); }
+    /// Frame `frame`'s particles in particleFrames (3 floats each), or null when not stored.
+    const float* storedFrame(Eigen::Index frame) const
+    {
+        const std::size_t stride = cloth ? 3 * cloth->size() : 0;
+        if (stride == 0 || frame < 0 || particleFrames.size() < std::size_t(frame + 1) * stride) return nullptr;
+        return particleFrames.data() + std::size_t(frame) * stride;
+    }
 };
 
 /// A capsule of the body the cloth keeps off (the torso from the shoulder board to the dō-wa, each

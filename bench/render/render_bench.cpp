@@ -3,6 +3,7 @@
 // uniforms only) and draws; glFinish makes the GPU's work part of the time. Per-frame times are
 // collected so the median and 95th percentile can be reported (target: 60 fps = 16.7 ms).
 #include "analysis/body/puppet_model.h"
+#include "analysis/cloth/kimono_cloth.h"
 #include "analysis/synth/demo_corpus.h"
 #include "render/offscreen_renderer.h"
 #include "render/take_scene.h"
@@ -26,18 +27,23 @@ struct Stage {
     render::SceneContent scene;
 };
 
-/// The renderers outlive no QGuiApplication: main() frees them before it returns.
-std::unique_ptr<Stage> g_stages[3][2];
+/// The renderers outlive no QGuiApplication: main() frees them before it returns. The last
+/// index: the puppets dressed in their simulated kimonos (1) or not (0).
+std::unique_ptr<Stage> g_stages[3][2][2];
 
-Stage& stage(int takes, int multisampled = 1)
+Stage& stage(int takes, int multisampled = 1, int kimono = 0)
 {
-    auto& slot = g_stages[takes][multisampled];
+    auto& slot = g_stages[takes][multisampled][kimono];
     if (!slot) {
         slot = std::make_unique<Stage>();
         const auto demo = analysis::synth::generateDemoCorpus();
         std::vector<analysis::Take> chosen{*demo.corpus.find("greeting", "none", 1)};
         if (takes > 1) chosen.push_back(*demo.corpus.find("greeting", "friendly", 1));
         slot->scene = render::makeTakeScene(analysis::defaultBodyDescription(), chosen).value();
+        if (kimono)
+            for (auto& shown : slot->scene.takes)
+                shown.kimono = std::make_shared<const analysis::KimonoSimulation>(
+                    analysis::simulateKimono(shown.take, shown.body ? *shown.body : slot->scene.body).value());
         auto created = render::OffscreenRenderer::create(render::OffscreenOptions{multisampled != 0 ? 4 : 0});
         if (!created.ok()) {
             std::fprintf(stderr, "bench_render: %s\n", created.error().message.c_str());
@@ -65,9 +71,9 @@ void reportPercentiles(benchmark::State& state, std::vector<double>& millisecond
 /// Frame time of a full scene (puppets, axes, orbits, floor, shadows, partner) at WxH; the
 /// fourth argument says what of the lit stage is drawn: 1 the shadows, 2 the partners, 3 both
 /// (0: the scene before the lit stage).
-void drawFrames(benchmark::State& state, int takes)
+void drawFrames(benchmark::State& state, int takes, int kimono = 0)
 {
-    Stage& s = stage(takes, int(state.range(2)));
+    Stage& s = stage(takes, int(state.range(2)), kimono);
     const QSize size(int(state.range(0)), int(state.range(1)));
     render::SceneVisibility visibility = s.offscreen->renderer().visibility();
     visibility.shadows = (state.range(3) & 1) != 0;
@@ -97,6 +103,9 @@ void drawFrames(benchmark::State& state, int takes)
 }
 
 void BM_TwoPuppetsAxesOrbits(benchmark::State& state) { drawFrames(state, 2); }
+/// The same two puppets playing, each dressed in its simulated kimono (issue "The kimono": the
+/// cloth of each frame stepped on by its player, its positions and normals sent to the GPU).
+void BM_TwoKimonosAxesOrbits(benchmark::State& state) { drawFrames(state, 2, 1); }
 
 /// The floor under every frame time: clearing and finishing an empty frame (everything hidden).
 void BM_EmptyFrame(benchmark::State& state)
@@ -192,6 +201,12 @@ BENCHMARK(BM_TwoPuppetsAxesOrbits)
     ->Args({640, 360, 1, 3})
     ->Unit(benchmark::kMillisecond)
     ->Iterations(300);
+BENCHMARK(BM_TwoKimonosAxesOrbits)
+    ->ArgNames({"w", "h", "msaa4", "lit"})
+    ->Args({1280, 720, 0, 3})
+    ->Args({1280, 720, 0, 0})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(300);
 BENCHMARK(BM_OnePuppetAxisOrbits)->ArgNames({"w", "h", "msaa4", "lit"})->Args({1280, 720, 0, 3})->Unit(benchmark::kMillisecond)->Iterations(300);
 BENCHMARK(BM_EmptyFrame)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SetFrameTwoTakes)->Unit(benchmark::kMicrosecond);
@@ -206,6 +221,7 @@ int main(int argc, char** argv)
     benchmark::RunSpecifiedBenchmarks();
     benchmark::Shutdown();
     for (auto& row : g_stages)
-        for (auto& stageSlot : row) stageSlot.reset();
+        for (auto& pair : row)
+            for (auto& stageSlot : pair) stageSlot.reset();
     return 0;
 }

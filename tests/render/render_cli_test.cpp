@@ -254,3 +254,40 @@ TEST_CASE("bunraku render --figure draws a Bandai take's 22-joint skeleton, the 
     CHECK(code != 0);
     CHECK(errors.find("--figure 'bones': expected puppet, skeleton, both, body or mesh") != std::string::npos);
 }
+
+TEST_CASE("bunraku render --kimono dresses the puppet in its simulated kimono", "[render][cli][kimono]")
+{
+    if (!test::requirePeer(std::filesystem::exists(cliPath()), "the bunraku executable (" + cliPath().string() + ")",
+                           "build the target bunraku"))
+        return;
+    const auto dir = test::scratchDir("render_cli_kimono");
+    const std::string common = "render demo:greeting/friendly/2 --frame 30 --camera 300 --size 320x320 --samples 0 --show puppet ";
+    const auto [plainCode, plainErrors] = runCli(common + "-o " + quoted(dir / "skinned.png"), dir);
+    INFO(plainErrors);
+    REQUIRE(plainCode == 0);
+    const auto [code, errors] = runCli(common + "--kimono -o " + quoted(dir / "cloth.png"), dir);
+    INFO(errors);
+    REQUIRE(code == 0);
+    const auto [softCode, softErrors] = runCli(common + "--kimono --cloth-bend 0.01 --cloth-damping 0.2 -o " + quoted(dir / "soft.png"), dir);
+    INFO(softErrors);
+    REQUIRE(softCode == 0);
+    const QImage skinned(QString::fromStdString((dir / "skinned.png").string()));
+    const QImage cloth(QString::fromStdString((dir / "cloth.png").string()));
+    const QImage soft(QString::fromStdString((dir / "soft.png").string()));
+    REQUIRE(skinned.size() == cloth.size());
+    REQUIRE(soft.size() == cloth.size());
+    const auto differing = [](const QImage& a, const QImage& b) {
+        int count = 0;
+        for (int y = 0; y < a.height(); ++y)
+            for (int x = 0; x < a.width(); ++x) count += a.pixel(x, y) != b.pixel(x, y) ? 1 : 0;
+        return count;
+    };
+    INFO("cloth against skinned: " << differing(cloth, skinned) << " pixels; softer cloth: " << differing(cloth, soft));
+    CHECK(differing(cloth, skinned) > 200);
+    CHECK(differing(cloth, soft) > 50); // the cloth options reach the simulation
+
+    const auto [badCode, badErrors] = runCli(common + "--kimono --cloth-damping -1 -o " + quoted(dir / "bad.png"), dir);
+    CHECK(badCode != 0);
+    CHECK(badErrors.find("--cloth-damping") != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(dir / "bad.png"));
+}

@@ -245,3 +245,29 @@ TEST_CASE("one player gives every frame the same cloth as a fresh simulation fro
     CHECK_FALSE(player.frame(106).ok());
     CHECK_FALSE(player.frame(-1).ok());
 }
+
+TEST_CASE("a simulation keeps every frame's particles within its budget and only checkpoints beyond it")
+{
+    Take take = bunraku::test::livelyTake(90);
+    take.rateHz = 30.0;
+    const auto simulation = simulateKimono(take);
+    REQUIRE(simulation.ok());
+    const std::size_t particles = simulation->cloth->size();
+    REQUIRE(simulation->particleFrames.size() == std::size_t(90) * particles * 3);
+    for (const Eigen::Index frame : {Eigen::Index(0), Eigen::Index(44), Eigen::Index(89)}) {
+        const auto x = kimonoFrame(*simulation, take, frame);
+        REQUIRE(x.ok());
+        const float* stored = simulation->storedFrame(frame);
+        REQUIRE(stored != nullptr);
+        bool same = true;
+        for (std::size_t i = 0; i < particles; ++i)
+            for (int k = 0; k < 3; ++k) same = same && stored[3 * i + std::size_t(k)] == float((*x)[i][k]);
+        INFO("frame " << frame);
+        CHECK(same);
+    }
+    CHECK(simulation->storedFrame(90) == nullptr);
+    // A take whose frames exceed the budget keeps checkpoints only (about 2,700 frames fit).
+    const std::size_t fit = kKimonoStoredFramesBytes / (particles * 3 * sizeof(float));
+    CHECK(fit > 2000);
+    CHECK(fit < 4000);
+}
