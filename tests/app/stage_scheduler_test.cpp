@@ -424,6 +424,30 @@ TEST_CASE("the 3D view dresses each shown take in its kimono simulated by the sc
     CHECK(refused.error().message.find("cloth.damping") != std::string::npos);
     CHECK(analysis.clothParameters().damping == 3.0);
 
+    // The design loop: a live take shown as A replaced at every step of a drag (the designed
+    // take) shows the skinned kimono at once and its cloth when simulated, never the previous
+    // step's.
+    auto designed = std::make_shared<analysis::Take>(document.corpus().takes[3]);
+    document.setLiveTake(QStringLiteral("designed"), QStringLiteral("designed"), designed);
+    document.selectTake(TakeSlot::A, QStringLiteral("live/designed"));
+    executor->drain();
+    REQUIRE(panel.drawnKimonos()[0]);
+    const auto firstStep = panel.drawnKimonos()[0];
+    for (int step = 1; step <= 3; ++step) {
+        auto next = std::make_shared<analysis::Take>(*designed);
+        next->values.col(12).array() += 2.0 * step; // the arm reaches further forward: another designed motion
+        document.setLiveTake(QStringLiteral("designed"), QStringLiteral("designed"), next);
+        REQUIRE(document.selectedTake(TakeSlot::A)->values(0, 12) == next->values(0, 12));
+        CHECK(panel.drawnKimonos()[0] == nullptr); // the skinned kimono meanwhile
+    }
+    executor->drain();
+    REQUIRE(panel.drawnKimonos()[0]);
+    CHECK(panel.drawnKimonos()[0] != firstStep);
+    CHECK_FALSE((panel.drawnKimonos()[0]->points.array() == firstStep->points.array()).all());
+    const auto lastStep = analysis::simulateKimono(*document.selectedTake(TakeSlot::A), analysis::defaultBodyDescription(), heavier);
+    REQUIRE(lastStep.ok());
+    CHECK((panel.drawnKimonos()[0]->points.array() == lastStep->points.array()).all());
+
     // Off again: the jobs are cleared and the skinned kimono drawn.
     panel.clothBox()->setChecked(false);
     CHECK(panel.drawnKimonos()[0] == nullptr);
