@@ -182,6 +182,7 @@ void AnalysisController::stageFinished(int slot)
         m_axes = m_scheduler->result<pl::AxisOutput>(slot);
         break;
     case kTakeAxisSlot: publishAxis(); break;
+    case kKimonoSlot: publishKimono(); break;
     case kNormalisedBodySlot:
         if (auto body = m_scheduler->result<analysis::BodyMotion>(slot)) {
             const QScopedValueRollback<bool> publishing(m_publishing, true);
@@ -363,6 +364,19 @@ void AnalysisController::publishAxis()
     m_document.setLiveTake(QStringLiteral("axis"), tr("motion axis of %1").arg(m_axisLabels[0]), coordinates);
 }
 
+void AnalysisController::publishKimono()
+{
+    const auto simulated = kimono(TakeSlot::A, m_kimonoTakes[0]);
+    if (!m_kimonoShown) {
+        if (m_document.take(QStringLiteral("live/kimono"))) m_document.setLiveTake(QStringLiteral("kimono"), QString(), nullptr);
+        return;
+    }
+    if (!simulated || !m_kimonoTakes[0]) return;
+    const QString label = m_document.takeLabel(m_document.selectedId(TakeSlot::A));
+    m_document.setLiveTake(QStringLiteral("kimono"), tr("kimono of %1").arg(label),
+                           std::make_shared<const analysis::Take>(analysis::kimonoTake(*m_kimonoTakes[0], *simulated)));
+}
+
 void AnalysisController::requestTakeAxis(TakeSlot slot)
 {
     const int id = takeAxisSlot(slot);
@@ -397,6 +411,7 @@ void AnalysisController::setKimonoShown(bool shown)
     m_kimonoShown = shown;
     requestKimono(TakeSlot::A);
     requestKimono(TakeSlot::B);
+    if (!shown) publishKimono(); // the "kimono" take goes with the cloth
 }
 
 analysis::Status AnalysisController::setClothParameters(const analysis::ClothParameters& parameters)

@@ -7,7 +7,8 @@
 /// the emotion weight (4.5) and the design (5.5, DesignController) - run on the GUI thread.
 ///
 /// It is the only publisher of the analysis's live takes: "normalised" (take A on its cell's
-/// reference time), "weighted" (y + a z of take A's cell) and "axis" (take A's motion axis).
+/// reference time), "weighted" (y + a z of take A's cell), "axis" (take A's motion axis) and
+/// "kimono" (the sleeve tips and hem of take A's kimono simulated as cloth, with the Cloth box on).
 /// Views read them from the document and never write them. The motion axes of the shown takes
 /// A and B (pipeline::runTakeAxis, keyed by each take's content and the axis parameters) are
 /// scheduler jobs too: the 3D view draws them (takeAxis) and take A's is the "axis" take, one
@@ -139,6 +140,9 @@ private:
     void requestKimono(TakeSlot slot);
     /// Publishes take A's computed motion axis as the "axis" live take.
     void publishAxis();
+    /// Publishes take A's simulated kimono's measured points as the "kimono" live take (its 18
+    /// channels, graphable beside take A); removes it when the Cloth box is off.
+    void publishKimono();
 
     Document& m_document;
     StageScheduler* m_scheduler = nullptr;

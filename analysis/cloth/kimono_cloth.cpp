@@ -554,4 +554,17 @@ Take withKimonoChannels(const Take& take, const KimonoSimulation& simulation)
     return out;
 }
 
+Take kimonoTake(const Take& take, const KimonoSimulation& simulation)
+{
+    Take out;
+    out.channels = kimonoChannels();
+    out.values = simulation.points;
+    out.rateHz = take.rateHz;
+    out.labels.function = take.labels.function;
+    out.labels.emotion = take.labels.emotion;
+    out.labels.takeIndex = take.labels.takeIndex;
+    out.labels.source = "kimono of " + take.displayName();
+    return out;
+}
+
 } // namespace bunraku::analysis

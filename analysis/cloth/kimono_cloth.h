@@ -193,5 +193,8 @@ Result<KimonoMeasures> measureKimono(const Take& take, const KimonoSimulation& s
 /// The take with the kimono's 18 channels appended (measured points), e.g. for
 /// `bunraku convert TAKE --kimono -o FILE.csv` and the analysis chain.
 Take withKimonoChannels(const Take& take, const KimonoSimulation& simulation);
+/// The kimono's 18 channels alone, at the take's rate, labelled "kimono of <the take's name>"
+/// (what the workbench graphs as the "kimono" take beside the motion it was simulated for).
+Take kimonoTake(const Take& take, const KimonoSimulation& simulation);
 
 } // namespace bunraku::analysis

@@ -5,6 +5,8 @@
 #include "tests/app/app_test_support.h"
 #include "app/analysis_controller.h"
 #include "app/viewport_panel.h"
+#include "widgets/graph_grid.h"
+#include "widgets/graph_panel.h"
 
 #include "analysis/body/body_description.h"
 #include "analysis/cloth/kimono_cloth.h"
@@ -41,6 +43,19 @@ TEST_CASE("the Cloth box and Cloth Settings dress the view and a project keeps t
         const auto truth = analysis::simulateKimono(*takeA, analysis::defaultBodyDescription());
         REQUIRE(truth.ok());
         CHECK((panel->drawnKimonos()[0]->points.array() == truth->points.array()).all());
+        // The measured points graphed: the "kimono" take shown as A fills the Graphs dock with
+        // its 18 channels, values in cm, the moving points at the simulation's values.
+        const QString original = window->document().selectedId(TakeSlot::A);
+        window->document().selectTake(TakeSlot::A, QStringLiteral("live/kimono"));
+        widgets::GraphGrid* grid = window->graphPanel()->grid();
+        REQUIRE(grid->graphCount() == 18);
+        CHECK(grid->graphValueLabel(0) == QStringLiteral("cm"));
+        window->document().setCurrentTime(0.0);
+        const auto value = grid->graphPointValue(0, 0);
+        REQUIRE(value);
+        CHECK(*value == Approx(truth->points(0, 0)));
+        window->document().selectTake(TakeSlot::A, original);
+        REQUIRE(test::waitUntilIdle(*window));
 
         // The settings dialog: a softer, less damped cloth, simulated again.
         bool sawDialog = false;

@@ -400,6 +400,13 @@ TEST_CASE("the 3D view dresses each shown take in its kimono simulated by the sc
     CHECK((panel.drawnKimonos()[0]->points.array() == truth->points.array()).all());
     CHECK(scheduler.starts(AnalysisController::kKimonoSlot) == 1);
     CHECK(scheduler.starts(AnalysisController::kKimonoBSlot) == 1);
+    // Take A's measured points are the graphable "kimono" take: the same simulation.
+    const auto kimonoTake = document.take(QStringLiteral("live/kimono"));
+    REQUIRE(kimonoTake);
+    CHECK(kimonoTake->channelCount() == 18);
+    CHECK(kimonoTake->channels.front().name() == "sleeve_right_tip.x");
+    CHECK(kimonoTake->values == truth->points);
+    CHECK(document.takeLabel(QStringLiteral("live/kimono")).startsWith(QStringLiteral("kimono of")));
 
     // Another take A: its cloth is simulated, the old one never drawn on it.
     document.selectTake(TakeSlot::A, Document::corpusTakeId(2));
@@ -452,4 +459,5 @@ TEST_CASE("the 3D view dresses each shown take in its kimono simulated by the sc
     panel.clothBox()->setChecked(false);
     CHECK(panel.drawnKimonos()[0] == nullptr);
     CHECK(panel.drawnKimonos()[1] == nullptr);
+    CHECK(document.take(QStringLiteral("live/kimono")) == nullptr);
 }
