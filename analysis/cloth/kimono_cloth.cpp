@@ -165,8 +165,77 @@ struct Solver {
                 if (distance < reach && distance > 1e-9) x[i] = closest + away * (reach / distance);
             }
         }
+        keepSleevesOutOfSkirt();
         for (std::size_t i = 0; i < cloth.size(); ++i)
             v[i] = (x[i] - previous[i]) / h;
+    }
+
+    /// Where the sleeves meet the skirt (an arm hanging at the side): a sleeve particle inside
+    /// the skirt is moved out, horizontally, to the skirt's surface there plus the margin. The
+    /// skirt's surface at a height is its two rings around that height (centres and, in the
+    /// particle's direction from the centre, where that ray leaves the ring's polygon seen from
+    /// above), interpolated. The skirt is not moved (it is the heavier, inner layer).
+    void keepSleevesOutOfSkirt()
+    {
+        if (cloth.skirtEnd != std::uint32_t(kSkirtRings * kSkirtSegments)) return;
+        std::array<Eigen::Vector3d, kSkirtRings> centre;
+        for (int j = 0; j < kSkirtRings; ++j) {
+            Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+            for (int i = 0; i < kSkirtSegments; ++i) sum += x[std::size_t(j * kSkirtSegments + i)];
+            centre[std::size_t(j)] = sum / double(kSkirtSegments);
+        }
+        // The skirt's axis (from the hem's centre to the top ring's) and a plane across it: a
+        // ring's polygon and a particle's distance from the axis are taken in that plane.
+        const Eigen::Vector3d base = centre.back();
+        const Eigen::Vector3d along = centre.front() - base;
+        const double length = along.norm();
+        if (length < 1e-6) return;
+        const Eigen::Vector3d u = along / length;
+        const Eigen::Vector3d e1 = u.unitOrthogonal(), e2 = u.cross(e1);
+        const auto across = [&](const Eigen::Vector3d& v) { return Eigen::Vector2d(v.dot(e1), v.dot(e2)); };
+        std::array<double, kSkirtRings> height;
+        std::array<double, kSkirtRings> widest{}; // each ring's farthest particle from its centre, in the plane
+        for (int j = 0; j < kSkirtRings; ++j) {
+            height[std::size_t(j)] = (centre[std::size_t(j)] - base).dot(u);
+            for (int i = 0; i < kSkirtSegments; ++i)
+                widest[std::size_t(j)] = std::max(widest[std::size_t(j)], across(x[std::size_t(j * kSkirtSegments + i)] - centre[std::size_t(j)]).norm());
+        }
+        // How far from the ring's centre the ray in direction `d` (unit, in the plane) leaves
+        // the ring's polygon: the farthest crossing of an edge.
+        const auto radius = [&](int ring, const Eigen::Vector2d& d) {
+            const auto cross = [](const Eigen::Vector2d& p, const Eigen::Vector2d& q) { return p.x() * q.y() - p.y() * q.x(); };
+            double r = 0.0;
+            for (int i = 0; i < kSkirtSegments; ++i) {
+                const Eigen::Vector2d a = across(x[std::size_t(ring * kSkirtSegments + i)] - centre[std::size_t(ring)]);
+                const Eigen::Vector2d b = across(x[std::size_t(ring * kSkirtSegments + (i + 1) % kSkirtSegments)] - centre[std::size_t(ring)]);
+                const Eigen::Vector2d edge = b - a;
+                const double denominator = cross(d, edge);
+                if (std::abs(denominator) < 1e-12) continue;
+                // t d = a + s edge: t = (a x edge) / (d x edge), s = (a x d) / (d x edge).
+                const double s = cross(a, d) / denominator;
+                const double t = cross(a, edge) / denominator;
+                if (s >= 0.0 && s <= 1.0 && t > r) r = t;
+            }
+            return r;
+        };
+        for (std::size_t i = cloth.skirtEnd; i < cloth.size(); ++i) {
+            if (cloth.pinned[i]) continue;
+            const double h = (x[i] - base).dot(u);
+            if (h > height.front() || h < height.back()) continue; // above the dō-wa or below the hem
+            int ring = 0;
+            while (ring + 2 < kSkirtRings && height[std::size_t(ring + 1)] > h) ++ring;
+            const double span = height[std::size_t(ring)] - height[std::size_t(ring + 1)];
+            const double f = span > 1e-9 ? std::clamp((height[std::size_t(ring)] - h) / span, 0.0, 1.0) : 0.0;
+            const Eigen::Vector3d c = (1.0 - f) * centre[std::size_t(ring)] + f * centre[std::size_t(ring + 1)];
+            const Eigen::Vector2d away = across(x[i] - c);
+            const double distance = away.norm();
+            if (distance < 1e-9) continue;
+            // Beyond both rings' farthest particles: outside (the common case, no polygon walked).
+            if (distance >= std::max(widest[std::size_t(ring)], widest[std::size_t(ring + 1)]) + parameters.collisionMargin) continue;
+            const Eigen::Vector2d d = away / distance;
+            const double reach = (1.0 - f) * radius(ring, d) + f * radius(ring + 1, d) + parameters.collisionMargin;
+            if (distance < reach) x[i] += (reach - distance) * (d.x() * e1 + d.y() * e2);
+        }
     }
 
     void record(Eigen::MatrixXd& points, Eigen::Index frame) const

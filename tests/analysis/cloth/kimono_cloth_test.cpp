@@ -271,3 +271,80 @@ TEST_CASE("a simulation keeps every frame's particles within its budget and only
     CHECK(fit > 2000);
     CHECK(fit < 4000);
 }
+
+namespace {
+
+/// Crossings of the ray from `origin` along `direction` with the skirt's triangles (Möller and
+/// Trumbore): odd when the origin lies inside the skirt's tube; `nearest` the distance to the
+/// nearest crossing.
+int skirtCrossings(const KimonoCloth& cloth, const std::vector<Eigen::Vector3d>& x, const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
+                   double& nearest)
+{
+    int crossings = 0;
+    nearest = 1e9;
+    for (std::size_t t = 0; t + 2 < cloth.triangles.size(); t += 3) {
+        const std::uint32_t a = cloth.triangles[t], b = cloth.triangles[t + 1], c = cloth.triangles[t + 2];
+        if (a >= cloth.skirtEnd || b >= cloth.skirtEnd || c >= cloth.skirtEnd) continue;
+        const Eigen::Vector3d e1 = x[b] - x[a], e2 = x[c] - x[a];
+        const Eigen::Vector3d p = direction.cross(e2);
+        const double det = e1.dot(p);
+        if (std::abs(det) < 1e-12) continue;
+        const Eigen::Vector3d s = origin - x[a];
+        const double u = s.dot(p) / det;
+        if (u < 0.0 || u > 1.0) continue;
+        const Eigen::Vector3d q = s.cross(e1);
+        const double v = direction.dot(q) / det;
+        if (v < 0.0 || u + v > 1.0) continue;
+        const double distance = e2.dot(q) / det;
+        if (distance > 0.0) {
+            ++crossings;
+            nearest = std::min(nearest, distance);
+        }
+    }
+    return crossings;
+}
+
+} // namespace
+
+TEST_CASE("a sleeve that meets the skirt stays outside it")
+{
+    for (const bool lively : {false, true}) {
+        Take take = lively ? bunraku::test::livelyTake(106) : stillTake(120);
+        take.rateHz = 30.0;
+        const auto simulation = simulateKimono(take);
+        REQUIRE(simulation.ok());
+        const KimonoCloth& cloth = *simulation->cloth;
+        int near = 0, inside = 0;
+        double deepest = 0.0;
+        for (Eigen::Index frame = 0; frame < take.frameCount(); frame += 5) {
+            const auto x = kimonoFrame(*simulation, take, frame);
+            REQUIRE(x.ok());
+            // The skirt's axis: the centres of its top and bottom rings.
+            Eigen::Vector3d top = Eigen::Vector3d::Zero(), hem = Eigen::Vector3d::Zero();
+            for (int i = 0; i < 28; ++i) {
+                top += (*x)[std::size_t(i)] / 28.0;
+                hem += (*x)[std::size_t(12 * 28 + i)] / 28.0;
+            }
+            for (std::uint32_t i = cloth.skirtEnd; i < cloth.size(); ++i) {
+                if (cloth.pinned[i]) continue;
+                const Eigen::Vector3d& p = (*x)[i];
+                if (p.z() > top.z() - 0.5 || p.z() < hem.z() + 0.5) continue;
+                const double f = (top.z() - p.z()) / (top.z() - hem.z());
+                const Eigen::Vector3d axis = (1.0 - f) * top + f * hem;
+                Eigen::Vector3d out = p - axis;
+                out.z() = 0.0;
+                if (out.norm() < 1e-6 || out.norm() > 20.0) continue;
+                ++near;
+                double depth = 0.0;
+                if (skirtCrossings(cloth, *x, p, out.normalized(), depth) % 2 == 1) {
+                    deepest = std::max(deepest, depth);
+                    if (depth > 0.5) ++inside; // the tolerance the body's collisions are held to
+                }
+            }
+        }
+        INFO((lively ? "lively take: " : "still take: ") << near << " sleeve particles beside the skirt, " << inside
+                                                         << " more than 0.5 cm inside it, the deepest " << deepest << " cm");
+        CHECK(near > 50);
+        CHECK(inside == 0);
+    }
+}
