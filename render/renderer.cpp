@@ -107,9 +107,10 @@ analysis::Status Renderer::initialize()
     if (!body->addShaderFromSourceCode(QOpenGLShader::Vertex, bodySource) ||
         !body->addShaderFromSourceFile(QOpenGLShader::Fragment, QStringLiteral(":/shaders/scene.frag")) || !body->link())
         return analysis::makeError(ErrorCode::Unsupported, "shader build failed: " + body->log().toStdString());
-    for (const char* name : {"u_model", "u_viewProjection", "u_normalMatrix", "u_colour", "u_useVertexColour", "u_lit", "u_lightPosition",
-                             "u_partIdBase", "u_boneIds", "u_keyDirection", "u_jointReal", "u_jointDual", "u_linearBlend"})
-        m_bodyUniforms[name] = body->uniformLocation(name);
+    static const char* const kBodyUniformNames[BodyUniformCount] = {
+        "u_model",        "u_viewProjection", "u_normalMatrix", "u_colour",    "u_useVertexColour", "u_lit",        "u_lightPosition",
+        "u_partIdBase",   "u_boneIds",        "u_keyDirection", "u_jointReal", "u_jointDual",       "u_linearBlend"};
+    for (int u = 0; u < BodyUniformCount; ++u) m_bodyUniforms[std::size_t(u)] = body->uniformLocation(kBodyUniformNames[u]);
     m_program = std::move(program);
     m_skinProgram = std::move(skin);
     m_bodyProgram = std::move(body);

@@ -192,7 +192,10 @@ private:
     std::unique_ptr<QOpenGLShaderProgram> m_program;
     std::unique_ptr<QOpenGLShaderProgram> m_skinProgram; ///< skinned.vert + scene.frag
     std::unique_ptr<QOpenGLShaderProgram> m_bodyProgram; ///< skinned.vert for a skeleton's joints + scene.frag
-    std::map<std::string, int> m_bodyUniforms;
+    /// The body program's uniform locations, looked up once (in kBodyUniformNames' order).
+    enum BodyUniform { BodyModel, BodyViewProjection, BodyNormalMatrix, BodyColour, BodyUseVertexColour, BodyLit, BodyLightPosition,
+                       BodyPartIdBase, BodyBoneIds, BodyKeyDirection, BodyJointReal, BodyJointDual, BodyLinearBlend, BodyUniformCount };
+    std::array<int, BodyUniformCount> m_bodyUniforms{};
     std::unique_ptr<QOpenGLFramebufferObject> m_pickFramebuffer;
     struct Uniforms {
         int model = -1, viewProjection = -1, normalMatrix = -1, colour = -1, useVertexColour = -1, lit = -1,

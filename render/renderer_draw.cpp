@@ -42,20 +42,20 @@ bool Renderer::drawBody(const Slot& slot, int takeSlot, const glm::mat4& root, c
     if (!body) return false;
     QOpenGLExtraFunctions& gl = *m_gl;
     m_bodyProgram->bind();
-    const auto at = [this](const char* name) { return m_bodyUniforms.at(name); };
+    const auto at = [this](BodyUniform uniform) { return m_bodyUniforms[std::size_t(uniform)]; };
     const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(root)));
-    gl.glUniformMatrix4fv(at("u_model"), 1, GL_FALSE, glm::value_ptr(root));
-    gl.glUniformMatrix3fv(at("u_normalMatrix"), 1, GL_FALSE, glm::value_ptr(normalMatrix));
-    gl.glUniformMatrix4fv(at("u_viewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
-    gl.glUniform3f(at("u_lightPosition"), eye.x, eye.y, eye.z);
+    gl.glUniformMatrix4fv(at(BodyModel), 1, GL_FALSE, glm::value_ptr(root));
+    gl.glUniformMatrix3fv(at(BodyNormalMatrix), 1, GL_FALSE, glm::value_ptr(normalMatrix));
+    gl.glUniformMatrix4fv(at(BodyViewProjection), 1, GL_FALSE, glm::value_ptr(viewProjection));
+    gl.glUniform3f(at(BodyLightPosition), eye.x, eye.y, eye.z);
     const glm::vec3 key = keyLightDirection();
-    gl.glUniform3f(at("u_keyDirection"), key.x, key.y, key.z);
-    gl.glUniform4f(at("u_colour"), 1.0f, 1.0f, 1.0f, 1.0f);
-    gl.glUniform1i(at("u_useVertexColour"), 1);
-    gl.glUniform1i(at("u_lit"), 1);
-    gl.glUniform1i(at("u_partIdBase"), partIds ? kSkeletonId + 1 + kIdsPerSlot * takeSlot : -1);
-    gl.glUniform1i(at("u_boneIds"), 1);
-    gl.glUniform1i(at("u_linearBlend"), fileMesh ? 1 : 0);
+    gl.glUniform3f(at(BodyKeyDirection), key.x, key.y, key.z);
+    gl.glUniform4f(at(BodyColour), 1.0f, 1.0f, 1.0f, 1.0f);
+    gl.glUniform1i(at(BodyUseVertexColour), 1);
+    gl.glUniform1i(at(BodyLit), 1);
+    gl.glUniform1i(at(BodyPartIdBase), partIds ? kSkeletonId + 1 + kIdsPerSlot * takeSlot : -1);
+    gl.glUniform1i(at(BodyBoneIds), 1);
+    gl.glUniform1i(at(BodyLinearBlend), fileMesh ? 1 : 0);
     const auto skinning = analysis::bodySkinningTransforms(*body, slot.take.skeleton->worldPoses(slot.frame));
     std::vector<glm::vec4> real(skinning.size()), dual(skinning.size());
     for (std::size_t j = 0; j < skinning.size(); ++j) {
@@ -63,8 +63,8 @@ bool Renderer::drawBody(const Slot& slot, int takeSlot, const glm::mat4& root, c
         real[j] = glm::vec4(float(q.real.x()), float(q.real.y()), float(q.real.z()), float(q.real.w()));
         dual[j] = glm::vec4(float(q.dual.x()), float(q.dual.y()), float(q.dual.z()), float(q.dual.w()));
     }
-    gl.glUniform4fv(at("u_jointReal"), GLsizei(real.size()), glm::value_ptr(real[0]));
-    gl.glUniform4fv(at("u_jointDual"), GLsizei(dual.size()), glm::value_ptr(dual[0]));
+    gl.glUniform4fv(at(BodyJointReal), GLsizei(real.size()), glm::value_ptr(real[0]));
+    gl.glUniform4fv(at(BodyJointDual), GLsizei(dual.size()), glm::value_ptr(dual[0]));
     (fileMesh ? figure.fileMeshGpu : figure.bodyGpu).draw(gl);
     m_program->bind();
     return true;

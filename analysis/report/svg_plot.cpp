@@ -107,6 +107,15 @@ std::string renderSvg(const SvgPlot& plot)
     svg << "<text transform=\"translate(12," << top + innerHeight / 2 << ") rotate(-90)\" text-anchor=\"middle\">"
         << escapeXml(plot.yLabel) << "</text>";
     for (const auto& s : plot.series) {
+        if (s.markers) {
+            for (Eigen::Index i = 0; i < std::min(s.x.size(), s.y.size()); ++i) {
+                const double y = yValue(s.y[i]);
+                if (std::isfinite(s.x[i]) && std::isfinite(y))
+                    svg << "<circle cx=\"" << number(px(s.x[i]), 6) << "\" cy=\"" << number(py(y), 6) << "\" r=\"" << 1.5 + s.width
+                        << "\" fill=\"" << s.colour << "\"/>";
+            }
+            continue;
+        }
         std::ostringstream points;
         bool open = false;
         auto flush = [&] {
@@ -127,11 +136,18 @@ std::string renderSvg(const SvgPlot& plot)
         flush();
     }
     double legendY = top + 10;
+    // The legend's left edge: far enough in for its longest label (about 6 px a character).
+    std::size_t longest = 0;
+    for (const auto& s : plot.series) longest = std::max(longest, s.label.size());
+    const double legendLeft = std::max(92.0, 6.0 * double(longest) + 24.0);
     for (const auto& s : plot.series) {
         if (s.label.empty()) continue;
-        svg << "<line x1=\"" << left + innerWidth - 92 << "\" y1=\"" << legendY - 3 << "\" x2=\"" << left + innerWidth - 78 << "\" y2=\""
-            << legendY - 3 << "\" stroke=\"" << s.colour << "\" stroke-width=\"2\"" << (s.dashed ? " stroke-dasharray=\"4 3\"" : "")
-            << "/><text x=\"" << left + innerWidth - 74 << "\" y=\"" << legendY << "\">" << escapeXml(s.label) << "</text>";
+        if (s.markers)
+            svg << "<circle cx=\"" << left + innerWidth - legendLeft + 7 << "\" cy=\"" << legendY - 3 << "\" r=\"" << 1.5 + s.width << "\" fill=\"" << s.colour << "\"/>";
+        else
+            svg << "<line x1=\"" << left + innerWidth - legendLeft << "\" y1=\"" << legendY - 3 << "\" x2=\"" << left + innerWidth - legendLeft + 14 << "\" y2=\""
+                << legendY - 3 << "\" stroke=\"" << s.colour << "\" stroke-width=\"2\"" << (s.dashed ? " stroke-dasharray=\"4 3\"" : "") << "/>";
+        svg << "<text x=\"" << left + innerWidth - legendLeft + 18 << "\" y=\"" << legendY << "\">" << escapeXml(s.label) << "</text>";
         legendY += 12;
     }
     svg << "</svg>";

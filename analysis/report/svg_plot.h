@@ -16,6 +16,7 @@ struct SvgSeries {
     std::string colour;  ///< CSS colour, e.g. "#1f77b4"
     bool dashed = false;
     double width = 1.2;
+    bool markers = false; ///< a dot at each point instead of a line (a scatter plot)
 };
 
 struct SvgPlot {

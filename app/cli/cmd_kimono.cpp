@@ -2,16 +2,21 @@
 // (analysis/cloth/kimono_cloth.h; docs/KIMONO.md): per take and per emotion, the sleeves' and
 // the hem's own swing and the sleeve's lag behind the hand.
 #include "app/cli/commands.h"
+#include "app/cli/output_guard.h"
 
 #include "analysis/cloth/kimono_cloth.h"
+#include "analysis/io/atomic_file.h"
 #include "analysis/pipeline/stages.h"
+#include "analysis/report/svg_plot.h"
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <iomanip>
 #include <iostream>
 #include <map>
 #include <memory>
+#include <sstream>
 
 namespace bunraku::app::cli {
 namespace {
@@ -22,16 +27,70 @@ namespace pl = bunraku::analysis::pipeline;
 struct KimonoArguments {
     std::string corpus;
     bool json = false;
+    std::string figure; ///< an SVG file: the measures per take, coloured by emotion
     an::ClothParameters cloth;
 };
+
+struct Row {
+    std::string take, function, emotion;
+    an::KimonoMeasures measures;
+};
+
+/// Two scatter plots side by side, one dot per take coloured by its function and emotion: the
+/// right sleeve's own swing against the hand's (the line where they are equal drawn dashed), and
+/// the sleeve's lag behind the hand against the hand's swing. Written atomically.
+void writeKimonoFigure(const std::string& file, const std::vector<Row>& rows)
+{
+    std::vector<std::pair<std::string, std::string>> cells;
+    for (const Row& row : rows)
+        if (std::find(cells.begin(), cells.end(), std::make_pair(row.function, row.emotion)) == cells.end())
+            cells.emplace_back(row.function, row.emotion);
+    an::report::SvgPlot swing, lag;
+    swing.title = "sleeve's own swing against the hand's (one dot per take)";
+    swing.xLabel = "hand swing (cm RMS about its 0.5 s mean)";
+    swing.yLabel = "right sleeve's own swing (cm)";
+    lag.title = "the sleeve's lag behind the hand";
+    lag.xLabel = "hand swing (cm)";
+    lag.yLabel = "lag of the sleeve tip's velocity (s)";
+    double largest = 0.0;
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+        std::vector<double> hand, sleeve, delay;
+        for (const Row& row : rows)
+            if (row.function == cells[c].first && row.emotion == cells[c].second) {
+                hand.push_back(row.measures.handSwingCm);
+                sleeve.push_back(row.measures.sleeveSwingCm[0]);
+                delay.push_back(row.measures.sleeveLagSeconds);
+                largest = std::max({largest, row.measures.handSwingCm, row.measures.sleeveSwingCm[0]});
+            }
+        const std::string label = cells.size() > 3 ? cells[c].first + " " + cells[c].second : cells[c].second;
+        an::report::SvgSeries series;
+        series.label = label;
+        series.colour = an::report::paletteColour(c);
+        series.markers = true;
+        series.x = Eigen::Map<const Eigen::VectorXd>(hand.data(), Eigen::Index(hand.size()));
+        series.y = Eigen::Map<const Eigen::VectorXd>(sleeve.data(), Eigen::Index(sleeve.size()));
+        swing.series.push_back(series);
+        series.y = Eigen::Map<const Eigen::VectorXd>(delay.data(), Eigen::Index(delay.size()));
+        lag.series.push_back(series);
+    }
+    an::report::SvgSeries equal;
+    equal.x = Eigen::Vector2d(0.0, largest);
+    equal.y = equal.x;
+    equal.colour = "#888888";
+    equal.dashed = true;
+    equal.width = 1.0;
+    swing.series.push_back(equal);
+    std::ostringstream svg;
+    svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << swing.width + lag.width << "\" height=\"" << swing.height << "\">"
+        << "<g>" << an::report::renderSvg(swing) << "</g><g transform=\"translate(" << swing.width << ",0)\">"
+        << an::report::renderSvg(lag) << "</g></svg>\n";
+    if (auto status = an::io::writeFileAtomically(file, svg.str()); !status) throw CliError(status.error().message);
+}
 
 void runKimonoExperiment(const KimonoArguments& arguments)
 {
     const pl::CorpusInput input = unwrap(pl::importCorpus(arguments.corpus));
-    struct Row {
-        std::string take, function, emotion;
-        an::KimonoMeasures measures;
-    };
+    if (!arguments.figure.empty()) refuseOutputOverInputs(arguments.figure, OutputKind::File, {arguments.corpus}, "--figure");
     std::vector<Row> rows;
     for (const an::Take& take : input.corpus->takes) {
         const auto simulation = an::simulateKimono(take, arguments.cloth);
@@ -58,6 +117,7 @@ void runKimonoExperiment(const KimonoArguments& arguments)
         m.hem += row.measures.hemSwingCm;
         m.hand += row.measures.handSwingCm;
     }
+    if (!arguments.figure.empty()) writeKimonoFigure(arguments.figure, rows);
     if (arguments.json) {
         nlohmann::json takes = nlohmann::json::array(), summary = nlohmann::json::array();
         for (const Row& row : rows)
@@ -120,6 +180,9 @@ void addKimonoCommands(CommandSet& commands)
                   "own swing (RMS cm beyond what the parts carry) and the sleeve's lag behind the hand (docs/KIMONO.md)");
     command->add_option("CORPUS", arguments->corpus, "Corpus folder (corpus.json), or 'demo' for the embedded synthetic corpus")->required();
     command->add_flag("--json", arguments->json, "Print JSON (every take and the means per cell)");
+    command->add_option("--figure", arguments->figure,
+                        "Also write an SVG figure: per take, the sleeve's own swing against the hand's and its lag behind the hand, "
+                        "coloured by emotion");
     addClothOptions(command, arguments->cloth);
     command->callback([arguments] { runKimonoExperiment(*arguments); });
 }

@@ -8,6 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <fstream>
+#include <sstream>
 
 using bunraku::test::runBunraku;
 
@@ -84,10 +86,24 @@ TEST_CASE("experiment kimono measures every take of a corpus and the means per c
                       (dir / "small").string()});
     INFO(run.err);
     REQUIRE(run.exitCode == 0);
-    run = runBunraku({"experiment", "kimono", (dir / "small").string(), "--json"});
+    run = runBunraku({"experiment", "kimono", (dir / "small").string(), "--json", "--figure", (dir / "kimono.svg").string()});
     INFO(run.err);
     REQUIRE(run.exitCode == 0);
     const auto report = nlohmann::json::parse(run.out);
+    // The figure: one dot per take in each of its two plots, one per cell in each legend, and
+    // the takes' values where the dots are (the first plot's y axis reaches the largest swing).
+    std::ifstream svgFile(dir / "kimono.svg");
+    std::stringstream svg;
+    svg << svgFile.rdbuf();
+    std::size_t dots = 0;
+    for (std::size_t at = svg.str().find("<circle"); at != std::string::npos; at = svg.str().find("<circle", at + 1)) ++dots;
+    CHECK(dots == 2 * 4 + 2 * 2);
+    CHECK(svg.str().find("greeting") == std::string::npos); // one function: the legend names the emotions
+    CHECK(svg.str().find(">hostile</text>") != std::string::npos);
+    CHECK(svg.str().rfind("</svg>") != std::string::npos);
+    run = runBunraku({"experiment", "kimono", (dir / "small").string(), "--figure", (dir / "small" / "corpus.json").string()});
+    CHECK(run.exitCode != 0); // never over the corpus it reads
+    CHECK(run.err.find("--figure") != std::string::npos);
     REQUIRE(report["takes"].size() == 4);
     REQUIRE(report["cells"].size() == 2);
     for (const auto& take : report["takes"]) {
