@@ -7,6 +7,9 @@
 #include "app/cli/cli.h"
 
 #include "analysis/axis/axis_channels.h"
+#include "analysis/body/body_description.h"
+#include "analysis/body/body_fit.h"
+#include "analysis/cloth/kimono_cloth.h"
 #include "analysis/core/parallel.h"
 #include "analysis/decompose/emotion_weight.h"
 #include "analysis/io/take_csv.h"
@@ -79,6 +82,12 @@ struct Designed {
 
 struct TakeAxis {
     pl::Shared<pl::TakeAxis> axis;
+};
+
+/// A take's kimono simulated as cloth (analysis/cloth) and the take it was simulated for.
+struct Kimono {
+    std::shared_ptr<const an::KimonoSimulation> simulation;
+    std::shared_ptr<const an::Take> take;
 };
 
 struct Analysis {
@@ -908,6 +917,61 @@ gains (5.4) of every emotional cell against its function's functional motion.)do
             return TakeAxis{std::make_shared<const pl::TakeAxis>(std::move(axis))};
         },
         py::arg("take"), py::arg("parameters"));
+
+    py::class_<Kimono>(m, "Kimono", R"doc(
+A take's kimono simulated as cloth (thesis 6, future work; docs/KIMONO.md): the skirt and the long
+sleeves driven by the take's parts, on the puppet the take is drawn with (fitted to its skeleton
+when it has one).)doc")
+        .def_property_readonly("take", [](const Kimono& k) { return std::make_shared<an::Take>(an::kimonoTake(*k.take, *k.simulation)); },
+                               "The measured points as a Take of 18 channels (sleeve_right_tip.x ... hem_right.z, cm), "
+                               "as the workbench's \"kimono\" take and the last 18 columns `bunraku convert --kimono` writes.")
+        .def_property_readonly("points", [](py::object self) { return matrixView(self.cast<const Kimono&>().simulation->points, self); },
+                               "frames x 18: the measured points (cm, world).")
+        .def_property_readonly("frames", [](const Kimono& k) { return k.simulation->frameCount(); })
+        .def_property_readonly("triangles",
+                               [](const Kimono& k) {
+                                   const auto& t = k.simulation->cloth->triangles;
+                                   py::array_t<std::uint32_t> out({py::ssize_t(t.size() / 3), py::ssize_t(3)});
+                                   std::copy(t.begin(), t.end(), out.mutable_data());
+                                   return out;
+                               },
+                               "triangles x 3: the cloth's surface (particle indices, counter-clockwise seen from outside the skirt).")
+        .def(
+            "particles",
+            [](const Kimono& k, Eigen::Index frame) {
+                auto x = unwrap(an::kimonoFrame(*k.simulation, *k.take, frame));
+                Eigen::MatrixXd out(Eigen::Index(x.size()), 3);
+                for (std::size_t i = 0; i < x.size(); ++i) out.row(Eigen::Index(i)) = x[i].transpose();
+                return out;
+            },
+            py::arg("frame"), "particles x 3: the cloth at `frame` (cm, world), the same values however the frames are visited.")
+        .def(
+            "measures",
+            [](const Kimono& k) {
+                const auto measured = unwrap(an::measureKimono(*k.take, *k.simulation));
+                py::dict out;
+                out["sleeve_swing_right_cm"] = measured.sleeveSwingCm[0];
+                out["sleeve_swing_left_cm"] = measured.sleeveSwingCm[1];
+                out["sleeve_lag_s"] = measured.sleeveLagSeconds;
+                out["hem_swing_cm"] = measured.hemSwingCm;
+                out["hand_swing_cm"] = measured.handSwingCm;
+                return out;
+            },
+            "The kimono's own motion beyond what the parts carry, as `bunraku experiment kimono --json` reports per take.")
+        .def("__repr__", [](const Kimono& k) { return "<bunraku.Kimono of " + k.take->displayName() + ">"; });
+
+    m.def(
+        "_kimono",
+        [](const an::Take& take, const py::dict& cloth) {
+            an::ClothParameters parameters;
+            for (const an::ClothParameterLimit& limit : an::clothParameterLimits())
+                if (cloth.contains(limit.name)) parameters.*(limit.member) = cloth[limit.name].cast<double>();
+            auto shared = std::make_shared<const an::Take>(take);
+            const an::BodyDescription body = take.skeleton ? an::bodyForTake(an::defaultBodyDescription(), take) : an::defaultBodyDescription();
+            auto simulation = unwrap(runReleased([&](const an::RunControl& control) { return pl::runKimono(*shared, body, parameters, control); }));
+            return Kimono{std::make_shared<const an::KimonoSimulation>(std::move(simulation)), shared};
+        },
+        py::arg("take"), py::arg("cloth"));
 
     m.def(
         "_gains",

@@ -42,6 +42,7 @@ from ._bunraku import (  # noqa: F401  (the public names)
     Skeleton,
     Take,
     TakeAxis,
+    Kimono,
     read_take,
     relative_error,
 )
@@ -51,8 +52,8 @@ __version__: str = _bunraku.__version__
 __all__ = [
     "Analysis", "Axes", "CellAxis", "Corpus", "Decomposition", "Designed", "Error", "Fluctuations",
     "FunctionAxis", "Gains", "NormalisedCell", "NormalisedTake", "Normalisation", "Parameters", "Phase",
-    "Preprocessed", "Skeleton", "Take", "TakeAxis", "__version__", "analyse", "decompose", "design",
-    "emotion_weight", "fluctuations", "gains", "motion_axis", "normalise", "parameters", "phase",
+    "Preprocessed", "Skeleton", "Take", "TakeAxis", "Kimono", "__version__", "analyse", "decompose", "design",
+    "emotion_weight", "fluctuations", "gains", "kimono", "motion_axis", "normalise", "parameters", "phase",
     "preprocess", "read_take", "relative_error",
 ]
 
@@ -209,6 +210,22 @@ def motion_axis(source: Union[Take, Corpus, Preprocessed, Normalisation], *, fro
     if isinstance(source, Take):
         return _bunraku._take_axis(source, p)
     return _bunraku._axes(_normalisation(source, threads), p, threads)
+
+
+def kimono(take: Take, *, massPerArea: float = 0.015, stretchCompliance: float = 0.0, bendCompliance: float = 2e-4,
+           damping: float = 1.5, drag: float = 0.6, substepRate: float = 240.0, collisionMargin: float = 0.3,
+           settleSeconds: float = 0.5) -> Kimono:
+    """The kimono of ``take`` simulated as cloth (thesis 6, future work; docs/KIMONO.md): the skirt
+    and the long sleeves driven by the take's parts, on the puppet the take is drawn with (fitted to
+    its skeleton when it has one), as the workbench's Cloth box and ``bunraku convert --kimono``
+    simulate it. Keywords: the cloth parameters (g/cm^2, cm/dyn, 1/s, Hz, cm, s), the names of a
+    project's ``view.clothParameters``; a value outside its range raises :class:`Error` naming it."""
+    if not isinstance(take, Take):
+        raise TypeError(f"bunraku.kimono(): expected a Take, got {type(take).__name__}")
+    cloth = {"massPerArea": massPerArea, "stretchCompliance": stretchCompliance, "bendCompliance": bendCompliance,
+             "damping": damping, "drag": drag, "substepRate": substepRate, "collisionMargin": collisionMargin,
+             "settleSeconds": settleSeconds}
+    return _bunraku._kimono(take, cloth)
 
 
 def _axes(source: Any, threads: int, axis: Mapping[str, Any]) -> Axes:

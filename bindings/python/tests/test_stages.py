@@ -324,3 +324,32 @@ def test_the_remaining_accessors_agree_with_the_cli_files(demo_analysis, demo_cl
     with pytest.raises(bunraku.Error) as error:
         bunraku.design(axes, function.function, boundaries=[5, 3])
     assert "parameters.design.boundaries[1]: expected increasing whole frames" in str(error.value)
+
+
+def test_kimono_of_a_take_matches_bunraku_convert_kimono(cli, demo_dir, tmp_path):
+    path = demo_dir / "greeting_friendly_2.csv"
+    take = bunraku.read_take(str(path))
+    kimono = bunraku.kimono(take)
+    assert isinstance(kimono, bunraku.Kimono)
+    run_cli(cli, "convert", path, "--kimono", "-o", tmp_path / "kimono.csv")
+    converted = take_matrix(tmp_path / "kimono.csv")
+    assert converted.shape == (take.frames, 24 + 18)
+    assert same_bits(kimono.points, converted[:, 24:])
+    assert same_bits(kimono.take.values, converted[:, 24:])
+    assert kimono.take.channels[0] == "sleeve_right_tip.x"
+    # The particles of a frame, visited out of order, are the simulation's: the measured points
+    # are particles of the cloth.
+    last = kimono.particles(kimono.frames - 1)
+    first = kimono.particles(0)
+    assert last.shape == first.shape and last.shape[1] == 3
+    for point in range(6):
+        row = kimono.points[kimono.frames - 1, 3 * point:3 * point + 3]
+        assert np.any(np.all(last == row, axis=1))
+    assert kimono.triangles.shape[1] == 3 and int(kimono.triangles.max()) < last.shape[0]
+    measures = kimono.measures()
+    assert set(measures) == {"sleeve_swing_right_cm", "sleeve_swing_left_cm", "sleeve_lag_s", "hem_swing_cm", "hand_swing_cm"}
+    # Other cloth, other motion; a value out of range raises the range's message.
+    softer = bunraku.kimono(take, damping=0.2, bendCompliance=0.01)
+    assert not same_bits(softer.points, kimono.points)
+    with pytest.raises(bunraku.Error, match="cloth.damping"):
+        bunraku.kimono(take, damping=-1.0)
