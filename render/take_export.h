@@ -102,7 +102,9 @@ std::string takeExportNote(const analysis::Take& take, const std::filesystem::pa
 /// kimonoExportTake) and written too: in a .glb as a mesh node "kimono_cloth" animated by morph targets
 /// (kimonoMorphMesh) beside the figure, whose modelled puppet then leaves out the skinned skirt
 /// and sleeves (puppetRig's `underCloth`); in a .csv as the kimono's 18 measured channels
-/// (analysis::withKimonoChannels); a .bvh cannot hold it (an error).
+/// (analysis::withKimonoChannels); a .bvh cannot hold it (an error). The cloth hangs on the body
+/// simulateKimono chooses (the default puppet, or the puppet fitted to a performer's skeleton),
+/// which is the figure's when `body` is analysis::defaultBodyDescription(), as every caller passes.
 analysis::Status exportTake(const analysis::Take& take, const analysis::BodyDescription& body, const std::filesystem::path& file,
                             const std::string& name = {}, const std::string& description = {}, const KimonoExport* kimono = nullptr);
 
