@@ -62,6 +62,11 @@ bool ExportController::exportTake(TakeSlot slot, const QString& file, bool kimon
         status = render::exportTake(*take, analysis::defaultBodyDescription(), path, name.toStdString(),
                                     label != name ? label.toStdString() : std::string());
     }
+    if (!status && status.error().code == analysis::ErrorCode::Cancelled) {
+        m_lastError = tr("Export of take %1 cancelled: nothing was written").arg(slotName(slot));
+        emit statusMessage(m_lastError);
+        return false;
+    }
     if (!status) {
         report(tr("Cannot export take %1: %2").arg(slotName(slot), QString::fromStdString(status.error().message)));
         return false;
