@@ -420,6 +420,7 @@ analysis::Status AnalysisController::setClothParameters(const analysis::ClothPar
     m_clothParameters = parameters;
     requestKimono(TakeSlot::A);
     requestKimono(TakeSlot::B);
+    emit clothParametersChanged(m_clothParameters);
     return analysis::okStatus();
 }
 

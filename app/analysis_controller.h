@@ -128,6 +128,9 @@ signals:
     void resultChanged(int slot);
     /// The weighted take was re-synthesised.
     void weightedChanged();
+    /// The cloth parameters changed (the 3D view's Cloth Settings, a project): what a kimono
+    /// export simulates with too.
+    void clothParametersChanged(const analysis::ClothParameters& parameters);
 
 private:
     void corpusChanged();

@@ -4,8 +4,14 @@
 /// glTF binary (the skeleton, or the puppet for a take without one, as a skinned mesh with one
 /// animation) or CSV, chosen by the file's extension. The same writer as `bunraku ... -o`
 /// (render/take_export.h). Writes are atomic; errors name the file and what went wrong.
+/// The save dialog also offers the take with its kimono simulated as cloth (`bunraku ... --kimono`):
+/// a .glb with the cloth as a mesh moving by morph targets (the figure without its skinned skirt
+/// and sleeves), a .csv with the kimono's 18 measured channels; the simulation runs off the GUI
+/// thread behind a progress dialog with Cancel.
 
 #include "app/document.h"
+
+#include "analysis/cloth/kimono_cloth.h"
 
 #include <QObject>
 #include <QString>
@@ -26,8 +32,15 @@ public:
     /// What the last export said of a derived take's skeleton and channels (render::takeExportNote).
     QString lastNote() const { return m_lastNote; }
 
-    /// Writes the take shown in `slot` to `file` (.bvh, .glb or .csv); false on failure.
-    bool exportTake(TakeSlot slot, const QString& file);
+    /// Writes the take shown in `slot` to `file` (.bvh, .glb or .csv); false on failure. With
+    /// `kimono`, the take's kimono simulated with clothParameters() goes into the file too (a .glb
+    /// or a .csv; a .bvh is refused).
+    bool exportTake(TakeSlot slot, const QString& file, bool kimono = false);
+
+    /// The cloth parameters a kimono export simulates with: ClothParameters{} (the command line's
+    /// defaults) until set, e.g. from the 3D view's cloth settings.
+    void setClothParameters(const analysis::ClothParameters& parameters) { m_cloth = parameters; }
+    const analysis::ClothParameters& clothParameters() const { return m_cloth; }
 
     /// "Export Take A..." / "Export Take B...": a save dialog offering BVH, glTF and CSV.
     QAction* exportAction(TakeSlot slot) const { return slot == TakeSlot::A ? m_exportA : m_exportB; }
@@ -44,6 +57,7 @@ private:
     bool m_dialogs = true;
     QString m_lastError;
     QString m_lastNote;
+    analysis::ClothParameters m_cloth;
     QAction* m_exportA = nullptr;
     QAction* m_exportB = nullptr;
 };

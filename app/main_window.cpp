@@ -191,6 +191,9 @@ void MainWindow::createViews(std::shared_ptr<Executor> executor)
     m_graphs = new widgets::GraphPanel(this);
     m_timeline = new widgets::TimelineWidget(this);
     m_analysis = new AnalysisController(*m_document, this, std::move(executor));
+    // A kimono export simulates the cloth the 3D view shows (its Cloth Settings).
+    m_exports->setClothParameters(m_analysis->clothParameters());
+    connect(m_analysis, &AnalysisController::clothParametersChanged, m_exports, &ExportController::setClothParameters);
     m_viewportPanel = new ViewportPanel(*m_document, *m_analysis, this);
     m_design = new DesignController(*m_document, *m_analysis, this);
     m_designPanel = new DesignPanel(*m_document, *m_design, this);

@@ -3,6 +3,7 @@
 #include "analysis/body/body_pose.h"
 #include "analysis/body/performer_body.h"
 #include "analysis/body/puppet_model.h"
+#include "analysis/cloth/kimono_mesh.h"
 #include "analysis/core/skeleton_take.h"
 #include "analysis/skeleton/puppet_rig_fit.h"
 #include "analysis/io/take_csv.h"
@@ -12,6 +13,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 
 namespace bunraku::render {
@@ -82,7 +84,7 @@ ExportRig performerRig(const std::shared_ptr<const analysis::SkeletalMotion>& mo
     return rig;
 }
 
-analysis::Result<ExportRig> puppetRig(const analysis::BodyDescription& body, const analysis::Take& take)
+analysis::Result<ExportRig> puppetRig(const analysis::BodyDescription& body, const analysis::Take& take, bool underCloth)
 {
     auto binding = analysis::bindBody(body, take);
     if (!binding) return binding.error();
@@ -127,7 +129,7 @@ analysis::Result<ExportRig> puppetRig(const analysis::BodyDescription& body, con
         mesh.positions = puppet->positions;
         mesh.normals = puppet->normals;
         mesh.colours = puppet->colours;
-        mesh.indices = puppet->indices;
+        mesh.indices = underCloth ? analysis::puppetIndicesUnderCloth(*puppet) : puppet->indices;
         mesh.weights = puppet->weights;
         mesh.joints.reserve(puppet->vertexCount());
         for (const auto& influence : puppet->joints)
@@ -140,6 +142,62 @@ analysis::Result<ExportRig> puppetRig(const analysis::BodyDescription& body, con
     for (std::size_t p = 0; p < meshes.size(); ++p)
         if (!meshes[p].empty()) rig.meshes.push_back(toJointMesh(meshes[p], int(p) + 1));
     return rig;
+}
+
+namespace {
+
+/// True when a .glb of the body take `shown` holds the performer's skeleton and body, false when
+/// it holds the puppet (exportTake's choice).
+bool exportsPerformer(const analysis::Take& shown) { return shown.skeleton && !analysis::isPuppetRig(*shown.skeleton->skeleton); }
+
+} // namespace
+
+std::vector<Eigen::Index> kimonoKeyFrames(Eigen::Index frames, int maxKeys)
+{
+    std::vector<Eigen::Index> keys;
+    if (frames <= 0) return keys;
+    const Eigen::Index n = std::max<Eigen::Index>(2, maxKeys);
+    if (frames <= n) {
+        for (Eigen::Index f = 0; f < frames; ++f) keys.push_back(f);
+        return keys;
+    }
+    for (Eigen::Index k = 0; k < n; ++k)
+        keys.push_back(Eigen::Index(std::llround(double(k) * double(frames - 1) / double(n - 1))));
+    return keys;
+}
+
+analysis::Take kimonoExportTake(const analysis::Take& take)
+{
+    analysis::Take shown = analysis::bodyTake(take);
+    if (!exportsPerformer(shown)) shown.skeleton = nullptr;
+    return shown;
+}
+
+analysis::Result<analysis::io::MorphAnimatedMesh> kimonoMorphMesh(const std::shared_ptr<const analysis::KimonoSimulation>& simulation,
+                                                                 const std::shared_ptr<const analysis::Take>& take, int maxKeys,
+                                                                 const analysis::RunControl& control)
+{
+    const analysis::KimonoCloth& cloth = *simulation->cloth;
+    analysis::io::MorphAnimatedMesh mesh;
+    mesh.name = "kimono_cloth";
+    mesh.indices = cloth.triangles;
+    mesh.colours = analysis::kimonoLook(cloth, analysis::shippedPuppetMesh()).colours;
+    const std::vector<Eigen::Index> keys = kimonoKeyFrames(simulation->frameCount(), maxKeys);
+    analysis::KimonoPlayer player(simulation, take);
+    for (std::size_t k = 0; k < keys.size(); ++k) {
+        if (control.cancelled()) return analysis::makeError(analysis::ErrorCode::Cancelled, take->displayName() + ": the kimono's export was cancelled");
+        auto particles = player.frame(keys[k]);
+        if (!particles) return particles.error();
+        const std::vector<Eigen::Vector3d>& x = **particles;
+        if (k == 0) mesh.normals = analysis::kimonoNormals(cloth, x);
+        std::vector<Eigen::Vector3f> positions(x.size());
+        for (std::size_t i = 0; i < x.size(); ++i) positions[i] = x[i].cast<float>();
+        mesh.keyPositions.push_back(std::move(positions));
+        mesh.keyTimes.push_back(double(keys[k]) / simulation->rateHz);
+        if (k % 16 == 0) control.report(double(k + 1) / double(keys.size()));
+    }
+    control.report(1.0);
+    return mesh;
 }
 
 std::string takeExportNote(const analysis::Take& take, const std::filesystem::path& file, const analysis::Take* perChannel)
@@ -159,30 +217,53 @@ std::string takeExportNote(const analysis::Take& take, const std::filesystem::pa
 }
 
 analysis::Status exportTake(const analysis::Take& take, const analysis::BodyDescription& body, const std::filesystem::path& file,
-                            const std::string& name, const std::string& description)
+                            const std::string& name, const std::string& description, const KimonoExport* kimono)
 {
     // One motion: every format holds the body's (analysis::bodyTake), as the view and graphs show it.
     const analysis::Take shown = analysis::bodyTake(take);
-    switch (takeExportFormat(file)) {
-    case TakeExportFormat::Csv: return analysis::io::writeTakeCsv(shown, file, description);
+    const TakeExportFormat format = takeExportFormat(file);
+    const auto failed = [&](const analysis::Error& error) { return analysis::makeError(error.code, file.string() + ": " + error.message); };
+    // The kimono, simulated on the take the file holds (kimonoExportTake): 80% of the progress,
+    // the key shapes the rest.
+    std::shared_ptr<const analysis::Take> clothTake;
+    std::shared_ptr<const analysis::KimonoSimulation> simulation;
+    if (kimono && format != TakeExportFormat::Unknown) {
+        if (format == TakeExportFormat::Bvh)
+            return analysis::makeError(analysis::ErrorCode::Unsupported,
+                                       file.string() + ": a .bvh cannot hold the kimono (the simulated cloth goes into a .glb or a .csv)");
+        if (kimono->maxKeys < 2) return analysis::makeError(analysis::ErrorCode::InvalidArgument, file.string() + ": the kimono needs at least 2 key shapes");
+        clothTake = std::make_shared<const analysis::Take>(kimonoExportTake(take));
+        auto simulated = analysis::simulateKimono(*clothTake, kimono->cloth,
+                                                  format == TakeExportFormat::Glb ? kimono->control.step(0.0, 0.8) : kimono->control);
+        if (!simulated) return failed(simulated.error());
+        simulation = std::make_shared<const analysis::KimonoSimulation>(std::move(simulated).value());
+    }
+    switch (format) {
+    case TakeExportFormat::Csv:
+        if (simulation) return analysis::io::writeTakeCsv(analysis::withKimonoChannels(shown, *simulation), file, description);
+        return analysis::io::writeTakeCsv(shown, file, description);
     case TakeExportFormat::Bvh: return analysis::io::writeTakeFile(shown, file);
     case TakeExportFormat::Glb: {
-        if (auto valid = analysis::validateTake(shown); !valid)
-            return analysis::makeError(valid.error().code, file.string() + ": " + valid.error().message);
+        if (auto valid = analysis::validateTake(shown); !valid) return failed(valid.error());
         ExportRig rig;
-        if (shown.skeleton && !analysis::isPuppetRig(*shown.skeleton->skeleton)) {
+        if (exportsPerformer(shown)) {
             rig = performerRig(shown.skeleton);
         } else {
             // The puppet itself (a take of the puppet's channels, or on its fitted rig).
             analysis::Take channels = shown;
             channels.skeleton = nullptr;
-            auto puppet = puppetRig(body, channels);
-            if (!puppet) return analysis::makeError(puppet.error().code, file.string() + ": " + puppet.error().message);
+            auto puppet = puppetRig(body, channels, simulation != nullptr);
+            if (!puppet) return failed(puppet.error());
             rig = std::move(puppet).value();
         }
         analysis::io::GltfExportOptions options;
         options.name = name.empty() ? shown.displayName() : name;
         options.description = description;
+        if (simulation) {
+            auto cloth = kimonoMorphMesh(simulation, clothTake, kimono->maxKeys, kimono->control.step(0.8, 1.0));
+            if (!cloth) return failed(cloth.error());
+            options.animatedMesh = std::make_shared<const analysis::io::MorphAnimatedMesh>(std::move(cloth).value());
+        }
         if (rig.meshes.empty()) return analysis::io::writeSkinnedGlb(*rig.motion, shown.rateHz, rig.skinned, file, options);
         return analysis::io::writeSkeletalGlb(*rig.motion, shown.rateHz, rig.meshes, file, options);
     }

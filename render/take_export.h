@@ -9,7 +9,9 @@
 /// puppet's parts), hence this lives beside the renderer.
 
 #include "analysis/body/body_description.h"
+#include "analysis/cloth/kimono_cloth.h"
 #include "analysis/core/result.h"
+#include "analysis/core/run_control.h"
 #include "analysis/core/skeleton.h"
 #include "analysis/core/take.h"
 #include "analysis/io/gltf_export.h"
@@ -52,8 +54,38 @@ ExportRig performerRig(const std::shared_ptr<const analysis::SkeletalMotion>& mo
 /// skinned surface (fittedPuppetMesh: its bind poses, its four weights per vertex, its colours)
 /// in `skinned`; for another body, one joint per body part (named as the part) posed by
 /// worldPartPoses, carrying that part's primitives in `meshes`. Errors when the take cannot
-/// drive the body (bindBody).
-analysis::Result<ExportRig> puppetRig(const analysis::BodyDescription& body, const analysis::Take& take);
+/// drive the body (bindBody). With `underCloth`, the modelled puppet's surface keeps only the
+/// triangles the simulated kimono does not replace (analysis::puppetIndicesUnderCloth: without the
+/// skinned skirt and long sleeves), so that a file with the cloth does not dress the puppet twice.
+analysis::Result<ExportRig> puppetRig(const analysis::BodyDescription& body, const analysis::Take& take, bool underCloth = false);
+
+/// The simulated kimono in a take's export (docs/KIMONO.md, "In a .glb"): the cloth's parameters,
+/// how many key shapes a .glb keeps at most, and the simulation's progress and cancelling.
+inline constexpr int kKimonoExportMaxKeys = 512;
+struct KimonoExport {
+    analysis::ClothParameters cloth;
+    int maxKeys = kKimonoExportMaxKeys; ///< key shapes of the cloth in a .glb, at least 2
+    analysis::RunControl control;       ///< the simulation's and the keys' progress, cancelling
+};
+
+/// The frames a .glb keeps the kimono's shape at: every frame of a take of at most `maxKeys`
+/// frames, else `maxKeys` frames evenly spaced from the first to the last (frame
+/// round(k (frames - 1) / (maxKeys - 1))); between them a client interpolates linearly.
+std::vector<Eigen::Index> kimonoKeyFrames(Eigen::Index frames, int maxKeys = kKimonoExportMaxKeys);
+
+/// The take whose kimono an export of `take` carries, as exportTake simulates it
+/// (analysis::simulateKimono): the body's motion (analysis::bodyTake), on the performer's skeleton
+/// when the file holds the performer, else the puppet's channels alone (the modelled puppet on the
+/// default body, as the export poses it).
+analysis::Take kimonoExportTake(const analysis::Take& take);
+
+/// The simulated kimono as a mesh animated by morph targets (analysis/io/gltf_export.h): the
+/// cloth's triangles, the kimono's colours (analysis::kimonoLook), its particles at
+/// kimonoKeyFrames (positions from analysis::KimonoPlayer, world, cm) at frame / rate seconds, the
+/// normals of the first key. `control` reports the keys' progress.
+analysis::Result<analysis::io::MorphAnimatedMesh> kimonoMorphMesh(const std::shared_ptr<const analysis::KimonoSimulation>& simulation,
+                                                                 const std::shared_ptr<const analysis::Take>& take,
+                                                                 int maxKeys = kKimonoExportMaxKeys, const analysis::RunControl& control = {});
 
 /// What a user must know about writing `take` to `file`: every format holds the take as one body
 /// moves (analysis::bodyTake), and how far the thesis's per-channel result is from it - the
@@ -66,8 +98,14 @@ std::string takeExportNote(const analysis::Take& take, const std::filesystem::pa
 /// "bow designed"); empty: the take's displayName(). `description` (a derived take's recipe)
 /// is kept in the file's metadata where its reader allows: a .glb's scene and animation
 /// `extras.description`, a .csv's `#` comment lines; a .bvh has none (the BVH reader takes no
-/// comments).
+/// comments). With `kimono`, the take's kimono is simulated (analysis::simulateKimono on
+/// kimonoExportTake) and written too: in a .glb as a mesh node "kimono_cloth" animated by morph targets
+/// (kimonoMorphMesh) beside the figure, whose modelled puppet then leaves out the skinned skirt
+/// and sleeves (puppetRig's `underCloth`); in a .csv as the kimono's 18 measured channels
+/// (analysis::withKimonoChannels); a .bvh cannot hold it (an error). The cloth hangs on the body
+/// simulateKimono chooses (the default puppet, or the puppet fitted to a performer's skeleton),
+/// which is the figure's when `body` is analysis::defaultBodyDescription(), as every caller passes.
 analysis::Status exportTake(const analysis::Take& take, const analysis::BodyDescription& body, const std::filesystem::path& file,
-                            const std::string& name = {}, const std::string& description = {});
+                            const std::string& name = {}, const std::string& description = {}, const KimonoExport* kimono = nullptr);
 
 } // namespace bunraku::render

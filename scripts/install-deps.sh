@@ -26,6 +26,15 @@ packages=(
   snakemake
 )
 
+# The Khronos glTF validator, the peer of the .glb exports' tests (tests/support/gltf_validator.h):
+# npm's package, installed globally when node's npm is there (else those tests skip, or fail under CI).
+install_gltf_validator() {
+  if command -v npm >/dev/null 2>&1 && [ ! -d "$(npm root -g)/gltf-validator" ]; then
+    echo "install-deps: installing npm gltf-validator"
+    npm install -g --no-audit --no-fund gltf-validator@2.0.0-dev.3.10
+  fi
+}
+
 missing=()
 for p in "${packages[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
@@ -35,6 +44,7 @@ done
 
 if [ ${#missing[@]} -eq 0 ]; then
   echo "install-deps: all ${#packages[@]} packages present"
+  install_gltf_validator
   exit 0
 fi
 
@@ -44,3 +54,4 @@ if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+install_gltf_validator

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <utility>
 #include <limits>
@@ -159,6 +160,34 @@ Status checkSkinnedMesh(const Skeleton& skeleton, const SkinnedMesh& mesh)
 
 } // namespace
 
+Status validateMorphAnimatedMesh(const MorphAnimatedMesh& mesh)
+{
+    const std::string where = "glTF animated mesh '" + mesh.name + "'";
+    const std::size_t keys = mesh.keyPositions.size();
+    if (keys == 0 || mesh.keyTimes.size() != keys)
+        return makeError(ErrorCode::InvalidArgument, where + ": expected at least one key and one time per key, got " + std::to_string(keys) +
+                                                         " keys and " + std::to_string(mesh.keyTimes.size()) + " times");
+    const std::size_t n = mesh.normals.size();
+    if (n == 0 || mesh.colours.size() != n)
+        return makeError(ErrorCode::InvalidArgument, where + ": normals and colours differ in count, or there are no vertices");
+    if (n > std::size_t(std::numeric_limits<std::uint32_t>::max())) return makeError(ErrorCode::InvalidArgument, where + ": too many vertices");
+    if (mesh.indices.empty() || mesh.indices.size() % 3 != 0)
+        return makeError(ErrorCode::InvalidArgument, where + ": expected triangles (3 indices each)");
+    for (std::uint32_t index : mesh.indices)
+        if (index >= n) return makeError(ErrorCode::InvalidArgument, where + ": an index is out of range");
+    for (std::size_t k = 0; k < keys; ++k) {
+        const double t = mesh.keyTimes[k];
+        if (!std::isfinite(t) || t < 0.0 || (k > 0 && !(float(t) > float(mesh.keyTimes[k - 1]))))
+            return makeError(ErrorCode::InvalidArgument, where + ": key " + std::to_string(k) + "'s time is not finite, negative or not after the key before");
+        if (mesh.keyPositions[k].size() != n)
+            return makeError(ErrorCode::InvalidArgument, where + ": key " + std::to_string(k) + " has " + std::to_string(mesh.keyPositions[k].size()) +
+                                                             " vertices, expected " + std::to_string(n));
+        for (const Eigen::Vector3f& p : mesh.keyPositions[k])
+            if (!p.allFinite()) return makeError(ErrorCode::InvalidArgument, where + ": key " + std::to_string(k) + " has a non-finite position");
+    }
+    return okStatus();
+}
+
 Result<SkinnedMesh> rigidlySkinnedMesh(const SkeletalMotion& motion, const std::vector<JointMesh>& meshes)
 {
     if (auto valid = validateSkeletalMotion(motion); !valid) return valid.error();
@@ -209,6 +238,8 @@ Result<std::string> skinnedMotionToGlb(const SkeletalMotion& motion, double rate
     const Eigen::Index frames = motion.frameCount();
     if (frames < 1) return makeError(ErrorCode::InvalidArgument, skeleton.name + ": glTF export needs at least one frame");
     if (auto ok = checkSkinnedMesh(skeleton, skinned); !ok) return ok.error();
+    if (options.animatedMesh)
+        if (auto ok = validateMorphAnimatedMesh(*options.animatedMesh); !ok) return ok.error();
     const Eigen::Quaterniond g = gltfAxisChange();
 
     tinygltf::Model model;
@@ -368,6 +399,78 @@ Result<std::string> skinnedMotionToGlb(const SkeletalMotion& motion, double rate
         }
         addChannel(nodeOf[j], "translation", translations, TINYGLTF_TYPE_VEC3);
     }
+    int animatedNodeIndex = -1;
+    if (options.animatedMesh) {
+        // The first key is the mesh, every later key a morph target (POSITION displacements from
+        // the first); the weights give key k's target 1 at its time and the others 0.
+        const MorphAnimatedMesh& animated = *options.animatedMesh;
+        const std::size_t keys = animated.keyPositions.size();
+        const std::size_t clothVertices = animated.normals.size();
+        const auto inFile = [&](const Eigen::Vector3f& p) { return g * (kMetresPerCm * p.cast<double>()); };
+        std::vector<float> base, baseNormals, baseColours;
+        base.reserve(3 * clothVertices);
+        std::vector<Eigen::Vector3d> first(clothVertices);
+        for (std::size_t v = 0; v < clothVertices; ++v) {
+            first[v] = inFile(animated.keyPositions[0][v]);
+            const Eigen::Vector3d n = (g * animated.normals[v].cast<double>()).normalized();
+            for (int a = 0; a < 3; ++a) {
+                base.push_back(float(first[v][a]));
+                baseNormals.push_back(float(n[a]));
+                baseColours.push_back(std::clamp(animated.colours[v][a], 0.0f, 1.0f));
+            }
+        }
+        tinygltf::Primitive morphing;
+        morphing.mode = TINYGLTF_MODE_TRIANGLES;
+        morphing.attributes["POSITION"] = buffer.addFloats(base, 3, TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER, true);
+        morphing.attributes["NORMAL"] = buffer.addFloats(baseNormals, 3, TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER, false);
+        morphing.attributes["COLOR_0"] = buffer.addFloats(baseColours, 3, TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER, false);
+        morphing.indices = buffer.addIndices(animated.indices);
+        morphing.material = 0;
+        tinygltf::Value::Array targetNames;
+        std::vector<float> displacement(3 * clothVertices);
+        for (std::size_t k = 1; k < keys; ++k) {
+            for (std::size_t v = 0; v < clothVertices; ++v) {
+                // The displacement from the base as stored (float), so base + displacement is the
+                // key's position to float rounding.
+                const Eigen::Vector3d p = inFile(animated.keyPositions[k][v]);
+                for (int a = 0; a < 3; ++a) displacement[3 * v + std::size_t(a)] = float(p[a]) - base[3 * v + std::size_t(a)];
+            }
+            morphing.targets.push_back({{"POSITION", buffer.addFloats(displacement, 3, TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER, true)}});
+            char targetName[48];
+            std::snprintf(targetName, sizeof targetName, "t %.4f s", animated.keyTimes[k]);
+            targetNames.emplace_back(std::string(targetName));
+        }
+        tinygltf::Mesh morphMesh;
+        morphMesh.name = animated.name;
+        morphMesh.primitives.push_back(morphing);
+        if (keys > 1) {
+            morphMesh.weights.assign(keys - 1, 0.0);
+            // Blender names its shape keys after these (glTF's convention for target names).
+            morphMesh.extras = tinygltf::Value(tinygltf::Value::Object{{"targetNames", tinygltf::Value(targetNames)}});
+        }
+        model.meshes.push_back(morphMesh);
+        tinygltf::Node animatedNode;
+        animatedNode.name = animated.name;
+        animatedNode.mesh = int(model.meshes.size()) - 1;
+        animatedNodeIndex = int(model.nodes.size());
+        model.nodes.push_back(animatedNode);
+        if (keys > 1) {
+            std::vector<float> keyTimes(keys);
+            for (std::size_t k = 0; k < keys; ++k) keyTimes[k] = float(animated.keyTimes[k]);
+            std::vector<float> keyWeights(keys * (keys - 1), 0.0f);
+            for (std::size_t k = 1; k < keys; ++k) keyWeights[k * (keys - 1) + (k - 1)] = 1.0f;
+            tinygltf::AnimationSampler sampler;
+            sampler.input = buffer.addFloats(keyTimes, 1, TINYGLTF_TYPE_SCALAR, -1, true);
+            sampler.output = buffer.addFloats(keyWeights, 1, TINYGLTF_TYPE_SCALAR, -1, false);
+            sampler.interpolation = "LINEAR";
+            animation.samplers.push_back(sampler);
+            tinygltf::AnimationChannel channel;
+            channel.sampler = int(animation.samplers.size()) - 1;
+            channel.target_node = animatedNodeIndex;
+            channel.target_path = "weights";
+            animation.channels.push_back(channel);
+        }
+    }
     if (!options.description.empty())
         animation.extras = tinygltf::Value(tinygltf::Value::Object{{"description", tinygltf::Value(options.description)}});
     model.animations.push_back(animation);
@@ -378,6 +481,7 @@ Result<std::string> skinnedMotionToGlb(const SkeletalMotion& motion, double rate
     for (std::size_t j = 0; j < slots; ++j)
         if (nodeOf[j] >= 0 && skeleton.joints[j].parent < 0) scene.nodes.push_back(nodeOf[j]);
     scene.nodes.push_back(meshNodeIndex);
+    if (animatedNodeIndex >= 0) scene.nodes.push_back(animatedNodeIndex);
     if (!options.description.empty())
         scene.extras = tinygltf::Value(tinygltf::Value::Object{{"description", tinygltf::Value(options.description)}});
     model.scenes.push_back(scene);

@@ -13,6 +13,7 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -46,6 +47,21 @@ struct SkinnedMesh {
 /// with weight 1). Errors as skeletalMotionToGlb does for the meshes.
 Result<SkinnedMesh> rigidlySkinnedMesh(const SkeletalMotion& motion, const std::vector<JointMesh>& meshes);
 
+/// A mesh that moves by morph targets, not by a skin (glTF's vertex animation; the simulated
+/// kimono): its vertices at key times, in the world (workbench axes, cm). The file holds the first
+/// key as the mesh and every later key k as morph target k - 1, with an animation channel
+/// "weights" whose sampler gives target k - 1 the weight 1 at key k's time and every other target
+/// 0 (LINEAR): a client's linear interpolation of the weights between two neighbouring keys is the
+/// linear interpolation of their positions.
+struct MorphAnimatedMesh {
+    std::string name = "kimono_cloth";                     ///< the node's and the mesh's name
+    std::vector<Eigen::Vector3f> normals;                  ///< at the first key, unit length
+    std::vector<Eigen::Vector3f> colours;                  ///< RGB in [0, 1]
+    std::vector<std::uint32_t> indices;                    ///< 3 per triangle
+    std::vector<double> keyTimes;                          ///< s, increasing, from >= 0
+    std::vector<std::vector<Eigen::Vector3f>> keyPositions; ///< one per key: every vertex, cm, world
+};
+
 struct GltfExportOptions {
     /// The animation's, the scene's and the mesh's name: short (Blender cuts names at 63 bytes).
     std::string name = "take";
@@ -53,7 +69,15 @@ struct GltfExportOptions {
     /// and the animation; none when empty.
     std::string description;
     std::string generator = "Bunraku Motion Workbench";
+    /// Also written when set: a mesh of its own, on a node of its own at the scene's root (no
+    /// transform), animated by morph-target weights in the same animation.
+    std::shared_ptr<const MorphAnimatedMesh> animatedMesh;
 };
+
+/// Checks a morph-animated mesh (the error says what is wrong): at least one key, every key the
+/// same number of vertices as the normals and colours, finite positions, increasing finite times
+/// from 0 on, triangles whose indices are in range.
+Status validateMorphAnimatedMesh(const MorphAnimatedMesh& mesh);
 
 /// glTF's axes from the workbench's (a rotation; positions are also scaled by 0.01).
 Eigen::Quaterniond gltfAxisChange();
@@ -63,8 +87,9 @@ Eigen::Quaterniond gltfAxisChange();
 /// with inverse bind matrices of the first frame; one mesh with every JointMesh (attributes
 /// POSITION, NORMAL, COLOR_0, JOINTS_0, WEIGHTS_0), bound through the skin; one animation
 /// sampled at frame / rateHz seconds: every joint's rotation, and the translation of joints
-/// whose translation moves. Errors for an invalid motion, a rate out of range, no mesh, or a
-/// mesh on an End Site or a missing joint.
+/// whose translation moves; `options.animatedMesh` when set (MorphAnimatedMesh). Errors for an
+/// invalid motion, a rate out of range, no mesh, a mesh on an End Site or a missing joint, or an
+/// invalid animated mesh.
 Result<std::string> skeletalMotionToGlb(const SkeletalMotion& motion, double rateHz, const std::vector<JointMesh>& meshes,
                                         const GltfExportOptions& options = {});
 

@@ -313,11 +313,13 @@ struct DesignCommandArguments {
     std::string axisOutput;
     bool json = false;
     AxisArguments axis;
+    KimonoOutputArguments kimono;
 };
 
 void runDesign(const DesignCommandArguments& arguments)
 {
     requireTakeOutput(arguments.output);
+    requireKimonoOutput(arguments.kimono, arguments.output);
     for (const std::string& output : {arguments.output, arguments.axisOutput})
         refuseOutputOverInputs(output, OutputKind::File, {arguments.take, arguments.warp, arguments.gains, arguments.axis.body},
                                output == arguments.output ? "-o" : "--axis-output");
@@ -338,7 +340,7 @@ void runDesign(const DesignCommandArguments& arguments)
                            arguments.take + " ends at " + std::to_string(take.frameCount() - 1));
     }
     const an::DesignedMotion designed = an::designMotion(basis, warp, gains);
-    writeTakeOutput(designed.take, arguments.output);
+    writeTakeOutput(designed.take, arguments.output, arguments.kimono.parameters());
     if (!arguments.axisOutput.empty()) {
         an::MotionAxis axis;
         axis.world_T_axis = designed.world_T_axis;
@@ -482,6 +484,7 @@ void addMotionAxisCommands(CommandSet& commands)
         command->add_option("--axis-output", arguments->axisOutput, "Also write the designed axis take (CSV)");
         command->add_flag("--json", arguments->json, "Print a machine-readable summary");
         addAxisOptions(command, arguments->axis);
+        addKimonoOutputOptions(command, arguments->kimono);
         command->callback([arguments] { runDesign(*arguments); });
     }
     {

@@ -408,11 +408,13 @@ struct EmotionArgs {
     std::string output;
     bool perChannel = false;
     bool json = false;
+    KimonoOutputArguments kimono;
 };
 
 void runEmotion(const EmotionArgs& args)
 {
     requireTakeOutput(args.output);
+    requireKimonoOutput(args.kimono, args.output);
     refuseOutputOverInputs(args.output, OutputKind::File, {args.chain.corpus, args.chain.parameters});
     const ChainOutcome chain = decomposeChain(args.chain);
     // The workbench's weighted take: the same function on the same stage result.
@@ -423,7 +425,7 @@ void runEmotion(const EmotionArgs& args)
     // x = y + a z channel by channel instead (no skeleton).
     Take written = take;
     if (args.perChannel) written.skeleton = nullptr;
-    writeTakeOutput(written, args.output);
+    writeTakeOutput(written, args.output, args.kimono.parameters());
     nlohmann::json summary = chainSummary(chain);
     summary["corpus"] = args.chain.corpus;
     summary["motion"] = args.perChannel || !take.skeleton ? "per-channel" : "body";
@@ -594,6 +596,7 @@ void addDecompositionCommands(CommandSet& commands)
                   "Write the thesis's per-channel x = y + a z (each channel on its own, the puppet's parts, no skeleton) instead of "
                   "the weighted body's motion");
     emo->add_flag("--json", emotionArgs->json, "Print a JSON summary");
+    addKimonoOutputOptions(emo, emotionArgs->kimono);
     emo->callback([emotionArgs] { runEmotion(*emotionArgs); });
 
     auto experimentArgs = std::make_shared<ExperimentArgs>();

@@ -16,6 +16,7 @@
 #include "analysis/preprocess/preprocess.h"
 #include "analysis/skeleton/puppet_rig_fit.h"
 #include "analysis/synth/demo_corpus_io.h"
+#include "render/take_export.h"
 
 #include <algorithm>
 #include <cctype>
@@ -390,11 +391,16 @@ void runConvert(const ConvertArguments& arguments)
             throw CliError(output.string() + ": a corpus converts to a corpus folder, not to a single file");
         unwrap(io::writeCorpus(loaded.corpus, output));
         written = "corpus";
+    } else if (arguments.kimono && io::takeFileFormat(output) != io::TakeFileFormat::Csv) {
+        // The simulated cloth in a .glb (morph targets animated by weights; render/take_export.h).
+        if (render::takeExportFormat(output) != render::TakeExportFormat::Glb)
+            throw CliError(output.string() + ": --kimono writes a .csv take (the kimono's points are channels beside the take's) or a .glb "
+                                             "(the simulated cloth)");
+        writeTakeOutput(loaded.corpus.takes.front(), output.string(), &arguments.cloth);
+        written = "glb";
     } else if (arguments.kimono) {
         // The kimono's measured points as 18 more channels (analysis/cloth/kimono_cloth.h): only a
         // CSV take holds channels that are not a skeleton's.
-        if (io::takeFileFormat(output) != io::TakeFileFormat::Csv)
-            throw CliError(output.string() + ": --kimono writes a .csv take (the kimono's points are channels beside the take's)");
         const Take& take = loaded.corpus.takes.front();
         const auto simulation = analysis::simulateKimono(take, arguments.cloth);
         if (!simulation) throw CliError(arguments.input + ": " + simulation.error().message);
@@ -407,7 +413,8 @@ void runConvert(const ConvertArguments& arguments)
         std::transform(written.begin(), written.end(), written.begin(), [](unsigned char c) { return char(std::tolower(c)); });
     }
     const Take& first = loaded.corpus.takes.front();
-    const Eigen::Index channels = first.channelCount() + (arguments.kimono && !loaded.isCorpus ? Eigen::Index(analysis::kimonoChannels().size()) : 0);
+    const bool kimonoChannels = arguments.kimono && !loaded.isCorpus && written == "csv";
+    const Eigen::Index channels = first.channelCount() + (kimonoChannels ? Eigen::Index(analysis::kimonoChannels().size()) : 0);
     if (arguments.json) {
         json document{{"input", arguments.input},
                       {"output", output.string()},
@@ -422,7 +429,8 @@ void runConvert(const ConvertArguments& arguments)
     } else {
         if (loaded.map) std::cout << "part map: " << loaded.map->describe() << "\n";
         std::cout << "wrote " << output.string() << " (" << written << ": " << loaded.corpus.takes.size() << " take(s), "
-                  << channels << " channels" << (arguments.kimono && !loaded.isCorpus ? ", the kimono's 18 among them" : "") << ", "
+                  << channels << " channels" << (kimonoChannels ? ", the kimono's 18 among them" : "")
+                  << (arguments.kimono && written == "glb" ? ", the simulated kimono as morph targets" : "") << ", "
                   << loaded.corpus.rateHz << " Hz)\n";
     }
 }
@@ -536,8 +544,10 @@ void addIoCommands(CommandSet& commands)
         convert->add_option("-o,--output", arguments->output, "Output file (.bvh, .glb or .csv) or corpus folder")->required();
         convert->add_flag("--json", arguments->json, "Print a machine-readable summary");
         convert->add_flag("--kimono", arguments->kimono,
-                          "Simulate the puppet's kimono as cloth over the take and append its measured points (sleeve tips, hem "
-                          "front/back/left/right; x y z cm) as 18 channels of a .csv output (docs/KIMONO.md)");
+                          "Simulate the puppet's kimono as cloth over the take: a .csv output gets its measured points (sleeve tips, hem "
+                          "front/back/left/right; x y z cm) as 18 more channels; a .glb output the cloth as a mesh 'kimono_cloth' moving by "
+                          "morph targets animated by weights (at most " + std::to_string(render::kKimonoExportMaxKeys) +
+                          " key shapes), the figure without its skinned skirt and sleeves (docs/KIMONO.md)");
         addClothOptions(convert, arguments->cloth);
         addImportOptions(convert, arguments->import);
         convert->callback([arguments] { runConvert(*arguments); });

@@ -55,6 +55,7 @@ struct NormaliseArguments {
     bool json = false;
     bool noPreprocess = false;
     MatchArguments match;
+    KimonoOutputArguments kimono;
 };
 
 // "1:16", "2:2:16" (first:step:last) or "1,2,4,8".
@@ -170,6 +171,9 @@ pl::NormaliseParameters normaliseParameters(const MatchArguments& arguments)
 void runNormalise(const NormaliseArguments& arguments)
 {
     refuseOutputOverInputs(arguments.output, OutputKind::Folder, {arguments.corpus});
+    if (arguments.kimono.kimono && !isTakeOutput(arguments.output))
+        throw CliError(arguments.output + ": --kimono writes the simulated cloth into a take file (.glb or .csv), not a folder");
+    requireKimonoOutput(arguments.kimono, arguments.output);
     an::Corpus corpus = unwrap(an::io::readCorpus(arguments.corpus));
     // Thesis 2.2 first (pad, unwrap, align start times and start positions) - the pipeline's
     // preprocess stage, as the workbench runs it - unless told not to (angles are unwrapped then too).
@@ -219,7 +223,7 @@ void runNormalise(const NormaliseArguments& arguments)
     if (isTakeOutput(arguments.output)) {
         // One take file: the reference the cell was normalised to (the average take with
         // --reference average, thesis 3.7), in any format a take is exported in.
-        writeTakeOutput(reference, arguments.output);
+        writeTakeOutput(reference, arguments.output, arguments.kimono.parameters());
         if (arguments.json) {
             printJson({{"reference", referenceName}, {"frames", reference.frameCount()}, {"output", arguments.output}});
             return;
@@ -495,6 +499,7 @@ void addNormalisationCommands(CommandSet& commands)
                           "Use the takes as stored (default: thesis 2.2 preprocessing first, as `bunraku preprocess`)");
         command->add_flag("--json", arguments->json, "Print a machine-readable summary");
         addMatchOptions(command, arguments->match);
+        addKimonoOutputOptions(command, arguments->kimono);
         command->callback([arguments] { runNormalise(*arguments); });
     }
     {

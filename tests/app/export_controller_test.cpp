@@ -249,3 +249,41 @@ TEST_CASE("a timing designed on a corpus of Bandai waves exports on the performe
     CHECK(file->motion.values.rows() == designed->frameCount());
     CHECK(file->skeleton.joints[std::size_t(file->skeleton.find("Hand_R"))].name == "Hand_R");
 }
+
+TEST_CASE("File > Export Take A with the kimono writes the simulated cloth into the glb and the csv", "[app][export][kimono]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    const auto dir = test::scratchDir("export_controller_kimono");
+    auto& exports = window->exports();
+    // The command line's defaults until the view's cloth settings are handed over.
+    CHECK(exports.clothParameters().drag == analysis::ClothParameters{}.drag);
+    REQUIRE(exports.exportTake(TakeSlot::A, QString::fromStdString((dir / "kimono.glb").string()), true));
+    const auto gltf = glbJson(dir / "kimono.glb");
+    REQUIRE(gltf["meshes"].size() == 2); // the figure, then the cloth
+    int cloth = -1;
+    for (std::size_t n = 0; n < gltf["nodes"].size(); ++n)
+        if (gltf["nodes"][n].value("name", "") == "kimono_cloth") cloth = int(n);
+    REQUIRE(cloth >= 0);
+    bool weights = false;
+    for (const auto& channel : gltf["animations"][0]["channels"])
+        weights = weights || (channel["target"]["node"] == cloth && channel["target"]["path"] == "weights");
+    CHECK(weights);
+    const std::size_t frames = std::size_t(window->document().selectedTake(TakeSlot::A)->frameCount());
+    CHECK(gltf["meshes"][1]["primitives"][0]["targets"].size() == frames - 1);
+    CHECK(window->exports().lastError().isEmpty());
+
+    // Other cloth parameters move the cloth elsewhere; a .csv gets the 18 channels; a .bvh is refused.
+    analysis::ClothParameters stiff;
+    stiff.drag = 20.0;
+    exports.setClothParameters(stiff);
+    REQUIRE(exports.exportTake(TakeSlot::A, QString::fromStdString((dir / "stiff.glb").string()), true));
+    CHECK(bunraku::test::fileBytes(dir / "stiff.glb") != bunraku::test::fileBytes(dir / "kimono.glb"));
+    REQUIRE(exports.exportTake(TakeSlot::A, QString::fromStdString((dir / "kimono.csv").string()), true));
+    auto csv = analysis::io::readTakeCsv(dir / "kimono.csv");
+    REQUIRE(csv.ok());
+    CHECK(csv->channelCount() == window->document().selectedTake(TakeSlot::A)->channelCount() + 18);
+    CHECK_FALSE(exports.exportTake(TakeSlot::A, QString::fromStdString((dir / "kimono.bvh").string()), true));
+    CHECK(exports.lastError().contains(QStringLiteral("cannot hold the kimono")));
+    CHECK_FALSE(std::filesystem::exists(dir / "kimono.bvh"));
+}

@@ -4,6 +4,7 @@
 // their documented range are refused with the key named).
 #include "tests/app/app_test_support.h"
 #include "app/analysis_controller.h"
+#include "app/export_controller.h"
 #include "app/viewport_panel.h"
 #include "widgets/graph_grid.h"
 #include "widgets/graph_panel.h"
@@ -73,6 +74,7 @@ TEST_CASE("the Cloth box and Cloth Settings dress the view and a project keeps t
         CHECK(panel->editClothSettings());
         CHECK(sawDialog);
         CHECK(window->analysis().clothParameters().damping == 0.25);
+        CHECK(window->exports().clothParameters().damping == 0.25); // what File > Export Take's kimono simulates
         REQUIRE(test::waitUntilIdle(*window));
         REQUIRE(panel->drawnKimonos()[0]);
         CHECK(panel->drawnKimonos()[0]->parameters.damping == 0.25);

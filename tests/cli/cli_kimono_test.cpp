@@ -1,5 +1,6 @@
 // `bunraku convert TAKE --kimono -o FILE.csv`: the kimono simulated as cloth over the take, its
-// measured points appended as 18 channels (analysis/cloth/kimono_cloth.h).
+// measured points appended as 18 channels (analysis/cloth/kimono_cloth.h); `--kimono -o FILE.glb`
+// of the commands that write a take: the cloth as a mesh moving by morph targets.
 #include "tests/cli/cli_files.h"
 #include "tests/cli/cli_runner.h"
 #include "tests/support/shared_data.h"
@@ -8,6 +9,8 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cstdint>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
@@ -115,4 +118,74 @@ TEST_CASE("experiment kimono measures every take of a corpus and the means per c
         CHECK(take["sleeve_swing_left_cm"].get<double>() == Approx(take["sleeve_swing_right_cm"].get<double>()).epsilon(0.5));
     }
     for (const auto& cell : report["cells"]) CHECK(cell["takes"] == 2);
+}
+
+namespace {
+
+/// The JSON chunk of a .glb (a 12-byte header, then the JSON chunk).
+nlohmann::json glbJson(const std::filesystem::path& file)
+{
+    const std::string bytes = bunraku::test::readTextFile(file);
+    REQUIRE(bytes.size() > 20);
+    REQUIRE(bytes.compare(0, 4, "glTF") == 0);
+    std::uint32_t length = 0;
+    std::memcpy(&length, bytes.data() + 12, 4);
+    return nlohmann::json::parse(bytes.substr(20, length));
+}
+
+/// The frames of the kimono's weights animation in a .glb (0 when there is none).
+std::size_t kimonoKeys(const nlohmann::json& gltf)
+{
+    int node = -1;
+    for (std::size_t n = 0; n < gltf["nodes"].size(); ++n)
+        if (gltf["nodes"][n].value("name", std::string()) == "kimono_cloth") node = int(n);
+    if (node < 0) return 0;
+    for (const auto& animation : gltf["animations"])
+        for (const auto& channel : animation["channels"])
+            if (channel["target"]["node"] == node && channel["target"]["path"] == "weights")
+                return gltf["accessors"][animation["samplers"][channel["sampler"].get<std::size_t>()]["input"].get<std::size_t>()]["count"];
+    return 0;
+}
+
+} // namespace
+
+TEST_CASE("the commands that write a take put the simulated kimono into a glb with --kimono", "[cli][kimono][export]")
+{
+    const auto dir = bunraku::test::scratchDir("cli_kimono_glb");
+    const auto demo = dir / "demo";
+    REQUIRE(runBunraku({"demo", "-o", demo.string()}).exitCode == 0);
+    const auto take = demo / "greeting_hostile_1.csv";
+    const std::size_t frames = bunraku::test::readNumericCsv(take).rows.size();
+    const std::vector<std::pair<std::string, std::vector<std::string>>> commands{
+        {"convert", {"convert", take.string(), "--kimono", "-o", (dir / "converted.glb").string()}},
+        {"design", {"design", take.string(), "--kimono", "--cloth-drag", "1", "-o", (dir / "designed.glb").string()}},
+        {"normalise", {"normalise", demo.string(), "--function", "greeting", "--emotion", "hostile", "--kimono", "-o", (dir / "reference.glb").string()}},
+        {"emotion", {"emotion", demo.string(), "--pad", "--function", "greeting", "--emotion", "hostile", "--weight", "1.5", "--kimono", "-o",
+                     (dir / "weighted.glb").string()}}};
+    for (const auto& [name, arguments] : commands) {
+        const auto run = runBunraku(arguments);
+        INFO(name << ": " << run.err);
+        REQUIRE(run.exitCode == 0);
+        const nlohmann::json gltf = glbJson(arguments.back());
+        CHECK(gltf["meshes"].size() == 2); // the figure and the kimono
+        CHECK(kimonoKeys(gltf) > 1);
+        if (name == "convert" || name == "design") CHECK(kimonoKeys(gltf) == frames);
+    }
+    // Without --kimono: the figure alone.
+    REQUIRE(runBunraku({"convert", take.string(), "-o", (dir / "plain.glb").string()}).exitCode == 0);
+    CHECK(glbJson(dir / "plain.glb")["meshes"].size() == 1);
+    CHECK(kimonoKeys(glbJson(dir / "plain.glb")) == 0);
+
+    // Outputs that cannot hold the kimono are refused before any work, naming the file.
+    for (const std::vector<std::string>& command :
+         {std::vector<std::string>{"design", take.string(), "--kimono", "-o", (dir / "designed.bvh").string()},
+          std::vector<std::string>{"normalise", demo.string(), "--function", "greeting", "--emotion", "hostile", "--kimono", "-o",
+                                   (dir / "folder").string()}}) {
+        const auto run = runBunraku(command);
+        INFO(command.front() << ": " << run.err);
+        CHECK(run.exitCode != 0);
+        CHECK(run.err.find("--kimono writes the simulated cloth into") != std::string::npos);
+    }
+    CHECK_FALSE(std::filesystem::exists(dir / "designed.bvh"));
+    CHECK_FALSE(std::filesystem::exists(dir / "folder"));
 }
