@@ -40,4 +40,24 @@ std::vector<SixDofPart> sixDofParts(const Take& take)
     return result;
 }
 
+std::vector<SixDofPart> pointParts(const Take& take)
+{
+    std::vector<SixDofPart> result;
+    const auto& ch = take.channels;
+    std::vector<bool> inPart(ch.size(), false);
+    for (const SixDofPart& part : sixDofParts(take))
+        for (int d = 0; d < kDofCount; ++d) inPart[std::size_t(part.firstChannel + d)] = true;
+    for (std::size_t i = 0; i + 3 <= ch.size();) {
+        const bool match = !inPart[i] && !inPart[i + 1] && !inPart[i + 2] && ch[i].dof == "x" && ch[i + 1].dof == "y" && ch[i + 2].dof == "z" &&
+                           ch[i + 1].part == ch[i].part && ch[i + 2].part == ch[i].part;
+        if (match) {
+            result.push_back(SixDofPart{ch[i].part, Eigen::Index(i)});
+            i += 3;
+        } else {
+            ++i;
+        }
+    }
+    return result;
+}
+
 } // namespace bunraku::analysis

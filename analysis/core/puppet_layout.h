@@ -35,5 +35,9 @@ struct SixDofPart {
     Eigen::Index firstChannel = 0;
 };
 std::vector<SixDofPart> sixDofParts(const Take& take);
+/// The take's points: parts with consecutive x, y, z channels that are not a 6-DOF part's (e.g.
+/// the kimono's measured points, `sleeve_right_tip.x/.y/.z`), in channel order. Preprocessing
+/// turns and moves them with the body.
+std::vector<SixDofPart> pointParts(const Take& take);
 
 } // namespace bunraku::analysis

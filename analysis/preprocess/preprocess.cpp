@@ -248,7 +248,9 @@ double alignStartHeading(Take& take, const Take& reference, const std::string& h
     const Eigen::Vector2d pivot =
         hasPivot ? Eigen::Vector2d(take.values(0, *pivotColumn), take.values(0, *pivotColumn + 1)) : Eigen::Vector2d::Zero();
     const Eigen::Matrix2d turn = Eigen::Rotation2Dd(offset * std::numbers::pi / 180.0).toRotationMatrix();
-    for (const SixDofPart& part : sixDofParts(take)) {
+    std::vector<SixDofPart> carried = sixDofParts(take);
+    for (const SixDofPart& point : pointParts(take)) carried.push_back(point); // carried by the body (the kimono's points)
+    for (const SixDofPart& part : carried) {
         if (!hasPivot) break;
         for (Eigen::Index f = 0; f < take.frameCount(); ++f) {
             const Eigen::Vector2d xy(take.values(f, part.firstChannel), take.values(f, part.firstChannel + 1));

@@ -48,6 +48,20 @@ std::vector<Eigen::Vector3d> alignStartPosition(Take& take, const Take& referenc
         offsets[p] = mode == PositionAlignment::Rigid ? rigid : *differences[p];
         take.values.middleCols(parts[p].firstChannel, 3).rowwise() += offsets[p].transpose();
     }
+    // Points (the kimono's measured points) move with the body: the rigid offset; per part, their
+    // own start difference where the reference has the point.
+    const auto referencePoints = pointParts(reference);
+    for (const SixDofPart& point : pointParts(take)) {
+        Eigen::Vector3d offset = rigid;
+        if (mode == PositionAlignment::PerPart) {
+            const auto r = std::find_if(referencePoints.begin(), referencePoints.end(),
+                                        [&](const SixDofPart& part) { return part.part == point.part; });
+            if (r != referencePoints.end())
+                offset = reference.values.row(0).segment(r->firstChannel, 3).transpose() -
+                         take.values.row(0).segment(point.firstChannel, 3).transpose();
+        }
+        take.values.middleCols(point.firstChannel, 3).rowwise() += offset.transpose();
+    }
     return offsets;
 }
 

@@ -149,3 +149,55 @@ TEST_CASE("alignStartPosition matches parts by name and moves parts the referenc
     CHECK_FALSE(parsePositionAlignment("rigid ", parsed));
     CHECK(std::string(positionAlignmentName(PositionAlignment::Rigid)) == "rigid");
 }
+
+TEST_CASE("points carried by the body (the kimono's) turn and move with its parts when a take is aligned")
+{
+    // Take 2 of a demo cell turned by 40 deg and moved, with a point 6 cm in front of and 9 cm
+    // below the hand at every frame (as the kimono's sleeve tip is carried): aligned to take 1,
+    // the point stays where the hand carries it.
+    const auto demo = synth::generateDemoCorpus();
+    Take reference = *demo.corpus.find("greeting", "none", 1);
+    Take take = *demo.corpus.find("greeting", "none", 2);
+    const Eigen::Matrix2d turn = Eigen::Rotation2Dd(40.0 * M_PI / 180.0).toRotationMatrix();
+    const Eigen::Index yaw = puppetChannel(0, Dof::Yaw);
+    for (Eigen::Index f = 0; f < take.frameCount(); ++f)
+        for (int p = 0; p < kPuppetPartCount; ++p) {
+            const Eigen::Index x = puppetChannel(p, Dof::X);
+            const Eigen::Vector2d xy = turn * take.values.row(f).segment(x, 2).transpose() + Eigen::Vector2d(25.0, -10.0);
+            take.values(f, x) = xy.x();
+            take.values(f, x + 1) = xy.y();
+            take.values(f, yaw + p * kDofCount) += 40.0;
+        }
+    const auto withPoint = [](Take t) {
+        const Eigen::Index hand = puppetChannel(3, Dof::X);
+        t.channels.push_back({"sleeve_right_tip", "x", "cm"});
+        t.channels.push_back({"sleeve_right_tip", "y", "cm"});
+        t.channels.push_back({"sleeve_right_tip", "z", "cm"});
+        t.values.conservativeResize(t.frameCount(), t.channelCount() + 3);
+        t.values.rightCols(3) = t.values.middleCols(hand, 3);
+        t.values.col(t.channelCount() - 3).array() += 6.0;
+        t.values.col(t.channelCount() - 1).array() -= 9.0;
+        return t;
+    };
+    reference = withPoint(reference);
+    take = withPoint(take);
+    REQUIRE(pointParts(take).size() == 1);
+    REQUIRE(pointParts(take)[0].part == "sleeve_right_tip");
+    const Eigen::Vector3d carriedBefore = take.values.row(0).tail<3>().transpose() - take.values.row(0).segment(puppetChannel(3, Dof::X), 3).transpose();
+    Take aligned = take;
+    const double offset = alignStartHeading(aligned, reference, "shoulder");
+    CHECK(std::abs(offset) > 10.0);
+    alignStartPosition(aligned, reference, PositionAlignment::Rigid);
+    // The hand-to-point vector turned by the heading offset, its length kept, at every frame.
+    const Eigen::Matrix2d back = Eigen::Rotation2Dd(offset * M_PI / 180.0).toRotationMatrix();
+    double worst = 0.0;
+    for (Eigen::Index f = 0; f < aligned.frameCount(); ++f) {
+        const Eigen::Vector3d before = take.values.row(f).tail<3>().transpose() - take.values.row(f).segment(puppetChannel(3, Dof::X), 3).transpose();
+        const Eigen::Vector3d after = aligned.values.row(f).tail<3>().transpose() - aligned.values.row(f).segment(puppetChannel(3, Dof::X), 3).transpose();
+        Eigen::Vector3d expected = before;
+        expected.head<2>() = back * before.head<2>();
+        worst = std::max(worst, (after - expected).norm());
+    }
+    INFO("the point off where the hand carries it by at most " << worst << " cm; before alignment " << carriedBefore.transpose());
+    CHECK(worst < 1e-9);
+}
