@@ -105,9 +105,17 @@ void preprocessSection(Html& html, const ChainResult& chain)
 void normaliseSection(Html& html, const ChainResult& chain, const pipeline::ChainParameters& parameters)
 {
     html.section("normalise", "Normalisation of every cell (thesis 3.6-3.8)");
+    // The preset `auto` resolved to (method2 on the puppet's parts, chains on a skeleton's joints).
+    std::string coupling = parameters.normalise.coupling;
+    for (const auto& cell : chain.normalised->cells)
+        if (!cell.normalisations.empty() && !cell.normalisations.front().coupling.preset.empty() &&
+            cell.normalisations.front().coupling.preset != coupling) {
+            coupling += " (" + cell.normalisations.front().coupling.preset + ")";
+            break;
+        }
     html << "<p>tau = " + std::to_string(parameters.normalise.tau) + ", T_cmp = " + std::to_string(parameters.normalise.searchBand) +
                 ", scales 1.." + std::to_string(parameters.normalise.maxScale) + ", coupling " +
-                escapeXml(parameters.normalise.coupling) + ", " + pipeline::pathName(parameters.normalise.path) +
+                escapeXml(coupling) + ", " + pipeline::pathName(parameters.normalise.path) +
                 " path. Variance: sum over frames and channels of the squared difference to the reference (3.8).</p>\n";
     for (const auto& cell : chain.normalised->cells) {
         const std::string stem = cellStem(cell.function, cell.emotion);
@@ -327,9 +335,19 @@ SvgPlot axisPlot(const std::string& title, const Eigen::MatrixXd& coordinates, i
     return plot;
 }
 
+/// A section of chapter 5 when the motion axes were not computed: the one line that says why.
+bool axesSkipped(Html& html, const ChainResult& chain)
+{
+    if (chain.axes->unavailable.empty()) return false;
+    html << "<p class=\"note\">" + escapeXml(chain.axes->unavailable) + "</p>\n";
+    html.end();
+    return true;
+}
+
 void axesSection(Html& html, const ChainResult& chain)
 {
     html.section("axes", "Motion axes (thesis 5.2.1)");
+    if (axesSkipped(html, chain)) return;
     html << "<p>The principal axes of inertia of the posed puppet per frame, as centre of mass (cm) and rotation vector (deg), "
             "for each function's functional motion (the neutral cell's average take) and each emotional cell's average take "
             "(data: axis_functional_*.csv, axis_emotional_*.csv).</p><div class=\"figures\">";
@@ -348,6 +366,7 @@ void axesSection(Html& html, const ChainResult& chain)
 void warpsSection(Html& html, const ChainResult& chain)
 {
     html.section("warps", "Phase: warp curves (thesis 5.3)");
+    if (axesSkipped(html, chain)) return;
     html << "<p>For each emotional cell, the functional frame each emotional frame shows (Fig. 5.13), with the control points "
             "a design edits (data: phase_*.csv, warp_*.csv).</p><div class=\"figures\">";
     for (const auto& cell : chain.axes->cells) {
@@ -371,6 +390,7 @@ void warpsSection(Html& html, const ChainResult& chain)
 void approximationSection(Html& html, const ChainResult& chain)
 {
     html.section("approximation", "Approximation error per scale (thesis 5.4.1, eq. 5.18, Fig. 5.16)");
+    if (axesSkipped(html, chain)) return;
     html << "<p>For each emotional cell, the relative error of eq. 5.18 between the wavelet approximations (scales 1..c, "
             "eq. 5.13) of the functional axis and of the phase-adjusted emotional axis, against c (data: approximation_*.csv). "
             "The thesis plots it for no emotion against friendly (Fig. 5.16, no values printed): it falls as c grows but "
@@ -409,6 +429,7 @@ void approximationSection(Html& html, const ChainResult& chain)
 void gainsSection(Html& html, const ChainResult& chain)
 {
     html.section("gains", "Amplitude: gains per phrase (thesis 5.4) and the design check (5.5)");
+    if (axesSkipped(html, chain)) return;
     html << "<p>g0 (eq. 5.22, phrase mean) and g1 (eq. 5.23, first harmonic) of the functional axis against the phase-adjusted "
             "emotional axis, per phrase and axis DOF (data: gains_*.csv). Designing the functional motion with the extracted "
             "warp and gains reproduces the emotional axis to the relative error (eq. 5.18 form) shown.</p>";

@@ -81,6 +81,7 @@ void runAnalyse(const AnalyseArguments& arguments)
                            {"takes", corpus.corpus->takes.size()},
                            {"threads", options.threads},
                            {"seconds", seconds}};
+    if (chain->axes && !chain->axes->unavailable.empty()) summary["skipped"] = {chain->axes->unavailable};
     if (const auto& km2o = chain->decomposed->km2o) {
         summary["km2o"] = rp::km2oOutcomeJson(*km2o);
         if (km2o->estimable()) {
@@ -96,6 +97,7 @@ void runAnalyse(const AnalyseArguments& arguments)
     if (const auto& km2o = chain->decomposed->km2o; km2o && km2o->estimable())
         std::cout << " (KM2O M = " << km2o->correlationLength << ", mean P = " << km2o->meanCellErrorPercent << " %)";
     std::cout << ": " << files.size() << " files and the report " << summary["report"].get<std::string>() << "\n";
+    if (chain->axes && !chain->axes->unavailable.empty()) std::cout << chain->axes->unavailable << "\n";
     if (const auto& km2o = chain->decomposed->km2o; km2o && !km2o->notes.empty()) {
         std::cout << km2o->outcome() << "\n";
         for (const auto& note : km2o->notes) std::cout << "  " << note << "\n";
