@@ -1,7 +1,9 @@
 // The import and preprocess stages (thesis 2, 2.2) and the names of every stage.
 #include "analysis/pipeline/stages.h"
 
+#include "analysis/core/skeleton.h"
 #include "analysis/io/corpus_io.h"
+#include "analysis/normalise/skeleton_chains.h"
 #include "analysis/synth/demo_corpus.h"
 
 namespace bunraku::analysis::pipeline {
@@ -66,7 +68,25 @@ StageKey preprocessKey(StageKey corpus, const PreprocessParameters& p)
 Result<PreprocessOutput> runPreprocess(const Corpus& corpus, const PreprocessParameters& parameters, const RunControl& control)
 {
     if (auto status = validate(parameters); !status) return status.error();
-    return preprocess::preprocessCorpus(corpus, parameters.options(), control);
+    preprocess::PreprocessOptions options = parameters.options();
+    // The heading part is the puppet's shoulder; on takes of a skeleton's joints, the joint the
+    // arms branch from (the chest, the joint the automatic part map binds the shoulder to).
+    if (!corpus.takes.empty()) {
+        const Take& first = corpus.takes.front();
+        if (!first.channelIndex(options.headingPart, "yaw") && first.skeleton && first.skeleton->skeleton)
+            if (auto chains = skeletonChains(*first.skeleton); chains)
+                for (const auto& chain : *chains) {
+                    if (chain.name != "right_arm" && chain.name != "left_arm") continue;
+                    const int chest = first.skeleton->skeleton->joints[std::size_t(chain.joints.front())].parent;
+                    if (chest < 0) continue;
+                    const std::string& name = first.skeleton->skeleton->joints[std::size_t(chest)].name;
+                    if (first.channelIndex(name, "yaw")) {
+                        options.headingPart = name;
+                        break;
+                    }
+                }
+    }
+    return preprocess::preprocessCorpus(corpus, options, control);
 }
 
 } // namespace bunraku::analysis::pipeline
