@@ -1,6 +1,7 @@
 #include "analysis/report/html_report.h"
 
 #include "analysis/axis/axis_channels.h"
+#include "analysis/io/bvh_joint_map.h"
 #include "analysis/io/text_format.h"
 #include "analysis/pipeline/parameters_json.h"
 #include "analysis/report/analysis_files.h"
@@ -195,6 +196,27 @@ std::string oneTakeCellsNote(const ChainResult& chain)
            "): the fluctuation is the take minus its cell mean (eq. 4.24), identically zero with one take.</p>";
 }
 
+/// The channels the spectra and the ARMA table show: the thesis's head.x and arm.z (Table 4.1,
+/// Fig. 4.5), or on takes of a skeleton's joints the head joint's x and the bound-side forearm's
+/// z (the joints the automatic part map gives the puppet's head and arm), by the joints' names.
+std::pair<std::string, std::string> shownChannels(const std::vector<std::string>& channelNames)
+{
+    const auto has = [&](const std::string& name) { return std::find(channelNames.begin(), channelNames.end(), name) != channelNames.end(); };
+    std::pair<std::string, std::string> shown{"head.x", "arm.z"};
+    if (has(shown.first) || has(shown.second)) return shown;
+    shown = {};
+    for (const auto& name : channelNames) {
+        const std::string part = name.substr(0, name.rfind('.'));
+        const io::JointNameInfo info = io::jointNameInfo(part);
+        if (shown.first.empty() && !info.side && info.term == "head" && has(part + ".x")) shown.first = part + ".x";
+        const bool forearm = info.term == "forearm" || info.term == "lowerarm" || info.term == "lowarm" || info.term == "elbow" ||
+                             info.term == "radius";
+        if (shown.second.empty() && forearm && info.side == BodySide::Right && has(part + ".z")) shown.second = part + ".z";
+    }
+    if (shown.first.empty() && !channelNames.empty()) shown.first = channelNames.front();
+    return shown;
+}
+
 void spectraSection(Html& html, const ChainResult& chain)
 {
     const auto& f = *chain.fluctuations;
@@ -204,7 +226,8 @@ void spectraSection(Html& html, const ChainResult& chain)
     html << "<div class=\"figures\">";
     const std::vector<std::string> functions = chain.corpus.corpus->functions();
     for (const auto& function : functions) {
-        for (const std::string channel : {"head.x", "arm.z"}) {
+        const auto [first, second] = shownChannels(f.channelNames);
+        for (const std::string& channel : {first, second}) {
             const auto at = std::find(f.channelNames.begin(), f.channelNames.end(), channel);
             if (at == f.channelNames.end()) continue;
             const auto ch = Eigen::Index(at - f.channelNames.begin());
@@ -225,18 +248,21 @@ void armaSection(Html& html, const ChainResult& chain)
     const auto& f = *chain.fluctuations;
     html.section("arma", "ARMA identification of the fluctuation (thesis 4.3.2, Table 4.1)");
     html << "<p>ARMA(" + std::to_string(f.armaP) + "," + std::to_string(f.armaQ) +
-                ") per take, averaged over each cell's takes (data: arma_table.csv, every channel). Head-x as Table 4.1. "
+                ") per take, averaged over each cell's takes (data: arma_table.csv, every channel). " +
+                shownChannels(f.channelNames).first + " as Table 4.1's head-x. "
                 "The MA part is known only up to its spectrum: b is the invertible factor (every root of B inside the "
                 "unit circle), b<sup>T</sup> the same spectrum in Table 4.1's convention (B's largest root outside, "
                 "b1/b0 &gt; 1; docs/ARMA.md):</p>";
     html << oneTakeCellsNote(chain);
-    const auto at = std::find(f.channelNames.begin(), f.channelNames.end(), "head.x");
+    const std::string shown = shownChannels(f.channelNames).first;
+    const auto at = std::find(f.channelNames.begin(), f.channelNames.end(), shown);
     const std::size_t ch = at == f.channelNames.end() ? 0 : std::size_t(at - f.channelNames.begin());
     html << "<table class=\"numbers\" data-table=\"arma\"><tr><th>cell</th>";
     for (int m = 1; m <= f.armaP; ++m) html << "<th>a" + std::to_string(m) + "</th>";
     for (int n = 0; n <= f.armaQ; ++n) html << "<th>b" + std::to_string(n) + "</th>";
     for (int n = 0; n <= f.armaQ; ++n) html << "<th>b" + std::to_string(n) + "<sup>T</sup></th>";
-    const bool thesisShape = f.armaP == 2 && f.armaQ == 2;
+    // The thesis's values beside ours only for the puppet's head-x.
+    const bool thesisShape = f.armaP == 2 && f.armaQ == 2 && shown == "head.x";
     if (thesisShape) html << "<th class=\"thesis\">thesis a1</th><th class=\"thesis\">a2</th><th class=\"thesis\">b0</th><th class=\"thesis\">b1</th><th class=\"thesis\">b2</th>";
     html << "</tr>";
     if (ch < f.armaTables.size()) {

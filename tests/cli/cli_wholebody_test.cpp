@@ -83,6 +83,10 @@ TEST_CASE("analyse runs every stage on the Bandai waves with all joints", "[cli]
     const std::string report = bunraku::test::readTextFile(out / "report.html");
     CHECK(report.find("coupling auto (chains)") != std::string::npos);
     CHECK(report.find("UpperLeg_L") != std::string::npos);
+    // The spectra and the ARMA table show the head and the right forearm (the thesis's head-x and arm-z).
+    CHECK(report.find("eta Head.x") != std::string::npos);
+    CHECK(report.find("eta LowerArm_R.z") != std::string::npos);
+    CHECK(report.find("Head.x as Table 4.1") != std::string::npos);
     CHECK(report.find("motion axes, phase and gains (5) skipped") != std::string::npos);
 
     // The emotion weight (4.5) of a whole-body cell, on the performer's skeleton.
