@@ -1,5 +1,6 @@
 // The import and preprocess stages (thesis 2, 2.2) and the names of every stage.
 #include "analysis/pipeline/stages.h"
+#include "analysis/pipeline/heading_part.h"
 
 #include "analysis/core/skeleton.h"
 #include "analysis/io/corpus_io.h"
@@ -51,6 +52,23 @@ Result<CorpusInput> importCorpus(const std::string& source)
     return makeCorpusInput(std::move(corpus).value());
 }
 
+std::string headingPartFor(const Corpus& corpus, const std::string& part)
+{
+    if (corpus.takes.empty()) return part;
+    const Take& first = corpus.takes.front();
+    if (first.channelIndex(part, "yaw") || !first.skeleton || !first.skeleton->skeleton) return part;
+    auto chains = skeletonChains(*first.skeleton);
+    if (!chains) return part;
+    for (const auto& chain : *chains) {
+        if (chain.name != "right_arm" && chain.name != "left_arm") continue;
+        const int chest = first.skeleton->skeleton->joints[std::size_t(chain.joints.front())].parent;
+        if (chest < 0) continue;
+        const std::string& name = first.skeleton->skeleton->joints[std::size_t(chest)].name;
+        if (first.channelIndex(name, "yaw")) return name;
+    }
+    return part;
+}
+
 StageKey preprocessKey(StageKey corpus, const PreprocessParameters& p)
 {
     return KeyBuilder("preprocess")
@@ -69,23 +87,7 @@ Result<PreprocessOutput> runPreprocess(const Corpus& corpus, const PreprocessPar
 {
     if (auto status = validate(parameters); !status) return status.error();
     preprocess::PreprocessOptions options = parameters.options();
-    // The heading part is the puppet's shoulder; on takes of a skeleton's joints, the joint the
-    // arms branch from (the chest, the joint the automatic part map binds the shoulder to).
-    if (!corpus.takes.empty()) {
-        const Take& first = corpus.takes.front();
-        if (!first.channelIndex(options.headingPart, "yaw") && first.skeleton && first.skeleton->skeleton)
-            if (auto chains = skeletonChains(*first.skeleton); chains)
-                for (const auto& chain : *chains) {
-                    if (chain.name != "right_arm" && chain.name != "left_arm") continue;
-                    const int chest = first.skeleton->skeleton->joints[std::size_t(chain.joints.front())].parent;
-                    if (chest < 0) continue;
-                    const std::string& name = first.skeleton->skeleton->joints[std::size_t(chest)].name;
-                    if (first.channelIndex(name, "yaw")) {
-                        options.headingPart = name;
-                        break;
-                    }
-                }
-    }
+    options.headingPart = headingPartFor(corpus, options.headingPart);
     return preprocess::preprocessCorpus(corpus, options, control);
 }
 
