@@ -27,7 +27,7 @@ enum class MatchFeatures {
 
 struct NormaliseOptions {
     MatchOptions match;
-    std::string coupling = "method2"; ///< see couplingFor
+    std::string coupling = kDefaultCoupling; ///< see couplingFor: method2 on the puppet, chains on a skeleton
     MatchFeatures features = MatchFeatures::Wavelet;
 };
 

@@ -17,8 +17,8 @@
 namespace bunraku::analysis {
 
 struct TruthExperimentOptions {
-    /// Coupling, scales, tau, band (thesis defaults: method2, 1..16, 4, 20). The path is set
-    /// per method.
+    /// Coupling, scales, tau, band (defaults: auto, the thesis's method2 on the puppet's parts;
+    /// 1..16, 4, 20). The path is set per method.
     NormaliseOptions normalise;
     /// Take index of each cell's reference; 0 = suggestReference per cell (thesis 3.6.1).
     int referenceTakeIndex = 0;

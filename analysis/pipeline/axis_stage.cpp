@@ -4,10 +4,12 @@
 
 #include "analysis/axis/axis_channels.h"
 #include "analysis/core/parallel.h"
+#include "analysis/core/puppet_layout.h"
 #include "analysis/body/body_description.h"
 #include "analysis/body/body_fit.h"
 #include "analysis/decompose/emotion_weight.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <mutex>
@@ -75,8 +77,21 @@ Result<AxisOutput> runAxes(const NormaliseOutput& normalised, const std::string&
 {
     if (auto status = validate(parameters); !status) return status.error();
     const AxisOptions axisOptions = parameters.axisOptions();
-    const auto model = defaultAxisModel(axisOptions);
     AxisOutput out;
+    // The axis integrates the puppet's parts: a take of a skeleton's joints has none of them.
+    for (const auto& cell : normalised.cells) {
+        const auto parts = cell.average.parts();
+        std::string missing;
+        for (const auto part : kPuppetParts)
+            if (std::find(parts.begin(), parts.end(), part) == parts.end()) missing += (missing.empty() ? "" : ", ") + std::string(part);
+        if (missing.empty()) continue;
+        out.unavailable = "motion axes, phase and gains (5) skipped: they integrate the puppet's parts (head, shoulder, arm, hand) "
+                          "and the takes of " + cellName(cell.function, cell.emotion) + " have no " + missing + " (" +
+                          std::to_string(parts.size()) + " parts; the whole-body axis is not implemented yet)";
+        control.report(1.0);
+        return out;
+    }
+    const auto model = defaultAxisModel(axisOptions);
     // Functions (their neutral cells), then their emotional cells: independent items, each
     // computed on control.threads threads into its own slot and gathered in cell order.
     std::vector<const CellNormalisation*> neutrals;

@@ -1,7 +1,10 @@
 // The import and preprocess stages (thesis 2, 2.2) and the names of every stage.
 #include "analysis/pipeline/stages.h"
+#include "analysis/pipeline/heading_part.h"
 
+#include "analysis/core/skeleton.h"
 #include "analysis/io/corpus_io.h"
+#include "analysis/normalise/skeleton_chains.h"
 #include "analysis/synth/demo_corpus.h"
 
 namespace bunraku::analysis::pipeline {
@@ -49,6 +52,23 @@ Result<CorpusInput> importCorpus(const std::string& source)
     return makeCorpusInput(std::move(corpus).value());
 }
 
+std::string headingPartFor(const Corpus& corpus, const std::string& part)
+{
+    if (corpus.takes.empty()) return part;
+    const Take& first = corpus.takes.front();
+    if (first.channelIndex(part, "yaw") || !first.skeleton || !first.skeleton->skeleton) return part;
+    auto chains = skeletonChains(*first.skeleton);
+    if (!chains) return part;
+    for (const auto& chain : *chains) {
+        if (chain.name != "right_arm" && chain.name != "left_arm") continue;
+        const int chest = first.skeleton->skeleton->joints[std::size_t(chain.joints.front())].parent;
+        if (chest < 0) continue;
+        const std::string& name = first.skeleton->skeleton->joints[std::size_t(chest)].name;
+        if (first.channelIndex(name, "yaw")) return name;
+    }
+    return part;
+}
+
 StageKey preprocessKey(StageKey corpus, const PreprocessParameters& p)
 {
     return KeyBuilder("preprocess")
@@ -66,7 +86,9 @@ StageKey preprocessKey(StageKey corpus, const PreprocessParameters& p)
 Result<PreprocessOutput> runPreprocess(const Corpus& corpus, const PreprocessParameters& parameters, const RunControl& control)
 {
     if (auto status = validate(parameters); !status) return status.error();
-    return preprocess::preprocessCorpus(corpus, parameters.options(), control);
+    preprocess::PreprocessOptions options = parameters.options();
+    options.headingPart = headingPartFor(corpus, options.headingPart);
+    return preprocess::preprocessCorpus(corpus, options, control);
 }
 
 } // namespace bunraku::analysis::pipeline

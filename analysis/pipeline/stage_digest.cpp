@@ -152,7 +152,13 @@ StageKey resultDigest(const FluctuationOutput& f)
     return (Digest("fluctuation-result") << f.channelNames << f.spectra << f.armaP << f.armaQ << f.armaTables << f.armaErrors).key();
 }
 
-StageKey resultDigest(const AxisOutput& a) { return (Digest("axes-result") << a.functions << a.cells).key(); }
+StageKey resultDigest(const AxisOutput& a)
+{
+    Digest digest("axes-result");
+    digest << a.functions << a.cells;
+    if (!a.unavailable.empty()) digest << a.unavailable;
+    return digest.key();
+}
 
 std::string ChainDigest::text() const
 {

@@ -58,7 +58,8 @@ struct NormaliseParameters {
     int tau = 4;           ///< half window, frames (3.5.2)
     int searchBand = 20;   ///< T_cmp, frames (3.5.1)
     int maxScale = 16;     ///< scales 1..maxScale (3.5)
-    std::string coupling = "method2"; ///< eq. 3.29 (couplingFor)
+    /// couplingFor: `auto` = eq. 3.29 (method2) on the puppet's parts, `chains` on a skeleton's joints.
+    std::string coupling = kDefaultCoupling;
     /// The optimal monotone path (default), or 3.5.3's greedy scan (the thesis's choice; set it to
     /// reproduce the thesis). Decision (docs/NORMALISATION.md, "Real takes"): on the real Bandai
     /// waves at 30 Hz the greedy scan raises the 3.8 variance of some takes, the optimal path of none.

@@ -159,12 +159,17 @@ struct CellAxis {
 struct AxisOutput {
     std::vector<FunctionAxis> functions;
     std::vector<CellAxis> cells;       ///< every non-neutral cell with takes
+    /// Why nothing was computed, one line (empty when computed): the motion axis integrates
+    /// the puppet's parts (head, shoulder, arm, hand), which a take of a skeleton's joints
+    /// lacks; the chain goes on without the axes.
+    std::string unavailable;
     const FunctionAxis* function(const std::string& name) const;
     const CellAxis* cell(const std::string& function, const std::string& emotion) const;
 };
 
 StageKey axisKey(StageKey normalised, const AxisParameters& parameters);
-/// On the default body (the shipped puppet description).
+/// On the default body (the shipped puppet description). Takes without the puppet's four parts
+/// give an empty output that says so (AxisOutput::unavailable), not an error.
 Result<AxisOutput> runAxes(const NormaliseOutput& normalised, const std::string& neutralEmotion,
                            const AxisParameters& parameters, const RunControl& control = {});
 

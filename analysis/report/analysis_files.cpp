@@ -291,6 +291,7 @@ Result<std::vector<OutputFile>> analysisDataFiles(const ChainResult& chain, cons
                                  {"cells", cells},
                                  {"decomposition", decomposition},
                                  {"axes", axes},
+                                 {"axes_unavailable", chain.axes->unavailable},
                                  {"files", names}};
     files.push_back({"summary.json", summary.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n"});
     return files;

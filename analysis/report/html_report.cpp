@@ -1,6 +1,7 @@
 #include "analysis/report/html_report.h"
 
 #include "analysis/axis/axis_channels.h"
+#include "analysis/io/bvh_joint_map.h"
 #include "analysis/io/text_format.h"
 #include "analysis/pipeline/parameters_json.h"
 #include "analysis/report/analysis_files.h"
@@ -105,9 +106,17 @@ void preprocessSection(Html& html, const ChainResult& chain)
 void normaliseSection(Html& html, const ChainResult& chain, const pipeline::ChainParameters& parameters)
 {
     html.section("normalise", "Normalisation of every cell (thesis 3.6-3.8)");
+    // The preset `auto` resolved to (method2 on the puppet's parts, chains on a skeleton's joints).
+    std::string coupling = parameters.normalise.coupling;
+    for (const auto& cell : chain.normalised->cells)
+        if (!cell.normalisations.empty() && !cell.normalisations.front().coupling.preset.empty() &&
+            cell.normalisations.front().coupling.preset != coupling) {
+            coupling += " (" + cell.normalisations.front().coupling.preset + ")";
+            break;
+        }
     html << "<p>tau = " + std::to_string(parameters.normalise.tau) + ", T_cmp = " + std::to_string(parameters.normalise.searchBand) +
                 ", scales 1.." + std::to_string(parameters.normalise.maxScale) + ", coupling " +
-                escapeXml(parameters.normalise.coupling) + ", " + pipeline::pathName(parameters.normalise.path) +
+                escapeXml(coupling) + ", " + pipeline::pathName(parameters.normalise.path) +
                 " path. Variance: sum over frames and channels of the squared difference to the reference (3.8).</p>\n";
     for (const auto& cell : chain.normalised->cells) {
         const std::string stem = cellStem(cell.function, cell.emotion);
@@ -187,6 +196,27 @@ std::string oneTakeCellsNote(const ChainResult& chain)
            "): the fluctuation is the take minus its cell mean (eq. 4.24), identically zero with one take.</p>";
 }
 
+/// The channels the spectra and the ARMA table show: the thesis's head.x and arm.z (Table 4.1,
+/// Fig. 4.5), or on takes of a skeleton's joints the head joint's x and the bound-side forearm's
+/// z (the joints the automatic part map gives the puppet's head and arm), by the joints' names.
+std::pair<std::string, std::string> shownChannels(const std::vector<std::string>& channelNames)
+{
+    const auto has = [&](const std::string& name) { return std::find(channelNames.begin(), channelNames.end(), name) != channelNames.end(); };
+    std::pair<std::string, std::string> shown{"head.x", "arm.z"};
+    if (has(shown.first) || has(shown.second)) return shown;
+    shown = {};
+    for (const auto& name : channelNames) {
+        const std::string part = name.substr(0, name.rfind('.'));
+        const io::JointNameInfo info = io::jointNameInfo(part);
+        if (shown.first.empty() && !info.side && info.term == "head" && has(part + ".x")) shown.first = part + ".x";
+        const bool forearm = info.term == "forearm" || info.term == "lowerarm" || info.term == "lowarm" || info.term == "elbow" ||
+                             info.term == "radius";
+        if (shown.second.empty() && forearm && info.side == BodySide::Right && has(part + ".z")) shown.second = part + ".z";
+    }
+    if (shown.first.empty() && !channelNames.empty()) shown.first = channelNames.front();
+    return shown;
+}
+
 void spectraSection(Html& html, const ChainResult& chain)
 {
     const auto& f = *chain.fluctuations;
@@ -196,7 +226,8 @@ void spectraSection(Html& html, const ChainResult& chain)
     html << "<div class=\"figures\">";
     const std::vector<std::string> functions = chain.corpus.corpus->functions();
     for (const auto& function : functions) {
-        for (const std::string channel : {"head.x", "arm.z"}) {
+        const auto [first, second] = shownChannels(f.channelNames);
+        for (const std::string& channel : {first, second}) {
             const auto at = std::find(f.channelNames.begin(), f.channelNames.end(), channel);
             if (at == f.channelNames.end()) continue;
             const auto ch = Eigen::Index(at - f.channelNames.begin());
@@ -217,18 +248,21 @@ void armaSection(Html& html, const ChainResult& chain)
     const auto& f = *chain.fluctuations;
     html.section("arma", "ARMA identification of the fluctuation (thesis 4.3.2, Table 4.1)");
     html << "<p>ARMA(" + std::to_string(f.armaP) + "," + std::to_string(f.armaQ) +
-                ") per take, averaged over each cell's takes (data: arma_table.csv, every channel). Head-x as Table 4.1. "
+                ") per take, averaged over each cell's takes (data: arma_table.csv, every channel). " +
+                shownChannels(f.channelNames).first + " as Table 4.1's head-x. "
                 "The MA part is known only up to its spectrum: b is the invertible factor (every root of B inside the "
                 "unit circle), b<sup>T</sup> the same spectrum in Table 4.1's convention (B's largest root outside, "
                 "b1/b0 &gt; 1; docs/ARMA.md):</p>";
     html << oneTakeCellsNote(chain);
-    const auto at = std::find(f.channelNames.begin(), f.channelNames.end(), "head.x");
+    const std::string shown = shownChannels(f.channelNames).first;
+    const auto at = std::find(f.channelNames.begin(), f.channelNames.end(), shown);
     const std::size_t ch = at == f.channelNames.end() ? 0 : std::size_t(at - f.channelNames.begin());
     html << "<table class=\"numbers\" data-table=\"arma\"><tr><th>cell</th>";
     for (int m = 1; m <= f.armaP; ++m) html << "<th>a" + std::to_string(m) + "</th>";
     for (int n = 0; n <= f.armaQ; ++n) html << "<th>b" + std::to_string(n) + "</th>";
     for (int n = 0; n <= f.armaQ; ++n) html << "<th>b" + std::to_string(n) + "<sup>T</sup></th>";
-    const bool thesisShape = f.armaP == 2 && f.armaQ == 2;
+    // The thesis's values beside ours only for the puppet's head-x.
+    const bool thesisShape = f.armaP == 2 && f.armaQ == 2 && shown == "head.x";
     if (thesisShape) html << "<th class=\"thesis\">thesis a1</th><th class=\"thesis\">a2</th><th class=\"thesis\">b0</th><th class=\"thesis\">b1</th><th class=\"thesis\">b2</th>";
     html << "</tr>";
     if (ch < f.armaTables.size()) {
@@ -327,9 +361,19 @@ SvgPlot axisPlot(const std::string& title, const Eigen::MatrixXd& coordinates, i
     return plot;
 }
 
+/// A section of chapter 5 when the motion axes were not computed: the one line that says why.
+bool axesSkipped(Html& html, const ChainResult& chain)
+{
+    if (chain.axes->unavailable.empty()) return false;
+    html << "<p class=\"note\">" + escapeXml(chain.axes->unavailable) + "</p>\n";
+    html.end();
+    return true;
+}
+
 void axesSection(Html& html, const ChainResult& chain)
 {
     html.section("axes", "Motion axes (thesis 5.2.1)");
+    if (axesSkipped(html, chain)) return;
     html << "<p>The principal axes of inertia of the posed puppet per frame, as centre of mass (cm) and rotation vector (deg), "
             "for each function's functional motion (the neutral cell's average take) and each emotional cell's average take "
             "(data: axis_functional_*.csv, axis_emotional_*.csv).</p><div class=\"figures\">";
@@ -348,6 +392,7 @@ void axesSection(Html& html, const ChainResult& chain)
 void warpsSection(Html& html, const ChainResult& chain)
 {
     html.section("warps", "Phase: warp curves (thesis 5.3)");
+    if (axesSkipped(html, chain)) return;
     html << "<p>For each emotional cell, the functional frame each emotional frame shows (Fig. 5.13), with the control points "
             "a design edits (data: phase_*.csv, warp_*.csv).</p><div class=\"figures\">";
     for (const auto& cell : chain.axes->cells) {
@@ -371,6 +416,7 @@ void warpsSection(Html& html, const ChainResult& chain)
 void approximationSection(Html& html, const ChainResult& chain)
 {
     html.section("approximation", "Approximation error per scale (thesis 5.4.1, eq. 5.18, Fig. 5.16)");
+    if (axesSkipped(html, chain)) return;
     html << "<p>For each emotional cell, the relative error of eq. 5.18 between the wavelet approximations (scales 1..c, "
             "eq. 5.13) of the functional axis and of the phase-adjusted emotional axis, against c (data: approximation_*.csv). "
             "The thesis plots it for no emotion against friendly (Fig. 5.16, no values printed): it falls as c grows but "
@@ -409,6 +455,7 @@ void approximationSection(Html& html, const ChainResult& chain)
 void gainsSection(Html& html, const ChainResult& chain)
 {
     html.section("gains", "Amplitude: gains per phrase (thesis 5.4) and the design check (5.5)");
+    if (axesSkipped(html, chain)) return;
     html << "<p>g0 (eq. 5.22, phrase mean) and g1 (eq. 5.23, first harmonic) of the functional axis against the phase-adjusted "
             "emotional axis, per phrase and axis DOF (data: gains_*.csv). Designing the functional motion with the extracted "
             "warp and gains reproduces the emotional axis to the relative error (eq. 5.18 form) shown.</p>";

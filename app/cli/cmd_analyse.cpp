@@ -81,6 +81,7 @@ void runAnalyse(const AnalyseArguments& arguments)
                            {"takes", corpus.corpus->takes.size()},
                            {"threads", options.threads},
                            {"seconds", seconds}};
+    if (chain->axes && !chain->axes->unavailable.empty()) summary["skipped"] = {chain->axes->unavailable};
     if (const auto& km2o = chain->decomposed->km2o) {
         summary["km2o"] = rp::km2oOutcomeJson(*km2o);
         if (km2o->estimable()) {
@@ -96,6 +97,7 @@ void runAnalyse(const AnalyseArguments& arguments)
     if (const auto& km2o = chain->decomposed->km2o; km2o && km2o->estimable())
         std::cout << " (KM2O M = " << km2o->correlationLength << ", mean P = " << km2o->meanCellErrorPercent << " %)";
     std::cout << ": " << files.size() << " files and the report " << summary["report"].get<std::string>() << "\n";
+    if (chain->axes && !chain->axes->unavailable.empty()) std::cout << chain->axes->unavailable << "\n";
     if (const auto& km2o = chain->decomposed->km2o; km2o && !km2o->notes.empty()) {
         std::cout << km2o->outcome() << "\n";
         for (const auto& note : km2o->notes) std::cout << "  " << note << "\n";
@@ -109,7 +111,9 @@ void addAnalyseCommands(CommandSet& commands)
     auto arguments = std::make_shared<AnalyseArguments>();
     CLI::App* command = commands.root.add_subcommand(
         "analyse", "The thesis's whole chain: preprocess (2.2), normalise every cell (3), decompose (4: KM2O with M chosen by "
-                   "P), spectra and ARMA (4.3.2), motion axes, phase and gains (5); writes the data files and report.html");
+                   "P), spectra and ARMA (4.3.2), motion axes, phase and gains (5); writes the data files and report.html. A corpus of a "
+                   "skeleton's joints (--all-joints) is normalised with the chains coupling; the motion axes need the puppet's 4 "
+                   "parts and are skipped with a note");
     command->add_option("CORPUS", arguments->corpus, "Corpus folder (corpus.json), or 'demo' for the embedded demo corpus")->required();
     command->add_option("-o,--output", arguments->output, "Output folder")->required()->type_name("DIR");
     command->add_option("--parameters", arguments->parameters,

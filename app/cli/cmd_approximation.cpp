@@ -63,6 +63,7 @@ void runApproximation(const ApproximationArguments& arguments)
     const auto normalised = unwrap(pl::normaliseStage(preprocessKey, *preprocessed, parameters.normalise, nullptr));
     const auto axes = unwrap(pl::axisStage(pl::chainKeys(corpus.key, parameters).normalise, *normalised,
                                            corpus.corpus->neutralEmotion, parameters.axis, nullptr));
+    if (!axes->unavailable.empty()) throw CliError(arguments.corpus + ": " + axes->unavailable);
     std::vector<std::string> dofs;
     for (const auto& channel : an::axisCoordinateChannels()) dofs.push_back(channel.name());
     if (!arguments.csv.empty()) unwrap(an::io::writeFileAtomically(arguments.csv, approximationCsv(*axes, dofs)));

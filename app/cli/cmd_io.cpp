@@ -12,6 +12,7 @@
 #include "analysis/io/corpus_io.h"
 #include "analysis/io/take_reader.h"
 #include "analysis/io/text_format.h"
+#include "analysis/pipeline/heading_part.h"
 #include "analysis/pipeline/stage_parameters.h"
 #include "analysis/preprocess/preprocess.h"
 #include "analysis/skeleton/puppet_rig_fit.h"
@@ -462,7 +463,7 @@ void runPreprocess(const PreprocessArguments& arguments)
     options.alignPosition = !arguments.noAlignPosition;
     options.alignHeading = !arguments.noAlignHeading;
     pre::parsePositionAlignment(arguments.position, options.positionAlignment);
-    options.headingPart = arguments.headingPart;
+    options.headingPart = analysis::pipeline::headingPartFor(corpus, arguments.headingPart); // a skeleton's: its chest
     options.alignMethod = arguments.method == "xcorr" ? pre::StartAlignMethod::CrossCorrelation : pre::StartAlignMethod::Onset;
     options.referenceTakeIndex = arguments.referenceTake;
     options.maxShiftFrames = arguments.maxShift;
@@ -569,7 +570,7 @@ void addIoCommands(CommandSet& commands)
             ->check(CLI::IsMember({"rigid", "per-part"}));
         preprocess->add_flag("--no-align-heading", arguments->noAlignHeading,
                              "Do not align the whole-body heading (start yaw of the heading part)");
-        preprocess->add_option("--heading-part", arguments->headingPart, "Part whose start yaw is the whole-body heading")
+        preprocess->add_option("--heading-part", arguments->headingPart, "Part whose start yaw is the whole-body heading (on a skeleton's joints without it: the joint the arms branch from)")
             ->capture_default_str();
         preprocess->add_option("--align-method", arguments->method,
                                "Start-time alignment: onset (where the distance from the start pose, positions and "

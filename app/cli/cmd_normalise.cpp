@@ -36,7 +36,7 @@ struct MatchArguments {
     int tau = 4;
     int tcmp = 20;
     std::string scales = "1:16";
-    std::string coupling = "method2";
+    std::string coupling = an::kDefaultCoupling;
     std::string path = pl::pathName(pl::NormaliseParameters{}.path); // optimal; "greedy" = thesis 3.5.3
     std::string weighting = "none";
     std::string level = "first-frame";
@@ -119,8 +119,10 @@ void addMatchOptions(CLI::App* command, MatchArguments& arguments)
     command->add_option("--scales", arguments.scales, "Wavelet scales: FIRST:LAST, FIRST:STEP:LAST or a comma list")
         ->capture_default_str();
     command->add_option("--coupling", arguments.coupling,
-                        "Channels sharing one correspondence: independent, method1, method2, per-part, per-coordinate, "
-                        "all, or sets like arm.x+hand.x;head.x+shoulder.x")
+                        "Channels sharing one correspondence: auto (method2 on the puppet's 4 parts, chains on a skeleton's "
+                        "joints), method2 (head+shoulder and arm+hand per coordinate, eq. 3.29), method1 (arm+hand, eq. 3.28), "
+                        "chains (per coordinate each chain of the skeleton: root, spine, left_arm, right_arm, left_leg, "
+                        "right_leg), independent, per-part, per-coordinate, all, or sets like arm.x+hand.x;head.x+shoulder.x")
         ->capture_default_str();
     command->add_option("--path", arguments.path,
                         "Correspondence path: optimal (the least-cost monotone path, default) or greedy (the thesis's scan, 3.5.3)")
@@ -219,6 +221,9 @@ void runNormalise(const NormaliseArguments& arguments)
     const std::string& referenceName = result.referenceName;
     const std::vector<an::TakeNormalisation>& normalised = result.normalisations;
     const an::VarianceTable& table = result.variance;
+    // The preset the coupling resolved to (auto: method2 or chains), else the sets as given.
+    const std::string coupling =
+        normalised.empty() || normalised.front().coupling.preset.empty() ? options.coupling : normalised.front().coupling.preset;
 
     if (isTakeOutput(arguments.output)) {
         // One take file: the reference the cell was normalised to (the average take with
@@ -299,7 +304,7 @@ void runNormalise(const NormaliseArguments& arguments)
                                  {"reference", referenceName},
                                  {"suggested_reference", cell[std::size_t(suggestion.takeIndex)]->labels.takeIndex},
                                  {"suggestion", suggestion.reason},
-                                 {"coupling", options.coupling},
+                                 {"coupling", coupling},
                                  {"path", arguments.match.path},
                                  {"tau", options.match.tau},
                                  {"tcmp", options.match.searchBand},
@@ -316,7 +321,7 @@ void runNormalise(const NormaliseArguments& arguments)
         return;
     }
     std::cout << "normalised " << normalised.size() << " takes of " << arguments.function << "/" << arguments.emotion
-              << " to " << referenceName << " (" << options.coupling << ", " << arguments.match.path << ")\n"
+              << " to " << referenceName << " (" << coupling << ", " << arguments.match.path << ")\n"
               << "take  " << std::left << std::setw(27) << "variance to the reference" << std::right << std::setw(11) << "raw"
               << std::setw(13) << "normalised" << std::setw(8) << "change" << "\n";
     std::vector<int> worse;

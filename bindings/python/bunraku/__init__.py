@@ -105,7 +105,7 @@ def _preprocessed(source: Union[Corpus, Preprocessed], threads: int) -> Preproce
 # ---- thesis 3 ---------------------------------------------------------------------------------
 
 def normalise(corpus: Union[Corpus, Preprocessed], *, function: Optional[str] = None, emotion: Optional[str] = None,
-              tau: int = 4, searchBand: int = 20, maxScale: int = 16, coupling: str = "method2",
+              tau: int = 4, searchBand: int = 20, maxScale: int = 16, coupling: str = "auto",
               path: str = "optimal", reference: Union[str, int] = "suggested",
               cellReferences: Mapping[str, Union[str, int]] = {}, averageExcludesOutliers: bool = True,
               averageBase: int = 0, averageExcluded: Sequence[int] = (), scales: Sequence[float] = (),
@@ -119,7 +119,8 @@ def normalise(corpus: Union[Corpus, Preprocessed], *, function: Optional[str] = 
     A Corpus is preprocessed first with the defaults (thesis 2.2), as the command does; pass
     a :class:`Preprocessed` to choose. Keywords as the parameters file's "normalise": tau (half
     window, 3.5.2), searchBand (T_cmp, 3.5.1), maxScale (scales 1..maxScale), coupling
-    (independent, method1, method2, per-part, per-coordinate, all, or sets), path ("optimal"
+    ("auto": method2 on the puppet's 4 parts, chains on a skeleton's joints; independent, method1,
+    method2, chains, per-part, per-coordinate, all, or sets), path ("optimal"
     or the thesis's "greedy" scan, 3.5.3), reference ("suggested" 3.6.1, "average" 3.7, or a
     take index), approximationWeight (M of eq. 5.17), ..."""
     p = _parameters("bunraku.normalise()", {"normalise": {

@@ -354,7 +354,7 @@ def preprocess(corpus: Corpus, *, pad: bool = True, unwrap: bool = True, alignSt
                alignHeading: bool = True, alignPosition: bool = True, positionAlignment: str = "rigid",
                referenceTake: int = 0, threads: int = 0) -> Preprocessed: ...
 def normalise(corpus: Union[Corpus, Preprocessed], *, function: Optional[str] = None, emotion: Optional[str] = None,
-              tau: int = 4, searchBand: int = 20, maxScale: int = 16, coupling: str = "method2",
+              tau: int = 4, searchBand: int = 20, maxScale: int = 16, coupling: str = "auto",
               path: str = "optimal", reference: Union[str, int] = "suggested",
               cellReferences: Mapping[str, Union[str, int]] = {}, averageExcludesOutliers: bool = True,
               averageBase: int = 0, averageExcluded: Sequence[int] = (), scales: Sequence[float] = (),

@@ -28,7 +28,7 @@ TEST_CASE("the chain's defaults are the thesis's but the normalisation path: nor
     CHECK(defaults.normalise.tau == 4);
     CHECK(defaults.normalise.searchBand == 20);
     CHECK(defaults.normalise.maxScale == 16);
-    CHECK(defaults.normalise.coupling == "method2");
+    CHECK(defaults.normalise.coupling == "auto");
     CHECK(defaults.decompose.input == DecomposeInput::Normalised);
     CHECK(defaults.decompose.method == DecomposeMethod::Km2o);
     CHECK(defaults.decompose.correlationLength == 0);
