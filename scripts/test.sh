@@ -22,6 +22,10 @@ bash "$root/scripts/build.sh" "$root/build" -DCMAKE_BUILD_TYPE=Release
 # The Qt layers are built here for the monkey test only (BUNRAKU_QT_MONKEY_ONLY: no programs, no
 # other Qt test suite; docs/PERFORMANCE.md, "Build", gives what this adds).
 echo "== Analysis layer and the workbench's monkey test under ASan + UBSan"
+# Left to the Release suite above: the kimono simulated over all 18 Bandai takes and 6 demo takes
+# with their skeletons posed at sampled frames (6 s there, more than 4 min under ASan + UBSan).
+sanitizer_skips='tests_analysis_cloth:no cloth particle lies more than 0.5 cm inside the body at sampled frames'
+
 cmake -S "$root" -B "$root/build-sanitize" $(command -v ninja >/dev/null && [ ! -f "$root/build-sanitize/CMakeCache.txt" ] && echo -G Ninja) \
   -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -gline-tables-only" -DCMAKE_CXX_COMPILER=clang++-14 \
   -DBUNRAKU_WITH_QT=ON -DBUNRAKU_QT_MONKEY_ONLY=ON -DBUNRAKU_FUZZ=ON -DBUNRAKU_BUILD_BENCHMARKS=OFF -DBUNRAKU_WERROR=OFF
@@ -31,7 +35,8 @@ cmake --build "$root/build-sanitize" --parallel "$jobs"
 # The monkey test opens windows: under Xvfb, as the Release tests.
 (cd "$root/build-sanitize" && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
    LSAN_OPTIONS="suppressions=$root/fuzz/lsan_assimp.supp" \
-   xvfb-run -a -s "-screen 0 1920x1080x24 -noreset" ctest --output-on-failure --parallel "$jobs" --timeout 900)
+   xvfb-run -a -s "-screen 0 1920x1080x24 -noreset" ctest --output-on-failure --parallel "$jobs" --timeout 900 \
+     -E "$sanitizer_skips")
 
 echo "== Fuzz smoke run: 20,000 executions of each reader"
 BUNRAKU_FUZZ_BUILD="$root/build-sanitize" bash "$root/scripts/fuzz.sh" 20000
