@@ -224,7 +224,8 @@ analysis::Result<ProjectState> parseProject(const QByteArray& text, const QStrin
         // The 3D view's cloth settings: every key a cloth parameter in its range (one table).
         const QJsonValue cloth = viewObject["clothParameters"];
         if (!cloth.isObject()) return parseError(name, 0, "expected \"view\".\"clothParameters\": an object of cloth parameters");
-        for (auto it = cloth.toObject().begin(); it != cloth.toObject().end(); ++it) {
+        const QJsonObject values = cloth.toObject(); // one object: iterators of two temporaries never meet
+        for (auto it = values.begin(); it != values.end(); ++it) {
             const auto& limits = analysis::clothParameterLimits();
             const auto limit = std::find_if(limits.begin(), limits.end(), [&](const analysis::ClothParameterLimit& l) { return it.key() == QLatin1String(l.name); });
             if (limit == limits.end())
