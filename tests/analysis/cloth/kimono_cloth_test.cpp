@@ -5,6 +5,7 @@
 
 #include "analysis/body/body_description.h"
 #include "tests/analysis/axis/puppet_fixture.h"
+#include "tests/analysis/cloth/cloth_depth.h"
 
 #include <catch2/catch.hpp>
 
@@ -39,13 +40,6 @@ Take swingingTake(Eigen::Index frames, double amplitude, double hz)
         });
     take.rateHz = 30.0;
     return take;
-}
-
-double distanceToSegment(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b)
-{
-    const Eigen::Vector3d ab = b - a;
-    const double t = std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
-    return (p - (a + t * ab)).norm();
 }
 
 } // namespace
@@ -127,13 +121,7 @@ TEST_CASE("no cloth particle lies more than 0.5 cm inside the body on a lively t
         REQUIRE(x.ok());
         const auto holders = kimonoHolderPoses(simulation->body, take, frame);
         REQUIRE(holders.ok());
-        for (std::size_t i = 0; i < x->size(); ++i) {
-            if (simulation->cloth->pinned[i]) continue;
-            for (const ClothCollider& c : colliders) {
-                const RigidTransform& pose = (*holders)[c.holder];
-                deepest = std::max(deepest, c.radius - distanceToSegment((*x)[i], pose.apply(c.a), pose.apply(c.b)));
-            }
-        }
+        deepest = std::max(deepest, bunraku::test::deepestInsideBody(*simulation->cloth, *x, colliders, *holders));
     }
     INFO("deepest: " << deepest << " cm");
     CHECK(deepest <= 0.5);

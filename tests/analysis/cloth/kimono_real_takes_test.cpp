@@ -6,6 +6,7 @@
 #include "analysis/body/body_description.h"
 #include "analysis/io/take_reader.h"
 #include "analysis/synth/demo_corpus.h"
+#include "tests/analysis/cloth/cloth_depth.h"
 #include "tests/support/bandai_files.h"
 
 #include <catch2/catch.hpp>
@@ -38,16 +39,7 @@ Depth sample(const Take& take, int samples)
         REQUIRE(x.ok());
         const auto holders = kimonoHolderPoses(simulation->body, take, frame);
         REQUIRE(holders.ok());
-        for (std::size_t i = 0; i < x->size(); ++i) {
-            if (simulation->cloth->pinned[i]) continue;
-            for (const ClothCollider& c : colliders) {
-                const RigidTransform& pose = (*holders)[c.holder];
-                const Eigen::Vector3d a = pose.apply(c.a), b = pose.apply(c.b);
-                const Eigen::Vector3d ab = b - a;
-                const double t = std::clamp(((*x)[i] - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
-                depth.deepest = std::max(depth.deepest, c.radius - ((*x)[i] - (a + t * ab)).norm());
-            }
-        }
+        depth.deepest = std::max(depth.deepest, bunraku::test::deepestInsideBody(*simulation->cloth, *x, colliders, *holders));
         // The hem's points against the dō-wa (24 cm below the shoulder sensor, in its frame,
         // scaled by the shoulder's fit like the cloth).
         const Eigen::Vector3d dowa = (*holders)[0].apply(simulation->body.parts[std::size_t(simulation->body.partIndex("shoulder"))].fit *
