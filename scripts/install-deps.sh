@@ -24,8 +24,6 @@ packages=(
   pybind11-dev python3-dev python3-pytest python3-pandas python3-matplotlib mypy
   # Snakemake: the batch workflow over motion-capture libraries (workflows/Snakefile)
   snakemake
-  # npm: installs the Khronos glTF validator below (the peer of the .glb exports' tests)
-  npm
 )
 
 # The Khronos glTF validator, the peer of the .glb exports' tests (tests/support/gltf_validator.h):
