@@ -174,13 +174,13 @@ Result<MotionAxis> computeMotionAxis(const AxisModel& model, const Take& take, c
         }
         const std::vector<RigidTransform> poses = worldPartPoses(model.body, *binding, take, frame);
         Eigen::Vector3d forward = Eigen::Vector3d::UnitX();
-        if (!guide && forwardPart) forward = partPose(take, frame, *forwardPart).rotation * Eigen::Vector3d::UnitX();
+        if (!guide && forwardPart) forward = partPose(take, frame, *forwardPart).rotation * model.facing;
         const auto [centre, inertia] = inertiaAboutCentre(model.parts, poses);
         InertiaAxes axes = principalAxes(centre, inertia, options.degenerateTolerance, guide, forward);
         bool xFromShoulder = false;
         if (options.frontBack == FrontBackAxis::ShoulderForward && forwardPart) {
             const Eigen::Vector3d z = axes.world_R_axis.col(2);
-            const Eigen::Vector3d facing = partPose(take, frame, *forwardPart).rotation * Eigen::Vector3d::UnitX();
+            const Eigen::Vector3d facing = partPose(take, frame, *forwardPart).rotation * model.facing;
             const Eigen::Vector3d inPlane = facing - facing.dot(z) * z;
             if (inPlane.norm() > 0.1) {
                 axes.world_R_axis.col(0) = inPlane.normalized();

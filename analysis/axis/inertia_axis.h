@@ -45,6 +45,10 @@ struct AxisModel {
     std::vector<PartMoments> parts; ///< one per body.parts
     double totalMass = 0.0;         ///< g
     MassSource massSource = MassSource::Model; ///< where the masses came from (the model's when the body has the puppet's parts)
+    /// The body's forward direction in the frame of its mirror-frame part (the puppet's shoulder
+    /// faces along its x; a skeleton's chest joint along whatever its bone frame makes forward:
+    /// segment_inertia.h).
+    Eigen::Vector3d facing = Eigen::Vector3d::UnitX();
 };
 AxisModel makeAxisModel(const BodyDescription& body, const AxisOptions& options = {});
 
@@ -104,7 +108,7 @@ struct MotionAxis {
 /// thesis 5.2.1: the axis of every frame (z always the principal axis of least moment; x per
 /// options.frontBack; moments are the diagonal of the inertia in the axis frame). The take must have the 6 channels of every part the
 /// body is driven by (NotFound otherwise); the first frame's x follows the forward (x) direction
-/// of the take's mirror-frame part (the shoulder) when it has one, else world x. Cancelled via control.
+/// of the take's mirror-frame part (the shoulder; `model.facing` in its frame) when it has one, else world x. Cancelled via control.
 Result<MotionAxis> computeMotionAxis(const AxisModel& model, const Take& take, const AxisOptions& options = {},
                                      const RunControl& control = {});
 

@@ -80,7 +80,15 @@ std::vector<RigidTransform> worldPartPoses(const BodyDescription& body, const Ta
     return worldPartPoses(body, binding, take, frame);
 }
 
-const char* massSourceName(MassSource source) { return source == MassSource::Model ? "model" : "primitives"; }
+const char* massSourceName(MassSource source)
+{
+    switch (source) {
+    case MassSource::Model: return "model";
+    case MassSource::Primitives: return "primitives";
+    case MassSource::Segments: return "segments";
+    }
+    return "model";
+}
 
 std::vector<MassPoints> sampleMassPoints(const BodyDescription& body, const MassPointOptions& options)
 {

@@ -48,8 +48,11 @@ enum class MassSource {
     /// The body description's primitives (sampleMassPoints), as before the modelled puppet; the
     /// only source for a body with other parts.
     Primitives,
+    /// A performer's body segments from published human parameters (analysis/axis/segment_inertia.h):
+    /// the axis of a take of a skeleton's joints, chosen by the take, never by a parameter.
+    Segments,
 };
-/// "model", "primitives".
+/// "model", "primitives", "segments".
 const char* massSourceName(MassSource source);
 
 struct MassPointOptions {

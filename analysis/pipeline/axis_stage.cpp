@@ -3,6 +3,7 @@
 #include "analysis/pipeline/stages.h"
 
 #include "analysis/axis/axis_channels.h"
+#include "analysis/axis/segment_inertia.h"
 #include "analysis/core/parallel.h"
 #include "analysis/core/puppet_layout.h"
 #include "analysis/body/body_description.h"
@@ -30,6 +31,22 @@ std::shared_ptr<const AxisModel> defaultAxisModel(const AxisOptions& options)
     if (!model) model = std::make_shared<const AxisModel>(makeAxisModel(defaultBodyDescription(), options));
     return model;
 }
+
+} // namespace
+
+Result<std::shared_ptr<const AxisModel>> axisModelFor(const Take& take, const AxisOptions& options, bool fitToSkeleton)
+{
+    if (usesSegmentModel(take)) {
+        auto body = segmentBody(take);
+        if (!body) return body.error();
+        return std::make_shared<const AxisModel>(std::move(body->model));
+    }
+    if (fitToSkeleton && take.skeleton)
+        return std::make_shared<const AxisModel>(makeAxisModel(bodyForTake(defaultBodyDescription(), take), options));
+    return defaultAxisModel(options);
+}
+
+namespace {
 
 std::vector<std::string> axisDofNames()
 {
@@ -78,20 +95,21 @@ Result<AxisOutput> runAxes(const NormaliseOutput& normalised, const std::string&
     if (auto status = validate(parameters); !status) return status.error();
     const AxisOptions axisOptions = parameters.axisOptions();
     AxisOutput out;
-    // The axis integrates the puppet's parts: a take of a skeleton's joints has none of them.
+    // The axis integrates the puppet's parts, or a skeleton's body segments when the takes are
+    // its joints (segment_inertia.h); a take with neither has no axis.
     for (const auto& cell : normalised.cells) {
+        if (usesSegmentModel(cell.average)) continue;
         const auto parts = cell.average.parts();
         std::string missing;
         for (const auto part : kPuppetParts)
             if (std::find(parts.begin(), parts.end(), part) == parts.end()) missing += (missing.empty() ? "" : ", ") + std::string(part);
         if (missing.empty()) continue;
         out.unavailable = "motion axes, phase and gains (5) skipped: they integrate the puppet's parts (head, shoulder, arm, hand) "
-                          "and the takes of " + cellName(cell.function, cell.emotion) + " have no " + missing + " (" +
-                          std::to_string(parts.size()) + " parts; the whole-body axis is not implemented yet)";
+                          "or a skeleton's segments, and the takes of " + cellName(cell.function, cell.emotion) + " have no " + missing +
+                          " and no skeleton (" + std::to_string(parts.size()) + " parts)";
         control.report(1.0);
         return out;
     }
-    const auto model = defaultAxisModel(axisOptions);
     // Functions (their neutral cells), then their emotional cells: independent items, each
     // computed on control.threads threads into its own slot and gathered in cell order.
     std::vector<const CellNormalisation*> neutrals;
@@ -112,7 +130,9 @@ Result<AxisOutput> runAxes(const NormaliseOutput& normalised, const std::string&
         neutrals.size(), control.threads,
         [&](std::size_t f) -> Status {
             const CellNormalisation& neutral = *neutrals[f];
-            auto basis = prepareDesign(*model, neutral.average, axisOptions, RunControl{control.stop, {}});
+            auto model = axisModelFor(neutral.average, axisOptions);
+            if (!model) return model.error();
+            auto basis = prepareDesign(**model, neutral.average, axisOptions, RunControl{control.stop, {}});
             if (!basis)
                 return makeError(basis.error().code, "motion axis of the " + neutral.function + "/" + neutral.emotion +
                                                          " average take: " + basis.error().message);
@@ -132,7 +152,9 @@ Result<AxisOutput> runAxes(const NormaliseOutput& normalised, const std::string&
             const FunctionAxis& function = out.functions[emotional[c].first];
             const CellNormalisation& cell = *emotional[c].second;
             const std::string name = cellName(cell.function, cell.emotion);
-            auto axis = computeMotionAxis(*model, cell.average, axisOptions, RunControl{control.stop, {}});
+            auto model = axisModelFor(cell.average, axisOptions);
+            if (!model) return makeError(model.error().code, "motion axis of the " + name + " average take: " + model.error().message);
+            auto axis = computeMotionAxis(**model, cell.average, axisOptions, RunControl{control.stop, {}});
             if (!axis) return makeError(axis.error().code, "motion axis of the " + name + " average take: " + axis.error().message);
             CellAxis& result = out.cells[c];
             result.function = cell.function;
@@ -171,10 +193,11 @@ Result<TakeAxis> runTakeAxis(const Take& take, const AxisParameters& parameters,
 {
     if (auto status = validate(parameters); !status) return status.error();
     const AxisOptions options = parameters.axisOptions();
-    // The axis of a take with its performer's skeleton integrates over the puppet fitted to it.
-    const auto model = take.skeleton ? std::make_shared<const AxisModel>(makeAxisModel(bodyForTake(defaultBodyDescription(), take), options))
-                                     : defaultAxisModel(options);
-    auto axis = computeMotionAxis(*model, take, options, control);
+    // The axis of a take with its performer's skeleton integrates over the puppet fitted to it,
+    // or over the performer's segments when the take's parts are the skeleton's joints.
+    auto model = axisModelFor(take, options, true);
+    if (!model) return makeError(model.error().code, "motion axis of " + take.displayName() + ": " + model.error().message);
+    auto axis = computeMotionAxis(**model, take, options, control);
     if (!axis) return makeError(axis.error().code, "motion axis of " + take.displayName() + ": " + axis.error().message);
     TakeAxis out;
     out.coordinates = axisTake(*axis);

@@ -175,6 +175,11 @@ Result<AxisOutput> runAxes(const NormaliseOutput& normalised, const std::string&
 
 // ---- the motion axis of one take (thesis 5.2.1), on demand: what the 3D view draws -------------
 
+/// The body a take's motion axis integrates: the performer's segments (segment_inertia.h) for a
+/// take of a skeleton's joints, else the default puppet, fitted to the take's skeleton when
+/// `fitToSkeleton` (the one take's axis) or as it is (the motion-axes stage of averages).
+Result<std::shared_ptr<const AxisModel>> axisModelFor(const Take& take, const AxisOptions& options, bool fitToSkeleton = false);
+
 /// A take's motion axis: per frame, and as the 6 axis-coordinate channels (axis_channels.h)
 /// labelled "axis of <the take's name>".
 struct TakeAxis {
@@ -185,7 +190,8 @@ struct TakeAxis {
 /// Keyed on the take's content (takeKey) and the axis parameters the axis depends on (the
 /// front-back axis and the mass-point spacing), so each take's axis is computed once.
 StageKey takeAxisKey(StageKey take, const AxisParameters& parameters);
-/// On the default body, with the parameters' axis options (as the motion-axes stage).
+/// On the default body (fitted to the take's skeleton when it has one), or on the performer's
+/// segments for a take of a skeleton's joints, with the parameters' axis options.
 Result<TakeAxis> runTakeAxis(const Take& take, const AxisParameters& parameters, const RunControl& control = {});
 
 // ---- the kimono as cloth of one take (thesis 6, future work), on demand: what the 3D view draws --

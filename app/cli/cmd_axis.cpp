@@ -15,6 +15,7 @@
 #include "analysis/io/take_csv.h"
 #include "analysis/io/take_reader.h"
 #include "analysis/pipeline/stage_parameters.h"
+#include "analysis/pipeline/stages.h"
 #include "analysis/synth/demo_corpus.h"
 #include "analysis/synth/demo_corpus_io.h"
 
@@ -36,10 +37,15 @@ struct AxisArguments {
     std::string frontBack = "shoulder";
     double spacing = 1.0;
     std::string masses = "model";
+    bool allJoints = false;
 };
 
-void addAxisOptions(CLI::App* command, AxisArguments& arguments)
+void addAxisOptions(CLI::App* command, AxisArguments& arguments, bool readsTakes = true)
 {
+    if (readsTakes)
+        command->add_flag("--all-joints", arguments.allJoints,
+                      "Read a BVH, FBX, glTF or Collada take with every joint of its skeleton (6 channels each) instead of the "
+                      "puppet's four parts: the axis is the performer's whole body, its segments from de Leva (1996)");
     command->add_option("--body", arguments.body, "Body description JSON (default: the shipped Bunraku puppet)")
         ->check(CLI::ExistingFile);
     command->add_option("--front-back", arguments.frontBack,
@@ -62,13 +68,23 @@ an::AxisOptions axisOptions(const AxisArguments& arguments)
     return options;
 }
 
-/// The body given with --body, else the shipped puppet, fitted to `take`'s skeleton when it
-/// has one (analysis/body/body_fit.h: the axis of a BVH take is its performer's).
-an::AxisModel axisModel(const AxisArguments& arguments, const an::Take* take = nullptr)
+/// A take file as the chapter-5 commands read it: every joint with --all-joints.
+an::Take readAxisTake(const std::string& path, const AxisArguments& arguments)
+{
+    an::io::ImportOptions options;
+    if (arguments.allJoints) options.bvhLayout = an::io::BvhTakeLayout::AllJoints;
+    return unwrap(an::io::readTakeFile(path, options));
+}
+
+/// The body given with --body, else the pipeline's for `take` (pipeline::axisModelFor): the
+/// performer's segments for a take of a skeleton's joints, else the shipped puppet, fitted to the
+/// take's skeleton when it has one and `fitToSkeleton` (analysis/body/body_fit.h: the axis of a
+/// BVH take is its performer's).
+an::AxisModel axisModel(const AxisArguments& arguments, const an::Take* take = nullptr, bool fitToSkeleton = true)
 {
     if (!arguments.body.empty()) return an::makeAxisModel(unwrap(an::loadBodyDescription(arguments.body)), axisOptions(arguments));
-    const an::BodyDescription& puppet = an::defaultBodyDescription();
-    return an::makeAxisModel(take ? an::bodyForTake(puppet, *take) : puppet, axisOptions(arguments));
+    if (take) return *unwrap(an::pipeline::axisModelFor(*take, axisOptions(arguments), fitToSkeleton));
+    return an::makeAxisModel(an::defaultBodyDescription(), axisOptions(arguments));
 }
 
 an::MotionAxis motionAxis(const an::AxisModel& model, const an::Take& take, const AxisArguments& arguments)
@@ -98,7 +114,7 @@ struct AxisCommandArguments {
 void runAxis(const AxisCommandArguments& arguments)
 {
     refuseOutputOverInputs(arguments.output, OutputKind::File, {arguments.take, arguments.axis.body});
-    const an::Take take = unwrap(an::io::readTakeFile(arguments.take));
+    const an::Take take = readAxisTake(arguments.take, arguments.axis);
     const an::AxisModel model = axisModel(arguments.axis, &take);
     const an::MotionAxis axis = motionAxis(model, take, arguments.axis);
     an::Take out = an::axisTake(axis);
@@ -138,7 +154,10 @@ void runAxis(const AxisCommandArguments& arguments)
     }
     std::cout << "axis of " << take.displayName() << ": " << axis.frameCount() << " frames, body mass "
               << std::fixed << std::setprecision(0) << axis.totalMass << " g (masses from the "
-              << (model.massSource == an::MassSource::Model ? "modelled puppet" : "body's primitives") << ") -> " << arguments.output << "\n";
+              << (model.massSource == an::MassSource::Model        ? "modelled puppet"
+                  : model.massSource == an::MassSource::Segments ? "performer's segments, de Leva 1996"
+                                                                 : "body's primitives")
+              << ") -> " << arguments.output << "\n";
 }
 
 // ---- phase --------------------------------------------------------------------------------
@@ -209,11 +228,12 @@ struct PhaseCommandArguments {
 void runPhase(const PhaseCommandArguments& arguments)
 {
     refuseOutputOverInputs(arguments.output, OutputKind::File, {arguments.reference, arguments.sample, arguments.axis.body});
-    const an::Take reference = unwrap(an::io::readTakeFile(arguments.reference));
-    const an::Take sample = unwrap(an::io::readTakeFile(arguments.sample));
-    const an::AxisModel model = axisModel(arguments.axis);
-    const Eigen::MatrixXd functional = an::axisCoordinates(motionAxis(model, reference, arguments.axis).world_T_axis);
-    const Eigen::MatrixXd emotional = an::axisCoordinates(motionAxis(model, sample, arguments.axis).world_T_axis);
+    const an::Take reference = readAxisTake(arguments.reference, arguments.axis);
+    const an::Take sample = readAxisTake(arguments.sample, arguments.axis);
+    const Eigen::MatrixXd functional =
+        an::axisCoordinates(motionAxis(axisModel(arguments.axis, &reference, false), reference, arguments.axis).world_T_axis);
+    const Eigen::MatrixXd emotional =
+        an::axisCoordinates(motionAxis(axisModel(arguments.axis, &sample, false), sample, arguments.axis).world_T_axis);
     auto extracted = an::extractPhase(functional, emotional, phaseOptions(arguments.phase));
     if (!extracted)
         throw CliError(arguments.sample + " against " + arguments.reference + ": " + extracted.error().message);
@@ -256,12 +276,13 @@ void runGains(const GainsCommandArguments& arguments)
 {
     refuseOutputOverInputs(arguments.output, OutputKind::File,
                            {arguments.reference, arguments.sample, arguments.warp, arguments.axis.body});
-    const an::Take reference = unwrap(an::io::readTakeFile(arguments.reference));
-    const an::Take sample = unwrap(an::io::readTakeFile(arguments.sample));
+    const an::Take reference = readAxisTake(arguments.reference, arguments.axis);
+    const an::Take sample = readAxisTake(arguments.sample, arguments.axis);
     const an::WarpCurve warp = unwrap(an::readWarpCsv(arguments.warp));
-    const an::AxisModel model = axisModel(arguments.axis);
-    const Eigen::MatrixXd functional = an::axisCoordinates(motionAxis(model, reference, arguments.axis).world_T_axis);
-    const Eigen::MatrixXd emotional = an::axisCoordinates(motionAxis(model, sample, arguments.axis).world_T_axis);
+    const Eigen::MatrixXd functional =
+        an::axisCoordinates(motionAxis(axisModel(arguments.axis, &reference, false), reference, arguments.axis).world_T_axis);
+    const Eigen::MatrixXd emotional =
+        an::axisCoordinates(motionAxis(axisModel(arguments.axis, &sample, false), sample, arguments.axis).world_T_axis);
     const std::vector<Eigen::Index> boundaries = arguments.phrases.empty()
                                                      ? an::suggestPhraseBoundaries(functional)
                                                      : unwrap(an::parsePhraseBoundaries(arguments.phrases, functional.rows()));
@@ -324,7 +345,7 @@ void runDesign(const DesignCommandArguments& arguments)
         refuseOutputOverInputs(output, OutputKind::File, {arguments.take, arguments.warp, arguments.gains, arguments.axis.body},
                                output == arguments.output ? "-o" : "--axis-output");
     if (arguments.output == arguments.axisOutput) throw CliError(arguments.output + ": -o and --axis-output name the same file");
-    const an::Take take = unwrap(an::io::readTakeFile(arguments.take));
+    const an::Take take = readAxisTake(arguments.take, arguments.axis);
     const an::AxisModel model = axisModel(arguments.axis, &take);
     const an::DesignBasis basis = unwrap(an::prepareDesign(model, take, axisOptions(arguments.axis)));
     const an::WarpCurve warp = arguments.warp.empty() ? an::identityWarp(take.frameCount()) : unwrap(an::readWarpCsv(arguments.warp));
@@ -505,7 +526,7 @@ void addMotionAxisCommands(CommandSet& commands)
                             "default) or per-part")
             ->check(CLI::IsMember({"rigid", "per-part"}));
         command->add_flag("--json", arguments->json, "Print a machine-readable summary");
-        addAxisOptions(command, arguments->axis);
+        addAxisOptions(command, arguments->axis, false);
         addPhaseOptions(command, arguments->phase);
         command->callback([arguments] { runExperiment(*arguments); });
     }

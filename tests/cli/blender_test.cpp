@@ -234,3 +234,41 @@ TEST_CASE("blender imports a designed Bandai take on the performer's 22-joint sk
     checkSkeletonInBlender(dir / "designed.bvh", "bvh", *designed);
     checkSkeletonInBlender(dir / "designed.glb", "glb", *designed);
 }
+
+TEST_CASE("blender imports a whole-body design of a Bandai wave on the performer's 22-joint skeleton", "[cli][blender][design][wholebody]")
+{
+    // Issue 25: phase, gains and design on the performer's whole-body axis (--all-joints: every
+    // joint a part, the segments of de Leva 1996), the active wave's timing and gains on the
+    // normal one, exported as BVH on the source skeleton.
+    const fs::path normal = bunraku::test::bandaiDir() / "wave-right-hand_normal_001.bvh";
+    const fs::path active = bunraku::test::bandaiDir() / "wave-right-hand_active_001.bvh";
+    if (!bunraku::test::requireBandaiData(fs::exists(normal) && fs::exists(active))) return;
+    if (!bunraku::test::requireBlender()) return;
+    const fs::path dir = bunraku::test::scratchDir("blender_wholebody_designed");
+    const std::string warp = (dir / "warp.csv").string();
+    const std::string gains = (dir / "gains.json").string();
+    const auto phase = runBunraku({"phase", "--reference", normal.string(), "--sample", active.string(), "--all-joints", "-o", warp});
+    INFO(phase.err);
+    REQUIRE(phase.exitCode == 0);
+    const auto gained =
+        runBunraku({"gains", "--reference", normal.string(), "--sample", active.string(), "--all-joints", "--warp", warp, "-o", gains});
+    INFO(gained.err);
+    REQUIRE(gained.exitCode == 0);
+    const auto run = runBunraku({"design", normal.string(), "--all-joints", "--warp", warp, "--gains", gains, "-o",
+                                 (dir / "designed.bvh").string(), "--json"});
+    INFO(run.err);
+    REQUIRE(run.exitCode == 0);
+    const auto source = bandaiMotion(normal);
+    const auto designed = bandaiMotion(dir / "designed.bvh");
+    REQUIRE(designed->skeleton->jointCount() == 22);
+    CHECK(designed->frameCount() == bandaiMotion(active)->frameCount()); // the emotional take's timing
+    // Every joint moves with the design, the legs as the waving arm: not the source replayed.
+    double legMoved = 0.0;
+    for (Eigen::Index f : sampledFrames(designed->frameCount())) {
+        const auto ours = jointPositions(*designed, f);
+        const auto theirs = jointPositions(*source, std::min(f, source->frameCount() - 1));
+        legMoved = std::max(legMoved, (ours.at("Foot_L") - theirs.at("Foot_L")).norm());
+    }
+    CHECK(legMoved > 0.1);
+    checkSkeletonInBlender(dir / "designed.bvh", "bvh", *designed);
+}
