@@ -6,6 +6,8 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QCompleter>
+#include <QLineEdit>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QSet>
@@ -15,9 +17,12 @@
 namespace bunraku::widgets {
 namespace {
 
+/// The item a combo box has chosen (an editable box's typed text is not a choice until it matches).
+QString currentItem(const QComboBox* box) { return box->currentIndex() >= 0 ? box->itemText(box->currentIndex()) : QString(); }
+
 void refill(QComboBox* box, const QStringList& items)
 {
-    const QString current = box->currentText();
+    const QString current = currentItem(box);
     const QSignalBlocker block(box);
     box->clear();
     box->addItems(items);
@@ -37,6 +42,22 @@ GraphPanel::GraphPanel(QWidget* parent) : QWidget(parent), m_grid(new GraphGrid(
     m_layout->addItem(tr("Single"), int(GraphLayout::Single));
     m_part = new QComboBox(this);
     m_part->setObjectName("graphPart");
+    // A skeleton's takes have a part per joint (22 to 100 and more): the list is searchable -
+    // typing any part of a name ("hand", "_L") offers the joints that contain it.
+    m_part->setEditable(true);
+    m_part->setInsertPolicy(QComboBox::NoInsert);
+    m_part->lineEdit()->setPlaceholderText(tr("Find a part or joint"));
+    auto* finder = new QCompleter(m_part->model(), m_part);
+    finder->setFilterMode(Qt::MatchContains);
+    finder->setCaseSensitivity(Qt::CaseInsensitive);
+    finder->setCompletionMode(QCompleter::PopupCompletion);
+    m_part->setCompleter(finder);
+    // Text that names no part goes back to the part shown.
+    connect(m_part->lineEdit(), &QLineEdit::editingFinished, this, [this] {
+        const int index = m_part->findText(m_part->currentText(), Qt::MatchFixedString);
+        if (index >= 0 && index != m_part->currentIndex()) m_part->setCurrentIndex(index);
+        else m_part->setEditText(currentItem(m_part));
+    });
     m_dof = new QComboBox(this);
     m_dof->setObjectName("graphDof");
     m_mode = new QComboBox(this);
@@ -60,7 +81,8 @@ GraphPanel::GraphPanel(QWidget* parent) : QWidget(parent), m_grid(new GraphGrid(
     m_thesisTicks->setObjectName("thesisTicks");
     m_thesisTicks->setToolTip(tr("Value ticks every 10 units and time ticks every 2 s, as the thesis's graphs"));
     m_layout->setToolTip(tr("Which graphs to show"));
-    m_part->setToolTip(tr("The part shown by the 'one part' and 'single' layouts"));
+    m_part->setToolTip(tr("The part (a skeleton's joint) shown by the 'one part' and 'single' layouts: choose it, type to find "
+                          "it, or click it in the 3D view"));
     m_dof->setToolTip(tr("The DOF shown by the 'one DOF' and 'single' layouts"));
 
     m_mode->setToolTip(tr("How take B is shown beside take A"));
@@ -203,8 +225,8 @@ void GraphPanel::selectDof(const QString& dof)
     if (index >= 0) m_dof->setCurrentIndex(index);
 }
 
-QString GraphPanel::selectedPart() const { return m_part->currentText(); }
-QString GraphPanel::selectedDof() const { return m_dof->currentText(); }
+QString GraphPanel::selectedPart() const { return currentItem(m_part); }
+QString GraphPanel::selectedDof() const { return currentItem(m_dof); }
 
 void GraphPanel::applySelection() { m_grid->setSelectedChannel(selectedPart().toStdString(), selectedDof().toStdString()); }
 

@@ -3,13 +3,17 @@
 
 #include "widgets/take_series.h"
 
+#include "analysis/core/puppet_layout.h"
+
 #include "tests/widgets/synthetic_take.h"
 
 #include <catch2/catch.hpp>
 #include <qcustomplot.h>
 
 #include <QComboBox>
+#include <QCompleter>
 #include <QLabel>
+#include <QLineEdit>
 #include <QSignalSpy>
 #include <QTest>
 
@@ -401,4 +405,58 @@ TEST_CASE("a take of 10000 channels builds the first 96 graphs and says how many
     CHECK(grid->graphCount() == 24);
     CHECK(grid->hiddenGraphCount() == 0);
     CHECK_FALSE(caption->isVisible());
+}
+
+TEST_CASE("a skeleton's joints are found by typing in the part box and shown as one joint's graphs", "[widgets][graph_grid]")
+{
+    // The 22 joints of a Bandai performer, 6 channels each (132 graphs: more than kMaxGraphs).
+    const std::vector<std::string> joints{"joint_Root", "Hips",       "Spine",      "Chest",      "Neck",       "Head",
+                                          "Shoulder_L", "UpperArm_L", "LowerArm_L", "Hand_L",     "Shoulder_R", "UpperArm_R",
+                                          "LowerArm_R", "Hand_R",     "UpperLeg_L", "LowerLeg_L", "Foot_L",     "Toes_L",
+                                          "UpperLeg_R", "LowerLeg_R", "Foot_R",     "Toes_R"};
+    auto take = std::make_shared<analysis::Take>();
+    for (const auto& joint : joints)
+        for (const auto& channel : analysis::sixDofChannels(joint)) take->channels.push_back(channel);
+    take->rateHz = 30.0;
+    take->values = Eigen::MatrixXd::Zero(20, Eigen::Index(take->channels.size()));
+    for (Eigen::Index k = 0; k < 20; ++k)
+        for (Eigen::Index c = 0; c < take->values.cols(); ++c) take->values(k, c) = test::syntheticValue(k, c, 0.0);
+    take->labels = {"wave", "normal", 1, "synthetic"};
+
+    widgets::GraphPanel panel;
+    panel.resize(900, 700);
+    panel.setTakes(take, nullptr, QStringLiteral("joints"));
+    panel.show();
+    REQUIRE(QTest::qWaitForWindowExposed(&panel));
+    auto* grid = panel.findChild<widgets::GraphGrid*>();
+    auto* part = panel.findChild<QComboBox*>(QStringLiteral("graphPart"));
+    REQUIRE(grid);
+    REQUIRE(part);
+    CHECK(part->count() == 22);
+    REQUIRE(part->isEditable());
+    // Typing a piece of a name offers every joint that contains it, in any case.
+    auto* finder = part->completer();
+    REQUIRE(finder);
+    finder->setCompletionPrefix(QStringLiteral("hand"));
+    CHECK(finder->completionCount() == 2);
+    finder->setCompletionPrefix(QStringLiteral("_l"));
+    CHECK(finder->completionCount() == 8);
+    // A typed name chooses that joint; the 'one part' layout shows its 6 graphs.
+    panel.setGraphLayout(GraphLayout::OnePart);
+    part->lineEdit()->setText(QStringLiteral("upperleg_l"));
+    QTest::keyClick(part->lineEdit(), Qt::Key_Return);
+    CHECK(panel.selectedPart() == QStringLiteral("UpperLeg_L"));
+    REQUIRE(grid->graphCount() == 6);
+    CHECK(grid->graphCell(0).part == "UpperLeg_L");
+    // Text that names no joint leaves the choice as it was.
+    part->lineEdit()->setText(QStringLiteral("elbow"));
+    QTest::keyClick(part->lineEdit(), Qt::Key_Return);
+    CHECK(panel.selectedPart() == QStringLiteral("UpperLeg_L"));
+    CHECK(part->currentText() == QStringLiteral("UpperLeg_L"));
+    // Picking a joint (the 3D view's bone picking calls selectPart) shows that joint's graphs.
+    panel.selectPart(QStringLiteral("Hand_R"));
+    CHECK(grid->graphCell(0).part == "Hand_R");
+    // 'One DOF' across the joints: 22 graphs of the chosen DOF.
+    panel.setGraphLayout(GraphLayout::OneDof);
+    CHECK(grid->graphCount() == 22);
 }
