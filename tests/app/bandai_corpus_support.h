@@ -20,9 +20,10 @@
 namespace bunraku::test {
 
 /// Labels from "{function}_{emotion}_{take}", units guessed, written under the scratch folder
-/// `scratch`; empty when the files are missing (skipped, or failed under CI=true).
+/// `scratch`; empty when the files are missing (skipped, or failed under CI=true). `allJoints`:
+/// every joint a part (File > New Corpus's "all joints").
 inline std::filesystem::path bandaiCorpusFolder(const std::vector<std::string>& names, const std::string& scratch,
-                                                const std::string& name)
+                                                const std::string& name, bool allJoints = false)
 {
     std::vector<std::filesystem::path> files;
     for (const auto& file : names) files.push_back(bandaiDir() / file);
@@ -32,6 +33,7 @@ inline std::filesystem::path bandaiCorpusFolder(const std::vector<std::string>& 
     REQUIRE(sources.ok());
     analysis::io::CorpusBuildOptions options;
     options.import.bvh.guessUnits = true;
+    if (allJoints) options.import.bvhLayout = analysis::io::BvhTakeLayout::AllJoints;
     options.name = name;
     auto built = analysis::io::buildCorpus(*sources, options);
     REQUIRE(built.ok());

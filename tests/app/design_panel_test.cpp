@@ -623,3 +623,40 @@ TEST_CASE("on the Bandai bye takes, where no extracted gain is ill-conditioned, 
     CHECK_FALSE(window->designPanel()->illConditionedNoticeShown());
     CHECK(window->designPanel()->illConditionedNotice().isEmpty());
 }
+
+TEST_CASE("on a whole-body corpus the Design dock designs every joint on the performer's segments", "[app][design][bandai][wholebody]")
+{
+    // Issue 25: the Bandai bye takes with all 22 joints; the motion axes integrate the
+    // performer's segments (de Leva 1996), so the design runs on the whole body.
+    const auto corpus = test::bandaiCorpusFolder({"bye_normal_001.bvh", "bye_happy_001.bvh", "bye_angry_001.bvh"},
+                                                 "design_wholebody", "bye", true);
+    if (corpus.empty()) return;
+    auto window = test::windowOnCorpus(corpus);
+    REQUIRE(window);
+    auto* editor = shownWarpEditor(*window);
+    INFO(window->analysis().scheduler().error(app::AnalysisController::kAxesSlot).toStdString());
+    REQUIRE(editor);
+    const auto before = window->design().designedTake();
+    REQUIRE(before);
+    CHECK(before->channels.size() == 132);
+    REQUIRE(before->skeleton);
+    CHECK(before->skeleton->skeleton->jointCount() == 22);
+    REQUIRE_FALSE(window->design().extractedGains().phrases.empty());
+    // A warp drag re-times every joint: the waving hand's channels change.
+    const Eigen::MatrixXd valuesBefore = before->values;
+    const auto curve = editor->curve();
+    REQUIRE(curve.points.size() > 4);
+    const std::size_t index = curve.points.size() / 2;
+    const QPoint from = editor->plot()->mapFrom(editor, editor->pointPosition(index));
+    const int up = int(editor->plot()->yAxis->coordToPixel(curve.points[index].source + 3.0));
+    dragIn(editor->plot(), from, QPoint(from.x(), up));
+    REQUIRE(QTest::qWaitFor([&] { return window->design().designedTake() != before; }, 10000));
+    const auto after = window->design().designedTake();
+    REQUIRE(after->values.rows() == valuesBefore.rows());
+    Eigen::Index hand = -1;
+    for (std::size_t c = 0; c < after->channels.size(); ++c)
+        if (after->channels[c].name() == "Hand_R.z") hand = Eigen::Index(c);
+    REQUIRE(hand >= 0);
+    CHECK((after->values.col(hand) - valuesBefore.col(hand)).cwiseAbs().maxCoeff() > 0.1);
+    CHECK(window->document().undoStack()->count() == 1);
+}
