@@ -4,6 +4,7 @@
 #include "analysis/axis/axis_channels.h"
 #include "analysis/axis/inertia_axis.h"
 #include "analysis/core/puppet_layout.h"
+#include "analysis/axis/segment_inertia.h"
 #include "analysis/design/motion_design.h"
 #include "analysis/io/take_reader.h"
 #include "analysis/skeleton/take_resample.h"
@@ -99,6 +100,36 @@ void redesignFullSkeletonAfterDrag(benchmark::State& state)
     state.counters["joints"] = double(take.skeleton->jointSlots());
 }
 BENCHMARK(redesignFullSkeletonAfterDrag)->Unit(benchmark::kMillisecond);
+
+/// The same drag on the whole body (issue 25: < 16 ms to the result): a Bandai wave read with
+/// every joint as a part (132 channels), its axis the performer's segments (segment_inertia.h);
+/// the designed take recombines all 22 joints and carries the skeleton.
+void redesignWholeBodyAfterDrag(benchmark::State& state)
+{
+    const std::filesystem::path file = std::filesystem::path(BUNRAKU_SHARED_DIR) / "data/bandai/wave-right-hand_normal_001.bvh";
+    io::ImportOptions options;
+    options.bvhLayout = io::BvhTakeLayout::AllJoints;
+    auto wave = io::readTakeFile(file, options);
+    if (!wave) {
+        state.SkipWithError(("needs the shared Bandai data: " + file.string()).c_str());
+        return;
+    }
+    const Take take = resampleTake(*wave, evenlySpacedFrames(wave->frameCount(), 106));
+    const SegmentBody body = segmentBody(take).value();
+    const DesignBasis basis = prepareDesign(body.model, take).value();
+    const GainSet gains = extractGains(basis.coordinates, basis.coordinates * 1.1, {0, 40, 70, 105},
+                                       {"x", "y", "z", "rx", "ry", "rz"}).value();
+    WarpCurve warp = identityWarp(106, 8);
+    double offset = 0.0;
+    for (auto _ : state) {
+        offset = offset > 3.0 ? -3.0 : offset + 0.5;
+        warp = moveControlPoint(warp, 6, {warp.points[6].output, 48.0 + offset});
+        DesignedMotion designed = designMotion(basis, warp, gains);
+        benchmark::DoNotOptimize(designed);
+    }
+    state.counters["channels"] = double(take.channels.size());
+}
+BENCHMARK(redesignWholeBodyAfterDrag)->Unit(benchmark::kMillisecond);
 
 /// The one-off cost the basis saves on every drag: axis + relative motion of the functional take.
 void prepareDesignBasis(benchmark::State& state)

@@ -2,11 +2,17 @@
 // and the chain again after one parameter change with a warm cache - the counters say which
 // stages ran per iteration (1 = recomputed, 0 = taken from the cache).
 #include "analysis/core/skeleton_take.h"
+#include "analysis/io/corpus_builder.h"
 #include "analysis/pipeline/chain.h"
 #include "analysis/pipeline/stage_digest.h"
 #include "analysis/synth/demo_corpus.h"
 
 #include <benchmark/benchmark.h>
+
+#include <sys/resource.h>
+
+#include <filesystem>
+#include <optional>
 
 namespace {
 
@@ -214,5 +220,51 @@ void BM_BodyMotionHour(benchmark::State& state)
 BENCHMARK(BM_BodyMotionHour)->Unit(benchmark::kMillisecond)->Iterations(3);
 
 } // namespace
+
+/// Issue 25's target: `bunraku analyse` of the 15 Bandai waves with all 22 joints (132 channels)
+/// in under 2 s wall - the chain as analyse runs it (the chains coupling, the optimal path, KM2O
+/// over all M, spectra and ARMA, the motion axes on the performers' segments) on 2 threads, wall
+/// time; peak resident memory of the process as a counter (MB).
+void BM_WholeBodyChain(benchmark::State& state)
+{
+    static const std::optional<CorpusInput> waves = []() -> std::optional<CorpusInput> {
+        std::vector<std::filesystem::path> files;
+        for (const std::string style : {"normal", "active", "exhausted"})
+            for (int k = 1; k <= 5; ++k)
+                files.push_back(std::filesystem::path(BUNRAKU_SHARED_DIR) / "data/bandai" /
+                                ("wave-right-hand_" + style + "_00" + std::to_string(k) + ".bvh"));
+        auto sources = io::labelTakeFiles(files, "{function}_{emotion}_{take}");
+        if (!sources) return std::nullopt;
+        io::CorpusBuildOptions options;
+        options.import.bvhLayout = io::BvhTakeLayout::AllJoints;
+        auto built = io::buildCorpus(*sources, options);
+        if (!built) return std::nullopt;
+        auto input = makeCorpusInput(std::move(built->corpus));
+        if (!input) return std::nullopt;
+        return std::move(input).value();
+    }();
+    if (!waves) {
+        state.SkipWithError("needs the shared Bandai data (" BUNRAKU_SHARED_DIR "/data/bandai)");
+        return;
+    }
+    ChainOptions options;
+    options.threads = int(state.range(0));
+    std::size_t axes = 0;
+    for (auto _ : state) {
+        auto chain = runChain(*waves, {}, nullptr, options);
+        if (!chain) {
+            state.SkipWithError(chain.error().message.c_str());
+            break;
+        }
+        axes = chain->axes ? chain->axes->cells.size() : 0;
+        benchmark::DoNotOptimize(chain);
+    }
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    state.counters["peak_rss_MB"] = double(usage.ru_maxrss) / 1024.0;
+    state.counters["axis_cells"] = double(axes);
+    state.counters["channels"] = double(waves->corpus->takes.front().channels.size());
+}
+BENCHMARK(BM_WholeBodyChain)->ArgName("threads")->Arg(2)->MeasureProcessCPUTime()->UseRealTime()->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();
