@@ -31,8 +31,14 @@ enum class FrontBackAxis {
     Principal,
 };
 
+/// Which of de Leva's (1996) tables gives a performer's body segments (segment_inertia.h; his
+/// samples: 100 men of 73.0 kg and 174.1 cm, 15 women of 61.9 kg and 173.5 cm).
+enum class SegmentTable { DeLevaMale, DeLevaFemale };
+
 struct AxisOptions {
     MassPointOptions massPoints;       ///< where the mass points come from and their lattice step
+    /// The segment table of a take of a skeleton's joints (the puppet's masses ignore it).
+    SegmentTable segments = SegmentTable::DeLevaMale;
     FrontBackAxis frontBack = FrontBackAxis::ShoulderForward;
     /// Two principal moments whose difference is below this fraction of the largest moment are
     /// "equal": the axes in their plane are not determined by the inertia (reported per frame).

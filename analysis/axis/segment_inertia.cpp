@@ -204,8 +204,14 @@ Result<SegmentBody> segmentBody(const Take& take, const SegmentModelOptions& opt
                                                          " (the trunk and head segments lie on it)");
 
     const SegmentModelOptions& o = options;
-    const double bodyMass = 1000.0 * (o.bodyMassKg > 0.0 ? o.bodyMassKg : segmentTableBodyMassKg(o.table)); // g
     const auto params = [&](SegmentKind kind) -> const SegmentParameters& { return segmentParameters(o.table, kind); };
+    // The table's fractions of a whole body (head, trunk, two of each limb segment) add up to
+    // 100 % but for rounding (99.99 % for the women): scaled so the body weighs its mass.
+    double fractions = params(SegmentKind::Head).massFraction + params(SegmentKind::Trunk).massFraction;
+    for (const SegmentKind kind : {SegmentKind::UpperArm, SegmentKind::Forearm, SegmentKind::Hand, SegmentKind::Thigh, SegmentKind::Shank,
+                                   SegmentKind::Foot})
+        fractions += 2.0 * params(kind).massFraction;
+    const double bodyMass = 1000.0 * (o.bodyMassKg > 0.0 ? o.bodyMassKg : segmentTableBodyMassKg(o.table)) / fractions; // g per unit fraction
 
     // The limbs: stations along each main line, the long bone pair.
     struct LimbLine {

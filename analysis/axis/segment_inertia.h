@@ -37,10 +37,7 @@
 
 namespace bunraku::analysis {
 
-/// Which of de Leva's tables (his samples: 100 men of 73.0 kg and 174.1 cm, 15 women of 61.9 kg
-/// and 173.5 cm).
-enum class SegmentTable { DeLevaMale, DeLevaFemale };
-/// "male", "female".
+/// "male", "female" (SegmentTable: inertia_axis.h).
 const char* segmentTableName(SegmentTable table);
 std::optional<SegmentTable> segmentTableFromName(std::string_view name);
 
@@ -62,7 +59,9 @@ double segmentTableBodyMassKg(SegmentTable table);
 
 struct SegmentModelOptions {
     SegmentTable table = SegmentTable::DeLevaMale;
-    double bodyMassKg = 0.0; ///< 0: the table's mean. The axis does not depend on it; the moments scale with it.
+    /// 0: the table's mean. The axis does not depend on it; the moments scale with it. The
+    /// table's fractions (which add up to 99.99-100.00 % after rounding) are scaled to it.
+    double bodyMassKg = 0.0;
 };
 
 /// One segment placed on the skeleton at the take's first frame (world, cm).

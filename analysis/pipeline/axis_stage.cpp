@@ -37,7 +37,7 @@ std::shared_ptr<const AxisModel> defaultAxisModel(const AxisOptions& options)
 Result<std::shared_ptr<const AxisModel>> axisModelFor(const Take& take, const AxisOptions& options, bool fitToSkeleton)
 {
     if (usesSegmentModel(take)) {
-        auto body = segmentBody(take);
+        auto body = segmentBody(take, SegmentModelOptions{options.segments});
         if (!body) return body.error();
         return std::make_shared<const AxisModel>(std::move(body->model));
     }
@@ -78,6 +78,7 @@ StageKey axisKey(StageKey normalised, const AxisParameters& p)
         .add(int(p.frontBack))
         .add(p.massSpacing)
         .add(int(p.masses))
+        .add(int(p.segments))
         .add(p.tau)
         .add(p.searchBand)
         .add(p.maxScale)
@@ -186,7 +187,7 @@ Result<AxisOutput> runAxes(const NormaliseOutput& normalised, const std::string&
 
 StageKey takeAxisKey(StageKey take, const AxisParameters& p)
 {
-    return KeyBuilder("take-axis").add(take).add(int(p.frontBack)).add(p.massSpacing).add(int(p.masses)).key();
+    return KeyBuilder("take-axis").add(take).add(int(p.frontBack)).add(p.massSpacing).add(int(p.masses)).add(int(p.segments)).key();
 }
 
 Result<TakeAxis> runTakeAxis(const Take& take, const AxisParameters& parameters, const RunControl& control)

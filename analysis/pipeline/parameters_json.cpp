@@ -173,6 +173,7 @@ const std::map<std::string, preprocess::PositionAlignment> kPositionAlignments{
 const std::map<std::string, FrontBackAxis> kFrontBack{{"shoulder", FrontBackAxis::ShoulderForward},
                                                       {"principal", FrontBackAxis::Principal}};
 const std::map<std::string, MassSource> kMassSources{{"model", MassSource::Model}, {"primitives", MassSource::Primitives}};
+const std::map<std::string, SegmentTable> kSegmentTables{{"male", SegmentTable::DeLevaMale}, {"female", SegmentTable::DeLevaFemale}};
 
 json referenceJson(const ReferenceChoice& choice)
 {
@@ -403,6 +404,7 @@ json toJson(const ChainParameters& p)
              {{"frontBack", p.axis.frontBack == FrontBackAxis::Principal ? "principal" : "shoulder"},
               {"massSpacing", p.axis.massSpacing},
               {"masses", massSourceName(p.axis.masses)},
+              {"segments", p.axis.segments == SegmentTable::DeLevaFemale ? "female" : "male"},
               {"tau", p.axis.tau},
               {"searchBand", p.axis.searchBand},
               {"maxScale", p.axis.maxScale},
@@ -444,11 +446,12 @@ Result<ChainParameters> chainParametersFromJson(const json& value, const std::st
         r.integer("welchSegment", p.fluctuations.welchSegment, 2, kMaxWelchSegment);
     });
     root.nested("axis", [&](Reader& r) {
-        r.onlyKeys({"frontBack", "massSpacing", "masses", "tau", "searchBand", "maxScale", "approximationWeight", "level", "path", "controlSpacing",
+        r.onlyKeys({"frontBack", "massSpacing", "masses", "segments", "tau", "searchBand", "maxScale", "approximationWeight", "level", "path", "controlSpacing",
                     "refinementPasses"});
         r.choice("frontBack", p.axis.frontBack, kFrontBack);
         r.real("massSpacing", p.axis.massSpacing, kMinMassSpacing, kMaxMassSpacing);
         r.choice("masses", p.axis.masses, kMassSources);
+        r.choice("segments", p.axis.segments, kSegmentTables);
         r.integer("tau", p.axis.tau, 0, kMaxTau);
         r.integer("searchBand", p.axis.searchBand, 0, kMaxSearchBand);
         r.integer("maxScale", p.axis.maxScale, 1, kMaxScale);

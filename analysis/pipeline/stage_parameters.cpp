@@ -94,6 +94,7 @@ AxisOptions AxisParameters::axisOptions() const
     options.frontBack = frontBack;
     options.massPoints.spacing = massSpacing;
     options.massPoints.source = masses;
+    options.segments = segments;
     return options;
 }
 

@@ -121,6 +121,9 @@ struct AxisParameters {
     /// The masses from the modelled puppet's solid (default) or the description's primitives
     /// (analysis/body/puppet_mass.h, docs/MOTION-AXIS.md "Masses").
     MassSource masses = MassSource::Model;
+    /// de Leva's male or female segment table for a take of a skeleton's joints (the whole-body
+    /// axis: analysis/axis/segment_inertia.h, docs/MOTION-AXIS.md "The whole body").
+    SegmentTable segments = SegmentTable::DeLevaMale;
     int tau = 4;                  ///< 5.3.4
     int searchBand = 30;          ///< T_cmp (docs/MOTION-AXIS.md)
     int maxScale = 16;            ///< scales 1..16

@@ -37,11 +37,16 @@ struct AxisArguments {
     std::string frontBack = "shoulder";
     double spacing = 1.0;
     std::string masses = "model";
+    std::string segments = "male";
     bool allJoints = false;
 };
 
 void addAxisOptions(CLI::App* command, AxisArguments& arguments, bool readsTakes = true)
 {
+    if (readsTakes)
+        command->add_option("--segments", arguments.segments,
+                            "The whole body's segment table (with --all-joints): de Leva's (1996) 'male' (default) or 'female'")
+            ->check(CLI::IsMember({"male", "female"}));
     if (readsTakes)
         command->add_flag("--all-joints", arguments.allJoints,
                       "Read a BVH, FBX, glTF or Collada take with every joint of its skeleton (6 channels each) instead of the "
@@ -65,6 +70,7 @@ an::AxisOptions axisOptions(const AxisArguments& arguments)
     options.massPoints.spacing = arguments.spacing;
     options.massPoints.source = arguments.masses == "primitives" ? an::MassSource::Primitives : an::MassSource::Model;
     options.frontBack = arguments.frontBack == "principal" ? an::FrontBackAxis::Principal : an::FrontBackAxis::ShoulderForward;
+    options.segments = arguments.segments == "female" ? an::SegmentTable::DeLevaFemale : an::SegmentTable::DeLevaMale;
     return options;
 }
 

@@ -126,3 +126,21 @@ TEST_CASE("normalise with its defaults lowers the variance of 4 of 5 takes of ev
             if (reference.empty()) CHECK(lowered == 4);
         }
 }
+
+TEST_CASE("axis reads a BVH take with every joint and integrates the performer's segments of either table", "[cli][wholebody]")
+{
+    const auto file = bunraku::test::bandaiDir() / "wave-right-hand_active_001.bvh";
+    if (!bunraku::test::requireBandaiData(std::filesystem::exists(file))) return;
+    const auto dir = bunraku::test::scratchDir("cli-wholebody-axis");
+    for (const std::string table : {"male", "female"}) {
+        const json summary = runJson({"axis", file.string(), "--all-joints", "--segments", table, "-o", (dir / (table + ".csv")).string(),
+                                      "--json"});
+        CHECK(summary.at("mass_source") == "segments");
+        CHECK(summary.at("mass_g").get<double>() == Approx(table == "male" ? 73000.0 : 61900.0));
+        CHECK(summary.at("part_masses_g").size() == 16); // the joints that carry a segment's points
+        CHECK(summary.at("frames") == 180);
+    }
+    // Without --all-joints the same file is the puppet's four parts, the modelled puppet's masses.
+    const json puppet = runJson({"axis", file.string(), "-o", (dir / "puppet.csv").string(), "--json"});
+    CHECK(puppet.at("mass_source") == "model");
+}

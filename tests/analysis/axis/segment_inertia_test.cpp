@@ -164,6 +164,29 @@ TEST_CASE("the whole-body segments are found on every fixture family", "[axis][s
     }
 }
 
+TEST_CASE("the female table weighs 61.9 kg and moves the centre of mass by its own fractions", "[axis][segments]")
+{
+    const Take take = jointTake(bunraku::test::bvhFamilies().front());
+    auto male = segmentBody(take);
+    auto female = segmentBody(take, {SegmentTable::DeLevaFemale});
+    REQUIRE(male.ok());
+    REQUIRE(female.ok());
+    CHECK(female->model.totalMass == Approx(61900.0).epsilon(1e-9));
+    // The women's thighs are 14.78 % of the body (men's 14.16 %) with their centre at 36.12 %
+    // of the thigh (40.95 %): the segments' masses follow the table, part by part.
+    for (std::size_t k = 0; k < female->segments.size(); ++k) {
+        const auto& s = female->segments[k];
+        // (The published fractions add up to 99.99 %: scaled by 1 / 0.9999 to the whole body.)
+        CHECK(s.mass == Approx(segmentParameters(SegmentTable::DeLevaFemale, s.kind).massFraction * 61900.0 / 0.9999));
+        CHECK(male->segments[k].kind == s.kind);
+    }
+    const auto poses = worldPartPoses(female->model.body, take, 0);
+    const auto [centre, inertia] = inertiaAboutCentre(female->model.parts, poses);
+    const auto [peerCentre, peerInertia] = segmentsInertia(female->segments);
+    CHECK((centre - peerCentre).norm() < 1e-6);
+    CHECK((inertia - peerInertia).norm() < 1e-6 * peerInertia.norm());
+}
+
 TEST_CASE("a take without a skeleton or without its joints has no whole-body axis, and says why", "[axis][segments]")
 {
     Take take;

@@ -50,7 +50,9 @@ TEST_CASE("parameters written as JSON read back equal", "[pipeline][parameters]"
     p.design.setGain({2, 1, 0.5, 2.0});
     p.design.setGain({0, 3, 1.5, 1.0});
     p.design.boundaries = {false, {10, 30}};
+    p.axis.segments = SegmentTable::DeLevaFemale;
     const json written = toJson(p);
+    CHECK(written.at("axis").at("segments") == "female");
     auto read = chainParametersFromJson(json::parse(written.dump()), "p.json");
     INFO((read ? "" : read.error().message));
     REQUIRE(read.ok());
