@@ -1,5 +1,7 @@
 #include "app/analysis_controller.h"
 
+#include "analysis/axis/segment_inertia.h"
+
 #include "analysis/body/body_description.h"
 #include "analysis/body/body_fit.h"
 #include "analysis/core/puppet_layout.h"
@@ -383,7 +385,9 @@ void AnalysisController::requestTakeAxis(TakeSlot slot)
     const TakePointer take = m_document.selectedTake(slot);
     TakePointer& asked = m_axisTakes[slot == TakeSlot::A ? 0 : 1];
     QString& label = m_axisLabels[slot == TakeSlot::A ? 0 : 1];
-    if (!take || !analysis::hasPuppetLayout(*take)) { // nothing to pose (an axis take, for one)
+    // Nothing to pose (an axis take, for one): the axis needs the puppet's parts or a skeleton's
+    // joints (the performer's segments).
+    if (!take || !(analysis::hasPuppetLayout(*take) || analysis::usesSegmentModel(*take))) {
         asked.reset();
         label.clear();
         m_scheduler->clear(id);

@@ -361,6 +361,9 @@ void MainWindow::connectDocument()
     connect(m_design, &DesignController::designed, this, &MainWindow::refreshBoundaries);
     connect(m_viewportPanel, &ViewportPanel::partPicked, m_graphs, &widgets::GraphPanel::selectPart);
     connect(m_viewportPanel, &ViewportPanel::bonePicked, this, [this](int slot, const QString& joint, const QString& part) {
+        // A take of a skeleton's joints has the joint as a part: its graphs follow the pick (a
+        // puppet take's picked part came with partPicked).
+        m_graphs->selectPart(joint);
         showStatus(part.isEmpty() ? tr("Bone %1 of take %2").arg(joint, slot == 0 ? QStringLiteral("A") : QStringLiteral("B"))
                                          : tr("Bone %1 of take %2 (drives the %3)").arg(joint, slot == 0 ? QStringLiteral("A") : QStringLiteral("B"), part));
     });

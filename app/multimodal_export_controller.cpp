@@ -3,6 +3,7 @@
 #include "app/document.h"
 #include "app/multimodal_export.h"
 #include "app/offscreen_view.h"
+#include "render/scene.h"
 #include "app/viewport_panel.h"
 #include "widgets/graph_panel.h"
 #include "widgets/viewport_widget.h"
@@ -65,7 +66,7 @@ VideoExportResult MultimodalExportController::exportVideo(const MultimodalOption
     // the puppets of the takes that can pose it, drawn offscreen at the view rectangle's size
     std::vector<analysis::Take> puppets;
     for (const TakePointer& take : {takeA, takeB})
-        if (take && analysis::hasPuppetLayout(*take)) puppets.push_back(*take);
+        if (take && render::drawableTake(*take)) puppets.push_back(*take);
     auto* view = m_viewport.viewport();
     const std::optional<render::Camera> camera = view->renderer() ? std::optional<render::Camera>(view->camera()) : std::nullopt;
     auto offscreen = OffscreenView::create(std::move(puppets), camera, view->visibility(), frame->geometry().view.size(),

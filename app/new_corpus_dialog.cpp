@@ -112,6 +112,12 @@ NewCorpusDialog::NewCorpusDialog(QWidget* parent) : QDialog(parent)
     });
     m_units = makeUnitsBox(this);
     connect(m_units, &QComboBox::currentIndexChanged, this, &NewCorpusDialog::remap);
+    m_channels = new QComboBox(this);
+    m_channels->setObjectName("corpusChannels");
+    m_channels->addItems({tr("The puppet's four parts (24 channels)"), tr("Every joint of the skeleton (6 channels each)")});
+    m_channels->setToolTip(tr("What each BVH, FBX, glTF or Collada take becomes: the puppet's head, shoulder, arm and hand "
+                              "(the thesis's 24 channels, through the part map), or every joint of the performer's skeleton - the "
+                              "whole body through every analysis, its motion axis from the performer's body segments"));
     m_side = new QComboBox(this);
     m_side->addItems({tr("Right arm and hand"), tr("Left arm and hand")});
     connect(m_side, &QComboBox::currentIndexChanged, this, &NewCorpusDialog::remap);
@@ -146,6 +152,7 @@ NewCorpusDialog::NewCorpusDialog(QWidget* parent) : QDialog(parent)
     output->addWidget(browse);
     auto* form = new QFormLayout;
     form->addRow(tr("File names"), m_pattern);
+    form->addRow(tr("Channels"), m_channels);
     form->addRow(tr("Part map"), joints);
     form->addRow(tr("Animation"), m_animation);
     form->addRow(tr("Side"), m_side);
@@ -438,6 +445,7 @@ io::CorpusBuildOptions NewCorpusDialog::buildOptions() const
     applyUnitsChoice(*m_units, options.import.bvh);
     options.import.scene.animation = m_animation->text().trimmed().toStdString();
     options.import.bvh.side = m_side->currentIndex() == 1 ? analysis::BodySide::Left : analysis::BodySide::Right;
+    if (m_channels->currentIndex() == 1) options.import.bvhLayout = io::BvhTakeLayout::AllJoints;
     if (!m_joints->text().trimmed().isEmpty())
         if (auto map = io::parseJointMap(m_joints->text().toStdString())) options.import.bvh.jointMap = map.value();
     options.neutralEmotion = m_neutral->currentIndex() > 0 ? m_neutral->currentText().toStdString() : std::string();

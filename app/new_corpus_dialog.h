@@ -57,6 +57,8 @@ public:
     /// The animation read from FBX, glTF and Collada files (name or index; empty: the first).
     QLineEdit* animationEdit() const { return m_animation; }
     QComboBox* sideBox() const { return m_side; }
+    /// The puppet's four parts (0, default) or every joint of the skeleton (1).
+    QComboBox* channelsBox() const { return m_channels; }
     QComboBox* unitsBox() const { return m_units; }
     QComboBox* neutralBox() const { return m_neutral; }
     QPushButton* removeButton() const { return m_remove; }
@@ -88,6 +90,7 @@ private:
     QTableWidget* m_table = nullptr;
     QLineEdit* m_joints = nullptr;
     QLineEdit* m_animation = nullptr;
+    QComboBox* m_channels = nullptr;
     QComboBox* m_side = nullptr;
     QComboBox* m_units = nullptr;
     QComboBox* m_neutral = nullptr;

@@ -1,5 +1,7 @@
 #include "app/view_video_controller.h"
 
+#include "render/scene.h"
+
 #include "app/document.h"
 #include "app/file_controller.h"
 #include "app/file_dialogs.h"
@@ -84,7 +86,7 @@ VideoExportResult ViewVideoController::exportVideo(const VideoExportOptions& opt
     } else {
         std::vector<analysis::Take> takes;
         for (TakeSlot slot : {TakeSlot::A, TakeSlot::B})
-            if (TakePointer shown = m_document.selectedTake(slot); shown && analysis::hasPuppetLayout(*shown))
+            if (TakePointer shown = m_document.selectedTake(slot); shown && render::drawableTake(*shown))
                 takes.push_back(*shown);
         const std::optional<render::Camera> camera =
             view->renderer() ? std::optional<render::Camera>(view->camera()) : std::nullopt;

@@ -41,7 +41,7 @@ std::vector<std::pair<TakeSlot, TakePointer>> shownTakes(const Document& documen
 {
     std::vector<std::pair<TakeSlot, TakePointer>> takes;
     for (TakeSlot slot : {TakeSlot::A, TakeSlot::B})
-        if (TakePointer take = document.selectedTake(slot); take && analysis::hasPuppetLayout(*take)) takes.emplace_back(slot, take);
+        if (TakePointer take = document.selectedTake(slot); take && render::drawableTake(*take)) takes.emplace_back(slot, take);
     return takes;
 }
 
@@ -195,7 +195,10 @@ void ViewportPanel::rebuildScene()
     const auto takes = shownTakes(m_document);
     m_drawnAxes.clear();
     m_drawnKimonos.clear();
-    if (takes.empty()) return;
+    if (takes.empty()) {
+        m_viewport->setScene(render::SceneContent{}); // nothing stays drawn of the takes shown before
+        return;
+    }
     render::SceneContent scene;
     scene.body = analysis::defaultBodyDescription();
     for (const auto& [slot, take] : takes) {

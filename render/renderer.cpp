@@ -175,7 +175,18 @@ analysis::Status Renderer::setScene(const SceneContent& scene, const LayoutOptio
 {
     if (m_gl == nullptr)
         return analysis::makeError(analysis::ErrorCode::InvalidArgument, "the renderer is not initialised");
-    if (auto status = validateScene(scene); !status.ok()) return status;
+    if (scene.takes.empty()) {
+        // Nothing to draw (no take shown, or none the renderer can pose): the view is empty.
+        releaseSceneBuffers();
+        ++m_sceneGeneration;
+        return analysis::okStatus();
+    }
+    if (auto status = validateScene(scene); !status.ok()) {
+        // Nothing of the scene before stays drawn as if it were the new one's.
+        releaseSceneBuffers();
+        ++m_sceneGeneration;
+        return status;
+    }
     ++m_sceneGeneration;
     m_shadowKey.clear();
     std::vector<std::shared_ptr<SkeletonFigure>> reusable;
@@ -212,8 +223,8 @@ analysis::Status Renderer::setScene(const SceneContent& scene, const LayoutOptio
     for (std::size_t s = 0; s < scene.takes.size(); ++s) {
         const TakeSlot& source = scene.takes[s];
         Slot slot;
-        slot.take = source.take;
         slot.body = source.body ? *source.body : m_body;
+        slot.take = drawnTake(slot.body, source.take).value(); // validated above
         if (modelled && source.body) slot.puppet = puppetFigure(slot.body, reusablePuppets);
         const std::vector<Mesh> ownMeshes = source.body && !modelled ? buildPuppetMeshes(slot.body) : std::vector<Mesh>{};
         for (const Mesh& mesh : ownMeshes) {

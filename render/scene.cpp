@@ -4,6 +4,7 @@
 #include "analysis/core/puppet_layout.h"
 #include "analysis/core/skeleton.h"
 #include "analysis/core/skeleton_mesh.h"
+#include "analysis/core/skeleton_take.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -50,7 +51,7 @@ analysis::Status validateScene(const SceneContent& scene)
             if (!same)
                 return makeError(ErrorCode::InvalidArgument, "take " + name + ": its own body does not have the scene body's parts");
         }
-        if (auto binding = analysis::bindBody(body, slot.take); !binding.ok()) return binding.error();
+        if (auto drawn = drawnTake(body, slot.take); !drawn.ok()) return drawn.error();
         if (!slot.world_T_axis.empty() && Eigen::Index(slot.world_T_axis.size()) != slot.take.frameCount())
             return makeError(ErrorCode::InvalidArgument,
                              "take " + name + ": " + std::to_string(slot.world_T_axis.size()) + " axis poses for " +
@@ -63,6 +64,28 @@ analysis::Status validateScene(const SceneContent& scene)
             return makeError(ErrorCode::InvalidArgument, "mesh for body part '" + part + "' has no triangles");
     }
     return analysis::okStatus();
+}
+
+analysis::Result<analysis::Take> drawnTake(const analysis::BodyDescription& body, const analysis::Take& take)
+{
+    auto binding = analysis::bindBody(body, take);
+    if (binding.ok()) return take;
+    if (!take.skeleton || !take.skeleton->skeleton) return binding.error();
+    for (const auto part : analysis::kPuppetParts)
+        if (!take.skeleton->skeleton->binding(part)) return binding.error();
+    auto puppet = analysis::puppetTakeFromSkeleton(take.skeleton, take.rateHz, take.labels);
+    if (!puppet.ok()) return analysis::makeError(puppet.error().code, "take " + take.displayName() + ": " + puppet.error().message);
+    if (auto bound = analysis::bindBody(body, *puppet); !bound.ok()) return bound.error();
+    return puppet;
+}
+
+bool drawableTake(const analysis::Take& take)
+{
+    if (analysis::hasPuppetLayout(take)) return true;
+    if (!take.skeleton || !take.skeleton->skeleton) return false;
+    for (const auto part : analysis::kPuppetParts)
+        if (!take.skeleton->skeleton->binding(part)) return false;
+    return true;
 }
 
 glm::vec3 takeCentre(const analysis::Take& take, std::string_view centrePart)

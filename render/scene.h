@@ -102,9 +102,20 @@ struct LayoutOptions {
     float orbitPointRadius = 1.6f; ///< cm, the moving point on each orbit
 };
 
-/// Checks 1..2 takes, a body of 1..kMaxBodyParts parts, every take valid and able to drive its body (bindBody), a take's own
-/// body with the scene body's parts, axis poses one per frame when given, part meshes named after body parts.
+/// Checks 1..2 takes, a body of 1..kMaxBodyParts parts, every take valid and able to drive its body (bindBody, through
+/// drawnTake), a take's own body with the scene body's parts, axis poses one per frame when given, part meshes named
+/// after body parts.
 analysis::Status validateScene(const SceneContent& scene);
+
+/// The take a slot draws: `take` itself when it has the parts that drive `body`; else, for a take
+/// of a skeleton's joints (the whole body, every joint a part) whose skeleton binds the puppet's
+/// four parts, the puppet take its skeleton poses (analysis/core/skeleton_take.h,
+/// puppetTakeFromSkeleton: the same motion, the puppet, skeleton and performer figures on it).
+/// Otherwise bindBody's error.
+analysis::Result<analysis::Take> drawnTake(const analysis::BodyDescription& body, const analysis::Take& take);
+/// True for a take the 3D view can pose: the puppet's 24 channels, or a skeleton that binds the
+/// puppet's four parts (drawnTake).
+bool drawableTake(const analysis::Take& take);
 
 /// Where a take stands: the mean position over the take of `centrePart`'s sensor (the puppet's
 /// shoulder: its mirror frame) in x and y, z = 0. Without that part, the mean of every 6-DOF

@@ -1,6 +1,9 @@
 #include "render/take_scene.h"
 
+#include "analysis/axis/segment_inertia.h"
 #include "analysis/body/body_fit.h"
+
+#include <optional>
 
 namespace bunraku::render {
 
@@ -18,8 +21,16 @@ analysis::Result<SceneContent> makeTakeScene(const analysis::BodyDescription& bo
     if (options.computeAxes) {
         const analysis::AxisModel model = analysis::makeAxisModel(body, options.axis);
         for (TakeSlot& slot : scene.takes) {
-            const analysis::AxisModel own = slot.body ? analysis::makeAxisModel(*slot.body, options.axis) : analysis::AxisModel{};
-            auto axis = analysis::computeMotionAxis(slot.body ? own : model, slot.take, options.axis, control);
+            // A take of a skeleton's joints: the performer's whole-body axis (segment_inertia.h).
+            std::optional<analysis::AxisModel> own;
+            if (analysis::usesSegmentModel(slot.take)) {
+                auto segments = analysis::segmentBody(slot.take, analysis::SegmentModelOptions{options.axis.segments});
+                if (!segments.ok()) return segments.error();
+                own = std::move(segments->model);
+            } else if (slot.body) {
+                own = analysis::makeAxisModel(*slot.body, options.axis);
+            }
+            auto axis = analysis::computeMotionAxis(own ? *own : model, slot.take, options.axis, control);
             if (!axis.ok()) return axis.error();
             slot.world_T_axis = std::move(axis->world_T_axis);
         }

@@ -402,8 +402,22 @@ Result<Take> bvhToPuppetTake(const BvhFile& file, const BvhImportOptions& option
 
 Result<Take> bvhToJointTake(const BvhFile& file, const BvhImportOptions& options)
 {
-    auto motion = bvhToSkeletalMotion(file, options);
-    if (!motion) return motion.error();
+    // The puppet's four parts are bound too when the part map finds them (as a puppet import
+    // would), so the whole body can also be drawn as the puppet; a skeleton the map cannot read,
+    // or whose calibration fails, is imported without them.
+    std::shared_ptr<const SkeletalMotion> motion;
+    if (auto ok = checkOptions(file, options); !ok) return ok.error();
+    if (auto lengths = checkBvhLengths(file, bvhUnitScale(file, options)); !lengths) return lengths.error();
+    std::optional<JointMap> given = options.jointMap;
+    if (!given && isWorkbenchExport(file)) given = JointMap{{"head", "shoulder", "arm", "hand"}};
+    if (!given && isRigLayout(file.skeleton)) given = JointMap{{kRigNeckJoint, kRigRootJoint, kRigArmSensorJoint, kRigWristJoint}};
+    if (auto map = mapPuppetParts(file, given, PartMapOptions{options.side}, options))
+        if (auto mapped = bvhToSkeletalMotion(file, options, &map->joints)) motion = std::move(mapped).value();
+    if (!motion) {
+        auto unmapped = bvhToSkeletalMotion(file, options);
+        if (!unmapped) return unmapped.error();
+        motion = std::move(unmapped).value();
+    }
     std::vector<std::size_t> kept;
     Take take;
     for (std::size_t j = 0; j < file.skeleton.joints.size(); ++j) {
@@ -416,10 +430,10 @@ Result<Take> bvhToJointTake(const BvhFile& file, const BvhImportOptions& options
     take.labels = options.labels;
     if (take.labels.source.empty()) take.labels.source = file.source;
     for (Eigen::Index f = 0; f < take.frameCount(); ++f) {
-        const auto poses = (*motion)->worldPoses(f);
+        const auto poses = motion->worldPoses(f);
         for (std::size_t k = 0; k < kept.size(); ++k) setPartPose(take, f, Eigen::Index(k) * kDofCount, poses[kept[k]]);
     }
-    take.skeleton = *motion;
+    take.skeleton = motion;
     if (auto valid = validateTake(take); !valid)
         return makeError(ErrorCode::Numerical, file.source + ": the poses overflow (values too large?): " + valid.error().message);
     return take;

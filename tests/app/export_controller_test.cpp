@@ -2,6 +2,7 @@
 // and as CSV; a take without a skeleton as the puppet; bad names refused. And the 3D view's
 // figure per take: the skeleton drawn, a click on a bone selecting its part's graphs.
 #include "app_test_support.h"
+#include "tests/app/bandai_corpus_support.h"
 
 #include "app/design_controller.h"
 #include "app/export_controller.h"
@@ -212,6 +213,49 @@ TEST_CASE("the 3D view draws take A's skeleton and a click on its hand bone show
     CHECK(bones.at(0).at(1).toString() == QStringLiteral("Hand_R"));
     CHECK(bones.at(0).at(2).toString() == QStringLiteral("hand"));
     CHECK(window->graphPanel()->selectedPart() == QStringLiteral("hand"));
+}
+
+TEST_CASE("on a whole-body corpus a bone picked in the 3D view shows that joint's graphs", "[app][wholebody][bandai]")
+{
+    // Issue 25: the takes' parts are the skeleton's joints; a click on Hand_R selects Hand_R's
+    // graphs (a puppet take's click selects the part the joint drives, as above).
+    const auto corpus = test::bandaiCorpusFolder({"bye_normal_001.bvh", "bye_happy_001.bvh", "bye_angry_001.bvh"},
+                                                 "pick_wholebody", "bye", true);
+    if (corpus.empty()) return;
+    auto window = test::windowOnCorpus(corpus);
+    REQUIRE(window);
+    const auto take = window->document().selectedTake(TakeSlot::A);
+    REQUIRE(take);
+    REQUIRE(take->channels.size() == 132);
+    app::ViewportPanel* panel = window->viewportPanel();
+    widgets::ViewportWidget* viewport = panel->viewport();
+    QSignalSpy errors(viewport, &widgets::ViewportWidget::renderError);
+    panel->figureBox(0)->setCurrentIndex(panel->figureBox(0)->findData(int(render::FigureStyle::Skeleton)));
+    REQUIRE_FALSE(viewport->grabFramebuffer().isNull());
+    INFO((errors.isEmpty() ? QString() : errors.front().front().toString()).toStdString());
+    CHECK(errors.isEmpty());
+    render::Camera fromRight = viewport->camera();
+    fromRight.angleDeg = 180.0f;
+    fromRight.elevationDeg = 0.0f;
+    viewport->setCamera(fromRight);
+    REQUIRE_FALSE(viewport->grabFramebuffer().isNull());
+    REQUIRE(viewport->renderer() != nullptr);
+    const int hand = take->skeleton->skeleton->find("Hand_R");
+    REQUIRE(hand >= 0);
+    CHECK(viewport->renderer()->skeletonDrawn(0));
+    const auto joints = viewport->renderer()->displayedJointTransforms(0, viewport->camera());
+    REQUIRE(joints.size() > std::size_t(hand));
+    const glm::vec3 middle = glm::vec3(joints[std::size_t(hand)][3]);
+    const qreal ratio = viewport->devicePixelRatioF();
+    const QSize pixels(int(viewport->width() * ratio), int(viewport->height() * ratio));
+    const QPointF pixel = viewport->camera().project(middle, pixels).pixel / ratio;
+    window->graphPanel()->selectPart(QStringLiteral("Head"));
+    REQUIRE(window->graphPanel()->selectedPart() == QStringLiteral("Head"));
+    QSignalSpy bones(panel, &app::ViewportPanel::bonePicked);
+    QTest::mouseClick(viewport, Qt::LeftButton, Qt::NoModifier, pixel.toPoint());
+    REQUIRE(bones.count() == 1);
+    CHECK(bones.at(0).at(1).toString() == QStringLiteral("Hand_R"));
+    CHECK(window->graphPanel()->selectedPart() == QStringLiteral("Hand_R"));
 }
 
 TEST_CASE("a timing designed on a corpus of Bandai waves exports on the performer's 22-joint skeleton", "[app][export][design]")

@@ -357,6 +357,19 @@ TEST_CASE("new corpus from the bandai files in the workbench", "[app][import]")
     CHECK(corpus.takes.size() == files.size());
     CHECK(corpus.neutralEmotion == "normal");
     CHECK(corpus.rateHz == 30.0);
+    CHECK(corpus.takes.front().channels.size() == 24);
+
+    // Channels: every joint of the skeleton - the whole body, 22 joints x 6 channels.
+    REQUIRE(dialog.channelsBox());
+    dialog.channelsBox()->setCurrentIndex(1);
+    CHECK(dialog.buildOptions().import.bvhLayout == analysis::io::BvhTakeLayout::AllJoints);
+    const QString whole = QString::fromStdString((test::scratchDir("app_new_corpus_bandai_joints") / "bandai").string());
+    dialog.setOutputFolder(whole);
+    REQUIRE(window->files().createCorpusFromFiles(dialog.sources(), dialog.buildOptions(), whole));
+    const auto& joints = window->document().corpus();
+    CHECK(joints.takes.size() == files.size());
+    CHECK(joints.takes.front().channels.size() == 132);
+    REQUIRE(joints.takes.front().skeleton);
 }
 
 TEST_CASE("File > Import Take of a BVH file takes the map chosen in the joint dialog", "[app][import]")
