@@ -283,11 +283,16 @@ void NormalisePanel::showResult()
                           m_analysis.normalisedParameters().path == analysis::PathMethod::Greedy
                               ? tr(": Path <i>optimal (DP)</i> finds the least-cost correspondence")
                               : QString());
+    // The coupling `auto` chose (method2 on the puppet's parts, chains on a skeleton's joints).
+    QString parametersText = AnalysisController::normaliseParametersText(m_analysis.normalisedParameters());
+    if (const auto& used = cell->normalisations.empty() ? std::string() : cell->normalisations.front().coupling.preset;
+        m_analysis.normalisedParameters().coupling == "auto" && !used.empty() && used != "auto")
+        parametersText += tr(", coupling auto (%1)").arg(QString::fromStdString(used));
     m_summary->setText(tr("Cell <b>%1/%2</b> normalised to <b>%3</b> with %4%5.%6 Squared difference to the reference, "
                           "summed over frames, per DOF family and part:")
                            .arg(QString::fromStdString(function), QString::fromStdString(emotion),
                                 QString::fromStdString(cell->referenceName).toHtmlEscaped(),
-                                AnalysisController::normaliseParametersText(m_analysis.normalisedParameters()).toHtmlEscaped(),
+                                parametersText.toHtmlEscaped(),
                                 scheduler.state(slot) == SlotState::Running ? tr(" (recomputing with the new parameters)") : QString(),
                                 advice));
     std::vector<QString> labels;

@@ -232,10 +232,10 @@ void GraphGrid::setSelectedChannel(const std::string& part, const std::string& d
 void GraphGrid::rebuild(bool allData)
 {
     m_options.hasTakeB = m_takes[1] != nullptr;
-    std::vector<GraphCell> cells = m_takes[0] ? layoutGraphs(m_takes[0]->channels, m_options) : std::vector<GraphCell>{};
-    const int total = int(cells.size());
-    const int hidden = std::max(0, total - kMaxGraphs);
-    if (hidden > 0) cells.resize(std::size_t(kMaxGraphs));
+    // At most kMaxGraphs: the first channels of the layout, for A and (side by side) for B alike.
+    int total = 0;
+    std::vector<GraphCell> cells = m_takes[0] ? layoutGraphs(m_takes[0]->channels, m_options, kMaxGraphs, &total) : std::vector<GraphCell>{};
+    const int hidden = std::max(0, total - int(cells.size()));
     if (hidden != m_hiddenGraphs) {
         m_hiddenGraphs = hidden;
         emit graphsLimited(hidden, total);

@@ -17,8 +17,10 @@ bool hasDof(const std::vector<analysis::Channel>& channels, const std::string& d
 
 } // namespace
 
-std::vector<GraphCell> layoutGraphs(const std::vector<analysis::Channel>& channels, const GraphLayoutOptions& options)
+std::vector<GraphCell> layoutGraphs(const std::vector<analysis::Channel>& channels, const GraphLayoutOptions& options, int maxGraphs,
+                                    int* wanted)
 {
+    if (wanted) *wanted = 0;
     if (channels.empty()) return {};
     const std::string part = hasPart(channels, options.selectedPart) ? options.selectedPart : channels.front().part;
     const std::string dof = hasDof(channels, options.selectedDof) ? options.selectedDof : channels.front().dof;
@@ -40,9 +42,15 @@ std::vector<GraphCell> layoutGraphs(const std::vector<analysis::Channel>& channe
     }
     if (shown.empty()) shown.push_back(&channels.front()); // Single with a part lacking that DOF
 
+    const bool sideBySide = options.hasTakeB && options.twoTakeMode == TwoTakeMode::SideBySide;
+    if (wanted) *wanted = int(shown.size()) * (sideBySide ? 2 : 1);
+    // The limit: the first channels for A and, side by side, the same ones for B.
+    if (maxGraphs > 0) {
+        const std::size_t perTake = std::size_t(std::max(1, maxGraphs / (sideBySide ? 2 : 1)));
+        if (shown.size() > perTake) shown.resize(perTake);
+    }
     const int columnsPerTake = options.layout == GraphLayout::AllChannels && shown.size() > 1 ? 2 : 1;
     const int rows = (int(shown.size()) + columnsPerTake - 1) / columnsPerTake;
-    const bool sideBySide = options.hasTakeB && options.twoTakeMode == TwoTakeMode::SideBySide;
     const GraphTakes firstTakes = options.hasTakeB && !sideBySide ? GraphTakes::AAndB : GraphTakes::OnlyA;
 
     std::vector<GraphCell> cells;

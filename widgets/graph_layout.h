@@ -50,6 +50,10 @@ struct GraphLayoutOptions {
 
 /// The graphs for the channels `channels` (take A's, in order): row-major cells, A's columns
 /// first. With N channels AllChannels has ceil(N/2) rows in 2 columns (4 with side-by-side B).
-std::vector<GraphCell> layoutGraphs(const std::vector<analysis::Channel>& channels, const GraphLayoutOptions& options);
+/// `maxGraphs` > 0: at most that many graphs, the first channels of the layout for each take
+/// shown (half each side by side), laid out as a layout of those channels; `wanted` (optional)
+/// is told how many graphs the layout asks for without the limit.
+std::vector<GraphCell> layoutGraphs(const std::vector<analysis::Channel>& channels, const GraphLayoutOptions& options,
+                                    int maxGraphs = 0, int* wanted = nullptr);
 
 } // namespace bunraku::widgets

@@ -9,6 +9,8 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <string>
+#include <vector>
 
 namespace bunraku::analysis {
 
@@ -23,6 +25,37 @@ Result<std::array<const PartBinding*, kPuppetPartCount>> boundParts(const Skelet
         if (!bindings[p]) return makeError(ErrorCode::NotFound, "the puppet part '" + std::string(kPuppetParts[p]) + "' is not bound to a joint");
     }
     return bindings;
+}
+
+/// A 6-DOF part of a take posed by its skeleton: world_T_joint * joint_T_part.
+struct PosedPart {
+    std::string name;
+    Eigen::Index firstChannel = 0;
+    int joint = -1;
+    RigidTransform joint_T_part;
+};
+
+/// The parts the skeleton poses: the puppet's four bound parts of a take of the puppet layout, or
+/// every part of a take of a skeleton's joints (each named as its joint, its world pose); empty
+/// for any other take (a part that is no joint, a puppet part not bound).
+std::vector<PosedPart> posedParts(const Take& take)
+{
+    std::vector<PosedPart> parts;
+    if (!take.skeleton || !take.skeleton->skeleton) return parts;
+    const Skeleton& skeleton = *take.skeleton->skeleton;
+    if (hasPuppetLayout(take)) {
+        const auto found = boundParts(skeleton);
+        if (!found) return parts;
+        for (std::size_t p = 0; p < found->size(); ++p)
+            parts.push_back({std::string(kPuppetParts[p]), Eigen::Index(p) * kDofCount, (*found)[p]->joint, (*found)[p]->joint_T_part});
+        return parts;
+    }
+    for (const SixDofPart& part : sixDofParts(take)) {
+        const int joint = skeleton.find(part.part);
+        if (joint < 0 || skeleton.joints[std::size_t(joint)].endSite) return {};
+        parts.push_back({part.part, part.firstChannel, joint, RigidTransform{}});
+    }
+    return parts;
 }
 
 } // namespace
@@ -105,14 +138,13 @@ std::string describeSkeletonChannelGap(const SkeletonChannelGap& gap)
 
 BodyMotion bodyMotion(Take take, const RunControl& control)
 {
-    if (!take.skeleton || !take.skeleton->skeleton || !hasPuppetLayout(take) || take.skeleton->frameCount() != take.frameCount())
+    if (!take.skeleton || !take.skeleton->skeleton || take.skeleton->frameCount() != take.frameCount())
         return {std::move(take), nullptr, {}};
-    const auto found = boundParts(*take.skeleton->skeleton);
-    if (!found) return {std::move(take), nullptr, {}};
-    const auto& bindings = *found;
+    const std::vector<PosedPart> parts = posedParts(take);
+    if (parts.empty()) return {std::move(take), nullptr, {}};
     // One pass: the body's channels, and whether they differ from the take's own (the channels of
-    // a take that is its body already are kept bit for bit).
-    Eigen::MatrixXd body(take.frameCount(), kPuppetChannelCount);
+    // a take that is its body already are kept bit for bit; channels of no posed part stay).
+    Eigen::MatrixXd body = take.values;
     bool differs = false;
     PerChannelDistance distance;
     const Eigen::Index frames = take.frameCount();
@@ -122,9 +154,9 @@ BodyMotion bodyMotion(Take take, const RunControl& control)
             control.report(double(f) / double(frames));
         }
         const auto poses = take.skeleton->worldPoses(f);
-        for (std::size_t p = 0; p < bindings.size(); ++p) {
-            const Eigen::Index first = Eigen::Index(p) * kDofCount;
-            const RigidTransform pose = poses[std::size_t(bindings[p]->joint)] * bindings[p]->joint_T_part;
+        for (const PosedPart& part : parts) {
+            const Eigen::Index first = part.firstChannel;
+            const RigidTransform pose = poses[std::size_t(part.joint)] * part.joint_T_part;
             const RigidTransform channels = partPose(take, f, first);
             const double cm = (pose.translation - channels.translation).norm();
             const double deg = rotationDistance(pose.rotation, channels.rotation) * 180.0 / std::numbers::pi;
@@ -132,7 +164,7 @@ BodyMotion bodyMotion(Take take, const RunControl& control)
             distance.maxAngleDeg = std::max(distance.maxAngleDeg, deg);
             if (cm > distance.maxPositionCm) {
                 distance.maxPositionCm = cm;
-                distance.worstPart = std::string(kPuppetParts[p]);
+                distance.worstPart = part.name;
                 distance.worstFrame = f;
             }
             const Eigen::MatrixXd& previousRow = f == 0 ? take.values : body;
@@ -159,21 +191,32 @@ Take bodyTake(Take take)
 
 std::optional<PerChannelDistance> perChannelDistance(const Take& take, const Eigen::MatrixXd& perChannel)
 {
-    if (perChannel.rows() != take.frameCount() || perChannel.cols() != take.channelCount() || !hasPuppetLayout(take))
-        return std::nullopt;
+    if (perChannel.rows() != take.frameCount() || perChannel.cols() != take.channelCount()) return std::nullopt;
+    // The puppet's four parts, or every part of a take of a skeleton's joints.
+    std::vector<SixDofPart> parts;
+    if (hasPuppetLayout(take)) {
+        for (int p = 0; p < kPuppetPartCount; ++p) parts.push_back({std::string(kPuppetParts[std::size_t(p)]), Eigen::Index(p) * kDofCount});
+    } else if (take.skeleton && take.skeleton->skeleton) {
+        parts = sixDofParts(take);
+        for (const SixDofPart& part : parts) {
+            const int joint = take.skeleton->skeleton->find(part.part);
+            if (joint < 0 || take.skeleton->skeleton->joints[std::size_t(joint)].endSite) return std::nullopt;
+        }
+    }
+    if (parts.empty()) return std::nullopt;
     Take ghost;
     ghost.channels = take.channels;
     ghost.values = perChannel;
     PerChannelDistance d;
     for (Eigen::Index f = 0; f < take.frameCount(); ++f) {
-        for (int p = 0; p < kPuppetPartCount; ++p) {
-            const RigidTransform a = partPose(take, f, Eigen::Index(p) * kDofCount);
-            const RigidTransform b = partPose(ghost, f, Eigen::Index(p) * kDofCount);
+        for (const SixDofPart& part : parts) {
+            const RigidTransform a = partPose(take, f, part.firstChannel);
+            const RigidTransform b = partPose(ghost, f, part.firstChannel);
             const double distance = (a.translation - b.translation).norm();
             d.maxAngleDeg = std::max(d.maxAngleDeg, rotationDistance(a.rotation, b.rotation) * 180.0 / std::numbers::pi);
             if (distance > d.maxPositionCm) {
                 d.maxPositionCm = distance;
-                d.worstPart = std::string(kPuppetParts[std::size_t(p)]);
+                d.worstPart = part.part;
                 d.worstFrame = f;
             }
         }

@@ -53,7 +53,7 @@ std::string describeSkeletonChannelGap(const SkeletonChannelGap& gap);
 
 /// The largest distance (cm) and angle (deg) between a take's puppet parts and the same parts
 /// posed by `perChannel` (its per-channel ghost), over every part and frame; nothing when the
-/// shapes differ or the take is not of the puppet layout.
+/// shapes differ or the take is neither of the puppet layout nor of a skeleton's joints.
 struct PerChannelDistance {
     double maxPositionCm = 0;
     double maxAngleDeg = 0;
@@ -61,12 +61,13 @@ struct PerChannelDistance {
     Eigen::Index worstFrame = 0;
 };
 /// One motion for a take (what the 3D view draws, the graphs show and every export writes): for a
-/// take with the 24 puppet channels and a skeleton that poses the four parts, whose channels are
-/// not the parts' poses (a derived take: the thesis's per-channel arithmetic of 3.6, 3.7, 4.5 and
-/// 5.5), the take whose channels are those poses by forward kinematics of the skeleton (angles
-/// continuous, starting on the branch nearest the take's own first frame), with the take's own
-/// values as `perChannel`. Any other take (no skeleton, another layout, channels within
-/// kBodyAgreementTolerance of the skeleton) is returned as it is, `perChannel` null.
+/// take with the 24 puppet channels and a skeleton that poses the four parts, or a take of a
+/// skeleton's joints (every 6-DOF part a joint, its world pose: the whole body), whose channels
+/// are not the parts' poses (a derived take: the thesis's per-channel arithmetic of 3.6, 3.7, 4.5
+/// and 5.5), the take whose channels are those poses by forward kinematics of the skeleton (angles
+/// continuous, starting on the branch nearest the take's own first frame; other channels kept),
+/// with the take's own values as `perChannel`. Any other take (no skeleton, another layout,
+/// channels within kBodyAgreementTolerance of the skeleton) is returned as it is, `perChannel` null.
 /// Idempotent: the body motion of a body motion is itself.
 struct BodyMotion {
     Take take;

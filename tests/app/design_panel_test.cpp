@@ -4,6 +4,7 @@
 #include "app/commands.h"
 #include "app/design_controller.h"
 #include "app/design_panel.h"
+#include "app/normalise_panel.h"
 #include "app/analysis_controller.h"
 #include "app/commands.h"
 
@@ -642,6 +643,10 @@ TEST_CASE("on a whole-body corpus the Design dock designs every joint on the per
     REQUIRE(before->skeleton);
     CHECK(before->skeleton->skeleton->jointCount() == 22);
     REQUIRE_FALSE(window->design().extractedGains().phrases.empty());
+    // The Normalisation dock says which coupling `auto` chose for the joints.
+    REQUIRE(QTest::qWaitFor([&] { return window->normalisePanel()->summaryText().contains(QStringLiteral("normalised to")); }, 60000));
+    INFO(window->normalisePanel()->summaryText().toStdString());
+    CHECK(window->normalisePanel()->summaryText().contains(QStringLiteral("coupling auto (chains)")));
     // A warp drag re-times every joint: the waving hand's channels change.
     const Eigen::MatrixXd valuesBefore = before->values;
     const auto curve = editor->curve();

@@ -459,4 +459,20 @@ TEST_CASE("a skeleton's joints are found by typing in the part box and shown as 
     // 'One DOF' across the joints: 22 graphs of the chosen DOF.
     panel.setGraphLayout(GraphLayout::OneDof);
     CHECK(grid->graphCount() == 22);
+
+    // All channels of A and B side by side (264 graphs): the limit keeps the same first 48
+    // channels of each take, A's on the left, B's on the right, in full columns.
+    panel.setTakes(take, take, QStringLiteral("joints A and B"));
+    panel.setGraphLayout(GraphLayout::AllChannels);
+    panel.setTwoTakeMode(TwoTakeMode::SideBySide);
+    REQUIRE(grid->graphCount() == widgets::GraphGrid::kMaxGraphs);
+    CHECK(grid->hiddenGraphCount() == 264 - widgets::GraphGrid::kMaxGraphs);
+    int onlyB = 0, lastRow = 0;
+    for (int g = 0; g < grid->graphCount(); ++g) {
+        onlyB += grid->graphCell(g).takes == widgets::GraphTakes::OnlyB ? 1 : 0;
+        lastRow = std::max(lastRow, grid->graphCell(g).row);
+    }
+    CHECK(onlyB == widgets::GraphGrid::kMaxGraphs / 2);
+    CHECK(lastRow == widgets::GraphGrid::kMaxGraphs / 4 - 1); // 4 full columns of 24
+    CHECK(grid->graphCell(widgets::GraphGrid::kMaxGraphs / 2).part == "joint_Root");
 }

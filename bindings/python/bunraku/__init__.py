@@ -185,19 +185,23 @@ def emotion_weight(source: Union[Corpus, Normalisation, Decomposition], function
 
 def _axis_section(frontBack: str, massSpacing: float, masses: str, tau: int, searchBand: int, maxScale: int,
                   approximationWeight: float, level: str, path: str, controlSpacing: int,
-                  refinementPasses: int) -> dict:
-    return {"frontBack": frontBack, "massSpacing": massSpacing, "masses": masses, "tau": tau, "searchBand": searchBand,
+                  refinementPasses: int, segments: str = "male") -> dict:
+    return {"frontBack": frontBack, "massSpacing": massSpacing, "masses": masses, "segments": segments, "tau": tau,
+            "searchBand": searchBand,
             "maxScale": maxScale, "approximationWeight": approximationWeight, "level": level, "path": path,
             "controlSpacing": controlSpacing, "refinementPasses": refinementPasses}
 
 
 def motion_axis(source: Union[Take, Corpus, Preprocessed, Normalisation], *, frontBack: str = "shoulder",
-                massSpacing: float = 1.0, masses: str = "model", tau: int = 4, searchBand: int = 30,
-                maxScale: int = 16, approximationWeight: float = 8.0, level: str = "first-frame", path: str = "greedy",
-                controlSpacing: int = 8, refinementPasses: int = 2, threads: int = 0) -> Union[TakeAxis, Axes]:
+                massSpacing: float = 1.0, masses: str = "model", segments: str = "male", tau: int = 4,
+                searchBand: int = 30, maxScale: int = 16, approximationWeight: float = 8.0, level: str = "first-frame",
+                path: str = "greedy", controlSpacing: int = 8, refinementPasses: int = 2,
+                threads: int = 0) -> Union[TakeAxis, Axes]:
     """Thesis 5.2.1: the motion axis - principal axes of inertia of the posed body's mass points
     (``massSpacing`` cm apart, from the modelled puppet's solid or, with ``masses="primitives"``,
-    the body description's primitives; axis x the shoulder's facing or the "principal" axis).
+    the body description's primitives; axis x the shoulder's facing or the "principal" axis). A
+    take of a skeleton's joints (``--all-joints``) integrates the performer's body segments instead,
+    de Leva's (1996) ``segments="male"`` or ``"female"`` table (docs/MOTION-AXIS.md, "The whole body").
 
     Of a :class:`Take`: its :class:`TakeAxis` (what the 3D view draws). Of a corpus or a
     normalisation: the chain's motion-axes stage, an :class:`Axes` with every function's
@@ -207,7 +211,7 @@ def motion_axis(source: Union[Take, Corpus, Preprocessed, Normalisation], *, fro
     rounds). Keywords as the parameters file's "axis"."""
     p = _parameters("bunraku.motion_axis()", {"axis": _axis_section(
         frontBack, massSpacing, masses, tau, searchBand, maxScale, approximationWeight, level, path, controlSpacing,
-        refinementPasses)})
+        refinementPasses, segments)})
     if isinstance(source, Take):
         return _bunraku._take_axis(source, p)
     return _bunraku._axes(_normalisation(source, threads), p, threads)

@@ -367,7 +367,7 @@ def fluctuations(source: Union[Corpus, Preprocessed, Normalisation, Decompositio
 def emotion_weight(source: Union[Corpus, Preprocessed, Normalisation, Decomposition, Analysis], function: str,
                    emotion: str, *, emotionWeight: float = 1.0, threads: int = 0) -> Take: ...
 def motion_axis(source: Union[Take, Corpus, Preprocessed, Normalisation, Analysis], *, frontBack: str = "shoulder",
-                massSpacing: float = 1.0, masses: str = "model", tau: int = 4, searchBand: int = 30,
+                massSpacing: float = 1.0, masses: str = "model", segments: str = "male", tau: int = 4, searchBand: int = 30,
                 maxScale: int = 16, approximationWeight: float = 8.0, level: str = "first-frame", path: str = "greedy",
                 controlSpacing: int = 8, refinementPasses: int = 2, threads: int = 0) -> Union[TakeAxis, Axes]: ...
 def kimono(take: Take, *, massPerArea: float = 0.015, stretchCompliance: float = 0.0, bendCompliance: float = 2e-4,

@@ -456,3 +456,101 @@ TEST_CASE("a weighted Bandai take written as BVH reads back with its parts where
     }
     std::filesystem::remove_all(scratch);
 }
+
+TEST_CASE("every derived take of the Bandai waves with all joints is one articulated body", "[body][bandai][wholebody]")
+{
+    // Issue 25: takes of every joint (6 channels each, the joint's world pose). The graphs show,
+    // and every export writes, the motion the skeleton makes: each joint's channels are its pose
+    // by forward kinematics, the thesis's per-channel result kept as the ghost.
+    if (!test::bandaiAvailable(test::bandaiWaveFiles())) return;
+    Corpus corpus;
+    corpus.neutralEmotion = "normal";
+    io::ImportOptions allJoints;
+    allJoints.bvhLayout = io::BvhTakeLayout::AllJoints;
+    for (const auto& style : test::bandaiWaveStyles())
+        for (int k = 1; k <= 5; ++k) {
+            auto take = io::readTakeFile(test::bandaiDir() / test::bandaiWaveFile(style, k), allJoints);
+            REQUIRE(take);
+            take->labels = {"wave", style, k, test::bandaiWaveFile(style, k)};
+            corpus.takes.push_back(std::move(take).value());
+        }
+    corpus.rateHz = corpus.takes.front().rateHz;
+    std::vector<Derived> derived;
+    auto pre = pipeline::runPreprocess(corpus, {});
+    REQUIRE(pre);
+    auto normalised = pipeline::runNormalise(pre->corpus, {}); // auto: the chains coupling
+    REQUIRE(normalised);
+    for (const auto& take : normalised->normalised.takes) derived.push_back({"normalised " + take.displayName(), take});
+    for (const auto& cell : normalised->cells) derived.push_back({"average " + cell.function + "/" + cell.emotion, cell.average});
+    auto decomposed = pipeline::runDecompose(normalised->normalised, {});
+    REQUIRE(decomposed);
+    for (const auto& cell : decomposed->components.emotions)
+        for (const double a : {0.0, 2.0}) {
+            auto weighted = pipeline::weightedTake(*decomposed, cell.function, cell.emotion, a);
+            REQUIRE(weighted);
+            derived.push_back({"weighted " + cell.emotion + " a = " + std::to_string(a), *weighted});
+        }
+    auto axes = pipeline::runAxes(*normalised, corpus.neutralEmotion, {});
+    REQUIRE(axes);
+    REQUIRE(axes->cells.size() == 2);
+    for (const auto& cell : axes->cells) {
+        pipeline::DesignEdits edits;
+        edits.warp = cell.extracted.phase.curve;
+        edits.setGain({0, 2, 1.0, 1.5});
+        derived.push_back({"designed " + cell.emotion, pipeline::designFunction(*axes->function(cell.function), edits).take});
+    }
+    const auto scratch = scratchFolder("wholebody");
+    int projected = 0;
+    for (const auto& d : derived) {
+        INFO(d.what);
+        REQUIRE(d.take.skeleton);
+        const BodyMotion motion = bodyMotion(d.take);
+        const Take& body = motion.take;
+        REQUIRE(body.channels.size() == 132);
+        projected += motion.perChannel ? 1 : 0;
+        // Every joint's channels are its world pose.
+        double cm = 0.0, deg = 0.0;
+        for (Eigen::Index f = 0; f < body.frameCount(); ++f) {
+            const auto poses = body.skeleton->worldPoses(f);
+            for (const SixDofPart& part : sixDofParts(body)) {
+                const RigidTransform joint = poses[std::size_t(body.skeleton->skeleton->find(part.part))];
+                const RigidTransform graphed = partPose(body, f, part.firstChannel);
+                cm = std::max(cm, (joint.translation - graphed.translation).norm());
+                deg = std::max(deg, rotationDistance(joint.rotation, graphed.rotation) * 180.0 / std::numbers::pi);
+            }
+        }
+        CHECK(cm < 1e-6);
+        CHECK(deg < 1e-6);
+        CHECK(test::maxBoneLengthChange(*body.skeleton) < 1e-6);
+        CHECK(bodyTake(body).values == body.values);
+        // The per-channel result, when the body differs from it, is measured against it.
+        if (motion.perChannel) {
+            const auto distance = perChannelDistance(body, *motion.perChannel);
+            REQUIRE(distance);
+            CHECK(distance->maxPositionCm == Approx(motion.distance.maxPositionCm).margin(1e-9));
+        }
+        // A BVH export's joints, read back, are the graphed channels.
+        const auto file = scratch / "take.bvh";
+        REQUIRE(io::writeTakeFile(body, file));
+        auto parsed = io::readBvh(file);
+        REQUIRE(parsed);
+        io::BvhImportOptions options;
+        options.upAxis = body.skeleton->skeleton->source.upAxis == "z" ? io::BvhUpAxis::Z : io::BvhUpAxis::Y;
+        options.unitScale = body.skeleton->skeleton->source.cmPerUnit;
+        auto back = io::bvhToJointTake(*parsed, options);
+        REQUIRE(back);
+        REQUIRE(back->values.rows() == body.values.rows());
+        double fileCm = 0.0;
+        for (Eigen::Index f = 0; f < body.frameCount(); ++f)
+            for (const SixDofPart& part : sixDofParts(body)) {
+                const auto first = back->channelIndex(part.part, "x");
+                REQUIRE(first);
+                fileCm = std::max(fileCm, (partPose(*back, f, *first).translation - partPose(body, f, part.firstChannel).translation).norm());
+            }
+        CHECK(fileCm < 1e-6);
+    }
+    // The normalised, averaged, weighted and designed takes' channels were the thesis's
+    // per-channel arithmetic: most are projected onto the body.
+    CHECK(projected > int(derived.size()) / 2);
+    std::filesystem::remove_all(scratch);
+}
