@@ -19,6 +19,8 @@
 #include "widgets/viewport_widget.h"
 
 #include "analysis/body/body_description.h"
+#include "analysis/io/corpus_builder.h"
+#include "analysis/io/corpus_io.h"
 
 #include <benchmark/benchmark.h>
 #include <qcustomplot.h>
@@ -294,19 +296,12 @@ bool showBandaiAsB(app::MainWindow& main, bool skeleton)
     return true;
 }
 
-/// A warp drag step to the designed take A (puppet) with take B beside it: argument 1 its
-/// 22-joint skeleton, 0 its puppet. 48 graphs (B's 24 beside A's).
-void warpDragStepBesideSkeleton(benchmark::State& state)
+/// Drags the middle control point of `base` up and down in half-frame steps, one step per
+/// iteration, each to the designed take A in every view (the graphs repainted); then puts the
+/// curve back. Counters: steps that redesigned, 3D frames and graphs per step.
+void dragWarpPoint(benchmark::State& state, app::MainWindow& main, const analysis::WarpCurve& base)
 {
-    auto& main = window();
     auto& design = main.design();
-    main.document().selectTake(app::TakeSlot::A, QStringLiteral("live/designed"));
-    if (!showBandaiAsB(main, state.range(0) != 0)) {
-        state.SkipWithError("Bandai take not found");
-        return;
-    }
-    waitIdle(main);
-    static const analysis::WarpCurve base = design.warpCurve();
     design.editWarp(base);
     QCoreApplication::processEvents();
     waitIdle(main);
@@ -329,13 +324,80 @@ void warpDragStepBesideSkeleton(benchmark::State& state)
     state.counters["changed"] = double(changed) / double(state.iterations());
     state.counters["view_frames"] = double(view->renderedFrameCount() - framesBefore) / double(state.iterations());
     state.counters["graphs"] = main.graphPanel()->grid()->graphCount();
-    state.counters["skeleton_drawn"] = view->renderer() && view->renderer()->takeCount() > 1 && view->renderer()->skeletonDrawn(1) ? 1 : 0;
     design.editWarp(base);
     QCoreApplication::processEvents();
+}
+
+/// A warp drag step to the designed take A (puppet) with take B beside it: argument 1 its
+/// 22-joint skeleton, 0 its puppet. 48 graphs (B's 24 beside A's).
+void warpDragStepBesideSkeleton(benchmark::State& state)
+{
+    auto& main = window();
+    auto& design = main.design();
+    main.document().selectTake(app::TakeSlot::A, QStringLiteral("live/designed"));
+    if (!showBandaiAsB(main, state.range(0) != 0)) {
+        state.SkipWithError("Bandai take not found");
+        return;
+    }
+    waitIdle(main);
+    static const analysis::WarpCurve base = design.warpCurve();
+    dragWarpPoint(state, main, base);
+    const auto* view = main.viewportPanel()->viewport();
+    state.counters["skeleton_drawn"] = view->renderer() && view->renderer()->takeCount() > 1 && view->renderer()->skeletonDrawn(1) ? 1 : 0;
     main.document().selectTake(app::TakeSlot::B, QString());
     waitIdle(main);
 }
 BENCHMARK(warpDragStepBesideSkeleton)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond);
+
+/// The workbench on a whole-body corpus (issue 25): the Bandai bye takes with every joint (132
+/// channels, built from the shared files into a temporary folder once), its design on the
+/// performer's segments. Null when the files are missing.
+std::unique_ptr<app::MainWindow> g_wholeBody;
+
+app::MainWindow* wholeBodyWindow()
+{
+    auto& made = g_wholeBody;
+    static bool tried = false;
+    if (tried) return made.get();
+    tried = true;
+    std::vector<std::filesystem::path> files;
+    for (const char* style : {"normal", "happy", "angry"})
+        files.push_back(std::filesystem::path(BUNRAKU_SHARED_DIR) / "data" / "bandai" / ("bye_" + std::string(style) + "_001.bvh"));
+    auto sources = analysis::io::labelTakeFiles(files, "{function}_{emotion}_{take}");
+    if (!sources) return nullptr;
+    analysis::io::CorpusBuildOptions options;
+    options.import.bvhLayout = analysis::io::BvhTakeLayout::AllJoints;
+    auto built = analysis::io::buildCorpus(*sources, options);
+    if (!built) return nullptr;
+    const auto folder = std::filesystem::temp_directory_path() / "bunraku-bench-wholebody";
+    std::filesystem::remove_all(folder);
+    if (!analysis::io::writeCorpus(built->corpus, folder)) return nullptr;
+    auto window = bench::shownDemoWindow();
+    if (!window->files().openCorpusFolder(QString::fromStdString(folder.string()))) return nullptr;
+    (void)QTest::qWaitFor([&] { return window->design().ready(); }, 120000);
+    waitIdle(*window);
+    made = std::move(window);
+    return made.get();
+}
+
+/// A warp drag step to the designed whole-body take A (every joint re-timed, the performer's
+/// skeleton and puppet in the 3D view): argument 1 the 3D view shown, 0 hidden; the graphs of
+/// one joint (6, the 'one part' layout) and of all channels (96 of 132).
+void warpDragStepWholeBody(benchmark::State& state)
+{
+    app::MainWindow* main = wholeBodyWindow();
+    if (!main || !main->design().ready()) {
+        state.SkipWithError("the whole-body Bandai corpus could not be made or designed");
+        return;
+    }
+    main->document().selectTake(app::TakeSlot::A, QStringLiteral("live/designed"));
+    main->graphPanel()->setGraphLayout(state.range(1) != 0 ? widgets::GraphLayout::AllChannels : widgets::GraphLayout::OnePart);
+    showView(*main, state.range(0) != 0);
+    static const analysis::WarpCurve base = main->design().warpCurve();
+    dragWarpPoint(state, *main, base);
+    state.counters["channels"] = double(main->document().selectedTake(app::TakeSlot::A)->channels.size());
+}
+BENCHMARK(warpDragStepWholeBody)->ArgNames({"view", "all_channels"})->Args({1, 0})->Args({0, 0})->Args({0, 1})->Unit(benchmark::kMillisecond);
 
 /// A playback frame of the whole window: take A a demo take's puppet, take B the Bandai take
 /// beside it (argument 1: its skeleton, 0: its puppet), 48 graphs.
@@ -378,5 +440,6 @@ int main(int argc, char** argv)
     g_grid.reset(); // before the QApplication goes
     g_views.clear();
     g_window.reset();
+    g_wholeBody.reset();
     return 0;
 }
