@@ -87,13 +87,17 @@ function(bunraku_analysis_module name)
   set_property(GLOBAL APPEND PROPERTY BUNRAKU_ANALYSIS_MODULES ${target})
 endfunction()
 
-# bunraku_add_test(NAME SOURCES ... LIBS ... [QT] [TIMEOUT seconds])
+# bunraku_add_test(NAME SOURCES ... LIBS ... [QT] [TIMEOUT seconds] [COST n])
 # A Catch2 v2 executable whose cases ctest lists one by one. QT tests use a main that creates
-# a QApplication (run them under xvfb-run).
+# a QApplication (run them under xvfb-run). COST: ctest --parallel starts costlier cases first,
+# before it has timings of its own (a fresh clone): the slowest suite does not run alone last.
 function(bunraku_add_test name)
-  cmake_parse_arguments(T "QT" "TIMEOUT" "SOURCES;LIBS" ${ARGN})
+  cmake_parse_arguments(T "QT" "TIMEOUT;COST" "SOURCES;LIBS" ${ARGN})
   if(NOT T_TIMEOUT)
     set(T_TIMEOUT 600)
+  endif()
+  if(NOT T_COST)
+    set(T_COST 0)
   endif()
   add_executable(${name} ${T_SOURCES})
   if(T_QT)
@@ -118,5 +122,6 @@ function(bunraku_add_test name)
   endif()
   # A case whose peer is missing prints "bunraku-test: skipped:" (tests/support/peer.h): ctest
   # reports it as skipped, not passed (under CI=true it fails instead).
-  catch_discover_tests(${name} TEST_PREFIX "${name}: " PROPERTIES TIMEOUT ${T_TIMEOUT} SKIP_REGULAR_EXPRESSION "bunraku-test: skipped:")
+  catch_discover_tests(${name} TEST_PREFIX "${name}: " PROPERTIES TIMEOUT ${T_TIMEOUT} COST ${T_COST}
+                       SKIP_REGULAR_EXPRESSION "bunraku-test: skipped:")
 endfunction()
