@@ -122,11 +122,10 @@ std::optional<std::size_t> longBonePair(const std::vector<Station>& s)
     return best;
 }
 
-Eigen::Vector3d closestOnSegment(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b, double* along = nullptr)
+Eigen::Vector3d closestOnSegment(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b)
 {
     const Eigen::Vector3d d = b - a;
     const double t = d.squaredNorm() > 1e-12 ? std::clamp((p - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
-    if (along) *along = t;
     return a + t * d;
 }
 

@@ -57,11 +57,10 @@ void axisOfTake(benchmark::State& state)
 }
 BENCHMARK(axisOfTake)->Arg(106)->Arg(100000)->Unit(benchmark::kMillisecond);
 
-/// What an editor does on a control-point drag: move one point, re-synthesise the take.
-void redesignAfterDrag(benchmark::State& state)
+/// What an editor does on a control-point drag of a 106-frame design: move one point, re-synthesise
+/// the take (gains of 1.1 on every phrase, so the whole of step 2 runs).
+void dragControlPoint(benchmark::State& state, const DesignBasis& basis)
 {
-    const Take take = swayingTake(106);
-    const DesignBasis basis = prepareDesign(model(), take).value();
     const GainSet gains = extractGains(basis.coordinates, basis.coordinates * 1.1, {0, 40, 70, 105},
                                        {"x", "y", "z", "rx", "ry", "rz"}).value();
     WarpCurve warp = identityWarp(106, 8);
@@ -72,6 +71,14 @@ void redesignAfterDrag(benchmark::State& state)
         DesignedMotion designed = designMotion(basis, warp, gains);
         benchmark::DoNotOptimize(designed);
     }
+}
+
+/// What an editor does on a control-point drag: move one point, re-synthesise the take.
+void redesignAfterDrag(benchmark::State& state)
+{
+    const Take take = swayingTake(106);
+    const DesignBasis basis = prepareDesign(model(), take).value();
+    dragControlPoint(state, basis);
 }
 BENCHMARK(redesignAfterDrag)->Unit(benchmark::kMillisecond);
 
@@ -87,16 +94,7 @@ void redesignFullSkeletonAfterDrag(benchmark::State& state)
     }
     const Take take = resampleTake(*wave, evenlySpacedFrames(wave->frameCount(), 106));
     const DesignBasis basis = prepareDesign(model(), take).value();
-    const GainSet gains = extractGains(basis.coordinates, basis.coordinates * 1.1, {0, 40, 70, 105},
-                                       {"x", "y", "z", "rx", "ry", "rz"}).value();
-    WarpCurve warp = identityWarp(106, 8);
-    double offset = 0.0;
-    for (auto _ : state) {
-        offset = offset > 3.0 ? -3.0 : offset + 0.5;
-        warp = moveControlPoint(warp, 6, {warp.points[6].output, 48.0 + offset});
-        DesignedMotion designed = designMotion(basis, warp, gains);
-        benchmark::DoNotOptimize(designed);
-    }
+    dragControlPoint(state, basis);
     state.counters["joints"] = double(take.skeleton->jointSlots());
 }
 BENCHMARK(redesignFullSkeletonAfterDrag)->Unit(benchmark::kMillisecond);
@@ -117,16 +115,7 @@ void redesignWholeBodyAfterDrag(benchmark::State& state)
     const Take take = resampleTake(*wave, evenlySpacedFrames(wave->frameCount(), 106));
     const SegmentBody body = segmentBody(take).value();
     const DesignBasis basis = prepareDesign(body.model, take).value();
-    const GainSet gains = extractGains(basis.coordinates, basis.coordinates * 1.1, {0, 40, 70, 105},
-                                       {"x", "y", "z", "rx", "ry", "rz"}).value();
-    WarpCurve warp = identityWarp(106, 8);
-    double offset = 0.0;
-    for (auto _ : state) {
-        offset = offset > 3.0 ? -3.0 : offset + 0.5;
-        warp = moveControlPoint(warp, 6, {warp.points[6].output, 48.0 + offset});
-        DesignedMotion designed = designMotion(basis, warp, gains);
-        benchmark::DoNotOptimize(designed);
-    }
+    dragControlPoint(state, basis);
     state.counters["channels"] = double(take.channels.size());
 }
 BENCHMARK(redesignWholeBodyAfterDrag)->Unit(benchmark::kMillisecond);

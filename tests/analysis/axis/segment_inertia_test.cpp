@@ -13,6 +13,7 @@
 
 #include "tests/support/bandai_files.h"
 #include "tests/support/bvh_fixtures.h"
+#include "tests/support/fixture_joint_take.h"
 
 #include <catch2/catch.hpp>
 
@@ -25,25 +26,6 @@ using bunraku::test::BvhFamily;
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-Take jointTake(const BvhFamily& family)
-{
-    auto file = io::parseBvh(bunraku::test::fixtureBvh(family, 12), family.id + ".bvh");
-    REQUIRE(file.ok());
-    io::BvhImportOptions options;
-    options.guessUnits = true;
-    auto take = io::bvhToJointTake(*file, options);
-    INFO(family.id << ": " << (take.ok() ? std::string() : take.error().message));
-    REQUIRE(take.ok());
-    return std::move(take).value();
-}
-
-std::string jointAt(const BvhFamily& family, const std::string& point)
-{
-    for (const auto& joint : family.joints)
-        if (joint.point == point) return joint.name;
-    return {};
-}
 
 double degreesFromVertical(const RigidTransform& world_T_axis)
 {
@@ -96,7 +78,7 @@ TEST_CASE("the whole-body segments are found on every fixture family", "[axis][s
     const auto& points = bunraku::test::canonicalPoints();
     for (const BvhFamily& family : bunraku::test::bvhFamilies()) {
         INFO(family.id);
-        const Take take = jointTake(family);
+        const Take take = bunraku::test::fixtureJointTake(family);
         REQUIRE(usesSegmentModel(take));
         auto body = segmentBody(take);
         INFO((body.ok() ? std::string() : body.error().message));
@@ -166,7 +148,7 @@ TEST_CASE("the whole-body segments are found on every fixture family", "[axis][s
 
 TEST_CASE("the female table weighs 61.9 kg and moves the centre of mass by its own fractions", "[axis][segments]")
 {
-    const Take take = jointTake(bunraku::test::bvhFamilies().front());
+    const Take take = bunraku::test::fixtureJointTake(bunraku::test::bvhFamilies().front());
     auto male = segmentBody(take);
     auto female = segmentBody(take, {SegmentTable::DeLevaFemale});
     REQUIRE(male.ok());
@@ -200,8 +182,8 @@ TEST_CASE("a take without a skeleton or without its joints has no whole-body axi
 
     // The skeleton of a family whose take kept only some joints: the missing joint is named.
     BvhFamily family = bunraku::test::bvhFamilies().front();
-    Take joints = jointTake(family);
-    const std::string thigh = jointAt(family, "hipL");
+    Take joints = bunraku::test::fixtureJointTake(family);
+    const std::string thigh = bunraku::test::fixtureJointAt(family, "hipL");
     const auto first = std::find_if(joints.channels.begin(), joints.channels.end(), [&](const Channel& c) { return c.part == thigh; });
     REQUIRE(first != joints.channels.end());
     const Eigen::Index column = first - joints.channels.begin();

@@ -6,6 +6,7 @@
 #include "analysis/normalise/coupling.h"
 #include "analysis/normalise/skeleton_chains.h"
 #include "tests/support/bvh_fixtures.h"
+#include "tests/support/fixture_joint_take.h"
 
 #include <catch2/catch.hpp>
 
@@ -16,37 +17,11 @@
 using namespace bunraku::analysis;
 using bunraku::test::BvhFamily;
 
-namespace {
-
-Take jointTake(const BvhFamily& family)
-{
-    auto file = io::parseBvh(bunraku::test::fixtureBvh(family, 12), family.id + ".bvh");
-    INFO(family.id << ": " << (file.ok() ? std::string() : file.error().message));
-    REQUIRE(file.ok());
-    io::BvhImportOptions options;
-    options.guessUnits = true;
-    auto take = io::bvhToJointTake(*file, options);
-    INFO(family.id << ": " << (take.ok() ? std::string() : take.error().message));
-    REQUIRE(take.ok());
-    REQUIRE(take->skeleton);
-    return std::move(take).value();
-}
-
-/// The fixture's joint at a canonical point ("kneeL"), empty when the family has none.
-std::string jointAt(const BvhFamily& family, const std::string& point)
-{
-    for (const auto& joint : family.joints)
-        if (joint.point == point) return joint.name;
-    return {};
-}
-
-} // namespace
-
 TEST_CASE("skeleton chains are found on every fixture family", "[coupling][chains]")
 {
     for (const BvhFamily& family : bunraku::test::bvhFamilies()) {
         INFO(family.id);
-        const Take take = jointTake(family);
+        const Take take = bunraku::test::fixtureJointTake(family);
         const Skeleton& skeleton = *take.skeleton->skeleton;
         auto chains = skeletonChains(*take.skeleton);
         REQUIRE(chains.ok());
@@ -61,22 +36,22 @@ TEST_CASE("skeleton chains are found on every fixture family", "[coupling][chain
         }
         CHECK(names == std::vector<std::string>{"root", "spine", "left_arm", "right_arm", "left_leg", "right_leg"});
         CHECK(int(chainOf.size()) == skeleton.jointCount());
-        CHECK(chainOf[jointAt(family, "hips")] == "root");
+        CHECK(chainOf[bunraku::test::fixtureJointAt(family, "hips")] == "root");
         CHECK(chainOf[family.expected[0]] == "spine"); // the head
-        CHECK(chainOf[jointAt(family, "neck")] == "spine");
+        CHECK(chainOf[bunraku::test::fixtureJointAt(family, "neck")] == "spine");
         CHECK(chainOf[family.expected[2]] == "right_arm"); // forearm
         CHECK(chainOf[family.expected[3]] == "right_arm"); // hand
         CHECK(chainOf[family.expectedLeft[0]] == "left_arm");
         CHECK(chainOf[family.expectedLeft[1]] == "left_arm");
         for (const std::string side : {"L", "R"}) {
             const std::string leg = side == "L" ? "left_leg" : "right_leg";
-            CHECK(chainOf[jointAt(family, "knee" + side)] == leg);
-            CHECK(chainOf[jointAt(family, "ankle" + side)] == leg);
-            CHECK(chainOf[jointAt(family, "shoulder" + side)] == (side == "L" ? "left_arm" : "right_arm"));
+            CHECK(chainOf[bunraku::test::fixtureJointAt(family, "knee" + side)] == leg);
+            CHECK(chainOf[bunraku::test::fixtureJointAt(family, "ankle" + side)] == leg);
+            CHECK(chainOf[bunraku::test::fixtureJointAt(family, "shoulder" + side)] == (side == "L" ? "left_arm" : "right_arm"));
         }
         // Face joints (eyes, jaw) and a head-top joint ride with the head.
         for (const std::string point : {"eyeL", "eyeR", "jaw", "headtop"})
-            if (const std::string joint = jointAt(family, point); !joint.empty()) CHECK(chainOf[joint] == "spine");
+            if (const std::string joint = bunraku::test::fixtureJointAt(family, point); !joint.empty()) CHECK(chainOf[joint] == "spine");
 
         // The coupling: per coordinate, each chain's channels together, named "left_leg.x".
         const auto coupling = couplingFor(take, "chains");
