@@ -181,7 +181,8 @@ analysis::Status Renderer::setScene(const SceneContent& scene, const LayoutOptio
         ++m_sceneGeneration;
         return analysis::okStatus();
     }
-    if (auto status = validateScene(scene); !status.ok()) {
+    std::vector<analysis::Take> drawn; // each slot's take as the renderer poses it (drawnTake)
+    if (auto status = validateScene(scene, &drawn); !status.ok()) {
         // Nothing of the scene before stays drawn as if it were the new one's.
         releaseSceneBuffers();
         ++m_sceneGeneration;
@@ -224,7 +225,7 @@ analysis::Status Renderer::setScene(const SceneContent& scene, const LayoutOptio
         const TakeSlot& source = scene.takes[s];
         Slot slot;
         slot.body = source.body ? *source.body : m_body;
-        slot.take = drawnTake(slot.body, source.take).value(); // validated above
+        slot.take = std::move(drawn[s]);
         if (modelled && source.body) slot.puppet = puppetFigure(slot.body, reusablePuppets);
         const std::vector<Mesh> ownMeshes = source.body && !modelled ? buildPuppetMeshes(slot.body) : std::vector<Mesh>{};
         for (const Mesh& mesh : ownMeshes) {

@@ -31,7 +31,7 @@ bool takeHasFileMesh(const analysis::Take& take)
            analysis::meshFitsSkeleton(*take.skeleton->skeleton->mesh, *take.skeleton->skeleton);
 }
 
-analysis::Status validateScene(const SceneContent& scene)
+analysis::Status validateScene(const SceneContent& scene, std::vector<analysis::Take>* drawn)
 {
     using analysis::ErrorCode;
     using analysis::makeError;
@@ -51,7 +51,13 @@ analysis::Status validateScene(const SceneContent& scene)
             if (!same)
                 return makeError(ErrorCode::InvalidArgument, "take " + name + ": its own body does not have the scene body's parts");
         }
-        if (auto drawn = drawnTake(body, slot.take); !drawn.ok()) return drawn.error();
+        if (analysis::bindBody(body, slot.take).ok()) {
+            if (drawn) drawn->push_back(slot.take); // copied only for a caller that keeps it
+        } else {
+            auto posed = drawnTake(body, slot.take); // a skeleton's joints: the puppet its skeleton poses
+            if (!posed.ok()) return posed.error();
+            if (drawn) drawn->push_back(std::move(posed).value());
+        }
         if (!slot.world_T_axis.empty() && Eigen::Index(slot.world_T_axis.size()) != slot.take.frameCount())
             return makeError(ErrorCode::InvalidArgument,
                              "take " + name + ": " + std::to_string(slot.world_T_axis.size()) + " axis poses for " +

@@ -104,8 +104,9 @@ struct LayoutOptions {
 
 /// Checks 1..2 takes, a body of 1..kMaxBodyParts parts, every take valid and able to drive its body (bindBody, through
 /// drawnTake), a take's own body with the scene body's parts, axis poses one per frame when given, part meshes named
-/// after body parts.
-analysis::Status validateScene(const SceneContent& scene);
+/// after body parts. `drawn` (optional) receives each slot's drawnTake, so a caller poses them
+/// without making them again.
+analysis::Status validateScene(const SceneContent& scene, std::vector<analysis::Take>* drawn = nullptr);
 
 /// The take a slot draws: `take` itself when it has the parts that drive `body`; else, for a take
 /// of a skeleton's joints (the whole body, every joint a part) whose skeleton binds the puppet's
