@@ -74,6 +74,12 @@ AnalysisController::AnalysisController(Document& document, QObject* parent, std:
         m_axisLabels[0] = m_document.takeLabel(id);
         if (isCurrent(kTakeAxisSlot)) publishAxis();
     });
+    // The take shown recomputed (a design drag step): its axis and kimono follow; its cell, and
+    // so the normalised and weighted takes, are the same (resolveCell keeps a live take's cell).
+    connect(&document, &Document::selectedTakeReplaced, this, [this](TakeSlot slot) {
+        requestTakeAxis(slot);
+        requestKimono(slot);
+    });
     connect(&document, &Document::selectionChanged, this, [this](TakeSlot slot) {
         requestTakeAxis(slot);
         requestKimono(slot);

@@ -164,7 +164,7 @@ TakePointer Document::publishLive(const QString& name, const QString& label, Tak
         if (relabelled) emit takeLabelChanged(id);
         emit takeChanged(id);
         for (int slot = 0; slot < 2; ++slot)
-            if (m_selected[slot] == id) emit selectionChanged(TakeSlot(slot));
+            if (m_selected[slot] == id) emit selectedTakeReplaced(TakeSlot(slot));
         return take;
     }
     m_derived.push_back(DerivedTake{id, label, take, QString(), ghostId, nullptr, std::move(perChannelGhost), distance});

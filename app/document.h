@@ -176,7 +176,12 @@ signals:
     /// The label of derived take `id` changed (a live result computed from other parameters or
     /// another take).
     void takeLabelChanged(const QString& id);
+    /// Another take is chosen for `slot`.
     void selectionChanged(bunraku::app::TakeSlot slot);
+    /// The take shown in `slot` was replaced by new content under the same id (a live result
+    /// recomputed: every step of a design drag). Not a new choice: what depends only on which
+    /// take is shown (its cell, the browser) stays; what depends on its values follows.
+    void selectedTakeReplaced(bunraku::app::TakeSlot slot);
     void currentTimeChanged(double seconds);
     /// Parameters changed in `sections` (ParameterSection flags).
     void parametersChanged(int sections);

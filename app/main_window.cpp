@@ -323,6 +323,7 @@ void MainWindow::connectDocument()
         if (const TakePointer take = m_document->take(id)) m_browser->setEntryFrames(id, int(take->frameCount()));
     });
     connect(m_document, &Document::selectionChanged, this, [this] { refreshTakes(); });
+    connect(m_document, &Document::selectedTakeReplaced, this, [this] { refreshTakes(); });
     connect(m_document, &Document::currentTimeChanged, this, &MainWindow::refreshTime);
     connect(m_document->undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
     // During a drag the graphs hold their value ranges (autoscaled once when it ends).

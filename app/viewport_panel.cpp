@@ -160,6 +160,7 @@ ViewportPanel::ViewportPanel(Document& document, AnalysisController& analysis, Q
     // Uploading a scene costs about one frame (it happens once, at the next paint, however many
     // scenes were set before it): a changed take shows at once, its axis when computed.
     connect(&document, &Document::selectionChanged, this, &ViewportPanel::rebuildScene);
+    connect(&document, &Document::selectedTakeReplaced, this, &ViewportPanel::rebuildScene);
     connect(&document, &Document::corpusChanged, this, &ViewportPanel::rebuildScene);
     // An axis slot that finished, restarted for other inputs or was cleared.
     connect(&analysis.scheduler(), &StageScheduler::stateChanged, this, [this](int slot) {

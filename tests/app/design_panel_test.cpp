@@ -9,6 +9,9 @@
 #include "app/commands.h"
 
 #include "widgets/gain_table.h"
+#include "widgets/graph_grid.h"
+#include "widgets/graph_panel.h"
+#include "widgets/take_series.h"
 #include "widgets/scale_error_plot.h"
 #include "widgets/scrub_bar.h"
 #include "widgets/timeline_widget.h"
@@ -22,6 +25,7 @@
 #include <QLabel>
 #include <QMenu>
 #include <QPushButton>
+#include <QSignalSpy>
 #include <QSlider>
 #include <QTableWidget>
 
@@ -664,4 +668,57 @@ TEST_CASE("on a whole-body corpus the Design dock designs every joint on the per
     REQUIRE(hand >= 0);
     CHECK((after->values.col(hand) - valuesBefore.col(hand)).cwiseAbs().maxCoeff() > 0.1);
     CHECK(window->document().undoStack()->count() == 1);
+}
+
+TEST_CASE("a warp drag on the designed take shown as A replaces the take, not the choice: the weighted take is kept and the views show each step",
+          "[app][design]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    auto* editor = shownWarpEditor(*window);
+    REQUIRE(editor);
+    auto& document = window->document();
+    document.selectTake(TakeSlot::A, QStringLiteral("live/designed"));
+    REQUIRE(waitForDesign(*window));
+    document.setCurrentTime(1.0);
+    const auto weighted = document.take(QStringLiteral("live/weighted"));
+    REQUIRE(weighted);
+    auto* grid = window->graphPanel()->grid();
+    const int graphs = grid->graphCount();
+    REQUIRE(graphs > 0);
+    QSignalSpy chosen(&document, &app::Document::selectionChanged);
+    QSignalSpy replaced(&document, &app::Document::selectedTakeReplaced);
+    std::vector<std::shared_ptr<const analysis::Take>> steps;
+    QObject::connect(&document, &app::Document::takeChanged, [&](const QString& id) {
+        if (id == QStringLiteral("live/designed")) steps.push_back(document.take(id));
+    });
+
+    const auto curve = editor->curve();
+    const std::size_t index = curve.points.size() / 2;
+    const QPoint from = editor->plot()->mapFrom(editor, editor->pointPosition(index));
+    const int up = int(editor->plot()->yAxis->coordToPixel(curve.points[index].source + 3.0));
+    dragIn(editor->plot(), from, QPoint(from.x(), up));
+
+    REQUIRE(steps.size() >= 2);
+    CHECK(chosen.count() == 0);
+    CHECK(replaced.count() == int(steps.size()));
+    // Its cell did not change, so neither did the weighted take (it was made again on every
+    // step before, on the GUI thread).
+    CHECK(document.take(QStringLiteral("live/weighted")) == weighted);
+    CHECK(document.selectedTake(TakeSlot::A) == steps.back());
+    // The graphs keep their layout and show the last step's values at the cursor.
+    REQUIRE(grid->graphCount() == graphs);
+    int checked = 0;
+    for (int g = 0; g < graphs; ++g) {
+        const auto& cell = grid->graphCell(g);
+        if (cell.dof != "x" && cell.dof != "y" && cell.dof != "z") continue; // positions: the same in any angle display
+        const auto channel = widgets::findChannel(*steps.back(), cell.part, cell.dof);
+        REQUIRE(channel);
+        const auto expected = widgets::valueAt(*steps.back(), *channel, document.currentTime());
+        REQUIRE(expected);
+        REQUIRE(grid->graphPointValue(g, 0));
+        CHECK(*grid->graphPointValue(g, 0) == Approx(*expected));
+        ++checked;
+    }
+    CHECK(checked > 0);
 }
