@@ -135,7 +135,8 @@ void GraphGrid::endInteraction()
 {
     if (!m_interacting) return;
     m_interacting = false;
-    if (m_pendingPerChannel) setPerChannelGhost(std::exchange(m_pendingPerChannel, nullptr));
+    emit interactionEnded();
+    if (m_perChannelPending) setPerChannelGhost(std::exchange(m_pendingPerChannel, nullptr));
     settleValueRanges();
     if (m_followLength) {
         m_followLength = false;
@@ -161,14 +162,16 @@ void GraphGrid::setGhost(std::shared_ptr<const analysis::Take> ghost)
 
 void GraphGrid::setPerChannelGhost(std::shared_ptr<const analysis::Take> take)
 {
-    if (take == m_ghosts[1]) return;
-    if (m_interacting && take && m_ghosts[1]) {
+    if (m_interacting) {
         // A drag step: the dots follow when the drag ends (a new take here would replot every
         // layer of every graph on every step).
-        m_pendingPerChannel = std::move(take);
+        m_perChannelPending = take != m_ghosts[1];
+        m_pendingPerChannel = m_perChannelPending ? std::move(take) : nullptr;
         return;
     }
+    m_perChannelPending = false;
     m_pendingPerChannel.reset();
+    if (take == m_ghosts[1]) return;
     m_ghosts[1] = std::move(take);
     rebuild();
 }
@@ -483,6 +486,9 @@ void GraphGrid::placeValueText(Graph& graph) const
 
 void GraphGrid::setCursorTime(double seconds)
 {
+    // The same time again (the app passes it after new takes): setTakes placed the cursor's
+    // points and values on the new data already.
+    if (seconds == m_cursorTime) return;
     m_cursorTime = seconds;
     updateCursorItems();
     m_plot->layer(kCursorLayer)->replot();

@@ -74,7 +74,9 @@ public:
     void setGhost(std::shared_ptr<const analysis::Take> ghost);
     /// The thesis's per-channel result of a take shown as one body, drawn in orange behind A beside
     /// the ghost (a normalised take's ghost is its raw take); null hides it. During an interaction
-    /// a new one waits for endInteraction (a drag step redraws only the live curves).
+    /// any change (a new one, or none) waits for endInteraction: a drag step redraws only the
+    /// live curves, and a result that agrees with the body on some steps and not on others would
+    /// rebuild every graph on each.
     void setPerChannelGhost(std::shared_ptr<const analysis::Take> take);
     /// The takes drawn as the ghost and as the per-channel result (as the angle display shows them).
     std::array<std::shared_ptr<const analysis::Take>, 2> ghostTakes() const { return {m_ghosts[0], m_ghosts[1]}; }
@@ -150,6 +152,8 @@ public:
     static constexpr int kMinimumGraphHeight = 34;
 
 signals:
+    /// endInteraction: the drag is over (emitted before the held changes are shown).
+    void interactionEnded();
     /// The user pressed or dragged at `seconds` in a graph.
     void timeScrubbed(double seconds);
     /// The grid was rebuilt with `hidden` graphs of the layout left out (kMaxGraphs), of `total`.
@@ -200,7 +204,8 @@ private:
     QScrollArea* m_scroll = nullptr;
     std::shared_ptr<const analysis::Take> m_takes[2];
     std::shared_ptr<const analysis::Take> m_ghosts[2]; ///< the ghost, the per-channel result
-    std::shared_ptr<const analysis::Take> m_pendingPerChannel; ///< set during an interaction
+    std::shared_ptr<const analysis::Take> m_pendingPerChannel; ///< given during an interaction
+    bool m_perChannelPending = false;                          ///< m_pendingPerChannel is to be shown
     std::shared_ptr<const analysis::Take> m_plotted[2]; ///< the takes whose data the curves hold
     bool m_interacting = false;
     bool m_rangesStale = false; ///< data changed while the ranges were held

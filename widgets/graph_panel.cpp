@@ -116,6 +116,7 @@ GraphPanel::GraphPanel(QWidget* parent) : QWidget(parent), m_grid(new GraphGrid(
     m_limitCaption->setContentsMargins(8, 0, 8, 0);
     m_limitCaption->setVisible(false);
     layout->addWidget(m_limitCaption);
+    connect(m_grid, &GraphGrid::interactionEnded, this, [this] { showPerChannel(false); });
     connect(m_grid, &GraphGrid::graphsLimited, this, [this](int hidden, int total) {
         m_limitCaption->setText(tr("Showing the first %1 of %2 graphs: the 'one part' and 'single' layouts show any channel.")
                                     .arg(total - hidden)
@@ -176,10 +177,21 @@ void GraphPanel::setGhost(std::shared_ptr<const analysis::Take> ghost)
 
 void GraphPanel::setPerChannelGhost(std::shared_ptr<const analysis::Take> take, const QString& caption)
 {
-    m_ghostCaption->setText(caption);
-    m_ghostCaption->setVisible(!caption.isEmpty());
-    if (take == m_perChannel) return;
+    m_caption = caption;
+    const bool changed = take != m_perChannel;
     m_perChannel = std::move(take);
+    showPerChannel(changed);
+}
+
+void GraphPanel::showPerChannel(bool changed)
+{
+    m_perChannelOwed = m_perChannelOwed || changed;
+    // During a drag the grid holds the line (GraphGrid::setPerChannelGhost): it is converted, and
+    // its caption changed, when the drag ends.
+    if (m_grid->interactionActive()) return;
+    m_ghostCaption->setText(m_caption);
+    m_ghostCaption->setVisible(!m_caption.isEmpty());
+    if (!std::exchange(m_perChannelOwed, false)) return;
     m_grid->setPerChannelGhost(shown(m_perChannel));
 }
 
@@ -201,7 +213,7 @@ void GraphPanel::showTakes(const QString& identity)
     m_shownA = shown(m_takeA);
     m_shownB = shown(m_takeB);
     m_grid->setGhost(shown(m_ghost));
-    m_grid->setPerChannelGhost(shown(m_perChannel));
+    showPerChannel(true); // on take A's new base
     m_grid->setTakes(m_shownA, m_shownB, identity);
 }
 

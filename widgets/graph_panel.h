@@ -63,6 +63,10 @@ private:
     std::shared_ptr<const analysis::Take> shown(const std::shared_ptr<const analysis::Take>& take) const;
     /// Passes the takes to the grid as the angle choice shows them.
     void showTakes(const QString& identity);
+    /// Passes the per-channel result to the grid, converted (again if `changed`), with its
+    /// caption; during a drag the grid holds it until the drag ends
+    /// (GraphGrid::setPerChannelGhost), so it is converted only then.
+    void showPerChannel(bool changed);
 
     GraphGrid* m_grid = nullptr;
     QComboBox* m_layout = nullptr;
@@ -76,6 +80,8 @@ private:
     QLabel* m_limitCaption = nullptr; ///< says how many graphs a take of very many channels leaves out
     std::shared_ptr<const analysis::Take> m_takeA, m_takeB, m_ghost, m_perChannel; ///< as given
     std::shared_ptr<const analysis::Take> m_shownA, m_shownB;         ///< as drawn
+    QString m_caption;              ///< of the per-channel result, as given
+    bool m_perChannelOwed = false;  ///< m_perChannel is still to be converted for the grid
 };
 
 } // namespace bunraku::widgets

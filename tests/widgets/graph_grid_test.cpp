@@ -243,7 +243,14 @@ TEST_CASE("the per-channel result is drawn beside the ghost and follows a drag w
         grid.setTakes(last, nullptr);
         grid.setPerChannelGhost(scaled(*original, factor * 1.1));
     }
+    // A step whose body agrees with its channels has no per-channel result, the next one has:
+    // the dots stay as they were until the end (before, each such step rebuilt all 24 graphs).
+    for (double factor : {3.0, 3.1, 3.2, 3.3}) {
+        grid.setTakes(scaled(*original, factor), nullptr);
+        grid.setPerChannelGhost(factor == 3.0 || factor == 3.2 ? nullptr : scaled(*original, factor * 1.1));
+    }
     CHECK(fullReplots.count() == 0);
+    CHECK(grid.graphCount() == 24);
     CHECK(grid.ghostTakes()[1] == perChannel);
     const auto lastPerChannel = scaled(*original, 3.3);
     grid.setPerChannelGhost(lastPerChannel);
@@ -251,6 +258,13 @@ TEST_CASE("the per-channel result is drawn beside the ghost and follows a drag w
     CHECK(grid.ghostTakes()[1] == lastPerChannel);
     CHECK(fullReplots.count() >= 1);
     grid.setPerChannelGhost(nullptr);
+    CHECK_FALSE(grid.ghostTakes()[1]);
+    // None at the end of a drag that began with one: none is shown once it ends.
+    grid.setPerChannelGhost(perChannel);
+    grid.beginInteraction();
+    grid.setPerChannelGhost(nullptr);
+    CHECK(grid.ghostTakes()[1] == perChannel);
+    grid.endInteraction();
     CHECK_FALSE(grid.ghostTakes()[1]);
 }
 
