@@ -122,7 +122,13 @@ double GraphGrid::shownDuration() const
     return duration;
 }
 
-void GraphGrid::beginInteraction() { m_interacting = true; }
+void GraphGrid::beginInteraction()
+{
+    m_interacting = true;
+    // As QCustomPlot's own drags (setNoAntialiasingOnDrag): the curves redrawn on every step
+    // are drawn without antialiasing, and smooth again in the full replot at the end.
+    m_plot->setNotAntialiasedElements(QCP::aeAll);
+}
 
 void GraphGrid::setClock(Clock* clock)
 {
@@ -135,6 +141,7 @@ void GraphGrid::endInteraction()
 {
     if (!m_interacting) return;
     m_interacting = false;
+    m_plot->setNotAntialiasedElements(QCP::aeNone);
     emit interactionEnded();
     if (m_perChannelPending) setPerChannelGhost(std::exchange(m_pendingPerChannel, nullptr));
     settleValueRanges();
@@ -309,6 +316,7 @@ void GraphGrid::rebuild(bool allData)
             const QString label = QString::fromStdString(cell.part + "." + cell.dof);
             name->setText(cell.takes == GraphTakes::OnlyB ? label + " (B)" : label);
             graph.nameText = name;
+            graph.nameAdvance = QFontMetrics(tickFont).horizontalAdvance(name->text());
 
             m_plot->setCurrentLayer(kCursorLayer);
             graph.cursor = new QCPItemStraightLine(m_plot);
@@ -474,7 +482,7 @@ void GraphGrid::placeValueText(Graph& graph) const
     if (!graph.valueText || !graph.nameText) return;
     const QFontMetrics metrics(graph.valueText->font());
     const int width = graph.rect->width(), height = graph.rect->height();
-    const int needed = metrics.horizontalAdvance(graph.nameText->text()) + metrics.horizontalAdvance(graph.valueText->text()) + 16;
+    const int needed = graph.nameAdvance + metrics.horizontalAdvance(graph.valueText->text()) + 16;
     if (needed <= width || height <= 0) {
         graph.valueText->position->setCoords(0.99, 0.02);
         graph.valueText->setPositionAlignment(Qt::AlignRight | Qt::AlignTop);

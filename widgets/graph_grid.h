@@ -173,6 +173,7 @@ private:
         QCPItemTracer* points[2] = {nullptr, nullptr};
         QCPItemText* valueText = nullptr;
         QCPItemText* nameText = nullptr;
+        int nameAdvance = 0; ///< pixels of nameText in the tick font (its text never changes)
         SeriesEnvelope envelopes[2]; ///< the curves' data at any zoom
         SeriesEnvelope ghostEnvelopes[2];
         int sampledColumns = 0; ///< the width the curves were last sampled for

@@ -237,6 +237,8 @@ TEST_CASE("the per-channel result is drawn beside the ghost and follows a drag w
     // A drag: new per-channel results wait (no full replot per step), the last one is shown at the end.
     QSignalSpy fullReplots(grid.plot(), &QCustomPlot::beforeReplot);
     grid.beginInteraction();
+    // The curves redrawn on each step are not antialiased (as QCustomPlot's own drags).
+    CHECK(grid.plot()->notAntialiasedElements() == QCP::aeAll);
     std::shared_ptr<analysis::Take> last;
     for (double factor : {1.5, 2.0, 3.0}) {
         last = scaled(*original, factor);
@@ -255,6 +257,7 @@ TEST_CASE("the per-channel result is drawn beside the ghost and follows a drag w
     const auto lastPerChannel = scaled(*original, 3.3);
     grid.setPerChannelGhost(lastPerChannel);
     grid.endInteraction();
+    CHECK(grid.plot()->notAntialiasedElements() == QCP::aeNone);
     CHECK(grid.ghostTakes()[1] == lastPerChannel);
     CHECK(fullReplots.count() >= 1);
     grid.setPerChannelGhost(nullptr);
