@@ -5,6 +5,7 @@
 #include <qcustomplot.h>
 
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -57,6 +58,14 @@ GraphGrid::GraphGrid(QWidget* parent) : QWidget(parent), m_plot(new QCustomPlot)
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_scroll);
+    // Graphs scrolled into view during a drag are drawn from then on (drawOnlyGraphsInView).
+    connect(m_scroll->verticalScrollBar(), &QScrollBar::valueChanged, this, [this] {
+        if (!m_interacting || !m_graphsOutOfViewHidden) return;
+        updateCursorItems(); // the moving points of graphs now in view
+        drawOnlyGraphsInView();
+        m_plot->layer(kLiveLayer)->replot();
+        m_plot->layer(kCursorLayer)->replot();
+    });
     m_plot->setObjectName("graphPlot");
     // Paint buffers: [background grid main axes] [live] [cursor] [legend overlay].
     m_plot->addLayer(kLiveLayer, m_plot->layer("axes"), QCustomPlot::limAbove);
@@ -142,6 +151,14 @@ void GraphGrid::endInteraction()
     if (!m_interacting) return;
     m_interacting = false;
     m_plot->setNotAntialiasedElements(QCP::aeNone);
+    if (std::exchange(m_graphsOutOfViewHidden, false)) {
+        for (auto& graph : m_graphs) {
+            for (auto* layerable : std::initializer_list<QCPLayerable*>{graph.curves[0], graph.curves[1], graph.valueText, graph.cursor})
+                if (layerable) layerable->setVisible(true);
+        }
+        updateCursorItems(); // the moving points: shown where their take has a value
+        m_rangesStale = true; // the full replot below draws them all
+    }
     emit interactionEnded();
     if (m_perChannelPending) setPerChannelGhost(std::exchange(m_pendingPerChannel, nullptr));
     settleValueRanges();
@@ -392,6 +409,7 @@ void GraphGrid::rebuild(bool allData)
             // ticks, labels and ghost in the layers below stay as they are.
             m_rangesStale = true;
             if (!interactionActive()) m_settle.start();
+            else drawOnlyGraphsInView();
             m_plot->layer(kLiveLayer)->replot();
             m_plot->layer(kCursorLayer)->replot();
             return;
@@ -401,6 +419,21 @@ void GraphGrid::rebuild(bool allData)
     m_settle.stop();
     applyValueRanges();
     m_plot->replot();
+}
+
+void GraphGrid::drawOnlyGraphsInView()
+{
+    // The curves and cursor items of the graphs scrolled out of sight are not drawn on a drag's
+    // steps (96 graphs of a whole-body take fill several screens); endInteraction shows them.
+    const QRect shown = m_plot->visibleRegion().boundingRect();
+    for (auto& graph : m_graphs) {
+        const bool inView = graph.rect->outerRect().intersects(shown);
+        m_graphsOutOfViewHidden = m_graphsOutOfViewHidden || !inView;
+        for (auto* layerable : std::initializer_list<QCPLayerable*>{graph.curves[0], graph.curves[1], graph.valueText, graph.cursor})
+            if (layerable) layerable->setVisible(inView);
+        for (auto* point : graph.points)
+            if (point && !inView) point->setVisible(false);
+    }
 }
 
 void GraphGrid::applyValueRanges()

@@ -195,6 +195,9 @@ private:
     /// Autoscales and replots if data changed while the ranges were held.
     void settleValueRanges();
     void updateCursorItems();
+    /// During an interaction: hides the curves and cursor items of graphs out of the scroll
+    /// area's view.
+    void drawOnlyGraphsInView();
     void onMousePress(QMouseEvent* event);
     void onMouseMove(QMouseEvent* event);
     void onMouseRelease(QMouseEvent* event);
@@ -206,6 +209,7 @@ private:
     std::shared_ptr<const analysis::Take> m_takes[2];
     std::shared_ptr<const analysis::Take> m_ghosts[2]; ///< the ghost, the per-channel result
     std::shared_ptr<const analysis::Take> m_pendingPerChannel; ///< given during an interaction
+    bool m_graphsOutOfViewHidden = false; ///< drawOnlyGraphsInView hid some graphs' curves
     bool m_perChannelPending = false;                          ///< m_pendingPerChannel is to be shown
     std::shared_ptr<const analysis::Take> m_plotted[2]; ///< the takes whose data the curves hold
     bool m_interacting = false;

@@ -14,6 +14,8 @@
 #include <QCompleter>
 #include <QLabel>
 #include <QLineEdit>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSignalSpy>
 #include <QTest>
 
@@ -492,4 +494,55 @@ TEST_CASE("a skeleton's joints are found by typing in the part box and shown as 
     CHECK(onlyB == widgets::GraphGrid::kMaxGraphs / 2);
     CHECK(lastRow == widgets::GraphGrid::kMaxGraphs / 4 - 1); // 4 full columns of 24
     CHECK(grid->graphCell(widgets::GraphGrid::kMaxGraphs / 2).part == "joint_Root");
+}
+
+TEST_CASE("a drag's steps draw only the graphs in view, and every graph once it ends", "[widgets][graph_grid]")
+{
+    widgets::GraphGrid grid;
+    const auto original = test::syntheticPuppetTake(60);
+    grid.setTakes(original, nullptr);
+    grid.resize(900, 260); // the 24 graphs scroll: a few rows in view
+    grid.show();
+    REQUIRE(QTest::qWaitForWindowExposed(&grid));
+    grid.plot()->replot();
+    QCoreApplication::processEvents();
+    REQUIRE(grid.graphCount() == 24);
+    auto* scroll = grid.findChild<QScrollArea*>("graphScroll");
+    REQUIRE(scroll);
+    REQUIRE(scroll->verticalScrollBar()->maximum() > 0);
+    // A graph's plotting rectangle in the plot's coordinates, grown by `margin` pixels (its axes
+    // and labels around it), against the part of the plot the scroll area shows.
+    const auto inView = [&](int g, int margin = 0) {
+        const QRect r = grid.graphRect(g);
+        const QRect inPlot(grid.plot()->mapFrom(&grid, r.topLeft()), r.size());
+        return grid.plot()->visibleRegion().boundingRect().intersects(inPlot.adjusted(-margin, -margin, margin, margin));
+    };
+    const auto drawn = [&](int g) { return grid.curve(g, 0)->visible(); };
+
+    grid.beginInteraction();
+    const auto step = scaled(*original, 1.5);
+    grid.setTakes(step, nullptr);
+    int hidden = 0, shown = 0;
+    for (int g = 0; g < grid.graphCount(); ++g) {
+        if (inView(g)) CHECK(drawn(g));
+        if (!inView(g, 60)) CHECK_FALSE(drawn(g));
+        (drawn(g) ? shown : hidden) += 1;
+    }
+    CHECK(shown > 0);
+    CHECK(hidden > 0);
+    // Scrolled during the drag: the graphs now in view are drawn, with the step's values.
+    scroll->verticalScrollBar()->setValue(scroll->verticalScrollBar()->maximum());
+    QCoreApplication::processEvents();
+    const int last = grid.graphCount() - 1;
+    CHECK(inView(last));
+    CHECK(drawn(last));
+    CHECK(grid.graphPointValue(last, 0).has_value());
+
+    grid.endInteraction();
+    for (int g = 0; g < grid.graphCount(); ++g) {
+        CHECK(drawn(g));
+        // Every curve holds the last step's data (sampled on every step, drawn or not).
+        CHECK_FALSE(grid.curve(g, 0)->data()->isEmpty());
+        CHECK(grid.graphPointValue(g, 0).has_value());
+    }
 }
