@@ -43,6 +43,39 @@ Result<std::string> takeCsv(const Take& take, const std::string& name)
     return io::formatTakeCsv(take);
 }
 
+std::string gainsCsv(const GainSet& gains)
+{
+    std::string out = "phrase,dof,begin,end,g0,g1,dc_mode,offset,ac_mode,reason\n";
+    for (std::size_t p = 0; p < gains.phrases.size(); ++p) {
+        const PhraseGains& phrase = gains.phrases[p];
+        for (std::size_t d = 0; d < phrase.dofs.size(); ++d) {
+            const DofGain& g = phrase.dofs[d];
+            out += std::to_string(p) + "," + (d < gains.dofNames.size() ? gains.dofNames[d] : std::to_string(d)) + "," +
+                   std::to_string(phrase.begin) + "," + std::to_string(phrase.end) + ",";
+            appendShortestNumber(out, g.g0);
+            out += ',';
+            appendShortestNumber(out, g.g1);
+            out += g.dcMode == DcMode::Offset ? ",offset," : ",scale,";
+            appendShortestNumber(out, g.offset);
+            out += g.acMode == AcMode::Additive ? ",additive," : ",scale,";
+            std::string reason = g.reason;
+            for (char& c : reason)
+                if (c == ',' || c == '\n' || c == '"') c = ';';
+            out += reason + "\n";
+        }
+    }
+    return out;
+}
+
+} // namespace
+
+std::string cellStem(const std::string& function, const std::string& emotion)
+{
+    return io::fileSafeLabel(function) + "_" + io::fileSafeLabel(emotion);
+}
+
+std::string takeStem(const TakeLabels& labels) { return cellStem(labels.function, labels.emotion) + "_" + std::to_string(labels.takeIndex); }
+
 std::string varianceCsv(const pipeline::CellNormalisation& cell)
 {
     const VarianceTable& table = cell.variance;
@@ -80,38 +113,99 @@ std::string correspondenceCsv(const TakeNormalisation& normalisation, Eigen::Ind
     return out;
 }
 
-std::string gainsCsv(const GainSet& gains)
+Result<std::vector<OutputFile>> decompositionFiles(const pipeline::DecomposeOutput& decomposed)
 {
-    std::string out = "phrase,dof,begin,end,g0,g1,dc_mode,offset,ac_mode,reason\n";
-    for (std::size_t p = 0; p < gains.phrases.size(); ++p) {
-        const PhraseGains& phrase = gains.phrases[p];
-        for (std::size_t d = 0; d < phrase.dofs.size(); ++d) {
-            const DofGain& g = phrase.dofs[d];
-            out += std::to_string(p) + "," + (d < gains.dofNames.size() ? gains.dofNames[d] : std::to_string(d)) + "," +
-                   std::to_string(phrase.begin) + "," + std::to_string(phrase.end) + ",";
-            appendShortestNumber(out, g.g0);
-            out += ',';
-            appendShortestNumber(out, g.g1);
-            out += g.dcMode == DcMode::Offset ? ",offset," : ",scale,";
-            appendShortestNumber(out, g.offset);
-            out += g.acMode == AcMode::Additive ? ",additive," : ",scale,";
-            std::string reason = g.reason;
-            for (char& c : reason)
-                if (c == ',' || c == '\n' || c == '"') c = ';';
-            out += reason + "\n";
-        }
+    const Decomposition& d = decomposed.components;
+    std::vector<OutputFile> files;
+    for (const auto& y : d.functions) {
+        // y as a pose (Euler angles); z's angle columns are rotation coordinates (docs/FORMATS.md)
+        auto pose = functionComponentTake(d, y.function);
+        if (!pose) return pose.error();
+        pose->labels = {y.function, "", 0, "y"};
+        const std::string name = "y_" + io::fileSafeLabel(y.function) + ".csv";
+        auto csv = takeCsv(*pose, name);
+        if (!csv) return csv.error();
+        files.push_back({name, std::move(csv).value()});
     }
-    return out;
+    for (const auto& z : d.emotions) {
+        const std::string name = "z_" + cellStem(z.function, z.emotion) + ".csv";
+        auto csv = takeCsv(componentTake(d, z.values, {z.function, z.emotion, 0, "z"}), name);
+        if (!csv) return csv.error();
+        files.push_back({name, std::move(csv).value()});
+    }
+    if (const auto& km2o = decomposed.km2o) {
+        std::string byM = "M,mean_P_percent\n";
+        for (std::size_t i = 0; i < km2o->candidateLengths.size(); ++i) {
+            byM += std::to_string(km2o->candidateLengths[i]) + ",";
+            appendShortestNumber(byM, km2o->meanErrorPercent[i]);
+            byM += "\n";
+        }
+        files.push_back({"km2o_by_M.csv", byM});
+        std::string errors = "channel";
+        for (const auto& z : d.emotions) errors += ",P_" + z.function + "/" + z.emotion;
+        errors += "\n";
+        for (std::size_t ch = 0; ch < d.channels.size(); ++ch) {
+            errors += d.channels[ch].name();
+            for (Eigen::Index c = 0; c < km2o->cellErrorPercent.cols(); ++c) {
+                errors += ',';
+                appendShortestNumber(errors, km2o->cellErrorPercent(Eigen::Index(ch), c));
+            }
+            errors += "\n";
+        }
+        files.push_back({"km2o_errors.csv", errors});
+    }
+    return files;
 }
 
-} // namespace
-
-std::string cellStem(const std::string& function, const std::string& emotion)
+Result<std::vector<OutputFile>> fluctuationTakeFiles(const Decomposition& d)
 {
-    return io::fileSafeLabel(function) + "_" + io::fileSafeLabel(emotion);
+    std::vector<OutputFile> files;
+    for (const auto& eta : d.fluctuations) {
+        const std::string name = "eta_" + takeStem(eta.labels) + ".csv";
+        auto csv = takeCsv(componentTake(d, eta.values, eta.labels), name);
+        if (!csv) return csv.error();
+        files.push_back({name, std::move(csv).value()});
+    }
+    return files;
 }
 
-std::string takeStem(const TakeLabels& labels) { return cellStem(labels.function, labels.emotion) + "_" + std::to_string(labels.takeIndex); }
+std::vector<OutputFile> fluctuationFiles(const pipeline::FluctuationOutput& fluctuations)
+{
+    std::vector<OutputFile> files;
+    std::string spectra = "function,emotion,channel,frequency_hz,power\n";
+    for (const auto& cell : fluctuations.spectra)
+        for (Eigen::Index ch = 0; ch < cell.power.cols(); ++ch)
+            for (Eigen::Index k = 0; k < cell.power.rows(); ++k) {
+                spectra += cell.function + "," + cell.emotion + "," + fluctuations.channelNames[std::size_t(ch)] + ",";
+                appendShortestNumber(spectra, cell.frequencyHz[k]);
+                spectra += ',';
+                appendShortestNumber(spectra, cell.power(k, ch));
+                spectra += "\n";
+            }
+    files.push_back({"spectra.csv", spectra});
+    std::string arma = "channel,function,emotion,takes";
+    for (int m = 1; m <= fluctuations.armaP; ++m) arma += ",a" + std::to_string(m);
+    for (int n = 0; n <= fluctuations.armaQ; ++n) arma += ",b" + std::to_string(n);
+    for (int n = 0; n <= fluctuations.armaQ; ++n) arma += ",b" + std::to_string(n) + "_thesis";
+    arma += ",innovation_variance,fpe\n";
+    for (std::size_t ch = 0; ch < fluctuations.armaTables.size(); ++ch)
+        for (const auto& row : fluctuations.armaTables[ch]) {
+            if (row.takes == 0) continue;
+            arma += fluctuations.channelNames[ch] + "," + row.function + "," + row.emotion + "," + std::to_string(row.takes);
+            const auto field = [&arma](double value) {
+                arma += ',';
+                appendShortestNumber(arma, value);
+            };
+            for (int m = 0; m < fluctuations.armaP; ++m) field(row.mean.a(m));
+            for (int n = 0; n <= fluctuations.armaQ; ++n) field(row.mean.b(n));
+            for (int n = 0; n <= fluctuations.armaQ; ++n) field(row.mean.bThesis(n));
+            field(row.mean.innovationVariance);
+            field(row.mean.fpe);
+            arma += '\n';
+        }
+    files.push_back({"arma_table.csv", arma});
+    return files;
+}
 
 nlohmann::json km2oOutcomeJson(const Km2oDecomposition& km2o)
 {
@@ -164,39 +258,12 @@ Result<std::vector<OutputFile>> analysisDataFiles(const ChainResult& chain, cons
     }
 
     const Decomposition& d = chain.decomposed->components;
-    for (const auto& y : d.functions) {
-        // y as a pose (Euler angles); z's angle columns are rotation coordinates (docs/FORMATS.md)
-        auto pose = functionComponentTake(d, y.function);
-        if (!pose) return pose.error();
-        pose->labels = {y.function, "", 0, "y"};
-        if (auto s = addTake(*pose, "y_" + io::fileSafeLabel(y.function) + ".csv"); !s) return s.error();
-    }
-    for (const auto& z : d.emotions)
-        if (auto s = addTake(componentTake(d, z.values, {z.function, z.emotion, 0, "z"}), "z_" + cellStem(z.function, z.emotion) + ".csv");
-            !s)
-            return s.error();
+    auto decomposed = decompositionFiles(*chain.decomposed);
+    if (!decomposed) return decomposed.error();
+    for (auto& file : *decomposed) files.push_back(std::move(file));
     nlohmann::json decomposition{{"method", pipeline::methodName(chain.decomposed->parameters.method)},
                                  {"input", pipeline::inputName(chain.decomposed->parameters.input)}};
     if (const auto& km2o = chain.decomposed->km2o) {
-        std::string byM = "M,mean_P_percent\n";
-        for (std::size_t i = 0; i < km2o->candidateLengths.size(); ++i) {
-            byM += std::to_string(km2o->candidateLengths[i]) + ",";
-            appendShortestNumber(byM, km2o->meanErrorPercent[i]);
-            byM += "\n";
-        }
-        files.push_back({"km2o_by_M.csv", byM});
-        std::string errors = "channel";
-        for (const auto& z : d.emotions) errors += ",P_" + z.function + "/" + z.emotion;
-        errors += "\n";
-        for (std::size_t ch = 0; ch < d.channels.size(); ++ch) {
-            errors += d.channels[ch].name();
-            for (Eigen::Index c = 0; c < km2o->cellErrorPercent.cols(); ++c) {
-                errors += ',';
-                appendShortestNumber(errors, km2o->cellErrorPercent(Eigen::Index(ch), c));
-            }
-            errors += "\n";
-        }
-        files.push_back({"km2o_errors.csv", errors});
         decomposition["km2o"] = km2oOutcomeJson(*km2o);
         if (km2o->estimable()) { // else no M was chosen: y, z by least squares
             decomposition["M"] = km2o->correlationLength;
@@ -205,34 +272,7 @@ Result<std::vector<OutputFile>> analysisDataFiles(const ChainResult& chain, cons
             decomposition["mean_P_percent"] = km2o->meanCellErrorPercent;
         }
     }
-
-    const auto& fluctuations = *chain.fluctuations;
-    std::string spectra = "function,emotion,channel,frequency_hz,power\n";
-    for (const auto& cell : fluctuations.spectra)
-        for (Eigen::Index ch = 0; ch < cell.power.cols(); ++ch)
-            for (Eigen::Index k = 0; k < cell.power.rows(); ++k) {
-                spectra += cell.function + "," + cell.emotion + "," + fluctuations.channelNames[std::size_t(ch)] + ",";
-                appendShortestNumber(spectra, cell.frequencyHz[k]);
-                spectra += ',';
-                appendShortestNumber(spectra, cell.power(k, ch));
-                spectra += "\n";
-            }
-    files.push_back({"spectra.csv", spectra});
-    std::string arma = "channel,function,emotion,takes";
-    for (int m = 1; m <= fluctuations.armaP; ++m) arma += ",a" + std::to_string(m);
-    for (int n = 0; n <= fluctuations.armaQ; ++n) arma += ",b" + std::to_string(n);
-    for (int n = 0; n <= fluctuations.armaQ; ++n) arma += ",b" + std::to_string(n) + "_thesis";
-    arma += ",innovation_variance,fpe\n";
-    for (std::size_t ch = 0; ch < fluctuations.armaTables.size(); ++ch)
-        for (const auto& row : fluctuations.armaTables[ch]) {
-            if (row.takes == 0) continue;
-            arma += fluctuations.channelNames[ch] + "," + row.function + "," + row.emotion + "," + std::to_string(row.takes);
-            for (int m = 0; m < fluctuations.armaP; ++m) arma += "," + shortestNumber(row.mean.a(m));
-            for (int n = 0; n <= fluctuations.armaQ; ++n) arma += "," + shortestNumber(row.mean.b(n));
-            for (int n = 0; n <= fluctuations.armaQ; ++n) arma += "," + shortestNumber(row.mean.bThesis(n));
-            arma += "," + shortestNumber(row.mean.innovationVariance) + "," + shortestNumber(row.mean.fpe) + "\n";
-        }
-    files.push_back({"arma_table.csv", arma});
+    for (auto& file : fluctuationFiles(*chain.fluctuations)) files.push_back(std::move(file));
 
     nlohmann::json axes = nlohmann::json::array();
     for (const auto& function : chain.axes->functions) {

@@ -35,6 +35,24 @@ Result<std::vector<OutputFile>> analysisDataFiles(const pipeline::ChainResult& c
 /// the file.
 Status writeOutputFiles(const std::filesystem::path& folder, const std::vector<OutputFile>& files);
 
+// The writers of each stage's files, one per file, shared by `bunraku analyse` (above) and the
+// stage's own command (`normalise`, `decompose`), so both write the same bytes.
+
+/// variance_f_e.csv (`normalise`: variance.csv): thesis 3.8's variance of each take to the
+/// reference, raw and normalised, per channel and in total.
+std::string varianceCsv(const pipeline::CellNormalisation& cell);
+/// correspondence_f_e_k.csv (`normalise`: k_correspondence.csv): each coupling set's reference
+/// frame to take frame, for the reference's `frames` frames.
+std::string correspondenceCsv(const TakeNormalisation& normalisation, Eigen::Index frames);
+/// y_f.csv (a pose), z_f_e.csv (rotation coordinates), and with KM2O km2o_by_M.csv and
+/// km2o_errors.csv (Table 4.5's layout).
+Result<std::vector<OutputFile>> decompositionFiles(const pipeline::DecomposeOutput& decomposed);
+/// eta_f_e_k.csv: each take's fluctuation (`decompose` only).
+Result<std::vector<OutputFile>> fluctuationTakeFiles(const Decomposition& decomposition);
+/// spectra.csv (each cell's Welch spectra of eta, averaged over its takes) and arma_table.csv
+/// (Table 4.1: ARMA(p,q) averaged per cell).
+std::vector<OutputFile> fluctuationFiles(const pipeline::FluctuationOutput& fluctuations);
+
 /// What KM2O did per cell, for summary.json and the CLI's --json summaries (docs/FORMATS.md):
 /// {"estimable", "outcome", "notes", "cells": [{"function", "emotion", "takes", "gamma": "own
 /// takes" | "pooled" | "least squares"}]} (docs/KM2O.md, "Cells with one take").

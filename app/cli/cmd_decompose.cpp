@@ -76,6 +76,7 @@ struct ChainOutcome {
     pipeline::Shared<pipeline::PreprocessOutput> preprocessed;
     pipeline::Shared<pipeline::NormaliseOutput> normalised; ///< null for --input preprocessed
     pipeline::Shared<pipeline::DecomposeOutput> decomposed;
+    pipeline::Shared<pipeline::FluctuationOutput> fluctuations; ///< null unless asked for
 };
 
 pipeline::ChainParameters chainParameters(const ChainArgs& args)
@@ -100,11 +101,17 @@ pipeline::ChainParameters chainParameters(const ChainArgs& args)
     return parameters;
 }
 
-/// Runs every stage a chapter-4 result depends on; an error names the corpus and the stage.
-ChainOutcome decomposeChain(const ChainArgs& args)
+/// Runs every stage a chapter-4 result depends on (and the fluctuation stage after it when
+/// asked); an error names the corpus and the stage.
+/// `armaOrder`: p and q of the ARMA table, or empty for the parameters'.
+ChainOutcome decomposeChain(const ChainArgs& args, bool fluctuations = false, const std::vector<int>& armaOrder = {})
 {
     ChainOutcome out;
     out.parameters = chainParameters(args);
+    if (armaOrder.size() == 2) {
+        out.parameters.fluctuations.armaP = armaOrder[0];
+        out.parameters.fluctuations.armaQ = armaOrder[1];
+    }
     out.corpus = unwrap(pipeline::importCorpus(args.corpus));
     const pipeline::ChainKeys keys = pipeline::chainKeys(out.corpus.key, out.parameters);
     const RunControl control{{}, {}, resolveThreads(0)}; // the workbench's thread count; the same bits for any
@@ -129,6 +136,11 @@ ChainOutcome decomposeChain(const ChainArgs& args)
         throw failed(pipeline::Stage::Decompose, error);
     }
     out.decomposed = *decomposed;
+    if (fluctuations) {
+        auto fluctuated = pipeline::fluctuationStage(keys.decompose, *out.decomposed, out.parameters.fluctuations, nullptr, control);
+        if (!fluctuated) throw failed(pipeline::Stage::Fluctuations, fluctuated.error());
+        out.fluctuations = *fluctuated;
+    }
     return out;
 }
 
@@ -154,33 +166,8 @@ nlohmann::json chainSummary(const ChainOutcome& chain)
     return summary;
 }
 
-/// Table 4.5 layout: one row per channel, one P^{ij} [%] column per cell.
-std::string km2oErrorCsv(const Km2oDecomposition& km2o)
-{
-    const Decomposition& d = km2o.components;
-    std::ostringstream out;
-    out << std::setprecision(4) << std::fixed << "channel";
-    for (const auto& z : d.emotions) out << ",P_" << z.function << "/" << z.emotion;
-    out << '\n';
-    for (std::size_t ch = 0; ch < d.channels.size(); ++ch) {
-        out << d.channels[ch].name();
-        for (Eigen::Index c = 0; c < km2o.cellErrorPercent.cols(); ++c) out << ',' << km2o.cellErrorPercent(Eigen::Index(ch), c);
-        out << '\n';
-    }
-    return out.str();
-}
-
-Take asTake(const Decomposition& d, const Eigen::MatrixXd& values, TakeLabels labels)
-{
-    Take take;
-    take.values = values;
-    take.rateHz = d.rateHz;
-    take.channels = d.channels;
-    take.labels = std::move(labels);
-    return take;
-}
-
-std::string spectraCsv(const Decomposition& d, bool useWelch)
+/// Each take's spectra of eta (`decompose` only; spectra.csv holds the cells' averages).
+std::string spectraCsv(const Decomposition& d, bool useWelch, int welchSegment)
 {
     std::ostringstream out;
     out << std::setprecision(10) << "function,emotion,take,channel,frequency_hz,power\n";
@@ -189,7 +176,7 @@ std::string spectraCsv(const Decomposition& d, bool useWelch)
         for (std::size_t ch = 0; ch < d.channels.size(); ++ch) {
             const Eigen::VectorXd x = eta.values.col(Eigen::Index(ch));
             WelchOptions welchOptions;
-            welchOptions.segmentLength = std::min<int>(32, int(x.size()));
+            welchOptions.segmentLength = std::min<int>(welchSegment, int(x.size()));
             const Spectrum s = unwrap(useWelch ? welch(x, d.rateHz, welchOptions) : periodogram(x, d.rateHz));
             for (Eigen::Index k = 0; k < s.power.size(); ++k)
                 out << eta.labels.function << ',' << eta.labels.emotion << ',' << eta.labels.takeIndex << ','
@@ -224,29 +211,6 @@ std::string armaTakesCsv(const Decomposition& d, ArmaOrderSearch search, int max
             for (int i = 0; i <= maxOrder; ++i) out << ',' << (i <= m.q ? std::to_string(m.b(i)) : "");
             for (int i = 0; i <= maxOrder; ++i) out << ',' << (i <= m.q ? std::to_string(m.bThesis(i)) : "");
             out << '\n';
-        }
-    }
-    return out.str();
-}
-
-std::string armaTableCsv(const Decomposition& d, int p, int q)
-{
-    std::ostringstream out;
-    out << std::setprecision(6) << std::fixed << "channel,function,emotion,takes";
-    for (int m = 1; m <= p; ++m) out << ",a" << m;
-    for (int n = 0; n <= q; ++n) out << ",b" << n;
-    for (int n = 0; n <= q; ++n) out << ",b" << n << "_thesis";
-    out << ",innovation_variance,fpe\n";
-    for (std::size_t ch = 0; ch < d.channels.size(); ++ch) {
-        auto rows = armaCellTable(d, Eigen::Index(ch), p, q);
-        if (!rows) continue;
-        for (const auto& row : *rows) {
-            if (row.takes == 0) continue;
-            out << d.channels[ch].name() << ',' << row.function << ',' << row.emotion << ',' << row.takes;
-            for (int m = 0; m < p; ++m) out << ',' << row.mean.a(m);
-            for (int n = 0; n <= q; ++n) out << ',' << row.mean.b(n);
-            for (int n = 0; n <= q; ++n) out << ',' << row.mean.bThesis(n);
-            out << ',' << row.mean.innovationVariance << ',' << row.mean.fpe << '\n';
         }
     }
     return out.str();
@@ -305,59 +269,42 @@ struct DecomposeArgs {
     std::string truth;
     std::string armaSearch = "equal";
     int armaMaxOrder = 4;
-    std::vector<int> armaTableOrder{2, 2};
+    std::vector<int> armaTableOrder; ///< empty: the parameters' (2 2)
     bool json = false;
 };
 
 void runDecompose(const DecomposeArgs& args)
 {
-    if (args.armaTableOrder.size() != 2) throw CliError("--arma-table takes two orders: p q");
+    if (!args.armaTableOrder.empty() && args.armaTableOrder.size() != 2) throw CliError("--arma-table takes two orders: p q");
     refuseOutputOverInputs(args.output, OutputKind::Folder, {args.chain.corpus, args.chain.parameters, args.truth});
-    const ChainOutcome chain = decomposeChain(args.chain);
+    // The stages `bunraku analyse` runs, up to the fluctuations (4.3.2), with its parameters.
+    const ChainOutcome chain = decomposeChain(args.chain, true, args.armaTableOrder);
     const Decomposition& d = chain.decomposed->components;
     nlohmann::json summary = chainSummary(chain);
     summary["corpus"] = args.chain.corpus;
     const std::string& corpusPath = args.chain.corpus;
 
-    // Every output is computed before anything is written: bad input writes nothing.
+    // Every output is computed before anything is written: bad input writes nothing. The files
+    // `analyse` writes too come from its writers (the same bytes); eta, each take's spectra
+    // and ARMA orders are this command's own.
     const fs::path out = args.output;
     std::vector<std::pair<std::string, std::string>> outputs; // file name, content
-    auto addTake = [&](const Take& take, const std::string& name) {
-        if (auto valid = validateTake(take); !valid) throw CliError(name + ": " + valid.error().message);
-        outputs.emplace_back(name, io::formatTakeCsv(take));
+    const auto add = [&](std::vector<report::OutputFile> files) {
+        for (auto& file : files) outputs.emplace_back(std::move(file.name), std::move(file.content));
     };
     aboutCorpus(corpusPath, [&] {
-        // y as a pose (Euler angles); z and eta are differences: rotation coordinates (deg).
-        for (const auto& f : d.functions) {
-            Take y = unwrap(functionComponentTake(d, f.function));
-            y.labels = {f.function, "", 0, "y"};
-            addTake(y, "y_" + io::fileSafeLabel(f.function) + ".csv");
-        }
-        for (const auto& z : d.emotions)
-            addTake(asTake(d, z.values, {z.function, z.emotion, 0, "z"}),
-                    "z_" + io::fileSafeLabel(z.function) + "_" + io::fileSafeLabel(z.emotion) + ".csv");
-        for (const auto& eta : d.fluctuations)
-            addTake(asTake(d, eta.values, eta.labels), "eta_" + io::fileSafeLabel(eta.labels.function) + "_" +
-                                                           io::fileSafeLabel(eta.labels.emotion) + "_" +
-                                                           std::to_string(eta.labels.takeIndex) + ".csv");
-        outputs.emplace_back("spectra_periodogram.csv", spectraCsv(d, false));
-        outputs.emplace_back("spectra_welch.csv", spectraCsv(d, true));
+        add(unwrap(report::decompositionFiles(*chain.decomposed)));
+        add(unwrap(report::fluctuationTakeFiles(d)));
+        add(report::fluctuationFiles(*chain.fluctuations));
+        const int welchSegment = chain.parameters.fluctuations.welchSegment;
+        outputs.emplace_back("spectra_periodogram.csv", spectraCsv(d, false, welchSegment));
+        outputs.emplace_back("spectra_welch.csv", spectraCsv(d, true, welchSegment));
         const ArmaOrderSearch search = args.armaSearch == "all" ? ArmaOrderSearch::AllPairs : ArmaOrderSearch::EqualOrders;
         outputs.emplace_back("arma_takes.csv", armaTakesCsv(d, search, args.armaMaxOrder));
-        outputs.emplace_back("arma_table.csv", armaTableCsv(d, args.armaTableOrder[0], args.armaTableOrder[1]));
     });
-    if (chain.decomposed->km2o) {
-        const Km2oDecomposition& km2o = *chain.decomposed->km2o;
-        outputs.emplace_back("km2o_errors.csv", km2oErrorCsv(km2o));
-        std::ostringstream byM;
-        byM << "M,mean_P_percent\n";
-        for (std::size_t i = 0; i < km2o.candidateLengths.size(); ++i)
-            byM << km2o.candidateLengths[i] << ',' << km2o.meanErrorPercent[i] << '\n';
-        outputs.emplace_back("km2o_by_M.csv", byM.str());
-        if (km2o.estimable()) {
-            summary["candidate_M"] = km2o.candidateLengths;
-            summary["mean_P_percent_by_M"] = km2o.meanErrorPercent;
-        }
+    if (chain.decomposed->km2o && chain.decomposed->km2o->estimable()) {
+        summary["candidate_M"] = chain.decomposed->km2o->candidateLengths;
+        summary["mean_P_percent_by_M"] = chain.decomposed->km2o->meanErrorPercent;
     }
 
     fs::path truthFolder = args.truth;
@@ -573,7 +520,8 @@ void addDecompositionCommands(CommandSet& commands)
         ->check(CLI::IsMember({"equal", "all"}));
     dec->add_option("--arma-max-order", decomposeArgs->armaMaxOrder, "Largest ARMA order for FPE selection")
         ->check(CLI::Range(0, analysis::pipeline::kMaxArmaOrder));
-    dec->add_option("--arma-table", decomposeArgs->armaTableOrder, "ARMA(p,q) averaged per cell (Table 4.1), each 0..4")
+    dec->add_option("--arma-table", decomposeArgs->armaTableOrder,
+                    "ARMA(p,q) averaged per cell (Table 4.1), each 0..4; default the parameters' (2 2), as `bunraku analyse`")
         ->expected(2)
         ->check(CLI::Range(0, analysis::pipeline::kMaxArmaOrder));
     dec->add_flag("--json", decomposeArgs->json, "Print a JSON summary");

@@ -7,6 +7,7 @@
 #include "analysis/io/corpus_io.h"
 #include "analysis/io/staged_folder.h"
 #include "analysis/io/take_csv.h"
+#include "analysis/report/analysis_files.h"
 #include "analysis/normalise/average_take.h"
 #include "analysis/normalise/noise_experiment.h"
 #include "analysis/normalise/take_normalisation.h"
@@ -248,16 +249,8 @@ void runNormalise(const NormaliseArguments& arguments)
     for (std::size_t k = 0; k < normalised.size(); ++k) {
         const std::string stem = takeFileName(*cell[k]);
         writeText(stem + "_normalised.csv", takeCsv(normalised[k].normalised, (folder / (stem + "_normalised.csv")).string()));
-        std::ostringstream csv;
-        csv << "t_ref";
-        for (const auto& name : normalised[k].coupling.names) csv << "," << name;
-        csv << "\n";
-        for (Eigen::Index t = 0; t < reference.frameCount(); ++t) {
-            csv << t;
-            for (const auto& match : normalised[k].matches) csv << "," << match.correspondence[t];
-            csv << "\n";
-        }
-        writeText(stem + "_correspondence.csv", csv.str());
+        // The tables `bunraku analyse` writes (correspondence_f_e_k.csv, variance_f_e.csv), by its writers.
+        writeText(stem + "_correspondence.csv", an::report::correspondenceCsv(normalised[k], reference.frameCount()));
         files.push_back(stem + "_normalised.csv");
         files.push_back(stem + "_correspondence.csv");
         // A take with a performer's skeleton (a BVH corpus): also on that skeleton (not the
@@ -267,20 +260,7 @@ void runNormalise(const NormaliseArguments& arguments)
             files.push_back(stem + "_normalised.bvh");
         }
     }
-    std::ostringstream variance;
-    variance << std::setprecision(10) << "take,stage,total";
-    for (const auto& name : table.channelNames) variance << "," << name;
-    variance << "\n";
-    for (std::size_t k = 0; k < table.takeNames.size(); ++k) {
-        for (int stage = 0; stage < 2; ++stage) {
-            const Eigen::MatrixXd& values = stage == 0 ? table.before : table.after;
-            variance << cell[k]->labels.takeIndex << "," << (stage == 0 ? "raw" : "normalised") << ","
-                     << (stage == 0 ? table.totalBefore : table.totalAfter)[Eigen::Index(k)];
-            for (Eigen::Index c = 0; c < values.cols(); ++c) variance << "," << values(Eigen::Index(k), c);
-            variance << "\n";
-        }
-    }
-    writeText("variance.csv", variance.str());
+    writeText("variance.csv", an::report::varianceCsv(result));
     files.push_back("variance.csv");
 
     // Per DOF family (cm² apart from deg²), as the Normalisation panel shows them; the thesis's
