@@ -346,7 +346,16 @@ void readDesign(Reader& r, DesignEdits& d)
 
 } // namespace
 
-std::string pathName(PathMethod path) { return path == PathMethod::Optimal ? "optimal" : "greedy"; }
+template <> const std::map<std::string, PathMethod>& parameterNames<PathMethod>() { return kPaths; }
+template <> const std::map<std::string, DecomposeMethod>& parameterNames<DecomposeMethod>() { return kMethods; }
+template <> const std::map<std::string, DecomposeInput>& parameterNames<DecomposeInput>() { return kInputs; }
+template <> const std::map<std::string, ChannelWeighting>& parameterNames<ChannelWeighting>() { return kWeightings; }
+template <> const std::map<std::string, LevelAlignment>& parameterNames<LevelAlignment>() { return kLevels; }
+template <> const std::map<std::string, FrontBackAxis>& parameterNames<FrontBackAxis>() { return kFrontBack; }
+template <> const std::map<std::string, MassSource>& parameterNames<MassSource>() { return kMassSources; }
+template <> const std::map<std::string, SegmentTable>& parameterNames<SegmentTable>() { return kSegmentTables; }
+
+std::string pathName(PathMethod path) { return parameterName(path); }
 
 std::string referenceName(const ReferenceChoice& choice)
 {
@@ -354,9 +363,9 @@ std::string referenceName(const ReferenceChoice& choice)
     return choice.kind == ReferenceKind::Average ? "average" : "suggested";
 }
 
-std::string methodName(DecomposeMethod method) { return method == DecomposeMethod::Km2o ? "km2o" : "least-squares"; }
+std::string methodName(DecomposeMethod method) { return parameterName(method); }
 
-std::string inputName(DecomposeInput input) { return input == DecomposeInput::Normalised ? "normalised" : "preprocessed"; }
+std::string inputName(DecomposeInput input) { return parameterName(input); }
 
 json toJson(const ChainParameters& p)
 {
@@ -394,22 +403,22 @@ json toJson(const ChainParameters& p)
               {"averageBase", p.normalise.averageBase},
               {"averageExcluded", p.normalise.averageExcluded},
               {"scales", p.normalise.scales},
-              {"weighting", p.normalise.weighting == ChannelWeighting::Standardise ? "standardise" : "none"},
-              {"level", p.normalise.level == LevelAlignment::None ? "none" : "first-frame"},
+              {"weighting", parameterName(p.normalise.weighting)},
+              {"level", parameterName(p.normalise.level)},
               {"approximationWeight", p.normalise.approximationWeight}}},
             {"decompose",
              {{"input", inputName(p.decompose.input)}, {"method", methodName(p.decompose.method)}, {"M", p.decompose.correlationLength}}},
             {"fluctuations", {{"armaP", p.fluctuations.armaP}, {"armaQ", p.fluctuations.armaQ}, {"welchSegment", p.fluctuations.welchSegment}}},
             {"axis",
-             {{"frontBack", p.axis.frontBack == FrontBackAxis::Principal ? "principal" : "shoulder"},
+             {{"frontBack", parameterName(p.axis.frontBack)},
               {"massSpacing", p.axis.massSpacing},
-              {"masses", massSourceName(p.axis.masses)},
-              {"segments", p.axis.segments == SegmentTable::DeLevaFemale ? "female" : "male"},
+              {"masses", parameterName(p.axis.masses)},
+              {"segments", parameterName(p.axis.segments)},
               {"tau", p.axis.tau},
               {"searchBand", p.axis.searchBand},
               {"maxScale", p.axis.maxScale},
               {"approximationWeight", p.axis.approximationWeight},
-              {"level", p.axis.level == LevelAlignment::None ? "none" : "first-frame"},
+              {"level", parameterName(p.axis.level)},
               {"path", pathName(p.axis.path)},
               {"controlSpacing", p.axis.controlSpacing},
               {"refinementPasses", p.axis.refinementPasses}}},

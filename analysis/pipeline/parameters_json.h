@@ -22,7 +22,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include <map>
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace bunraku::analysis::pipeline {
 
@@ -31,6 +34,47 @@ nlohmann::json toJson(const ChainParameters& parameters);
 
 /// Parses and validates; `where` ("session.bunraku.json: parameters") starts every message.
 Result<ChainParameters> chainParametersFromJson(const nlohmann::json& value, const std::string& where);
+
+/// The names of an enumerated parameter, one table each, as the parameter files and the command
+/// line spell them: specialised for PathMethod, DecomposeMethod, DecomposeInput,
+/// ChannelWeighting, LevelAlignment, FrontBackAxis, MassSource and SegmentTable.
+template <class Enum>
+const std::map<std::string, Enum>& parameterNames();
+template <> const std::map<std::string, PathMethod>& parameterNames<PathMethod>();
+template <> const std::map<std::string, DecomposeMethod>& parameterNames<DecomposeMethod>();
+template <> const std::map<std::string, DecomposeInput>& parameterNames<DecomposeInput>();
+template <> const std::map<std::string, ChannelWeighting>& parameterNames<ChannelWeighting>();
+template <> const std::map<std::string, LevelAlignment>& parameterNames<LevelAlignment>();
+template <> const std::map<std::string, FrontBackAxis>& parameterNames<FrontBackAxis>();
+template <> const std::map<std::string, MassSource>& parameterNames<MassSource>();
+template <> const std::map<std::string, SegmentTable>& parameterNames<SegmentTable>();
+
+/// The value named `name`, nullopt for a name the table does not hold.
+template <class Enum>
+std::optional<Enum> parameterValue(const std::string& name)
+{
+    const auto& names = parameterNames<Enum>();
+    const auto found = names.find(name);
+    return found == names.end() ? std::nullopt : std::optional<Enum>(found->second);
+}
+
+/// The name of `value` in its table.
+template <class Enum>
+std::string parameterName(Enum value)
+{
+    for (const auto& [name, named] : parameterNames<Enum>())
+        if (named == value) return name;
+    return {};
+}
+
+/// Every name of the table (the command line's checks).
+template <class Enum>
+std::vector<std::string> parameterNameList()
+{
+    std::vector<std::string> list;
+    for (const auto& entry : parameterNames<Enum>()) list.push_back(entry.first);
+    return list;
+}
 
 /// "greedy" / "optimal"; "suggested" / "average" / a take index; "km2o" / "least-squares" ...
 std::string pathName(PathMethod path);

@@ -4,7 +4,11 @@
 /// `analyse`, `decompose` and `emotion` so each runs the stages with the workbench's typed
 /// parameters and defaults (docs/FORMATS.md).
 
+#include "analysis/pipeline/parameters_json.h"
 #include "analysis/pipeline/stage_parameters.h"
+#include "app/cli/cli.h"
+
+#include <CLI/CLI.hpp>
 
 #include <string>
 
@@ -18,5 +22,21 @@ analysis::pipeline::ChainParameters readChainParameters(const std::string& file)
 /// parameters file was given (a value in its range may still fail at run time: a search band
 /// longer than the takes), so the message names the file to change.
 std::string chainSubject(const std::string& corpus, const std::string& parametersFile);
+
+/// The check of an option naming an enumerated parameter: the names of the parameter files
+/// (analysis::pipeline::parameterNames), one table for both.
+template <class Enum>
+CLI::IsMember namedParameterCheck()
+{
+    return CLI::IsMember(analysis::pipeline::parameterNameList<Enum>());
+}
+
+/// The value an option (checked by namedParameterCheck) names.
+template <class Enum>
+Enum namedParameter(const std::string& name)
+{
+    if (auto value = analysis::pipeline::parameterValue<Enum>(name)) return *value;
+    throw CliError("'" + name + "' is not one of the names the parameter files use");
+}
 
 } // namespace bunraku::app::cli

@@ -1,5 +1,6 @@
 // Subcommands: axis, phase, gains, design, experiment design (thesis chapter 5).
 #include "app/cli/commands.h"
+#include "app/cli/chain_parameters.h"
 #include "app/cli/take_output.h"
 #include "app/cli/output_guard.h"
 
@@ -46,7 +47,7 @@ void addAxisOptions(CLI::App* command, AxisArguments& arguments, bool readsTakes
     if (readsTakes)
         command->add_option("--segments", arguments.segments,
                             "The whole body's segment table (with --all-joints): de Leva's (1996) 'male' (default) or 'female'")
-            ->check(CLI::IsMember({"male", "female"}));
+            ->check(namedParameterCheck<an::SegmentTable>());
     if (readsTakes)
         command->add_flag("--all-joints", arguments.allJoints,
                       "Read a BVH, FBX, glTF or Collada take with every joint of its skeleton (6 channels each) instead of the "
@@ -55,22 +56,22 @@ void addAxisOptions(CLI::App* command, AxisArguments& arguments, bool readsTakes
         ->check(CLI::ExistingFile);
     command->add_option("--front-back", arguments.frontBack,
                         "Axis x: 'shoulder' (the shoulder's facing, default) or 'principal' (thesis-literal principal axis)")
-        ->check(CLI::IsMember({"shoulder", "principal"}));
+        ->check(namedParameterCheck<an::FrontBackAxis>());
     command->add_option("--spacing", arguments.spacing, "Mass point lattice step, cm (default 1)")
         ->check(CLI::Range(pl::kMinMassSpacing, pl::kMaxMassSpacing));
     command->add_option("--masses", arguments.masses,
                         "Where the masses come from: 'model' (the modelled puppet's solid, default) or 'primitives' (the body "
                         "description's primitives); a --body with other parts than the puppet's uses its primitives")
-        ->check(CLI::IsMember({"model", "primitives"}));
+        ->check(namedParameterCheck<an::MassSource>());
 }
 
 an::AxisOptions axisOptions(const AxisArguments& arguments)
 {
     an::AxisOptions options;
     options.massPoints.spacing = arguments.spacing;
-    options.massPoints.source = arguments.masses == "primitives" ? an::MassSource::Primitives : an::MassSource::Model;
-    options.frontBack = arguments.frontBack == "principal" ? an::FrontBackAxis::Principal : an::FrontBackAxis::ShoulderForward;
-    options.segments = arguments.segments == "female" ? an::SegmentTable::DeLevaFemale : an::SegmentTable::DeLevaMale;
+    options.massPoints.source = namedParameter<an::MassSource>(arguments.masses);
+    options.frontBack = namedParameter<an::FrontBackAxis>(arguments.frontBack);
+    options.segments = namedParameter<an::SegmentTable>(arguments.segments);
     return options;
 }
 
@@ -190,13 +191,13 @@ void addPhaseOptions(CLI::App* command, PhaseArguments& arguments)
     command->add_option("--weight", arguments.approximationWeight, "Approximation weight M (default 8)")
         ->check(CLI::Range(0.0, pl::kMaxApproximationWeight));
     command->add_option("--path", arguments.path, "greedy (thesis, default) or optimal")
-        ->check(CLI::IsMember({"greedy", "optimal"}));
+        ->check(namedParameterCheck<an::PathMethod>());
     command->add_option("--weighting", arguments.weighting, "none (thesis, default) or standardise")
-        ->check(CLI::IsMember({"none", "standardise"}));
+        ->check(namedParameterCheck<an::ChannelWeighting>());
     command->add_option("--level", arguments.level,
                         "Level of each axis coordinate before the transform: first-frame (minus its first frame, default) "
                         "or none (eq. 5.16 read literally)")
-        ->check(CLI::IsMember({"none", "first-frame"}));
+        ->check(namedParameterCheck<an::LevelAlignment>());
     command->add_option("--control-spacing", arguments.spacing, "Frames between warp control points (default 8)")
         ->check(CLI::Range(1, pl::kMaxControlSpacing));
     command->add_option("--time-scale", arguments.timeScale,
@@ -212,9 +213,9 @@ an::PhaseOptions phaseOptions(const PhaseArguments& arguments)
     options.match.searchBand = arguments.tcmp;
     options.match.scales = an::integerScales(arguments.maxScale);
     options.match.approximationWeight = arguments.approximationWeight;
-    options.match.path = arguments.path == "optimal" ? an::PathMethod::Optimal : an::PathMethod::Greedy;
-    options.match.weighting = arguments.weighting == "standardise" ? an::ChannelWeighting::Standardise : an::ChannelWeighting::None;
-    options.match.level = arguments.level == "first-frame" ? an::LevelAlignment::FirstFrame : an::LevelAlignment::None;
+    options.match.path = namedParameter<an::PathMethod>(arguments.path);
+    options.match.weighting = namedParameter<an::ChannelWeighting>(arguments.weighting);
+    options.match.level = namedParameter<an::LevelAlignment>(arguments.level);
     options.match.timeScaling = arguments.timeScale == "global" ? an::TimeScaling::Global
                                 : arguments.timeScale == "none" ? an::TimeScaling::None
                                                                 : an::TimeScaling::Auto;

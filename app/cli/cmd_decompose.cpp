@@ -83,9 +83,10 @@ pipeline::ChainParameters chainParameters(const ChainArgs& args)
 {
     pipeline::ChainParameters parameters = readChainParameters(args.parameters);
     if (!args.input.empty())
-        parameters.decompose.input = args.input == "preprocessed" ? pipeline::DecomposeInput::Preprocessed : pipeline::DecomposeInput::Normalised;
+        parameters.decompose.input = namedParameter<pipeline::DecomposeInput>(args.input);
     if (!args.method.empty())
-        parameters.decompose.method = args.method == "km2o" ? pipeline::DecomposeMethod::Km2o : pipeline::DecomposeMethod::LeastSquares;
+        // "ls": the command line's short name of the parameter files' "least-squares"
+        parameters.decompose.method = namedParameter<pipeline::DecomposeMethod>(args.method == "ls" ? "least-squares" : args.method);
     if (args.correlationLength != kNotGiven) {
         if (parameters.decompose.method == pipeline::DecomposeMethod::LeastSquares && args.correlationLength != 0)
             throw CliError("--M applies to --method km2o only");
@@ -488,9 +489,11 @@ void addChainOptions(CLI::App* command, ChainArgs& args)
         ->type_name("FILE");
     command->add_option("--input", args.input,
                         "Takes decomposed: normalised (thesis 4.1: after 2.2 and chapter 3, default) or preprocessed (2.2 only)")
-        ->check(CLI::IsMember({"normalised", "preprocessed"}));
-    command->add_option("--method", args.method, "km2o (KM2O-Langevin, 4.4.4; default) or ls (least squares, 4.3.1)")
-        ->check(CLI::IsMember({"ls", "km2o"}));
+        ->check(namedParameterCheck<pipeline::DecomposeInput>());
+    std::vector<std::string> methods = pipeline::parameterNameList<pipeline::DecomposeMethod>();
+    methods.push_back("ls"); // the short name kept
+    command->add_option("--method", args.method, "km2o (KM2O-Langevin, 4.4.4; default) or least-squares (4.3.1; also 'ls')")
+        ->check(CLI::IsMember(methods));
     command->add_option("--M", args.correlationLength,
                         "KM2O correlation length M, at most M_max = floor(3 sqrt(T + 1)) - 1 for takes of T + 1 frames; "
                         "0 or not given: chosen by P (4.4.4)")

@@ -1,5 +1,6 @@
 // Subcommands: normalise, experiment noise, experiment truth (thesis chapter 3).
 #include "app/cli/commands.h"
+#include "app/cli/chain_parameters.h"
 #include "app/cli/take_output.h"
 #include "app/cli/output_guard.h"
 
@@ -99,9 +100,9 @@ an::NormaliseOptions normaliseOptions(const MatchArguments& arguments)
     options.match.searchBand = arguments.tcmp;
     options.match.scales = parseScales(arguments.scales);
     options.match.approximationWeight = arguments.approximationWeight;
-    options.match.path = arguments.path == "optimal" ? an::PathMethod::Optimal : an::PathMethod::Greedy;
-    options.match.weighting = arguments.weighting == "standardise" ? an::ChannelWeighting::Standardise : an::ChannelWeighting::None;
-    options.match.level = arguments.level == "none" ? an::LevelAlignment::None : an::LevelAlignment::FirstFrame;
+    options.match.path = namedParameter<an::PathMethod>(arguments.path);
+    options.match.weighting = namedParameter<an::ChannelWeighting>(arguments.weighting);
+    options.match.level = namedParameter<an::LevelAlignment>(arguments.level);
     options.match.timeScaling = arguments.timeScale == "global" ? an::TimeScaling::Global
                                 : arguments.timeScale == "none" ? an::TimeScaling::None
                                                                 : an::TimeScaling::Auto;
@@ -127,13 +128,13 @@ void addMatchOptions(CLI::App* command, MatchArguments& arguments)
         ->capture_default_str();
     command->add_option("--path", arguments.path,
                         "Correspondence path: optimal (the least-cost monotone path, default) or greedy (the thesis's scan, 3.5.3)")
-        ->check(CLI::IsMember({"greedy", "optimal"}))
+        ->check(namedParameterCheck<an::PathMethod>())
         ->capture_default_str();
     command->add_option("--weighting", arguments.weighting, "Channel weighting: none or standardise")
-        ->check(CLI::IsMember({"none", "standardise"}))
+        ->check(namedParameterCheck<an::ChannelWeighting>())
         ->capture_default_str();
     command->add_option("--level", arguments.level, "Level alignment before the transform: first-frame or none")
-        ->check(CLI::IsMember({"first-frame", "none"}))
+        ->check(namedParameterCheck<an::LevelAlignment>())
         ->capture_default_str();
     command->add_option("--approximation-weight", arguments.approximationWeight,
                         "Weight M of the approximation term (thesis eq. 5.17; 0 = off)")
@@ -164,9 +165,9 @@ pl::NormaliseParameters normaliseParameters(const MatchArguments& arguments)
     parameters.searchBand = arguments.tcmp;
     parameters.scales = parseScales(arguments.scales);
     parameters.approximationWeight = arguments.approximationWeight;
-    parameters.path = arguments.path == "optimal" ? an::PathMethod::Optimal : an::PathMethod::Greedy;
-    parameters.weighting = arguments.weighting == "standardise" ? an::ChannelWeighting::Standardise : an::ChannelWeighting::None;
-    parameters.level = arguments.level == "none" ? an::LevelAlignment::None : an::LevelAlignment::FirstFrame;
+    parameters.path = namedParameter<an::PathMethod>(arguments.path);
+    parameters.weighting = namedParameter<an::ChannelWeighting>(arguments.weighting);
+    parameters.level = namedParameter<an::LevelAlignment>(arguments.level);
     if (auto valid = pl::validate(parameters); !valid) throw CliError(valid.error().message);
     return parameters;
 }

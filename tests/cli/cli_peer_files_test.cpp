@@ -115,3 +115,17 @@ TEST_CASE("decompose, normalise and analyse write the same bytes for every file 
     requireDecompositionCompared(compared, {"wave-right-hand"},
                                  {"wave-right-hand_normal", "wave-right-hand_active", "wave-right-hand_exhausted"});
 }
+
+TEST_CASE("decompose --method takes the parameter files' name least-squares and the short ls alike", "[cli][peer]")
+{
+    const auto dir = bunraku::test::scratchDir("cli-peer-method-names");
+    run({"demo", "-o", (dir / "demo").string()});
+    run({"decompose", (dir / "demo").string(), "--method", "least-squares", "-o", (dir / "long").string()});
+    run({"decompose", (dir / "demo").string(), "--method", "ls", "-o", (dir / "short").string()});
+    for (const char* name : {"y_greeting.csv", "z_greeting_hostile.csv", "arma_table.csv"}) {
+        INFO(name);
+        CHECK(readTextFile(dir / "long" / name) == readTextFile(dir / "short" / name));
+        CHECK_FALSE(readTextFile(dir / "long" / name).empty());
+    }
+    CHECK_FALSE(fs::exists(dir / "long" / "km2o_by_M.csv")); // least squares: no KM2O table
+}

@@ -104,3 +104,44 @@ TEST_CASE("a warp of more control points than allowed is refused before it is re
     for (int i = 0; i <= int(kMaxWarpPoints); ++i) points.push_back({i, i});
     CHECK_THAT(errorOf({{"design", {{"warp", points}}}}), Catch::Contains("expected null or 2..20000 control points"));
 }
+
+namespace {
+
+/// Every value of `Enum` the table names has one name, and that name reads back to it; the table
+/// holds `count` names.
+template <class Enum>
+void requireNamesRoundTrip(std::size_t count)
+{
+    const auto& names = parameterNames<Enum>();
+    CHECK(names.size() == count);
+    for (const auto& [name, value] : names) {
+        CHECK(parameterName(value) == name);
+        CHECK(parameterValue<Enum>(name) == value);
+    }
+    CHECK_FALSE(parameterValue<Enum>("no such name").has_value());
+    CHECK(parameterNameList<Enum>().size() == count);
+}
+
+} // namespace
+
+TEST_CASE("each enumerated parameter has one table of names, which the files and the command line read", "[pipeline][parameters]")
+{
+    requireNamesRoundTrip<PathMethod>(2);
+    requireNamesRoundTrip<DecomposeMethod>(2);
+    requireNamesRoundTrip<DecomposeInput>(2);
+    requireNamesRoundTrip<ChannelWeighting>(2);
+    requireNamesRoundTrip<LevelAlignment>(2);
+    requireNamesRoundTrip<FrontBackAxis>(2);
+    requireNamesRoundTrip<MassSource>(2);
+    requireNamesRoundTrip<SegmentTable>(2);
+    // The files write the tables' names.
+    ChainParameters parameters;
+    parameters.normalise.weighting = ChannelWeighting::Standardise;
+    parameters.axis.frontBack = FrontBackAxis::Principal;
+    parameters.axis.segments = SegmentTable::DeLevaFemale;
+    const auto json = toJson(parameters);
+    CHECK(json["normalise"]["weighting"] == parameterName(ChannelWeighting::Standardise));
+    CHECK(json["axis"]["frontBack"] == parameterName(FrontBackAxis::Principal));
+    CHECK(json["axis"]["segments"] == parameterName(SegmentTable::DeLevaFemale));
+    CHECK(json["decompose"]["method"] == parameterName(parameters.decompose.method));
+}
