@@ -15,9 +15,9 @@ ParameterCommand::ParameterCommand(Document* document, AnalysisParameters after,
     setText(text);
 }
 
-void ParameterCommand::undo() { m_document->applyParameters(m_before); }
+void ParameterCommand::undo() { m_document->applyParameters(m_before, {}); }
 
-void ParameterCommand::redo() { m_document->applyParameters(m_after); }
+void ParameterCommand::redo() { m_document->applyParameters(m_after, {}); }
 
 void ParameterCommand::setStep(const QString& control)
 {
@@ -87,13 +87,13 @@ ImportTake::ImportTake(Document* document, TakePointer take, const QString& labe
 void ImportTake::redo()
 {
     m_previousA = m_document->selectedId(TakeSlot::A);
-    m_document->insertImportedTake(m_take, int(m_document->derivedTakes().size()));
+    m_document->insertImportedTake(m_take, int(m_document->derivedTakes().size()), {});
     m_document->selectTake(TakeSlot::A, m_take.id);
 }
 
 void ImportTake::undo()
 {
-    m_document->removeImportedTake(m_take.id);
+    m_document->removeImportedTake(m_take.id, {});
     m_document->selectTake(TakeSlot::A, m_previousA);
 }
 
@@ -106,12 +106,12 @@ RemoveImportedTake::RemoveImportedTake(Document* document, const QString& id) : 
 
 void RemoveImportedTake::redo()
 {
-    if (m_position >= 0) m_document->removeImportedTake(m_take.id);
+    if (m_position >= 0) m_document->removeImportedTake(m_take.id, {});
 }
 
 void RemoveImportedTake::undo()
 {
-    if (m_position >= 0) m_document->insertImportedTake(m_take, m_position);
+    if (m_position >= 0) m_document->insertImportedTake(m_take, m_position, {});
 }
 
 AnalysisParameters editedParameters(const Document& document, const std::function<void(AnalysisParameters&)>& edit)

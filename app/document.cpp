@@ -200,7 +200,7 @@ void Document::endInteraction()
     emit interactionChanged(false);
 }
 
-void Document::applyParameters(const AnalysisParameters& values)
+void Document::applyParameters(const AnalysisParameters& values, CommandKey)
 {
     const int sections = changedSections(m_parameters, values);
     if (sections == 0) return;
@@ -227,7 +227,7 @@ int changedSections(const AnalysisParameters& a, const AnalysisParameters& b)
     return sections;
 }
 
-void Document::insertImportedTake(const DerivedTake& take, int position)
+void Document::insertImportedTake(const DerivedTake& take, int position, CommandKey)
 {
     position = std::clamp(position, 0, int(m_derived.size()));
     m_derived.insert(m_derived.begin() + position, take);
@@ -235,16 +235,18 @@ void Document::insertImportedTake(const DerivedTake& take, int position)
     emit derivedTakesChanged();
 }
 
-void Document::appendImportedTakes(std::vector<DerivedTake> takes)
+void Document::restoreProject(std::vector<DerivedTake> imported, const AnalysisParameters& parameters)
 {
-    if (takes.empty()) return;
-    m_derived.reserve(m_derived.size() + takes.size());
-    for (DerivedTake& take : takes) m_derived.push_back(std::move(take));
-    ++m_version;
-    emit derivedTakesChanged();
+    if (!imported.empty()) {
+        m_derived.reserve(m_derived.size() + imported.size());
+        for (DerivedTake& take : imported) m_derived.push_back(std::move(take));
+        ++m_version;
+        emit derivedTakesChanged();
+    }
+    restoreParameters(parameters);
 }
 
-void Document::removeImportedTake(const QString& id)
+void Document::removeImportedTake(const QString& id, CommandKey)
 {
     const int index = indexOfDerived(id);
     if (index < 0) return;

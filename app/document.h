@@ -157,13 +157,23 @@ public:
     qint64 clockMilliseconds() const;
     void setClock(std::function<qint64()> clock) { m_clock = std::move(clock); }
 
+    /// Opening a project: its imported takes (appended with one derivedTakesChanged: one rebuild
+    /// of the corpus browser for 10,000 takes, not one per take) and every parameter
+    /// (restoreParameters). Not undoable, clears the undo stack.
+    void restoreProject(std::vector<DerivedTake> imported, const AnalysisParameters& parameters);
+
+    /// What only the undo commands of app/commands.h can make: the mutators below take one, so
+    /// every undoable change goes through a command.
+    class CommandKey {
+        CommandKey() = default;
+        friend class ParameterCommand;
+        friend class ImportTake;
+        friend class RemoveImportedTake;
+    };
     // --- mutators for commands only (app/commands.cpp) ---
-    void applyParameters(const AnalysisParameters& values);
-    void insertImportedTake(const DerivedTake& take, int position);
-    /// Appends a project's imported takes with one derivedTakesChanged (one rebuild of the corpus
-    /// browser for 10,000 takes, not one per take).
-    void appendImportedTakes(std::vector<DerivedTake> takes);
-    void removeImportedTake(const QString& id);
+    void applyParameters(const AnalysisParameters& values, CommandKey);
+    void insertImportedTake(const DerivedTake& take, int position, CommandKey);
+    void removeImportedTake(const QString& id, CommandKey);
     int indexOfDerived(const QString& id) const;
     /// The next unused "imported/<n>" id.
     QString nextImportedId();

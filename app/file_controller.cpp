@@ -440,8 +440,7 @@ bool FileController::applyStateNow(const ProjectState& state)
                                        std::make_shared<const analysis::Take>(std::move(take).value()), recipe.path, QString(),
                                        std::make_shared<const analysis::io::ImportOptions>(recipe.options), nullptr, {}});
     }
-    m_document.appendImportedTakes(std::move(imported));
-    m_document.restoreParameters(state.parameters);
+    m_document.restoreProject(std::move(imported), state.parameters);
     // Live results are recomputed after opening: a live take shown as A or B is awaited and
     // shown when published (showPendingLiveTakes); until then A keeps the corpus's first take.
     const QString ids[2] = {state.takeA, state.takeB};

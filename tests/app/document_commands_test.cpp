@@ -7,6 +7,8 @@
 
 #include <QSignalSpy>
 
+#include <type_traits>
+
 using namespace bunraku;
 using namespace bunraku::app;
 
@@ -163,4 +165,29 @@ TEST_CASE("consecutive steps of one control are one undo step until the control 
     REQUIRE(document.undoStack()->count() == 4);
     setTau(document, 12); // not a step: its own undo step
     REQUIRE(document.undoStack()->count() == 5);
+}
+
+// Only the undo commands can call the document's mutators: outside them no key can be made.
+static_assert(!std::is_default_constructible_v<bunraku::app::Document::CommandKey>);
+static_assert(!std::is_invocable_v<decltype(&bunraku::app::Document::applyParameters), bunraku::app::Document&,
+                                   const bunraku::app::AnalysisParameters&>);
+
+TEST_CASE("a project's imported takes and parameters are restored at once, outside the undo stack", "[app][document]")
+{
+    Document document;
+    document.setCorpus(smallCorpus(), QStringLiteral("test"));
+    AnalysisParameters parameters;
+    parameters.normalise.tau = 7;
+    std::vector<DerivedTake> imported(1);
+    imported[0].id = document.nextImportedId();
+    imported[0].label = QStringLiteral("a take");
+    imported[0].take = test::syntheticPuppetTake(30);
+    QSignalSpy listed(&document, &Document::derivedTakesChanged);
+    QSignalSpy changed(&document, &Document::parametersChanged);
+    document.restoreProject(std::move(imported), parameters);
+    CHECK(listed.count() == 1);
+    CHECK(changed.count() == 1);
+    CHECK(document.take(QStringLiteral("imported/1")));
+    CHECK(document.parameters().normalise.tau == 7);
+    CHECK(document.undoStack()->count() == 0);
 }
