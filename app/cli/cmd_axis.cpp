@@ -169,37 +169,49 @@ void runAxis(const AxisCommandArguments& arguments)
 
 // ---- phase --------------------------------------------------------------------------------
 
+/// The defaults: the axis stage's (stage_parameters.h), as `bunraku analyse` runs it.
 struct PhaseArguments {
-    int tau = 4;
-    int tcmp = 30;
-    int maxScale = 16;
-    double approximationWeight = 8.0;
-    std::string path = "greedy";
-    std::string weighting = "none";
-    std::string level = "first-frame";
+    int tau = pl::AxisParameters{}.tau;
+    int tcmp = pl::AxisParameters{}.searchBand;
+    int maxScale = pl::AxisParameters{}.maxScale;
+    double approximationWeight = pl::AxisParameters{}.approximationWeight;
+    std::string path = pl::parameterName(pl::AxisParameters{}.path);
+    std::string weighting = pl::parameterName(an::ChannelWeighting::None);
+    std::string level = pl::parameterName(pl::AxisParameters{}.level);
     std::string timeScale = "auto";
-    int spacing = 8;
+    int spacing = pl::AxisParameters{}.controlSpacing;
 };
 
 void addPhaseOptions(CLI::App* command, PhaseArguments& arguments)
 {
     // Ranges from the analysis's table of limits (stage_parameters.h), stated by --help.
-    command->add_option("--tau", arguments.tau, "Half window tau, frames (default 4)")->check(CLI::Range(0, pl::kMaxTau));
-    command->add_option("--tcmp", arguments.tcmp, "Search band T_cmp, frames (default 30)")
-        ->check(CLI::Range(0, pl::kMaxSearchBand));
-    command->add_option("--max-scale", arguments.maxScale, "Scales 1..N (default 16)")->check(CLI::Range(1, pl::kMaxScale));
-    command->add_option("--weight", arguments.approximationWeight, "Approximation weight M (default 8)")
-        ->check(CLI::Range(0.0, pl::kMaxApproximationWeight));
-    command->add_option("--path", arguments.path, "greedy (thesis, default) or optimal")
-        ->check(namedParameterCheck<an::PathMethod>());
-    command->add_option("--weighting", arguments.weighting, "none (thesis, default) or standardise")
-        ->check(namedParameterCheck<an::ChannelWeighting>());
+    command->add_option("--tau", arguments.tau, "Half window tau, frames")->check(CLI::Range(0, pl::kMaxTau))->capture_default_str();
+    command->add_option("--tcmp", arguments.tcmp, "Search band T_cmp, frames")
+        ->check(CLI::Range(0, pl::kMaxSearchBand))
+        ->capture_default_str();
+    command->add_option("--max-scale", arguments.maxScale, "Scales 1..N")->check(CLI::Range(1, pl::kMaxScale))->capture_default_str();
+    // As `normalise` spells it (and the parameter files' approximationWeight); --weight, its
+    // old name here, is kept out of the help (`emotion --weight` is the emotion weight).
+    command->add_option("--approximation-weight", arguments.approximationWeight, "Weight M of the approximation term (eq. 5.17; 0 = off)")
+        ->check(CLI::Range(0.0, pl::kMaxApproximationWeight))
+        ->capture_default_str();
+    command->add_option("--weight", arguments.approximationWeight, "Old name of --approximation-weight")
+        ->check(CLI::Range(0.0, pl::kMaxApproximationWeight))
+        ->group("");
+    command->add_option("--path", arguments.path, "greedy (thesis) or optimal")
+        ->check(namedParameterCheck<an::PathMethod>())
+        ->capture_default_str();
+    command->add_option("--weighting", arguments.weighting, "none (thesis) or standardise")
+        ->check(namedParameterCheck<an::ChannelWeighting>())
+        ->capture_default_str();
     command->add_option("--level", arguments.level,
-                        "Level of each axis coordinate before the transform: first-frame (minus its first frame, default) "
+                        "Level of each axis coordinate before the transform: first-frame (minus its first frame) "
                         "or none (eq. 5.16 read literally)")
-        ->check(namedParameterCheck<an::LevelAlignment>());
-    command->add_option("--control-spacing", arguments.spacing, "Frames between warp control points (default 8)")
-        ->check(CLI::Range(1, pl::kMaxControlSpacing));
+        ->check(namedParameterCheck<an::LevelAlignment>())
+        ->capture_default_str();
+    command->add_option("--control-spacing", arguments.spacing, "Frames between warp control points")
+        ->check(CLI::Range(1, pl::kMaxControlSpacing))
+        ->capture_default_str();
     command->add_option("--time-scale", arguments.timeScale,
                         "Takes of other lengths: auto (default: a global time scale first when the lengths differ by more "
                         "than half of T_cmp), global (always) or none (the band alone)")

@@ -129,3 +129,21 @@ TEST_CASE("decompose --method takes the parameter files' name least-squares and 
     }
     CHECK_FALSE(fs::exists(dir / "long" / "km2o_by_M.csv")); // least squares: no KM2O table
 }
+
+TEST_CASE("phase spells the approximation weight as normalise and the parameter files do, its old --weight kept", "[cli][peer]")
+{
+    const auto normal = bunraku::test::bandaiDir() / "bye_normal_001.bvh";
+    const auto angry = bunraku::test::bandaiDir() / "bye_angry_001.bvh";
+    if (!bunraku::test::requireBandaiData(fs::exists(normal) && fs::exists(angry))) return;
+    const auto dir = bunraku::test::scratchDir("cli-peer-phase-names");
+    const auto phase = [&](const std::string& option, const std::string& value, const fs::path& out) {
+        run({"phase", "--reference", normal.string(), "--sample", angry.string(), option, value, "-o", out.string()});
+        return readTextFile(out);
+    };
+    const std::string spelled = phase("--approximation-weight", "2", dir / "spelled.csv");
+    CHECK(phase("--weight", "2", dir / "old.csv") == spelled);
+    CHECK(phase("--approximation-weight", "8", dir / "default.csv") != spelled); // the option is read
+    const auto help = runBunraku({"phase", "--help"});
+    CHECK(help.out.find("--approximation-weight") != std::string::npos);
+    CHECK(help.out.find("  --weight ") == std::string::npos); // the old name is not offered (--weighting is another)
+}
