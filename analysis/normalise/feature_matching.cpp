@@ -98,7 +98,10 @@ Result<MatchResult> matchBand(const Features& reference, const Features& sample,
 {
     const Eigen::Index referenceFrames = reference.rows();
     const Eigen::Index sampleFrames = sample.rows();
-    const Eigen::Index band = options.searchBand;
+    // A band wider than the takes adds only frames outside them: every reference frame and
+    // sample frame lie within max(N_ref, N_smp) - 1 of each other, so that band holds the same
+    // candidates, window sums and path (T_cmp 16000 on 106-frame takes did 150 times the work).
+    const Eigen::Index band = std::min<Eigen::Index>(options.searchBand, std::max(referenceFrames, sampleFrames) - 1);
     const Eigen::Index tau = options.tau;
     const Eigen::Index width = 2 * band + 1;
     // Rows of distances and window sums padded as the path's sliding rows need (0 and infinity).

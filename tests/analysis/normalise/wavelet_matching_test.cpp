@@ -170,3 +170,28 @@ TEST_CASE("correspondences resample the sample on the reference's time axis", "[
     CHECK(warped(1, 0) == Approx(22.5));
     CHECK(warped(2, 0) == Approx(40.0));
 }
+
+TEST_CASE("a search band wider than the takes finds the same correspondence and cost as the band that just spans them", "[matching]")
+{
+    // 106 and 90 frames: every pair of frames lies within 105 of each other.
+    const auto phi = sineWarp(9.0, 90, 2.0);
+    const Take reference = warpedTake([](double u) { return u; }, 106, 4);
+    const Take sample = warpedTake(phi, 90, 2);
+    for (auto path : {PathMethod::Greedy, PathMethod::Optimal}) {
+        MatchOptions spanning;
+        spanning.path = path;
+        spanning.searchBand = 105;
+        auto expected = matchChannels(armHandX(reference), armHandX(sample), spanning);
+        REQUIRE(expected.ok());
+        for (int band : {106, 300, 16000}) {
+            INFO("path " << int(path) << ", T_cmp " << band);
+            MatchOptions wide = spanning;
+            wide.searchBand = band;
+            auto match = matchChannels(armHandX(reference), armHandX(sample), wide);
+            REQUIRE(match.ok());
+            CHECK(match->correspondence == expected->correspondence);
+            CHECK(match->smoothWarp == expected->smoothWarp);
+            CHECK(match->cost == expected->cost); // bit for bit
+        }
+    }
+}
