@@ -163,8 +163,13 @@ TakePointer Document::publishLive(const QString& name, const QString& label, Tak
         m_derived[std::size_t(index)].perChannelDistance = distance;
         if (relabelled) emit takeLabelChanged(id);
         emit takeChanged(id);
+        bool shown = false;
         for (int slot = 0; slot < 2; ++slot)
-            if (m_selected[slot] == id) emit selectedTakeReplaced(TakeSlot(slot));
+            if (m_selected[slot] == id) {
+                shown = true;
+                emit selectedTakeReplaced(TakeSlot(slot));
+            }
+        if (shown) setCurrentTime(m_time); // a shorter take: the time stays inside the takes shown
         return take;
     }
     m_derived.push_back(DerivedTake{id, label, take, QString(), ghostId, nullptr, std::move(perChannelGhost), distance});

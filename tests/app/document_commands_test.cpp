@@ -191,3 +191,20 @@ TEST_CASE("a project's imported takes and parameters are restored at once, outsi
     CHECK(document.parameters().normalise.tau == 7);
     CHECK(document.undoStack()->count() == 0);
 }
+
+TEST_CASE("a shown live take replaced by a shorter one keeps the current time inside the takes shown", "[app][document]")
+{
+    Document document;
+    document.setCorpus(smallCorpus(), QStringLiteral("test"));
+    document.setLiveTake(QStringLiteral("axis"), QStringLiteral("long"), test::syntheticPuppetTake(200));
+    document.selectTake(TakeSlot::B, QStringLiteral("live/axis"));
+    document.setCurrentTime(document.duration());
+    const double longEnd = document.currentTime();
+    QSignalSpy replaced(&document, &Document::selectedTakeReplaced);
+    QSignalSpy moved(&document, &Document::currentTimeChanged);
+    document.setLiveTake(QStringLiteral("axis"), QStringLiteral("long"), test::syntheticPuppetTake(30));
+    CHECK(replaced.count() == 1);
+    CHECK(document.duration() < longEnd);
+    CHECK(document.currentTime() <= document.duration()); // a monkey seed found it past the end
+    CHECK(moved.count() == 1);
+}
