@@ -152,10 +152,7 @@ void GraphGrid::endInteraction()
     m_interacting = false;
     m_plot->setNotAntialiasedElements(QCP::aeNone);
     if (std::exchange(m_graphsOutOfViewHidden, false)) {
-        for (auto& graph : m_graphs) {
-            for (auto* layerable : std::initializer_list<QCPLayerable*>{graph.curves[0], graph.curves[1], graph.valueText, graph.cursor})
-                if (layerable) layerable->setVisible(true);
-        }
+        for (auto& graph : m_graphs) setGraphDrawn(graph, true);
         updateCursorItems(); // the moving points: shown where their take has a value
         m_rangesStale = true; // the full replot below draws them all
     }
@@ -429,11 +426,17 @@ void GraphGrid::drawOnlyGraphsInView()
     for (auto& graph : m_graphs) {
         const bool inView = graph.rect->outerRect().intersects(shown);
         m_graphsOutOfViewHidden = m_graphsOutOfViewHidden || !inView;
-        for (auto* layerable : std::initializer_list<QCPLayerable*>{graph.curves[0], graph.curves[1], graph.valueText, graph.cursor})
-            if (layerable) layerable->setVisible(inView);
+        setGraphDrawn(graph, inView);
         for (auto* point : graph.points)
             if (point && !inView) point->setVisible(false);
     }
+}
+
+void GraphGrid::setGraphDrawn(Graph& graph, bool drawn)
+{
+    // The moving points are not here: updateCursorItems shows them where their take has a value.
+    for (auto* layerable : std::initializer_list<QCPLayerable*>{graph.curves[0], graph.curves[1], graph.valueText, graph.cursor})
+        if (layerable) layerable->setVisible(drawn);
 }
 
 void GraphGrid::applyValueRanges()

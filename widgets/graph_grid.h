@@ -198,6 +198,8 @@ private:
     /// During an interaction: hides the curves and cursor items of graphs out of the scroll
     /// area's view.
     void drawOnlyGraphsInView();
+    /// Shows or hides a graph's curves, cursor line and value text (not its moving points).
+    static void setGraphDrawn(Graph& graph, bool drawn);
     void onMousePress(QMouseEvent* event);
     void onMouseMove(QMouseEvent* event);
     void onMouseRelease(QMouseEvent* event);
