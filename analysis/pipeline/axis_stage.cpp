@@ -1,6 +1,7 @@
 // The motion-axis stage (thesis 5: axes 5.2.1, phrases 5.2.2, phase 5.3, gains 5.4) and the
 // on-demand emotion weight (4.5) and design (5.5).
 #include "analysis/pipeline/stages.h"
+#include "analysis/pipeline/parameters_json.h"
 
 #include "analysis/axis/axis_channels.h"
 #include "analysis/axis/segment_inertia.h"
@@ -73,21 +74,7 @@ const CellAxis* AxisOutput::cell(const std::string& functionName, const std::str
 
 StageKey axisKey(StageKey normalised, const AxisParameters& p)
 {
-    return KeyBuilder("axes")
-        .add(normalised)
-        .add(int(p.frontBack))
-        .add(p.massSpacing)
-        .add(int(p.masses))
-        .add(int(p.segments))
-        .add(p.tau)
-        .add(p.searchBand)
-        .add(p.maxScale)
-        .add(p.approximationWeight)
-        .add(int(p.level))
-        .add(int(p.path))
-        .add(p.controlSpacing)
-        .add(p.refinementPasses)
-        .key();
+    return KeyBuilder("axes").add(normalised).add(parametersText(p)).key();
 }
 
 Result<AxisOutput> runAxes(const NormaliseOutput& normalised, const std::string& neutralEmotion, const AxisParameters& parameters,
@@ -187,7 +174,10 @@ Result<AxisOutput> runAxes(const NormaliseOutput& normalised, const std::string&
 
 StageKey takeAxisKey(StageKey take, const AxisParameters& p)
 {
-    return KeyBuilder("take-axis").add(take).add(int(p.frontBack)).add(p.massSpacing).add(int(p.masses)).add(int(p.segments)).key();
+    const nlohmann::json all = toJson(p);
+    nlohmann::json used = nlohmann::json::object();
+    for (const char* name : kTakeAxisParameters) used[name] = all.at(name);
+    return KeyBuilder("take-axis").add(take).add(used.dump()).key();
 }
 
 Result<TakeAxis> runTakeAxis(const Take& take, const AxisParameters& parameters, const RunControl& control)

@@ -1,6 +1,7 @@
 // The decomposition stage (thesis 4: least squares 4.3.1 or KM2O-Langevin 4.4.4) and the
 // fluctuation analysis of its eta (4.3.2: spectra, Table 4.1's ARMA parameters).
 #include "analysis/pipeline/stages.h"
+#include "analysis/pipeline/parameters_json.h"
 
 #include "analysis/core/parallel.h"
 
@@ -10,7 +11,7 @@ namespace bunraku::analysis::pipeline {
 
 StageKey decomposeKey(StageKey input, const DecomposeParameters& p)
 {
-    return KeyBuilder("decompose").add(input).add(int(p.input)).add(int(p.method)).add(p.correlationLength).key();
+    return KeyBuilder("decompose").add(input).add(parametersText(p)).key();
 }
 
 Result<DecomposeOutput> runDecompose(const Corpus& input, const DecomposeParameters& parameters, const RunControl& control)
@@ -36,7 +37,7 @@ Result<DecomposeOutput> runDecompose(const Corpus& input, const DecomposeParamet
 
 StageKey fluctuationKey(StageKey decomposed, const FluctuationParameters& p)
 {
-    return KeyBuilder("fluctuations").add(decomposed).add(p.armaP).add(p.armaQ).add(p.welchSegment).key();
+    return KeyBuilder("fluctuations").add(decomposed).add(parametersText(p)).key();
 }
 
 Result<FluctuationOutput> runFluctuations(const Decomposition& d, const FluctuationParameters& parameters, const RunControl& control)

@@ -1,5 +1,6 @@
 // The import and preprocess stages (thesis 2, 2.2) and the names of every stage.
 #include "analysis/pipeline/stages.h"
+#include "analysis/pipeline/parameters_json.h"
 #include "analysis/pipeline/heading_part.h"
 
 #include "analysis/core/skeleton.h"
@@ -71,16 +72,7 @@ std::string headingPartFor(const Corpus& corpus, const std::string& part)
 
 StageKey preprocessKey(StageKey corpus, const PreprocessParameters& p)
 {
-    return KeyBuilder("preprocess")
-        .add(corpus)
-        .add(p.pad)
-        .add(p.unwrap)
-        .add(p.alignStart)
-        .add(p.alignHeading)
-        .add(p.alignPosition)
-        .add(int(p.positionAlignment))
-        .add(p.referenceTakeIndex)
-        .key();
+    return KeyBuilder("preprocess").add(corpus).add(parametersText(p)).key();
 }
 
 Result<PreprocessOutput> runPreprocess(const Corpus& corpus, const PreprocessParameters& parameters, const RunControl& control)

@@ -8,8 +8,9 @@ StageKey kimonoKey(StageKey take, const BodyDescription& body, const ClothParame
     KeyBuilder builder("kimono");
     builder.add(take).add(std::int64_t(body.parts.size()));
     for (const BodyPart& part : body.parts) builder.add(part.name).add(Eigen::MatrixXd(part.fit.matrix()));
-    builder.add(p.massPerArea).add(p.stretchCompliance).add(p.bendCompliance).add(p.damping).add(p.drag).add(p.substepRate)
-        .add(p.collisionMargin).add(p.settleSeconds);
+    // Every parameter of the one table of cloth limits, by name: a parameter added to the table
+    // joins the key (stage_key_fields_test).
+    for (const ClothParameterLimit& limit : clothParameterLimits()) builder.add(limit.name).add(p.*limit.member);
     return builder.key();
 }
 

@@ -1,6 +1,7 @@
 // The normalisation stage (thesis 3): every cell normalised to its reference (3.6, 3.6.1),
 // evaluated (3.8) and averaged (3.7).
 #include "analysis/pipeline/stages.h"
+#include "analysis/pipeline/parameters_json.h"
 
 #include "analysis/core/parallel.h"
 #include "analysis/normalise/average_take.h"
@@ -127,15 +128,7 @@ const CellNormalisation* NormaliseOutput::cell(const std::string& function, cons
 
 StageKey normaliseKey(StageKey preprocessed, const NormaliseParameters& p)
 {
-    KeyBuilder builder("normalise");
-    builder.add(preprocessed).add(p.tau).add(p.searchBand).add(p.maxScale).add(p.coupling).add(int(p.path));
-    builder.add(int(p.weighting)).add(int(p.level)).add(p.approximationWeight).add(std::uint64_t(p.scales.size()));
-    for (double scale : p.scales) builder.add(scale);
-    builder.add(int(p.reference.kind)).add(p.reference.takeIndex).add(p.averageExcludesOutliers).add(p.averageBase);
-    builder.add(std::uint64_t(p.averageExcluded.size()));
-    for (int take : p.averageExcluded) builder.add(take);
-    for (const auto& [cell, choice] : p.cellReferences) builder.add(cell).add(int(choice.kind)).add(choice.takeIndex);
-    return builder.key();
+    return KeyBuilder("normalise").add(preprocessed).add(parametersText(p)).key();
 }
 
 Result<NormaliseOutput> runNormalise(const Corpus& preprocessed, const NormaliseParameters& parameters, const RunControl& control)

@@ -367,62 +367,84 @@ std::string methodName(DecomposeMethod method) { return parameterName(method); }
 
 std::string inputName(DecomposeInput input) { return parameterName(input); }
 
-json toJson(const ChainParameters& p)
+json toJson(const PreprocessParameters& p)
+{
+    return {{"pad", p.pad},
+            {"unwrap", p.unwrap},
+            {"alignStart", p.alignStart},
+            {"alignHeading", p.alignHeading},
+            {"alignPosition", p.alignPosition},
+            {"positionAlignment", preprocess::positionAlignmentName(p.positionAlignment)},
+            {"referenceTake", p.referenceTakeIndex}};
+}
+
+json toJson(const NormaliseParameters& p)
 {
     json cells = json::object();
-    for (const auto& [cell, choice] : p.normalise.cellReferences) cells[cell] = referenceJson(choice);
+    for (const auto& [cell, choice] : p.cellReferences) cells[cell] = referenceJson(choice);
+    return {{"tau", p.tau},
+            {"searchBand", p.searchBand},
+            {"maxScale", p.maxScale},
+            {"coupling", p.coupling},
+            {"path", pathName(p.path)},
+            {"reference", referenceJson(p.reference)},
+            {"cellReferences", cells},
+            {"averageExcludesOutliers", p.averageExcludesOutliers},
+            {"averageBase", p.averageBase},
+            {"averageExcluded", p.averageExcluded},
+            {"scales", p.scales},
+            {"weighting", parameterName(p.weighting)},
+            {"level", parameterName(p.level)},
+            {"approximationWeight", p.approximationWeight}};
+}
+
+json toJson(const DecomposeParameters& p)
+{
+    return {{"input", inputName(p.input)}, {"method", methodName(p.method)}, {"M", p.correlationLength}};
+}
+
+json toJson(const FluctuationParameters& p)
+{
+    return {{"armaP", p.armaP}, {"armaQ", p.armaQ}, {"welchSegment", p.welchSegment}};
+}
+
+json toJson(const AxisParameters& p)
+{
+    return {{"frontBack", parameterName(p.frontBack)},
+            {"massSpacing", p.massSpacing},
+            {"masses", parameterName(p.masses)},
+            {"segments", parameterName(p.segments)},
+            {"tau", p.tau},
+            {"searchBand", p.searchBand},
+            {"maxScale", p.maxScale},
+            {"approximationWeight", p.approximationWeight},
+            {"level", parameterName(p.level)},
+            {"path", pathName(p.path)},
+            {"controlSpacing", p.controlSpacing},
+            {"refinementPasses", p.refinementPasses}};
+}
+
+json toJson(const DesignEdits& d)
+{
     json warp = nullptr;
-    if (p.design.warp) {
+    if (d.warp) {
         warp = json::array();
-        for (const auto& point : p.design.warp->points) warp.push_back({point.output, point.source});
+        for (const auto& point : d.warp->points) warp.push_back({point.output, point.source});
     }
     json gains = json::array();
-    for (const auto& g : p.design.gains) gains.push_back({{"phrase", g.phrase}, {"dof", g.dof}, {"g0", g.g0}, {"g1", g.g1}});
+    for (const auto& g : d.gains) gains.push_back({{"phrase", g.phrase}, {"dof", g.dof}, {"g0", g.g0}, {"g1", g.g1}});
     json boundaries = "suggested";
-    if (!p.design.boundaries.suggested) {
+    if (!d.boundaries.suggested) {
         boundaries = json::array();
-        for (const Eigen::Index frame : p.design.boundaries.inner) boundaries.push_back(std::int64_t(frame));
+        for (const Eigen::Index frame : d.boundaries.inner) boundaries.push_back(std::int64_t(frame));
     }
-    return {{"preprocess",
-             {{"pad", p.preprocess.pad},
-              {"unwrap", p.preprocess.unwrap},
-              {"alignStart", p.preprocess.alignStart},
-              {"alignHeading", p.preprocess.alignHeading},
-              {"alignPosition", p.preprocess.alignPosition},
-              {"positionAlignment", preprocess::positionAlignmentName(p.preprocess.positionAlignment)},
-              {"referenceTake", p.preprocess.referenceTakeIndex}}},
-            {"normalise",
-             {{"tau", p.normalise.tau},
-              {"searchBand", p.normalise.searchBand},
-              {"maxScale", p.normalise.maxScale},
-              {"coupling", p.normalise.coupling},
-              {"path", pathName(p.normalise.path)},
-              {"reference", referenceJson(p.normalise.reference)},
-              {"cellReferences", cells},
-              {"averageExcludesOutliers", p.normalise.averageExcludesOutliers},
-              {"averageBase", p.normalise.averageBase},
-              {"averageExcluded", p.normalise.averageExcluded},
-              {"scales", p.normalise.scales},
-              {"weighting", parameterName(p.normalise.weighting)},
-              {"level", parameterName(p.normalise.level)},
-              {"approximationWeight", p.normalise.approximationWeight}}},
-            {"decompose",
-             {{"input", inputName(p.decompose.input)}, {"method", methodName(p.decompose.method)}, {"M", p.decompose.correlationLength}}},
-            {"fluctuations", {{"armaP", p.fluctuations.armaP}, {"armaQ", p.fluctuations.armaQ}, {"welchSegment", p.fluctuations.welchSegment}}},
-            {"axis",
-             {{"frontBack", parameterName(p.axis.frontBack)},
-              {"massSpacing", p.axis.massSpacing},
-              {"masses", parameterName(p.axis.masses)},
-              {"segments", parameterName(p.axis.segments)},
-              {"tau", p.axis.tau},
-              {"searchBand", p.axis.searchBand},
-              {"maxScale", p.axis.maxScale},
-              {"approximationWeight", p.axis.approximationWeight},
-              {"level", parameterName(p.axis.level)},
-              {"path", pathName(p.axis.path)},
-              {"controlSpacing", p.axis.controlSpacing},
-              {"refinementPasses", p.axis.refinementPasses}}},
-            {"design", {{"emotionWeight", p.design.emotionWeight}, {"warp", warp}, {"gains", gains}, {"boundaries", boundaries}}}};
+    return {{"emotionWeight", d.emotionWeight}, {"warp", warp}, {"gains", gains}, {"boundaries", boundaries}};
+}
+
+json toJson(const ChainParameters& p)
+{
+    return {{"preprocess", toJson(p.preprocess)}, {"normalise", toJson(p.normalise)}, {"decompose", toJson(p.decompose)},
+            {"fluctuations", toJson(p.fluctuations)}, {"axis", toJson(p.axis)}, {"design", toJson(p.design)}};
 }
 
 Result<ChainParameters> chainParametersFromJson(const json& value, const std::string& where)

@@ -31,6 +31,21 @@ namespace bunraku::analysis::pipeline {
 
 /// Every parameter, defaults included.
 nlohmann::json toJson(const ChainParameters& parameters);
+/// One section of it ("preprocess", "normalise", ...): also what a stage's key hashes
+/// (stageParametersText), so a parameter that reaches the file reaches the key.
+nlohmann::json toJson(const PreprocessParameters& parameters);
+nlohmann::json toJson(const NormaliseParameters& parameters);
+nlohmann::json toJson(const DecomposeParameters& parameters);
+nlohmann::json toJson(const FluctuationParameters& parameters);
+nlohmann::json toJson(const AxisParameters& parameters);
+nlohmann::json toJson(const DesignEdits& edits);
+/// What a stage's key hashes of its parameters: the section's JSON, keys sorted and numbers
+/// written to round trip, so every parameter the file holds changes the key.
+template <class Parameters>
+std::string parametersText(const Parameters& parameters)
+{
+    return toJson(parameters).dump();
+}
 
 /// Parses and validates; `where` ("session.bunraku.json: parameters") starts every message.
 Result<ChainParameters> chainParametersFromJson(const nlohmann::json& value, const std::string& where);

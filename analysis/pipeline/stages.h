@@ -187,8 +187,11 @@ struct TakeAxis {
     Take coordinates;
 };
 
-/// Keyed on the take's content (takeKey) and the axis parameters the axis depends on (the
-/// front-back axis and the mass-point spacing), so each take's axis is computed once.
+/// The axis parameters (their names in toJson) one take's axis depends on: the body's masses and
+/// the front-back axis; the matching and design parameters are the corpus axes' (axisKey).
+inline constexpr std::array<const char*, 4> kTakeAxisParameters{"frontBack", "massSpacing", "masses", "segments"};
+/// Keyed on the take's content (takeKey) and kTakeAxisParameters of the axis parameters, so each
+/// take's axis is computed once.
 StageKey takeAxisKey(StageKey take, const AxisParameters& parameters);
 /// On the default body (fitted to the take's skeleton when it has one), or on the performer's
 /// segments for a take of a skeleton's joints, with the parameters' axis options.
