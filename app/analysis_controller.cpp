@@ -19,14 +19,16 @@ namespace pl = analysis::pipeline;
 
 namespace {
 
-template <class T> StageValue erase(std::shared_ptr<const T> value) { return std::static_pointer_cast<const void>(std::move(value)); }
-
-/// A stage's result as the scheduler's value, or its error.
-template <class T> analysis::Result<StageValue> asValue(analysis::Result<pl::Shared<T>> result)
-{
-    if (!result) return result.error();
-    return erase<T>(std::move(result).value());
-}
+using Controller = AnalysisController;
+// Each slot with its result type (and its stage, where its results are filed in the cache).
+constexpr TypedSlot<pl::PreprocessOutput> kPreprocess{Controller::kPreprocessSlot, pl::Stage::Preprocess};
+constexpr TypedSlot<pl::NormaliseOutput> kNormalise{Controller::kNormaliseSlot, pl::Stage::Normalise};
+constexpr TypedSlot<pl::DecomposeOutput> kDecompose{Controller::kDecomposeSlot, pl::Stage::Decompose};
+constexpr TypedSlot<pl::AxisOutput> kAxes{Controller::kAxesSlot, pl::Stage::Axes};
+constexpr TypedSlot<analysis::BodyMotion> kNormalisedBody{Controller::kNormalisedBodySlot, std::nullopt};
+constexpr TypedSlot<analysis::BodyMotion> kWeightedBody{Controller::kWeightedSlot, std::nullopt};
+TypedSlot<pl::TakeAxis> takeAxisOf(TakeSlot slot) { return {Controller::takeAxisSlot(slot), std::nullopt}; }
+TypedSlot<analysis::KimonoSimulation> kimonoOf(TakeSlot slot) { return {Controller::kimonoSlot(slot), std::nullopt}; }
 
 } // namespace
 
@@ -50,8 +52,8 @@ QString AnalysisController::slotTitle(int slot)
 AnalysisController::AnalysisController(Document& document, QObject* parent, std::shared_ptr<Executor> executor)
     : QObject(parent),
       m_document(document),
-      m_scheduler(new StageScheduler(this, std::move(executor))),
-      m_stageCache(std::make_shared<pl::StageCache>(4))
+      m_stageCache(std::make_shared<pl::StageCache>()),
+      m_scheduler(new StageScheduler(this, std::move(executor), m_stageCache))
 {
     connect(m_scheduler, &StageScheduler::finished, this, &AnalysisController::stageFinished);
     connect(m_scheduler, &StageScheduler::failed, this, [this](int slot, const QString& message) {
@@ -129,29 +131,29 @@ void AnalysisController::update()
     m_keys = pl::chainKeys(m_corpus.key, parameters);
     auto cache = m_stageCache;
     const pl::CorpusInput corpus = m_corpus;
-    m_scheduler->request(kPreprocessSlot, m_keys.preprocess, [corpus, parameters, cache](const analysis::RunControl& control) {
-        return asValue(pl::preprocessStage(corpus, parameters.preprocess, cache.get(), control));
+    m_scheduler->request(kPreprocess, m_keys.preprocess, [corpus, parameters, cache](const analysis::RunControl& control) {
+        return pl::preprocessStage(corpus, parameters.preprocess, cache.get(), control);
     });
     // A stage starts once its input for the current keys is there; until then a running job of
     // an older key is cancelled (its inputs changed) and the last result stays shown.
-    const auto pre = m_scheduler->result<pl::PreprocessOutput>(kPreprocessSlot);
+    const auto pre = m_scheduler->result(kPreprocess);
     if (pre) {
         const pl::StageKey preKey = m_keys.preprocess;
-        m_scheduler->request(kNormaliseSlot, m_keys.normalise, [pre, preKey, parameters, cache](const analysis::RunControl& control) {
-            return asValue(pl::normaliseStage(preKey, *pre, parameters.normalise, cache.get(), control));
+        m_scheduler->request(kNormalise, m_keys.normalise, [pre, preKey, parameters, cache](const analysis::RunControl& control) {
+            return pl::normaliseStage(preKey, *pre, parameters.normalise, cache.get(), control);
         });
     } else {
         m_scheduler->clear(kNormaliseSlot);
     }
-    const auto normalised = m_scheduler->result<pl::NormaliseOutput>(kNormaliseSlot);
+    const auto normalised = m_scheduler->result(kNormalise);
     const bool fromNormalised = parameters.decompose.input == pl::DecomposeInput::Normalised;
     if (fromNormalised ? bool(normalised) : bool(pre)) {
         const pl::StageKey inputKey = fromNormalised ? m_keys.normalise : m_keys.preprocess;
         std::shared_ptr<const analysis::Corpus> input =
             fromNormalised ? std::shared_ptr<const analysis::Corpus>(normalised, &normalised->normalised)
                            : std::shared_ptr<const analysis::Corpus>(pre, &pre->corpus);
-        m_scheduler->request(kDecomposeSlot, m_keys.decompose, [input, inputKey, parameters, cache](const analysis::RunControl& control) {
-            return asValue(pl::decomposeStage(inputKey, *input, parameters.decompose, cache.get(), control));
+        m_scheduler->request(kDecompose, m_keys.decompose, [input, inputKey, parameters, cache](const analysis::RunControl& control) {
+            return pl::decomposeStage(inputKey, *input, parameters.decompose, cache.get(), control);
         });
     } else {
         m_scheduler->clear(kDecomposeSlot);
@@ -159,8 +161,8 @@ void AnalysisController::update()
     if (normalised) {
         const pl::StageKey normalisedKey = m_keys.normalise;
         const std::string neutral = m_corpus.corpus->neutralEmotion;
-        m_scheduler->request(kAxesSlot, m_keys.axes, [normalised, normalisedKey, neutral, parameters, cache](const analysis::RunControl& control) {
-            return asValue(pl::axisStage(normalisedKey, *normalised, neutral, parameters.axis, cache.get(), control));
+        m_scheduler->request(kAxes, m_keys.axes, [normalised, normalisedKey, neutral, parameters, cache](const analysis::RunControl& control) {
+            return pl::axisStage(normalisedKey, *normalised, neutral, parameters.axis, cache.get(), control);
         });
     } else {
         m_scheduler->clear(kAxesSlot);
@@ -171,34 +173,34 @@ void AnalysisController::stageFinished(int slot)
 {
     switch (slot) {
     case kPreprocessSlot:
-        m_preprocessed = m_scheduler->result<pl::PreprocessOutput>(slot);
+        m_preprocessed = m_scheduler->result(kPreprocess);
         update();
         break;
     case kNormaliseSlot:
         // Only a result for the current key is delivered: it was computed with these parameters.
-        m_normalised = m_scheduler->result<pl::NormaliseOutput>(slot);
+        m_normalised = m_scheduler->result(kNormalise);
         m_normalisedParameters = m_document.parameters().normalise;
         publishNormalised();
         update();
         break;
     case kDecomposeSlot:
-        m_decomposed = m_scheduler->result<pl::DecomposeOutput>(slot);
+        m_decomposed = m_scheduler->result(kDecompose);
         resolveCell();
         synthesiseWeighted();
         break;
     case kAxesSlot:
-        m_axes = m_scheduler->result<pl::AxisOutput>(slot);
+        m_axes = m_scheduler->result(kAxes);
         break;
     case kTakeAxisSlot: publishAxis(); break;
     case kKimonoSlot: publishKimono(); break;
     case kNormalisedBodySlot:
-        if (auto body = m_scheduler->result<analysis::BodyMotion>(slot)) {
+        if (auto body = m_scheduler->result(kNormalisedBody)) {
             const QScopedValueRollback<bool> publishing(m_publishing, true);
             m_document.setLiveBody(QStringLiteral("normalised"), m_pendingNormalisedLabel, *body, m_pendingNormalisedGhost);
         }
         break;
     case kWeightedSlot:
-        if (auto body = m_scheduler->result<analysis::BodyMotion>(slot)) {
+        if (auto body = m_scheduler->result(kWeightedBody)) {
             const QScopedValueRollback<bool> publishing(m_publishing, true);
             m_weightError.clear();
             m_weighted = m_document.setLiveBody(QStringLiteral("weighted"), m_pendingWeightedLabel, *body);
@@ -302,10 +304,10 @@ void AnalysisController::publishNormalised()
             m_pendingNormalisedLabel = label;
             m_pendingNormalisedGhost = idA;
             const pl::StageKey key = pl::KeyBuilder("normalised body").add(m_keys.normalise).add(idA.toStdString()).key();
-            m_scheduler->request(kNormalisedBodySlot, key, [take](const analysis::RunControl& control) -> analysis::Result<StageValue> {
+            m_scheduler->request(kNormalisedBody, key, [take](const analysis::RunControl& control) -> analysis::Result<pl::Shared<analysis::BodyMotion>> {
                 auto body = std::make_shared<const analysis::BodyMotion>(analysis::bodyMotion(*take, control));
                 if (control.cancelled()) return analysis::makeError(analysis::ErrorCode::Cancelled, "cancelled");
-                return erase<analysis::BodyMotion>(std::move(body));
+                return body;
             });
             return;
         }
@@ -334,17 +336,17 @@ void AnalysisController::synthesiseWeighted()
         // A long take: y + a z and its body off the GUI thread (stageFinished publishes it).
         m_pendingWeightedLabel = label;
         const pl::StageKey key = pl::KeyBuilder("weighted body").add(m_keys.decompose).add(function).add(emotion).add(weight).key();
-        m_scheduler->request(kWeightedSlot, key,
+        m_scheduler->request(kWeightedBody, key,
                              // Init-captures: clang 14 (the sanitizer builds) cannot capture structured bindings.
                              [decomposed = m_decomposed, function = function, emotion = emotion, weight](const analysis::RunControl& control)
-                                 -> analysis::Result<StageValue> {
+                                 -> analysis::Result<pl::Shared<analysis::BodyMotion>> {
                                  auto take = pl::weightedTake(*decomposed, function, emotion, weight);
                                  if (!take) return take.error();
                                  control.report(0.5);
                                  auto body = std::make_shared<const analysis::BodyMotion>(
                                      analysis::bodyMotion(std::move(take).value(), control.step(0.5, 1.0)));
                                  if (control.cancelled()) return analysis::makeError(analysis::ErrorCode::Cancelled, "cancelled");
-                                 return erase<analysis::BodyMotion>(std::move(body));
+                                 return body;
                              });
         return;
     }
@@ -364,7 +366,7 @@ void AnalysisController::synthesiseWeighted()
 
 void AnalysisController::publishAxis()
 {
-    const auto axis = m_scheduler->result<pl::TakeAxis>(kTakeAxisSlot);
+    const auto axis = m_scheduler->result(takeAxisOf(TakeSlot::A));
     if (!axis) return;
     const pl::Shared<analysis::Take> coordinates(axis, &axis->coordinates);
     // Named as the take it was computed from is listed (an imported file's name, a designed
@@ -402,11 +404,11 @@ void AnalysisController::requestTakeAxis(TakeSlot slot)
     const pl::AxisParameters parameters = m_document.parameters().axis;
     asked = take;
     label = m_document.takeLabel(m_document.selectedId(slot));
-    m_scheduler->request(id, pl::takeAxisKey(pl::takeKey(*take), parameters),
-                         [take, parameters](const analysis::RunControl& control) -> analysis::Result<StageValue> {
+    m_scheduler->request(takeAxisOf(slot), pl::takeAxisKey(pl::takeKey(*take), parameters),
+                         [take, parameters](const analysis::RunControl& control) -> analysis::Result<pl::Shared<pl::TakeAxis>> {
                              auto axis = pl::runTakeAxis(*take, parameters, control);
                              if (!axis) return axis.error();
-                             return erase<pl::TakeAxis>(std::make_shared<const pl::TakeAxis>(std::move(axis).value()));
+                             return std::make_shared<const pl::TakeAxis>(std::move(axis).value());
                          });
 }
 
@@ -456,23 +458,24 @@ void AnalysisController::requestKimono(TakeSlot slot)
         for (const Eigen::Vector3d& t : take->skeleton->staticTranslations) key.add(t.x()).add(t.y()).add(t.z());
     }
     const analysis::ClothParameters parameters = m_clothParameters;
-    m_scheduler->request(id, key.key(), [take, parameters](const analysis::RunControl& control) -> analysis::Result<StageValue> {
-        auto kimono = pl::runKimono(*take, viewBody(*take), parameters, control);
-        if (!kimono) return kimono.error();
-        return erase<analysis::KimonoSimulation>(std::make_shared<const analysis::KimonoSimulation>(std::move(kimono).value()));
-    });
+    m_scheduler->request(kimonoOf(slot), key.key(),
+                         [take, parameters](const analysis::RunControl& control) -> analysis::Result<pl::Shared<analysis::KimonoSimulation>> {
+                             auto kimono = pl::runKimono(*take, viewBody(*take), parameters, control);
+                             if (!kimono) return kimono.error();
+                             return std::make_shared<const analysis::KimonoSimulation>(std::move(kimono).value());
+                         });
 }
 
 pl::Shared<analysis::KimonoSimulation> AnalysisController::kimono(TakeSlot slot, const TakePointer& take) const
 {
     if (!take || m_kimonoTakes[slot == TakeSlot::A ? 0 : 1] != take) return nullptr;
-    return m_scheduler->result<analysis::KimonoSimulation>(kimonoSlot(slot));
+    return m_scheduler->result(kimonoOf(slot));
 }
 
 pl::Shared<pl::TakeAxis> AnalysisController::takeAxis(TakeSlot slot, const TakePointer& take) const
 {
     if (!take || m_axisTakes[slot == TakeSlot::A ? 0 : 1] != take) return nullptr;
-    return m_scheduler->result<pl::TakeAxis>(takeAxisSlot(slot));
+    return m_scheduler->result(takeAxisOf(slot));
 }
 
 analysis::Result<std::string> AnalysisController::reportHtml() const

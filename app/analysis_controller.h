@@ -31,9 +31,8 @@ namespace bunraku::app {
 class AnalysisController : public QObject {
     Q_OBJECT
 public:
-    /// Scheduler slots: the pipeline's stages, and the motion axes of takes A and B.
     /// Scheduler slots: the pipeline's stages, the motion axes of takes A and B, and the bodies of
-    /// long live takes (backgroundBodyFrames).
+    /// long live takes (backgroundBodyFrames). The .cpp gives each its result type (TypedSlot).
     enum Slot {
         kPreprocessSlot = 1,
         kNormaliseSlot = 2,
@@ -148,8 +147,10 @@ private:
     void publishKimono();
 
     Document& m_document;
-    StageScheduler* m_scheduler = nullptr;
+    /// The one cache: the scheduler's jobs' and the report's (runChain) stages, and the other
+    /// slots' results.
     std::shared_ptr<analysis::pipeline::StageCache> m_stageCache;
+    StageScheduler* m_scheduler = nullptr;
     analysis::pipeline::CorpusInput m_corpus;
     analysis::pipeline::ChainKeys m_keys;
     analysis::pipeline::Shared<analysis::pipeline::PreprocessOutput> m_preprocessed;

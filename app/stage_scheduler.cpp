@@ -49,7 +49,7 @@ StageScheduler::StageScheduler(QObject* parent, std::shared_ptr<Executor> execut
                                std::shared_ptr<analysis::pipeline::StageCache> cache)
     : QObject(parent),
       m_executor(executor ? std::move(executor) : std::make_shared<ThreadPoolExecutor>()),
-      m_cache(cache ? std::move(cache) : std::make_shared<analysis::pipeline::StageCache>(32)),
+      m_cache(cache ? std::move(cache) : std::make_shared<analysis::pipeline::StageCache>()),
       m_alive(std::make_shared<std::atomic<bool>>(true)),
       m_threads(analysis::resolveThreads(0))
 {
@@ -80,18 +80,19 @@ void StageScheduler::release(int slotId, Slot& slot)
     slot.stop.reset();
 }
 
-void StageScheduler::request(int slotId, StageKey key, StageWork work)
+void StageScheduler::request(int slotId, StageKey key, StageWork work, std::optional<analysis::pipeline::Stage> stage)
 {
     Slot& slot = m_slots[slotId];
     if (slot.key == key && (slot.job != 0 || slot.state == SlotState::Finished || slot.state == SlotState::Failed)) return;
     release(slotId, slot); // its inputs changed: the running job is of no use to it
     slot.key = key;
+    slot.stage = stage;
     slot.value.reset();
     slot.error.clear();
     slot.progress = 0.0;
     // A key names its result (a stage's key is seeded with the stage's name): any slot asking
-    // for a key finds what any slot computed under it.
-    if (StageValue cached = m_cache->find<void>(analysis::pipeline::Stage(0), key)) {
+    // for a key finds what any slot, or the stage run elsewhere on the same cache, computed.
+    if (StageValue cached = m_cache->find<void>(stage, key)) {
         slot.value = std::move(cached);
         slot.state = SlotState::Finished;
         slot.progress = 1.0;
@@ -131,7 +132,7 @@ void StageScheduler::request(int slotId, StageKey key, StageWork work)
     QPointer<StageScheduler> self(this);
     auto alive = m_alive;
     auto stop = slot.stop;
-    m_executor->run([self, alive, stop, job, key, threads = m_threads, work = std::move(work)] {
+    m_executor->run([self, alive, stop, job, key, stage, threads = m_threads, work = std::move(work)] {
         analysis::RunControl control{stop->get_token(), [self, alive, job](double fraction) {
                                          if (!*alive) return;
                                          QMetaObject::invokeMethod(
@@ -158,16 +159,17 @@ void StageScheduler::request(int slotId, StageKey key, StageWork work)
         if (!*alive) return;
         QMetaObject::invokeMethod(
             self.data(),
-            [self, job, key, result = std::move(result)]() mutable {
-                if (self) self->deliver(job, key, std::move(result));
+            [self, job, key, stage, result = std::move(result)]() mutable {
+                if (self) self->deliver(job, key, stage, std::move(result));
             },
             Qt::QueuedConnection);
     });
 }
 
-void StageScheduler::deliver(quint64 job, StageKey key, analysis::Result<StageValue> result)
+void StageScheduler::deliver(quint64 job, StageKey key, std::optional<analysis::pipeline::Stage> stage, analysis::Result<StageValue> result)
 {
-    if (result.ok()) m_cache->store<void>(analysis::pipeline::Stage(0), key, *result);
+    // A stage function stored its result already; storing it again marks it the most recent.
+    if (result.ok()) m_cache->store<void>(stage, key, *result);
     // Every slot still waiting for this job; a job whose inputs changed meanwhile (or that was
     // cleared) has none and is never shown.
     std::vector<int> waiting;

@@ -7,7 +7,9 @@
 ///    cancelled only when its own inputs change (an emotion-weight drag never restarts a running
 ///    normalisation);
 ///  - a new key cancels the slot's running job (its std::stop_token) and starts the new one,
-///    or takes the result from the cache (pipeline::StageCache) at once;
+///    or takes the result from the cache (pipeline::StageCache) at once. The cache is the one
+///    the pipeline's stage functions fill (a stage slot's result is filed with its stage's
+///    results, the others apart), shared with whoever runs the stages outside the scheduler;
 ///  - a key names its result, whichever slot asks: a slot asking for a key another slot
 ///    computed takes it from the cache, one asking for a key another slot is computing waits for
 ///    that job (a job is cancelled only when no slot waits for it any more);
@@ -26,7 +28,9 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <stop_token>
+#include <type_traits>
 
 namespace bunraku::app {
 
@@ -49,17 +53,39 @@ using StageWork = std::function<analysis::Result<StageValue>(const analysis::Run
 
 enum class SlotState { Idle, Running, Finished, Failed };
 
+/// A slot with the type of its result: what it computes cannot be read as another type.
+/// `stage`: the pipeline stage its jobs run (their results are filed in the cache with that
+/// stage's); none for the other results (a take's motion axis or kimono, a live take's body).
+template <class T> struct TypedSlot {
+    int id = 0;
+    std::optional<analysis::pipeline::Stage> stage;
+};
+/// A typed slot's job.
+template <class T> using TypedWork = std::function<analysis::Result<analysis::pipeline::Shared<T>>(const analysis::RunControl& control)>;
+
 class StageScheduler : public QObject {
     Q_OBJECT
 public:
-    /// `executor` null: the thread pool. `cache` null: a cache of its own.
+    /// `executor` null: the thread pool. `cache` null: a cache of its own (StageCache's sizes).
     explicit StageScheduler(QObject* parent = nullptr, std::shared_ptr<Executor> executor = {},
                             std::shared_ptr<analysis::pipeline::StageCache> cache = {});
     ~StageScheduler() override;
 
     /// Asks for `slot` computed under `key` by `work`. Nothing happens when the slot already
     /// computes or shows `key`; a cached result is delivered at once (finished() emitted).
-    void request(int slot, analysis::pipeline::StageKey key, StageWork work);
+    /// `stage`: see TypedSlot.
+    void request(int slot, analysis::pipeline::StageKey key, StageWork work, std::optional<analysis::pipeline::Stage> stage = std::nullopt);
+    template <class T> void request(TypedSlot<T> slot, analysis::pipeline::StageKey key, std::type_identity_t<TypedWork<T>> work)
+    {
+        request(
+            slot.id, key,
+            [work = std::move(work)](const analysis::RunControl& control) -> analysis::Result<StageValue> {
+                auto result = work(control);
+                if (!result) return result.error();
+                return StageValue(std::move(result).value());
+            },
+            slot.stage);
+    }
     /// Nothing to compute for `slot` (no input): cancels it and forgets its result.
     void clear(int slot);
     /// Cancels every job (closing): nothing more is delivered.
@@ -67,6 +93,7 @@ public:
 
     /// The slot's result for its current key, null while computing or after a failure.
     template <class T> std::shared_ptr<const T> result(int slot) const { return std::static_pointer_cast<const T>(value(slot)); }
+    template <class T> std::shared_ptr<const T> result(TypedSlot<T> slot) const { return result<T>(slot.id); }
     StageValue value(int slot) const;
     analysis::pipeline::StageKey key(int slot) const;
     SlotState state(int slot) const;
@@ -91,6 +118,7 @@ signals:
 private:
     struct Slot {
         analysis::pipeline::StageKey key;
+        std::optional<analysis::pipeline::Stage> stage; ///< where its results are filed in the cache
         quint64 job = 0; ///< id of the job computing `key`, 0 when none runs
         std::shared_ptr<std::stop_source> stop;
         StageValue value;
@@ -99,7 +127,8 @@ private:
         double progress = 0.0;
         int starts = 0;
     };
-    void deliver(quint64 job, analysis::pipeline::StageKey key, analysis::Result<StageValue> result);
+    void deliver(quint64 job, analysis::pipeline::StageKey key, std::optional<analysis::pipeline::Stage> stage,
+                 analysis::Result<StageValue> result);
     /// Leaves the slot's job (stopped when no other slot waits for it).
     void release(int slotId, Slot& slot);
 

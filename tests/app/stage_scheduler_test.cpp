@@ -220,6 +220,43 @@ TEST_CASE("a changed tau recomputes normalisation and what depends on it, nothin
     CHECK(scheduler.key(AnalysisController::kNormaliseSlot) == analysis.keys().normalise);
 }
 
+TEST_CASE("the scheduler's cache is the stages' own: each stage runs once, the report and an undo find them there",
+          "[app][scheduler][cache]")
+{
+    namespace pl = analysis::pipeline;
+    auto executor = std::make_shared<ManualExecutor>();
+    Document document;
+    AnalysisController analysis(document, nullptr, executor);
+    document.setCorpus(analysis::synth::generateDemoCorpus().corpus, QStringLiteral("demo"));
+    executor->drain();
+    pl::StageCache& cache = analysis.scheduler().cache();
+    // The stage functions counted their runs in the scheduler's cache: it is theirs.
+    for (pl::Stage stage : {pl::Stage::Preprocess, pl::Stage::Normalise, pl::Stage::Decompose, pl::Stage::Axes}) {
+        INFO(pl::stageName(stage));
+        CHECK(cache.runs(stage) == 1);
+        CHECK(cache.find<void>(stage, analysis.keys().of(stage)));
+    }
+    CHECK(cache.find<pl::NormaliseOutput>(pl::Stage::Normalise, analysis.keys().normalise) == analysis.normalised());
+    // The report runs the whole chain on the GUI thread: every stage the jobs ran is found, only
+    // the fluctuations (no slot) are computed.
+    REQUIRE(analysis.reportHtml());
+    CHECK(cache.runs(pl::Stage::Normalise) == 1);
+    CHECK(cache.runs(pl::Stage::Decompose) == 1);
+    CHECK(cache.runs(pl::Stage::Fluctuations) == 1);
+    // A changed tau and its undo: the first normalisation comes back from the cache, no job.
+    auto& scheduler = analysis.scheduler();
+    const auto first = analysis.normalised();
+    changeStageParameters(document, [](AnalysisParameters& p) { p.normalise.tau = 5; }, QStringLiteral("tau"));
+    executor->drain();
+    CHECK(cache.runs(pl::Stage::Normalise) == 2);
+    const int starts = scheduler.starts(AnalysisController::kNormaliseSlot);
+    document.undoStack()->undo();
+    executor->drain();
+    CHECK(analysis.normalised() == first);
+    CHECK(scheduler.starts(AnalysisController::kNormaliseSlot) == starts);
+    CHECK(cache.runs(pl::Stage::Normalise) == 2);
+}
+
 TEST_CASE("slots asking for one key share one job and its result", "[app][scheduler]")
 {
     auto executor = std::make_shared<ManualExecutor>();
