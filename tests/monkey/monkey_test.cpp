@@ -85,15 +85,22 @@ void writeFile(const std::filesystem::path& file, const std::string& bytes)
 
 /// The files the monkey opens: the Bandai corpus (made now with the corpus builder that `bunraku
 /// corpus` runs; never committed), take files, and bad files that must be refused.
+/// Its folders are the process's own (named by its id): monkeys run side by side in one build
+/// (seeds on both cores) never touch each other's files.
+std::string monkeyScratch(const std::string& name)
+{
+    return name + "-" + std::to_string(QCoreApplication::applicationPid());
+}
+
 test::MonkeyFiles monkeyFiles()
 {
     test::MonkeyFiles files;
-    const auto scratch = test::scratchDir("monkey");
+    const auto scratch = test::scratchDir(monkeyScratch("monkey"));
     files.scratch = QString::fromStdString(scratch.string());
     const auto bandai = test::bandaiCorpusFolder(
         {"wave-right-hand_normal_001.bvh", "wave-right-hand_normal_002.bvh", "wave-right-hand_active_001.bvh",
          "wave-right-hand_active_002.bvh"},
-        "monkey-bandai", "waves");
+        monkeyScratch("monkey-bandai"), "waves");
     if (!bandai.empty()) {
         files.corpora << QString::fromStdString(bandai.string());
         files.takes << QString::fromStdString((test::bandaiDir() / "wave-right-hand_exhausted_001.bvh").string());
@@ -201,6 +208,9 @@ TEST_CASE("the monkey: random user actions on the demo and Bandai corpora keep e
         window.reset();
         QCoreApplication::processEvents();
     }
+    // Its own folders go (a failed run keeps them, to look at).
+    std::filesystem::remove_all(files.scratch.toStdString());
+    std::filesystem::remove_all(test::scratchRoot() / monkeyScratch("monkey-bandai"));
     checkLeaksNow();
     std::printf("monkey: %llu actions on %llu seeds from %llu, 0 failures\n", (unsigned long long)total,
                 (unsigned long long)seeds, (unsigned long long)firstSeed);

@@ -12,10 +12,13 @@ inline std::filesystem::path sourceDir() { return BUNRAKU_SOURCE_DIR; }
 inline std::filesystem::path sharedDataDir() { return std::filesystem::path(BUNRAKU_SHARED_DIR) / "data"; }
 inline std::filesystem::path bandaiDir() { return sharedDataDir() / "bandai"; }
 
+/// Where the tests' scratch folders are.
+inline std::filesystem::path scratchRoot() { return std::filesystem::path(BUNRAKU_BINARY_DIR) / "test-scratch"; }
+
 /// An empty folder under the build tree for one test's files.
 inline std::filesystem::path scratchDir(const std::string& name)
 {
-    auto dir = std::filesystem::path(BUNRAKU_BINARY_DIR) / "test-scratch" / name;
+    auto dir = scratchRoot() / name;
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     return dir;
