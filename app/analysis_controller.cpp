@@ -62,7 +62,7 @@ AnalysisController::AnalysisController(Document& document, QObject* parent, std:
         emit weightedChanged();
     });
     connect(&document, &Document::corpusChanged, this, &AnalysisController::corpusChanged);
-    connect(&document, &Document::parametersChanged, this, [this](int sections) {
+    connect(&document, &Document::parametersChanged, this, [this](ParameterSections sections) {
         if (sections & (kPreprocessSection | kNormaliseSection | kDecomposeSection | kAxisSection)) update();
         if (sections & kWeightSection) synthesiseWeighted();
         if (sections & kAxisSection) {

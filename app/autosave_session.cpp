@@ -104,14 +104,14 @@ QString describeProjectFile(const QString& file)
     QStringList parts{corpus};
     if (!state->imported.isEmpty()) parts << QObject::tr("%n imported take(s)", nullptr, int(state->imported.size()));
     // Which parts of the analysis were edited (against the defaults).
-    const int sections = changedSections(state->parameters, AnalysisParameters{});
-    const std::pair<int, const char*> names[] = {
+    const ParameterSections sections = changedSections(state->parameters, AnalysisParameters{});
+    const std::pair<ParameterSection, const char*> names[] = {
         {kPreprocessSection, "preprocessing"}, {kNormaliseSection, "normalisation"}, {kDecomposeSection, "decomposition"},
         {kFluctuationSection, "fluctuations"}, {kAxisSection, "motion axis"},     {kWeightSection, "emotion weight"},
         {kWarpSection, "warp"},                {kGainSection, "gains"},           {kBoundarySection, "phrase boundaries"}};
     QStringList edited;
     for (const auto& [section, name] : names)
-        if (sections & section) edited << QObject::tr(name);
+        if (sections.testFlag(section)) edited << QObject::tr(name);
     if (!edited.isEmpty()) parts << QObject::tr("edited %1").arg(edited.join(QStringLiteral(", ")));
     return parts.join(QStringLiteral(", "));
 }

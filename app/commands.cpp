@@ -4,20 +4,76 @@
 
 namespace bunraku::app {
 
-ParameterCommand::ParameterCommand(Document* document, AnalysisParameters after, const QString& text, int id, int merging)
+ParameterPart::ParameterPart(const AnalysisParameters& p, ParameterSections sections) : m_sections(sections)
+{
+    if (sections.testFlag(kPreprocessSection)) m_preprocess = p.preprocess;
+    if (sections.testFlag(kNormaliseSection)) m_normalise = p.normalise;
+    if (sections.testFlag(kDecomposeSection)) m_decompose = p.decompose;
+    if (sections.testFlag(kFluctuationSection)) m_fluctuations = p.fluctuations;
+    if (sections.testFlag(kAxisSection)) m_axis = p.axis;
+    if (sections.testFlag(kWeightSection)) m_weight = p.design.emotionWeight;
+    if (sections.testFlag(kWarpSection)) m_warp = p.design.warp;
+    if (sections.testFlag(kGainSection)) m_gains = p.design.gains;
+    if (sections.testFlag(kBoundarySection)) m_boundaries = p.design.boundaries;
+}
+
+void ParameterPart::applyTo(AnalysisParameters& p) const
+{
+    if (m_preprocess) p.preprocess = *m_preprocess;
+    if (m_normalise) p.normalise = *m_normalise;
+    if (m_decompose) p.decompose = *m_decompose;
+    if (m_fluctuations) p.fluctuations = *m_fluctuations;
+    if (m_axis) p.axis = *m_axis;
+    if (m_sections.testFlag(kWeightSection)) p.design.emotionWeight = m_weight;
+    if (m_sections.testFlag(kWarpSection)) p.design.warp = m_warp;
+    if (m_sections.testFlag(kGainSection)) p.design.gains = m_gains;
+    if (m_sections.testFlag(kBoundarySection)) p.design.boundaries = m_boundaries;
+}
+
+void ParameterPart::addMissing(const ParameterPart& other)
+{
+    const ParameterSections missing = other.m_sections & ~m_sections;
+    if (!missing) return;
+    // Both parts' values on one set of parameters, this one's last: its own sections stay.
+    AnalysisParameters values;
+    other.applyTo(values);
+    applyTo(values);
+    *this = ParameterPart(values, m_sections | missing);
+}
+
+bool ParameterPart::operator==(const ParameterPart& other) const
+{
+    if (m_sections != other.m_sections) return false;
+    AnalysisParameters mine, theirs;
+    applyTo(mine);
+    other.applyTo(theirs);
+    return !changedSections(mine, theirs);
+}
+
+ParameterCommand::ParameterCommand(Document* document, const AnalysisParameters& after, const QString& text, int id, int merging)
     : m_document(document),
-      m_before(document->parameters()),
-      m_after(std::move(after)),
       m_id(id),
       m_merging(merging),
       m_interaction(document->interactionId())
 {
+    const ParameterSections sections = changedSections(document->parameters(), after);
+    m_before = ParameterPart(document->parameters(), sections);
+    m_after = ParameterPart(after, sections);
     setText(text);
 }
 
-void ParameterCommand::undo() { m_document->applyParameters(m_before, {}); }
+void ParameterCommand::apply(const ParameterPart& part)
+{
+    // The other sections are what they were when this command was done or undone (the stack's
+    // order): only its own change is made.
+    AnalysisParameters parameters = m_document->parameters();
+    part.applyTo(parameters);
+    m_document->applyParameters(parameters, {});
+}
 
-void ParameterCommand::redo() { m_document->applyParameters(m_after, {}); }
+void ParameterCommand::undo() { apply(m_before); }
+
+void ParameterCommand::redo() { apply(m_after); }
 
 void ParameterCommand::setStep(const QString& control)
 {
@@ -35,7 +91,11 @@ bool ParameterCommand::mergeWith(const QUndoCommand* other)
                            next->m_stepMilliseconds >= m_stepMilliseconds &&
                            next->m_stepMilliseconds - m_stepMilliseconds <= kStepMergeMilliseconds;
     if (!sameDrag && !sameSteps) return false;
-    m_after = next->m_after;
+    // A section only the next step changed was, before this command, what the next one found.
+    m_before.addMissing(next->m_before);
+    ParameterPart after = next->m_after;
+    after.addMissing(m_after);
+    m_after = after;
     m_stepMilliseconds = next->m_stepMilliseconds;
     setText(next->text()); // "Set T_cmp to 30 frames": the value the merged steps ended at
     setObsolete(m_after == m_before);
@@ -123,7 +183,7 @@ AnalysisParameters editedParameters(const Document& document, const std::functio
 
 bool pushParameters(Document& document, ParameterCommand* command, const QString& step)
 {
-    if (command->after() == document.parameters()) {
+    if (!command->sections()) {
         delete command;
         return false;
     }

@@ -1,7 +1,8 @@
 #pragma once
 /// The undo commands: the only mutators of the document's undoable state (Tiled's
 /// changevalue.h / changelayer.h). One class per verb-noun whose merging rule differs; each
-/// holds the typed parameters before and after and emits the document's typed signals.
+/// holds the values of the sections it changes, before and after (ParameterPart: a warp drag
+/// holds two warps, a weight step two numbers), and emits the document's typed signals.
 ///
 /// Merging: inside a document interaction (Document::beginInteraction, a slider or curve drag)
 /// consecutive commands of one class merge into one undo step back to the value before the
@@ -16,6 +17,8 @@
 #include <QUndoCommand>
 
 #include <functional>
+#include <optional>
+#include <vector>
 
 namespace bunraku::app {
 
@@ -31,7 +34,34 @@ enum CommandId {
 /// Steps of one control merge while each comes within this many milliseconds of the previous.
 inline constexpr qint64 kStepMergeMilliseconds = 1000;
 
-/// Replaces the analysis parameters; the base of every parameter command.
+/// The values of some sections of the parameters (ParameterSections), the others not held.
+class ParameterPart {
+public:
+    ParameterPart() = default;
+    /// `parameters`' values of `sections`.
+    ParameterPart(const AnalysisParameters& parameters, ParameterSections sections);
+    ParameterSections sections() const { return m_sections; }
+    /// Sets the held sections of `parameters` to the held values.
+    void applyTo(AnalysisParameters& parameters) const;
+    /// Takes the sections of `other` this part does not hold.
+    void addMissing(const ParameterPart& other);
+    /// The same sections with the same values.
+    bool operator==(const ParameterPart& other) const;
+
+private:
+    ParameterSections m_sections;
+    std::optional<analysis::pipeline::PreprocessParameters> m_preprocess;
+    std::optional<analysis::pipeline::NormaliseParameters> m_normalise;
+    std::optional<analysis::pipeline::DecomposeParameters> m_decompose;
+    std::optional<analysis::pipeline::FluctuationParameters> m_fluctuations;
+    std::optional<analysis::pipeline::AxisParameters> m_axis;
+    double m_weight = 0.0;
+    std::optional<analysis::WarpCurve> m_warp;
+    std::vector<analysis::pipeline::GainEdit> m_gains;
+    analysis::pipeline::PhraseBoundaries m_boundaries;
+};
+
+/// Changes some sections of the analysis parameters; the base of every parameter command.
 class ParameterCommand : public QUndoCommand {
 public:
     void undo() override;
@@ -41,16 +71,20 @@ public:
 
     /// Marks the change as one step of `control` (a name unique to the control), made now.
     void setStep(const QString& control);
-    const AnalysisParameters& after() const { return m_after; }
+    /// The sections it changes (none: it changes nothing and is not pushed).
+    ParameterSections sections() const { return m_after.sections(); }
 
 protected:
     enum Merging { Never = 0, InDrag = 1, InSteps = 2 };
-    ParameterCommand(Document* document, AnalysisParameters after, const QString& text, int id, int merging);
+    /// Holds the sections in which `after` differs from the document's parameters now.
+    ParameterCommand(Document* document, const AnalysisParameters& after, const QString& text, int id, int merging);
 
 private:
+    void apply(const ParameterPart& part);
+
     Document* m_document;
-    AnalysisParameters m_before;
-    AnalysisParameters m_after;
+    ParameterPart m_before;
+    ParameterPart m_after;
     int m_id;
     int m_merging;
     int m_interaction;

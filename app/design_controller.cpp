@@ -79,7 +79,7 @@ DesignController::DesignController(Document& document, AnalysisController& analy
     connect(&document, &Document::selectionChanged, this, [this](TakeSlot slot) {
         if (slot == TakeSlot::A) resolveInputs();
     });
-    connect(&document, &Document::parametersChanged, this, [this](int sections) {
+    connect(&document, &Document::parametersChanged, this, [this](ParameterSections sections) {
         if (sections & (kWarpSection | kGainSection | kBoundarySection)) redesign();
     });
 }

@@ -179,11 +179,11 @@ TakePointer Document::publishLive(const QString& name, const QString& label, Tak
 
 void Document::restoreParameters(const AnalysisParameters& values)
 {
-    const int sections = changedSections(m_parameters, values);
+    const ParameterSections sections = changedSections(m_parameters, values);
     m_parameters = values;
     m_undo.clear();
     ++m_version;
-    if (sections != 0) emit parametersChanged(sections);
+    if (sections) emit parametersChanged(sections);
 }
 
 qint64 Document::clockMilliseconds() const
@@ -207,16 +207,16 @@ void Document::endInteraction()
 
 void Document::applyParameters(const AnalysisParameters& values, CommandKey)
 {
-    const int sections = changedSections(m_parameters, values);
-    if (sections == 0) return;
+    const ParameterSections sections = changedSections(m_parameters, values);
+    if (!sections) return;
     m_parameters = values;
     ++m_version;
     emit parametersChanged(sections);
 }
 
-int changedSections(const AnalysisParameters& a, const AnalysisParameters& b)
+ParameterSections changedSections(const AnalysisParameters& a, const AnalysisParameters& b)
 {
-    int sections = 0;
+    ParameterSections sections;
     if (!(a.preprocess == b.preprocess)) sections |= kPreprocessSection;
     if (!(a.normalise == b.normalise)) sections |= kNormaliseSection;
     if (!(a.decompose == b.decompose)) sections |= kDecomposeSection;

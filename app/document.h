@@ -47,8 +47,10 @@ enum ParameterSection : int {
     kBoundarySection = 256,
     kDesignSections = kWeightSection | kWarpSection | kGainSection | kBoundarySection,
 };
+Q_DECLARE_FLAGS(ParameterSections, ParameterSection)
+Q_DECLARE_OPERATORS_FOR_FLAGS(ParameterSections)
 /// The sections in which `a` and `b` differ.
-int changedSections(const AnalysisParameters& a, const AnalysisParameters& b);
+ParameterSections changedSections(const AnalysisParameters& a, const AnalysisParameters& b);
 
 /// A take listed under "Derived takes": imported files and live analysis results.
 struct DerivedTake {
@@ -193,8 +195,8 @@ signals:
     /// take is shown (its cell, the browser) stays; what depends on its values follows.
     void selectedTakeReplaced(bunraku::app::TakeSlot slot);
     void currentTimeChanged(double seconds);
-    /// Parameters changed in `sections` (ParameterSection flags).
-    void parametersChanged(int sections);
+    /// Parameters changed in `sections`.
+    void parametersChanged(bunraku::app::ParameterSections sections);
     /// An interaction (a drag) began (true) or ended (false): views may hold their ranges.
     void interactionChanged(bool active);
 

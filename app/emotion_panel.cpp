@@ -137,7 +137,7 @@ EmotionPanel::EmotionPanel(Document& document, AnalysisController& analysis, QWi
     });
     connect(show, &QPushButton::clicked, this, [this] { m_document.selectTake(TakeSlot::A, QStringLiteral("live/weighted")); });
 
-    connect(&document, &Document::parametersChanged, this, [this](int sections) {
+    connect(&document, &Document::parametersChanged, this, [this](ParameterSections sections) {
         if (sections & (kDecomposeSection | kWeightSection)) showParameters();
     });
     // Another corpus: its parameters (the defaults) and no result until it is decomposed.

@@ -187,7 +187,7 @@ NormalisePanel::NormalisePanel(Document& document, AnalysisController& analysis,
         });
     });
 
-    connect(&document, &Document::parametersChanged, this, [this](int sections) {
+    connect(&document, &Document::parametersChanged, this, [this](ParameterSections sections) {
         if (sections & kNormaliseSection) refreshControls();
     });
     connect(&document, &Document::selectionChanged, this, [this](TakeSlot slot) {

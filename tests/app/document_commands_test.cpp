@@ -208,3 +208,42 @@ TEST_CASE("a shown live take replaced by a shorter one keeps the current time in
     CHECK(document.currentTime() <= document.duration()); // a monkey seed found it past the end
     CHECK(moved.count() == 1);
 }
+
+TEST_CASE("a parameter command holds the sections it changes and nothing else, merged steps too", "[app][commands]")
+{
+    Document document;
+    auto commandAt = [&](int index) { return static_cast<const ParameterCommand*>(document.undoStack()->command(index)); };
+    REQUIRE(setTau(document, 7));
+    CHECK(commandAt(0)->sections() == ParameterSections(kNormaliseSection));
+    REQUIRE(setEmotionWeight(document, 0.4));
+    CHECK(commandAt(1)->sections() == ParameterSections(kWeightSection));
+
+    // A warp drag: one step holding the warp alone, back to no warp on undo.
+    analysis::WarpCurve curve;
+    curve.points = {{0.0, 0.0}, {10.0, 12.0}, {20.0, 20.0}};
+    document.beginInteraction();
+    for (int step = 0; step < 5; ++step) {
+        curve.points[1].source = 12.0 + step;
+        auto after = editedParameters(document, [&](AnalysisParameters& p) { p.design.warp = curve; });
+        pushParameters(document, new MoveWarpPoint(&document, after));
+    }
+    document.endInteraction();
+    REQUIRE(document.undoStack()->count() == 3);
+    CHECK(commandAt(2)->sections() == ParameterSections(kWarpSection));
+    const AnalysisParameters edited = document.parameters();
+    REQUIRE(document.parameters().design.warp);
+    CHECK(document.parameters().design.warp->points[1].source == 16.0);
+
+    // Each undo takes back its own section only; redo brings the same parameters back.
+    document.undoStack()->undo();
+    CHECK_FALSE(document.parameters().design.warp);
+    CHECK(document.parameters().design.emotionWeight == 0.4);
+    CHECK(document.parameters().normalise.tau == 7);
+    document.undoStack()->undo();
+    CHECK(document.parameters().design.emotionWeight == AnalysisParameters{}.design.emotionWeight);
+    CHECK(document.parameters().normalise.tau == 7);
+    document.undoStack()->undo();
+    CHECK(document.parameters() == AnalysisParameters{});
+    for (int k = 0; k < 3; ++k) document.undoStack()->redo();
+    CHECK(document.parameters() == edited);
+}
