@@ -4,6 +4,7 @@
 /// `analyse`, `decompose` and `emotion` so each runs the stages with the workbench's typed
 /// parameters and defaults (docs/FORMATS.md).
 
+#include "analysis/normalise/wavelet_matching.h"
 #include "analysis/pipeline/parameters_json.h"
 #include "analysis/pipeline/stage_parameters.h"
 #include "app/cli/cli.h"
@@ -11,6 +12,7 @@
 #include <CLI/CLI.hpp>
 
 #include <string>
+#include <vector>
 
 namespace bunraku::app::cli {
 
@@ -38,5 +40,28 @@ Enum namedParameter(const std::string& name)
     if (auto value = analysis::pipeline::parameterValue<Enum>(name)) return *value;
     throw CliError("'" + name + "' is not one of the names the parameter files use");
 }
+
+/// The wavelet matching's options as every command that matches takes them - `normalise` and
+/// `experiment truth` (thesis 3.5), `phase` and `experiment axis` (5.3): one spelling, one check
+/// and one help line per option, the ranges of the analysis's table of limits
+/// (stage_parameters.h) and the names of the parameter files' tables. The defaults are the
+/// command's stage's (matchingDefaults).
+struct MatchingArguments {
+    int tau = 0;
+    int searchBand = 0;
+    double approximationWeight = 0.0;
+    std::string path;
+    std::string weighting;
+    std::string level;
+    std::string timeScale = "auto";
+};
+/// The defaults of the normalise stage or of the axis stage (`bunraku analyse`'s).
+MatchingArguments matchingDefaults(const analysis::pipeline::NormaliseParameters& parameters);
+MatchingArguments matchingDefaults(const analysis::pipeline::AxisParameters& parameters);
+/// --tau, --tcmp, --approximation-weight, --path, --weighting, --level, and --time-scale when
+/// `timeScale` (the scales are each command's: --scales or --max-scale).
+void addMatchingOptions(CLI::App* command, MatchingArguments& arguments, bool timeScale);
+/// The options the arguments name, with `scales`.
+analysis::MatchOptions matchOptions(const MatchingArguments& arguments, std::vector<double> scales);
 
 } // namespace bunraku::app::cli

@@ -171,66 +171,29 @@ void runAxis(const AxisCommandArguments& arguments)
 
 /// The defaults: the axis stage's (stage_parameters.h), as `bunraku analyse` runs it.
 struct PhaseArguments {
-    int tau = pl::AxisParameters{}.tau;
-    int tcmp = pl::AxisParameters{}.searchBand;
+    MatchingArguments matching = matchingDefaults(pl::AxisParameters{});
     int maxScale = pl::AxisParameters{}.maxScale;
-    double approximationWeight = pl::AxisParameters{}.approximationWeight;
-    std::string path = pl::parameterName(pl::AxisParameters{}.path);
-    std::string weighting = pl::parameterName(an::ChannelWeighting::None);
-    std::string level = pl::parameterName(pl::AxisParameters{}.level);
-    std::string timeScale = "auto";
     int spacing = pl::AxisParameters{}.controlSpacing;
 };
 
 void addPhaseOptions(CLI::App* command, PhaseArguments& arguments)
 {
-    // Ranges from the analysis's table of limits (stage_parameters.h), stated by --help.
-    command->add_option("--tau", arguments.tau, "Half window tau, frames")->check(CLI::Range(0, pl::kMaxTau))->capture_default_str();
-    command->add_option("--tcmp", arguments.tcmp, "Search band T_cmp, frames")
-        ->check(CLI::Range(0, pl::kMaxSearchBand))
-        ->capture_default_str();
+    addMatchingOptions(command, arguments.matching, true);
     command->add_option("--max-scale", arguments.maxScale, "Scales 1..N")->check(CLI::Range(1, pl::kMaxScale))->capture_default_str();
-    // As `normalise` spells it (and the parameter files' approximationWeight); --weight, its
-    // old name here, is kept out of the help (`emotion --weight` is the emotion weight).
-    command->add_option("--approximation-weight", arguments.approximationWeight, "Weight M of the approximation term (eq. 5.17; 0 = off)")
-        ->check(CLI::Range(0.0, pl::kMaxApproximationWeight))
-        ->capture_default_str();
-    command->add_option("--weight", arguments.approximationWeight, "Old name of --approximation-weight")
+    // --weight, the old name of --approximation-weight here, is kept out of the help (`emotion
+    // --weight` is the emotion weight).
+    command->add_option("--weight", arguments.matching.approximationWeight, "Old name of --approximation-weight")
         ->check(CLI::Range(0.0, pl::kMaxApproximationWeight))
         ->group("");
-    command->add_option("--path", arguments.path, "greedy (thesis) or optimal")
-        ->check(namedParameterCheck<an::PathMethod>())
-        ->capture_default_str();
-    command->add_option("--weighting", arguments.weighting, "none (thesis) or standardise")
-        ->check(namedParameterCheck<an::ChannelWeighting>())
-        ->capture_default_str();
-    command->add_option("--level", arguments.level,
-                        "Level of each axis coordinate before the transform: first-frame (minus its first frame) "
-                        "or none (eq. 5.16 read literally)")
-        ->check(namedParameterCheck<an::LevelAlignment>())
-        ->capture_default_str();
     command->add_option("--control-spacing", arguments.spacing, "Frames between warp control points")
         ->check(CLI::Range(1, pl::kMaxControlSpacing))
         ->capture_default_str();
-    command->add_option("--time-scale", arguments.timeScale,
-                        "Takes of other lengths: auto (default: a global time scale first when the lengths differ by more "
-                        "than half of T_cmp), global (always) or none (the band alone)")
-        ->check(CLI::IsMember({"auto", "global", "none"}));
 }
 
 an::PhaseOptions phaseOptions(const PhaseArguments& arguments)
 {
     an::PhaseOptions options;
-    options.match.tau = arguments.tau;
-    options.match.searchBand = arguments.tcmp;
-    options.match.scales = an::integerScales(arguments.maxScale);
-    options.match.approximationWeight = arguments.approximationWeight;
-    options.match.path = namedParameter<an::PathMethod>(arguments.path);
-    options.match.weighting = namedParameter<an::ChannelWeighting>(arguments.weighting);
-    options.match.level = namedParameter<an::LevelAlignment>(arguments.level);
-    options.match.timeScaling = arguments.timeScale == "global" ? an::TimeScaling::Global
-                                : arguments.timeScale == "none" ? an::TimeScaling::None
-                                                                : an::TimeScaling::Auto;
+    options.match = matchOptions(arguments.matching, an::integerScales(arguments.maxScale));
     options.controlPointSpacing = arguments.spacing;
     return options;
 }

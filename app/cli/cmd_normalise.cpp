@@ -34,16 +34,11 @@ namespace {
 namespace an = bunraku::analysis;
 namespace pl = bunraku::analysis::pipeline;
 
+/// The normalise stage's defaults (the optimal path; "greedy" = thesis 3.5.3).
 struct MatchArguments {
-    int tau = 4;
-    int tcmp = 20;
+    MatchingArguments matching = matchingDefaults(pl::NormaliseParameters{});
     std::string scales = "1:16";
     std::string coupling = an::kDefaultCoupling;
-    std::string path = pl::pathName(pl::NormaliseParameters{}.path); // optimal; "greedy" = thesis 3.5.3
-    std::string weighting = "none";
-    std::string level = "first-frame";
-    std::string timeScale = "auto";
-    double approximationWeight = 0.0;
 };
 
 struct NormaliseArguments {
@@ -96,28 +91,13 @@ an::NormaliseOptions normaliseOptions(const MatchArguments& arguments)
 {
     an::NormaliseOptions options;
     options.coupling = arguments.coupling;
-    options.match.tau = arguments.tau;
-    options.match.searchBand = arguments.tcmp;
-    options.match.scales = parseScales(arguments.scales);
-    options.match.approximationWeight = arguments.approximationWeight;
-    options.match.path = namedParameter<an::PathMethod>(arguments.path);
-    options.match.weighting = namedParameter<an::ChannelWeighting>(arguments.weighting);
-    options.match.level = namedParameter<an::LevelAlignment>(arguments.level);
-    options.match.timeScaling = arguments.timeScale == "global" ? an::TimeScaling::Global
-                                : arguments.timeScale == "none" ? an::TimeScaling::None
-                                                                : an::TimeScaling::Auto;
+    options.match = matchOptions(arguments.matching, parseScales(arguments.scales));
     return options;
 }
 
-void addMatchOptions(CLI::App* command, MatchArguments& arguments)
+void addMatchOptions(CLI::App* command, MatchArguments& arguments, bool timeScale)
 {
-    // Ranges from the analysis's table of limits (stage_parameters.h), stated by --help.
-    command->add_option("--tau", arguments.tau, "Half window tau, frames (thesis 3.5.2)")
-        ->check(CLI::Range(0, pl::kMaxTau))
-        ->capture_default_str();
-    command->add_option("--tcmp", arguments.tcmp, "Search band T_cmp, frames (thesis 3.5.1)")
-        ->check(CLI::Range(0, pl::kMaxSearchBand))
-        ->capture_default_str();
+    addMatchingOptions(command, arguments.matching, timeScale);
     command->add_option("--scales", arguments.scales, "Wavelet scales: FIRST:LAST, FIRST:STEP:LAST or a comma list")
         ->capture_default_str();
     command->add_option("--coupling", arguments.coupling,
@@ -125,20 +105,6 @@ void addMatchOptions(CLI::App* command, MatchArguments& arguments)
                         "joints), method2 (head+shoulder and arm+hand per coordinate, eq. 3.29), method1 (arm+hand, eq. 3.28), "
                         "chains (per coordinate each chain of the skeleton: root, spine, left_arm, right_arm, left_leg, "
                         "right_leg), independent, per-part, per-coordinate, all, or sets like arm.x+hand.x;head.x+shoulder.x")
-        ->capture_default_str();
-    command->add_option("--path", arguments.path,
-                        "Correspondence path: optimal (the least-cost monotone path, default) or greedy (the thesis's scan, 3.5.3)")
-        ->check(namedParameterCheck<an::PathMethod>())
-        ->capture_default_str();
-    command->add_option("--weighting", arguments.weighting, "Channel weighting: none or standardise")
-        ->check(namedParameterCheck<an::ChannelWeighting>())
-        ->capture_default_str();
-    command->add_option("--level", arguments.level, "Level alignment before the transform: first-frame or none")
-        ->check(namedParameterCheck<an::LevelAlignment>())
-        ->capture_default_str();
-    command->add_option("--approximation-weight", arguments.approximationWeight,
-                        "Weight M of the approximation term (thesis eq. 5.17; 0 = off)")
-        ->check(CLI::Range(0.0, pl::kMaxApproximationWeight))
         ->capture_default_str();
 }
 
@@ -159,15 +125,16 @@ std::string takeCsv(const an::Take& take, const std::string& name)
 
 pl::NormaliseParameters normaliseParameters(const MatchArguments& arguments)
 {
+    const an::MatchOptions match = matchOptions(arguments.matching, parseScales(arguments.scales));
     pl::NormaliseParameters parameters;
     parameters.coupling = arguments.coupling;
-    parameters.tau = arguments.tau;
-    parameters.searchBand = arguments.tcmp;
-    parameters.scales = parseScales(arguments.scales);
-    parameters.approximationWeight = arguments.approximationWeight;
-    parameters.path = namedParameter<an::PathMethod>(arguments.path);
-    parameters.weighting = namedParameter<an::ChannelWeighting>(arguments.weighting);
-    parameters.level = namedParameter<an::LevelAlignment>(arguments.level);
+    parameters.tau = match.tau;
+    parameters.searchBand = match.searchBand;
+    parameters.scales = match.scales;
+    parameters.approximationWeight = match.approximationWeight;
+    parameters.path = match.path;
+    parameters.weighting = match.weighting;
+    parameters.level = match.level;
     if (auto valid = pl::validate(parameters); !valid) throw CliError(valid.error().message);
     return parameters;
 }
@@ -286,7 +253,7 @@ void runNormalise(const NormaliseArguments& arguments)
                                  {"suggested_reference", cell[std::size_t(suggestion.takeIndex)]->labels.takeIndex},
                                  {"suggestion", suggestion.reason},
                                  {"coupling", coupling},
-                                 {"path", arguments.match.path},
+                                 {"path", arguments.match.matching.path},
                                  {"tau", options.match.tau},
                                  {"tcmp", options.match.searchBand},
                                  {"scales", options.match.scales},
@@ -302,7 +269,7 @@ void runNormalise(const NormaliseArguments& arguments)
         return;
     }
     std::cout << "normalised " << normalised.size() << " takes of " << arguments.function << "/" << arguments.emotion
-              << " to " << referenceName << " (" << coupling << ", " << arguments.match.path << ")\n"
+              << " to " << referenceName << " (" << coupling << ", " << arguments.match.matching.path << ")\n"
               << "take  " << std::left << std::setw(27) << "variance to the reference" << std::right << std::setw(11) << "raw"
               << std::setw(13) << "normalised" << std::setw(8) << "change" << "\n";
     std::vector<int> worse;
@@ -323,7 +290,7 @@ void runNormalise(const NormaliseArguments& arguments)
         std::cout << "take(s)";
         for (int take : worse) std::cout << " " << take;
         std::cout << ": normalised further from the reference than raw in some family"
-                  << (arguments.match.path == "greedy" ? " (--path optimal finds the least-cost correspondence)" : "") << "\n";
+                  << (arguments.match.matching.path == "greedy" ? " (--path optimal finds the least-cost correspondence)" : "") << "\n";
     }
     std::cout << "wrote " << files.size() + 1 << " files to " << folder.string() << "\n";
 }
@@ -484,7 +451,7 @@ void addNormalisationCommands(CommandSet& commands)
         command->add_flag("--no-preprocess", arguments->noPreprocess,
                           "Use the takes as stored (default: thesis 2.2 preprocessing first, as `bunraku preprocess`)");
         command->add_flag("--json", arguments->json, "Print a machine-readable summary");
-        addMatchOptions(command, arguments->match);
+        addMatchOptions(command, arguments->match, false);
         addKimonoOutputOptions(command, arguments->kimono);
         command->callback([arguments] { runNormalise(*arguments); });
     }
@@ -505,13 +472,8 @@ void addNormalisationCommands(CommandSet& commands)
             ->check(CLI::ExistingDirectory);
         command->add_option("--reference", arguments->reference, "Reference take index in every cell (default: suggested)");
         command->add_flag("--json", arguments->json, "Print a machine-readable summary");
-        addMatchOptions(command, arguments->match);
         // The workbench and `normalise` use auto; the experiment compares the readings.
-        command->add_option("--time-scale", arguments->match.timeScale,
-                            "Takes of other lengths: auto (a global time scale first when the lengths differ by more "
-                            "than half of T_cmp), global (always) or none (the thesis: the band alone)")
-            ->check(CLI::IsMember({"auto", "global", "none"}))
-            ->capture_default_str();
+        addMatchOptions(command, arguments->match, true);
         command->callback([arguments] { runTruth(*arguments); });
     }
 }
