@@ -102,7 +102,7 @@ FileController::FileController(Document& document, QWidget* window)
     rebuildRecentMenu();
 }
 
-void FileController::setViewStateHooks(std::function<QVariantMap()> save, std::function<void(const QVariantMap&)> restore)
+void FileController::setViewStateHooks(std::function<ViewState()> save, std::function<void(const ViewState&)> restore)
 {
     m_saveView = std::move(save);
     m_restoreView = std::move(restore);

@@ -40,7 +40,7 @@ public:
     QString lastError() const { return m_lastError; }
 
     /// The view state stored in projects, provided by the main window.
-    void setViewStateHooks(std::function<QVariantMap()> save, std::function<void(const QVariantMap&)> restore);
+    void setViewStateHooks(std::function<ViewState()> save, std::function<void(const ViewState&)> restore);
 
     // Operations without dialogs (each returns false and reports the error on failure).
     bool openDemoCorpus();
@@ -139,8 +139,8 @@ private:
     std::unique_ptr<AutosaveSession> m_autosave;
     std::function<int()> m_unsavedAnswer;
     ProgressTaskOptions m_progressOptions;
-    std::function<QVariantMap()> m_saveView;
-    std::function<void(const QVariantMap&)> m_restoreView;
+    std::function<ViewState()> m_saveView;
+    std::function<void(const ViewState&)> m_restoreView;
     QAction* m_openCorpus = nullptr;
     QAction* m_openDemo = nullptr;
     QAction* m_newCorpus = nullptr;

@@ -116,7 +116,7 @@ MainWindow::MainWindow(QWidget* parent, std::shared_ptr<Executor> executor) : QM
     setDockOptions(AnimatedDocks | AllowNestedDocks | AllowTabbedDocks);
     m_files = new FileController(*m_document, this);
     m_exports = new ExportController(*m_document, this);
-    m_files->setViewStateHooks([this] { return viewState(); }, [this](const QVariantMap& state) { restoreViewState(state); });
+    m_files->setViewStateHooks([this] { return viewState(); }, [this](const ViewState& state) { restoreViewState(state); });
     m_playback = new PlaybackController(*m_document, this);
     m_status = new widgets::ElidedLabel(this);
     m_status->setObjectName("statusMessage");
@@ -566,70 +566,52 @@ void MainWindow::chooseScreenshot()
     saveScreenshot(file, target);
 }
 
-namespace {
-/// The cloth parameters as project view state ({"massPerArea": 0.015, ...}).
-QVariantMap clothParametersState(const analysis::ClothParameters& cloth)
+ViewState MainWindow::viewState() const
 {
-    QVariantMap values;
-    for (const analysis::ClothParameterLimit& limit : analysis::clothParameterLimits()) values[QLatin1String(limit.name)] = cloth.*(limit.member);
-    return values;
-}
-} // namespace
-
-QVariantMap MainWindow::viewState() const
-{
-    return {{"graphLayout", int(m_graphs->grid()->graphLayout())},
-            {"twoTakeMode", int(m_graphs->grid()->twoTakeMode())},
-            {"valueScale", int(m_graphs->grid()->valueScale())},
-            {"angleDisplay", int(m_graphs->angleDisplay())},
-            {"thesisTicks", m_graphs->grid()->thesisTicks()},
-            {"part", m_graphs->selectedPart()},
-            {"dof", m_graphs->selectedDof()},
-            {"camera", m_viewportPanel->cameraState()},
-            {"figureA", m_viewportPanel->figureBox(0)->currentIndex()},
-            {"figureB", m_viewportPanel->figureBox(1)->currentIndex()},
-            {"cloth", m_viewportPanel->clothBox()->isChecked() ? 1 : 0},
-            {"clothParameters", clothParametersState(m_analysis->clothParameters())},
-            {"weightEmotion", m_analysis->weightEmotion()},
-            {"speed", m_timeline->speed()},
-            // The docks' places and sizes (QMainWindow::saveState), so the project reopens as laid out.
-            {"windowState", QString::fromLatin1(saveState(kLayoutVersion).toBase64())},
-            // The left column's width: a layout restored into a larger window gives that column
-            // the difference unless told (SideColumns keeps this width instead).
-            {"leftWidth", m_columns->leftWidth()}};
+    ViewState state;
+    state.graphLayout = int(m_graphs->grid()->graphLayout());
+    state.twoTakeMode = int(m_graphs->grid()->twoTakeMode());
+    state.valueScale = int(m_graphs->grid()->valueScale());
+    state.angleDisplay = int(m_graphs->angleDisplay());
+    state.thesisTicks = m_graphs->grid()->thesisTicks();
+    state.part = m_graphs->selectedPart();
+    state.dof = m_graphs->selectedDof();
+    state.camera = m_viewportPanel->cameraState();
+    state.figureA = m_viewportPanel->figureBox(0)->currentIndex();
+    state.figureB = m_viewportPanel->figureBox(1)->currentIndex();
+    state.cloth = m_viewportPanel->clothBox()->isChecked();
+    state.clothParameters = m_analysis->clothParameters();
+    state.weightEmotion = m_analysis->weightEmotion();
+    state.speed = m_timeline->speed();
+    // The docks' places and sizes (QMainWindow::saveState), so the project reopens as laid out,
+    // and the left column's width: a layout restored into a larger window gives that column the
+    // difference unless told (SideColumns keeps this width instead).
+    state.windowState = saveState(kLayoutVersion);
+    state.leftWidth = m_columns->leftWidth();
+    return state;
 }
 
-void MainWindow::restoreViewState(const QVariantMap& state)
+void MainWindow::restoreViewState(const ViewState& state)
 {
-    if (state.contains("graphLayout")) m_graphs->setGraphLayout(widgets::GraphLayout(state["graphLayout"].toInt()));
-    if (state.contains("twoTakeMode")) m_graphs->setTwoTakeMode(widgets::TwoTakeMode(state["twoTakeMode"].toInt()));
-    if (state.contains("valueScale")) m_graphs->setValueScale(widgets::ValueScale(state["valueScale"].toInt()));
-    if (state.contains("thesisTicks")) m_graphs->setThesisTicks(state["thesisTicks"].toBool());
-    if (state.contains("angleDisplay")) m_graphs->setAngleDisplay(widgets::AngleDisplay(state["angleDisplay"].toInt()));
-    if (state.contains("part")) m_graphs->selectPart(state["part"].toString());
-    if (state.contains("dof")) m_graphs->selectDof(state["dof"].toString());
-    if (state.contains("camera")) m_viewportPanel->setCameraState(state["camera"].toMap());
+    if (state.graphLayout) m_graphs->setGraphLayout(widgets::GraphLayout(*state.graphLayout));
+    if (state.twoTakeMode) m_graphs->setTwoTakeMode(widgets::TwoTakeMode(*state.twoTakeMode));
+    if (state.valueScale) m_graphs->setValueScale(widgets::ValueScale(*state.valueScale));
+    if (state.thesisTicks) m_graphs->setThesisTicks(*state.thesisTicks);
+    if (state.angleDisplay) m_graphs->setAngleDisplay(widgets::AngleDisplay(*state.angleDisplay));
+    if (state.part) m_graphs->selectPart(*state.part);
+    if (state.dof) m_graphs->selectDof(*state.dof);
+    if (state.camera) m_viewportPanel->setCameraState(*state.camera);
     // The 3D view's figure per take: puppet, skeleton, both or body (the boxes' order).
-    if (state.contains("figureA")) m_viewportPanel->figureBox(0)->setCurrentIndex(state["figureA"].toInt());
-    if (state.contains("figureB")) m_viewportPanel->figureBox(1)->setCurrentIndex(state["figureB"].toInt());
+    if (state.figureA) m_viewportPanel->figureBox(0)->setCurrentIndex(*state.figureA);
+    if (state.figureB) m_viewportPanel->figureBox(1)->setCurrentIndex(*state.figureB);
     // The kimono as cloth and its settings (checked by the project reader against their ranges).
-    if (state.contains("clothParameters")) {
-        analysis::ClothParameters cloth;
-        const QVariantMap values = state["clothParameters"].toMap();
-        for (const analysis::ClothParameterLimit& limit : analysis::clothParameterLimits())
-            if (values.contains(QLatin1String(limit.name))) cloth.*(limit.member) = values[QLatin1String(limit.name)].toDouble();
-        (void)m_analysis->setClothParameters(cloth); // out of range: the reader refused the project already
-    }
-    if (state.contains("cloth")) m_viewportPanel->clothBox()->setChecked(state["cloth"].toInt() != 0);
-    if (state.contains("weightEmotion")) m_analysis->setWeightEmotion(state["weightEmotion"].toString());
-    if (state.contains("graphLayout")) m_graphs->setGraphLayout(widgets::GraphLayout(state["graphLayout"].toInt()));
-    if (state.contains("speed")) m_timeline->setSpeed(state["speed"].toDouble());
-    if (state.contains("windowState")) {
-        // A value that is not base64 or not a state of this layout version is ignored.
-        const auto decoded = QByteArray::fromBase64Encoding(state["windowState"].toString().toLatin1(),
-                                                            QByteArray::AbortOnBase64DecodingErrors);
-        if (decoded && restoreState(*decoded, kLayoutVersion)) m_columns->adoptLayoutNow(state.value("leftWidth").toInt());
-    }
+    if (state.clothParameters) (void)m_analysis->setClothParameters(*state.clothParameters);
+    if (state.cloth) m_viewportPanel->clothBox()->setChecked(*state.cloth);
+    if (state.weightEmotion) m_analysis->setWeightEmotion(*state.weightEmotion);
+    if (state.graphLayout) m_graphs->setGraphLayout(widgets::GraphLayout(*state.graphLayout));
+    if (state.speed) m_timeline->setSpeed(*state.speed);
+    // A layout that is not one of this layout version is ignored.
+    if (state.windowState && restoreState(*state.windowState, kLayoutVersion)) m_columns->adoptLayoutNow(state.leftWidth.value_or(0));
 }
 
 void MainWindow::closeEvent(QCloseEvent* event)

@@ -6,6 +6,7 @@
 
 #include "app/document.h"
 #include "app/video_export.h"
+#include "app/view_state.h"
 
 #include <QMainWindow>
 
@@ -128,8 +129,8 @@ private:
     /// File > Export 3D View Video...: the dialog, the export, then a message on error.
     /// Help > Keyboard Shortcuts.
     void showShortcuts();
-    QVariantMap viewState() const;
-    void restoreViewState(const QVariantMap& state);
+    ViewState viewState() const;
+    void restoreViewState(const ViewState& state);
 
     Document* m_document = nullptr;
     FileController* m_files = nullptr;

@@ -38,6 +38,94 @@ struct ViewRange {
 };
 constexpr ViewRange kViewRanges[] = {{"graphLayout", 0, 3}, {"twoTakeMode", 0, 1}, {"valueScale", 0, 1}, {"angleDisplay", 0, 1}, {"figureA", 0, 4}, {"figureB", 0, 4}, {"cloth", 0, 1}, {"speed", 0.1, 4.0}, {"leftWidth", 0, 100000}};
 
+QJsonObject viewJson(const ViewState& view)
+{
+    QJsonObject out;
+    auto put = [&](const char* key, const auto& value) {
+        if (value) out[QLatin1String(key)] = *value;
+    };
+    put("graphLayout", view.graphLayout);
+    put("twoTakeMode", view.twoTakeMode);
+    put("valueScale", view.valueScale);
+    put("angleDisplay", view.angleDisplay);
+    put("thesisTicks", view.thesisTicks);
+    put("part", view.part);
+    put("dof", view.dof);
+    if (view.camera) {
+        const CameraState& c = *view.camera;
+        out["camera"] = QJsonObject{{"angle", c.angle},
+                                    {"elevation", c.elevation},
+                                    {"distance", c.distance},
+                                    {"target", QJsonArray{c.target[0], c.target[1], c.target[2]}},
+                                    {"fov", c.fov}};
+    }
+    put("figureA", view.figureA);
+    put("figureB", view.figureB);
+    if (view.cloth) out["cloth"] = *view.cloth ? 1 : 0;
+    if (view.clothParameters) {
+        QJsonObject values;
+        for (const analysis::ClothParameterLimit& limit : analysis::clothParameterLimits())
+            values[QLatin1String(limit.name)] = (*view.clothParameters).*(limit.member);
+        out["clothParameters"] = values;
+    }
+    put("weightEmotion", view.weightEmotion);
+    put("speed", view.speed);
+    if (view.windowState) out["windowState"] = QString::fromLatin1(view.windowState->toBase64());
+    put("leftWidth", view.leftWidth);
+    return out;
+}
+
+/// The view of a checked "view" object (readProject checked every value first).
+ViewState viewState(const QJsonObject& view)
+{
+    ViewState out;
+    auto number = [&](const char* key, auto& field) {
+        if (view.contains(QLatin1String(key))) field = std::remove_reference_t<decltype(*field)>(view[QLatin1String(key)].toDouble());
+    };
+    auto text = [&](const char* key, std::optional<QString>& field) {
+        if (view.contains(QLatin1String(key))) field = view[QLatin1String(key)].toString();
+    };
+    number("graphLayout", out.graphLayout);
+    number("twoTakeMode", out.twoTakeMode);
+    number("valueScale", out.valueScale);
+    number("angleDisplay", out.angleDisplay);
+    if (view.contains("thesisTicks")) out.thesisTicks = view["thesisTicks"].toBool();
+    text("part", out.part);
+    text("dof", out.dof);
+    if (view.contains("camera")) {
+        const QJsonObject camera = view["camera"].toObject();
+        const QJsonArray target = camera["target"].toArray();
+        CameraState c;
+        c.angle = camera["angle"].toDouble();
+        c.elevation = camera["elevation"].toDouble();
+        c.distance = camera["distance"].toDouble();
+        c.target = {target[0].toDouble(), target[1].toDouble(), target[2].toDouble()};
+        c.fov = camera["fov"].toDouble(35.0);
+        out.camera = c;
+    }
+    number("figureA", out.figureA);
+    number("figureB", out.figureB);
+    if (view.contains("cloth")) out.cloth = view["cloth"].toDouble() != 0.0;
+    if (view.contains("clothParameters")) {
+        // The keys it holds; the others keep their defaults.
+        const QJsonObject values = view["clothParameters"].toObject();
+        analysis::ClothParameters cloth;
+        for (const analysis::ClothParameterLimit& limit : analysis::clothParameterLimits())
+            if (values.contains(QLatin1String(limit.name))) cloth.*(limit.member) = values[QLatin1String(limit.name)].toDouble();
+        out.clothParameters = cloth;
+    }
+    text("weightEmotion", out.weightEmotion);
+    number("speed", out.speed);
+    number("leftWidth", out.leftWidth);
+    // The window's dock layout (base64 of QMainWindow::saveState): a malformed one is left out,
+    // the project still opens (the layout as it is).
+    const QJsonValue layout = view["windowState"];
+    if (layout.isString() && layout.toString().size() <= kMaxWindowStateChars)
+        if (const auto decoded = QByteArray::fromBase64Encoding(layout.toString().toLatin1(), QByteArray::AbortOnBase64DecodingErrors))
+            out.windowState = *decoded;
+    return out;
+}
+
 long lineOfOffset(const QByteArray& text, int offset) { return 1 + long(text.left(offset).count('\n')); }
 
 /// Version 1's flat parameters ("normalise.tau": 4, "design.gains": {"p/d": [g0, g1]}, ...) in
@@ -114,7 +202,7 @@ analysis::Status writeProject(const ProjectState& state, const QString& file)
     root["takeA"] = state.takeA;
     root["takeB"] = state.takeB;
     root["time_s"] = state.timeSeconds;
-    root["view"] = QJsonObject::fromVariantMap(state.view);
+    root["view"] = viewJson(state.view);
 
     const QByteArray text = QJsonDocument(root).toJson(QJsonDocument::Indented);
     return analysis::io::writeFileAtomically(std::filesystem::path(file.toStdString()),
@@ -235,15 +323,7 @@ analysis::Result<ProjectState> parseProject(const QByteArray& text, const QStrin
                                                QString::number(limit->low).toStdString() + ".." + QString::number(limit->high).toStdString());
         }
     }
-    state.view = viewObject.toVariantMap();
-    // The window's dock layout (base64 of QMainWindow::saveState): a malformed one is ignored,
-    // the project still opens (the layout as it is).
-    if (state.view.contains("windowState")) {
-        const QJsonValue layout = viewObject["windowState"];
-        const bool valid = layout.isString() && layout.toString().size() <= kMaxWindowStateChars &&
-                           QByteArray::fromBase64Encoding(layout.toString().toLatin1(), QByteArray::AbortOnBase64DecodingErrors);
-        if (!valid) state.view.remove("windowState");
-    }
+    state.view = viewState(viewObject);
     return state;
 }
 

@@ -17,10 +17,10 @@
 #include "analysis/core/result.h"
 #include "analysis/io/take_reader.h"
 #include "analysis/pipeline/stage_parameters.h"
+#include "app/view_state.h"
 
 #include <QByteArray>
 #include <QString>
-#include <QVariantMap>
 #include <QVector>
 
 namespace bunraku::app {
@@ -40,7 +40,7 @@ struct ProjectState {
     QString takeA;
     QString takeB;
     double timeSeconds = 0.0;
-    QVariantMap view;
+    ViewState view;
 };
 
 inline constexpr const char* kProjectFormatName = "bunraku-project";

@@ -10,6 +10,7 @@
 /// replacing the scene costs about one frame, so changes are not delayed.
 
 #include "app/document.h"
+#include "app/view_state.h"
 
 #include "analysis/core/skeleton_take.h"
 #include "analysis/pipeline/stages.h"
@@ -53,8 +54,8 @@ public:
     QString selectedPart() const { return m_selectedPart; }
     /// The camera as project view state ({"angle", "elevation", "distance", "target": [x, y, z],
     /// "fov"}), and back (ignored when malformed; project_file.cpp validates it).
-    QVariantMap cameraState() const;
-    void setCameraState(const QVariantMap& state);
+    CameraState cameraState() const;
+    void setCameraState(const CameraState& state);
 
 signals:
     /// A part of the puppet was clicked (its name in the take's channels when it has one), or a

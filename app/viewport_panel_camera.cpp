@@ -43,26 +43,26 @@ void ViewportPanel::createCameraActions(QWidget* bar)
     connect(m_resetCamera, &QAction::triggered, m_viewport, &widgets::ViewportWidget::resetCamera);
 }
 
-QVariantMap ViewportPanel::cameraState() const
+CameraState ViewportPanel::cameraState() const
 {
     const render::Camera& camera = m_viewport->camera();
-    return {{"angle", double(camera.angleDeg)},
-            {"elevation", double(camera.elevationDeg)},
-            {"distance", double(camera.distance)},
-            {"target", QVariantList{double(camera.target.x), double(camera.target.y), double(camera.target.z)}},
-            {"fov", double(camera.fieldOfViewDeg)}};
+    CameraState state;
+    state.angle = camera.angleDeg;
+    state.elevation = camera.elevationDeg;
+    state.distance = camera.distance;
+    state.target = {camera.target.x, camera.target.y, camera.target.z};
+    state.fov = camera.fieldOfViewDeg;
+    return state;
 }
 
-void ViewportPanel::setCameraState(const QVariantMap& state)
+void ViewportPanel::setCameraState(const CameraState& state)
 {
-    const QVariantList target = state.value("target").toList();
-    if (target.size() != 3) return;
     render::Camera camera;
-    camera.angleDeg = float(state.value("angle").toDouble());
-    camera.elevationDeg = float(state.value("elevation").toDouble());
-    camera.distance = float(state.value("distance").toDouble());
-    camera.fieldOfViewDeg = float(state.value("fov", 35.0).toDouble());
-    camera.target = {float(target[0].toDouble()), float(target[1].toDouble()), float(target[2].toDouble())};
+    camera.angleDeg = float(state.angle);
+    camera.elevationDeg = float(state.elevation);
+    camera.distance = float(state.distance);
+    camera.fieldOfViewDeg = float(state.fov);
+    camera.target = {float(state.target[0]), float(state.target[1]), float(state.target[2])};
     for (float value : {camera.angleDeg, camera.elevationDeg, camera.distance, camera.fieldOfViewDeg, camera.target.x,
                         camera.target.y, camera.target.z})
         if (!std::isfinite(value)) return;

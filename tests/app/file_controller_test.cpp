@@ -403,3 +403,55 @@ TEST_CASE("projects keep their stored path: version 1 without one meant greedy, 
           PathMethod::Optimal);
     CHECK(analysis::pipeline::NormaliseParameters{}.path == PathMethod::Optimal);
 }
+
+TEST_CASE("a project's view state is written and read back typed, value for value", "[app][files][project]")
+{
+    app::ProjectState state;
+    state.corpus = QStringLiteral("demo");
+    app::ViewState& view = state.view;
+    view.graphLayout = 2;
+    view.twoTakeMode = 1;
+    view.valueScale = 0;
+    view.angleDisplay = 1;
+    view.thesisTicks = true;
+    view.part = QStringLiteral("hand");
+    view.dof = QStringLiteral("yaw");
+    view.camera = app::CameraState{30.0, -12.5, 420.0, {1.5, -2.0, 90.25}, 50.0};
+    view.figureA = 3;
+    view.cloth = true;
+    analysis::ClothParameters cloth;
+    cloth.damping = 2.25;
+    view.clothParameters = cloth;
+    view.weightEmotion = QStringLiteral("hostile");
+    view.speed = 0.5;
+    view.windowState = QByteArray("\x00\x01layout\xff", 9);
+    view.leftWidth = 321;
+    const QString file = scratchFile("view-state", "p.bunraku.json");
+    REQUIRE(app::writeProject(state, file));
+    const auto read = app::readProject(file);
+    REQUIRE(read);
+    const app::ViewState& back = read->view;
+    CHECK(back.graphLayout == 2);
+    CHECK(back.twoTakeMode == 1);
+    CHECK(back.valueScale == 0);
+    CHECK(back.angleDisplay == 1);
+    CHECK(back.thesisTicks == true);
+    CHECK(back.part == QStringLiteral("hand"));
+    CHECK(back.dof == QStringLiteral("yaw"));
+    REQUIRE(back.camera);
+    CHECK(back.camera->angle == 30.0);
+    CHECK(back.camera->elevation == -12.5);
+    CHECK(back.camera->distance == 420.0);
+    CHECK(back.camera->target == std::array<double, 3>{1.5, -2.0, 90.25});
+    CHECK(back.camera->fov == 50.0);
+    CHECK(back.figureA == 3);
+    CHECK_FALSE(back.figureB); // not stored: the view keeps its own
+    CHECK(back.cloth == true);
+    REQUIRE(back.clothParameters);
+    CHECK(back.clothParameters->damping == 2.25);
+    CHECK(back.clothParameters->drag == analysis::ClothParameters{}.drag);
+    CHECK(back.weightEmotion == QStringLiteral("hostile"));
+    CHECK(back.speed == 0.5);
+    CHECK(back.windowState == view.windowState);
+    CHECK(back.leftWidth == 321);
+}
