@@ -215,7 +215,7 @@ void AnalysisController::resolveCell()
 {
     const QString idA = m_document.selectedId(TakeSlot::A);
     const TakePointer takeA = m_document.take(idA);
-    if (takeA && idA.startsWith(QStringLiteral("corpus/"))) {
+    if (takeA && Document::isCorpusTakeId(idA)) {
         m_function = takeA->labels.function;
         m_emotion = takeA->labels.emotion;
     } else if (m_function.empty() && !m_document.corpus().takes.empty()) {
@@ -284,11 +284,11 @@ void AnalysisController::publishNormalised()
     const QScopedValueRollback<bool> publishing(m_publishing, true);
     QString idA = m_document.selectedId(TakeSlot::A);
     // The normalised take itself shown as A: recomputed for the take it was computed from.
-    if (idA == QStringLiteral("live/normalised"))
+    if (idA == Document::liveTakeId(QStringLiteral("normalised")))
         for (const auto& derived : m_document.derivedTakes())
             if (derived.id == idA) idA = derived.ghostId;
     const TakePointer takeA = m_document.take(idA);
-    if (!m_normalised || !takeA || !idA.startsWith(QStringLiteral("corpus/"))) return; // keep it while viewing derived takes
+    if (!m_normalised || !takeA || !Document::isCorpusTakeId(idA)) return; // keep it while viewing derived takes
     const pl::CellNormalisation* cell = m_normalised->cell(takeA->labels.function, takeA->labels.emotion);
     if (!cell) return;
     for (std::size_t k = 0; k < cell->takeIndices.size(); ++k) {
@@ -378,7 +378,7 @@ void AnalysisController::publishKimono()
 {
     const auto simulated = kimono(TakeSlot::A, m_kimonoTakes[0]);
     if (!m_kimonoShown) {
-        if (m_document.take(QStringLiteral("live/kimono"))) m_document.setLiveTake(QStringLiteral("kimono"), QString(), nullptr);
+        if (m_document.take(Document::liveTakeId(QStringLiteral("kimono")))) m_document.setLiveTake(QStringLiteral("kimono"), QString(), nullptr);
         return;
     }
     if (!simulated || !m_kimonoTakes[0]) return;

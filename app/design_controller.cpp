@@ -16,8 +16,8 @@ namespace {
 
 namespace pl = analysis::pipeline;
 
-const QString kDesignedId = QStringLiteral("live/designed");
-const QString kFunctionalId = QStringLiteral("live/functional");
+const QString kDesignedId = Document::liveTakeId(QStringLiteral("designed"));
+const QString kFunctionalId = Document::liveTakeId(QStringLiteral("functional"));
 
 /// The gain edits with each phrase index moved by `remap` (an empty result drops the edit).
 template <typename Remap> std::vector<pl::GainEdit> remapGainEdits(const std::vector<pl::GainEdit>& edits, Remap remap)
@@ -224,6 +224,11 @@ std::vector<double> DesignController::boundarySecondsOn(const QString& takeId) c
     for (std::size_t i = 1; i + 1 < frames.size() && rate > 0.0; ++i)
         seconds.push_back(analysis::inverseWarp(curve, double(frames[i])) / rate);
     return seconds;
+}
+
+bool DesignController::showsBoundariesOn(const QString& takeId) const
+{
+    return ready() && (takeId == sourceId() || takeId == kDesignedId);
 }
 
 double DesignController::functionalFrameAt(const QString& takeId, double seconds) const

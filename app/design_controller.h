@@ -69,6 +69,9 @@ public:
     /// the designed take ("live/designed") the designed times u / rate whose warp reaches each
     /// boundary, warp(u) = boundary (inverseWarp of the monotone curve).
     std::vector<double> boundarySecondsOn(const QString& takeId) const;
+    /// Whether the take `takeId` shows the design's phrase boundaries (editable): the
+    /// functional take or the designed take, once the design is ready.
+    bool showsBoundariesOn(const QString& takeId) const;
     /// The functional frame shown at `seconds` of the take `takeId`: seconds * rate, through the
     /// warp on the designed take.
     double functionalFrameAt(const QString& takeId, double seconds) const;

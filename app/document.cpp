@@ -34,9 +34,15 @@ void Document::setCorpus(analysis::Corpus corpus, const QString& source,
 
 QString Document::corpusTakeId(std::size_t index) { return QStringLiteral("corpus/%1").arg(index); }
 
+QString Document::liveTakeId(const QString& name) { return QStringLiteral("live/") + name; }
+
+bool Document::isCorpusTakeId(const QString& id) { return id.startsWith(QStringLiteral("corpus/")); }
+
+bool Document::isLiveTakeId(const QString& id) { return id.startsWith(QStringLiteral("live/")); }
+
 TakePointer Document::take(const QString& id) const
 {
-    if (id.startsWith(QStringLiteral("corpus/"))) {
+    if (isCorpusTakeId(id)) {
         bool ok = false;
         const auto index = id.mid(7).toULongLong(&ok);
         if (!ok || index >= m_corpus->takes.size()) return nullptr;
@@ -48,7 +54,7 @@ TakePointer Document::take(const QString& id) const
 
 QString Document::takeLabel(const QString& id) const
 {
-    if (id.startsWith(QStringLiteral("corpus/"))) {
+    if (isCorpusTakeId(id)) {
         const TakePointer found = take(id);
         return found ? QString::fromStdString(found->displayName()) : QString();
     }
@@ -58,7 +64,7 @@ QString Document::takeLabel(const QString& id) const
 
 QString Document::takeName(const QString& id) const
 {
-    if (!id.startsWith(QStringLiteral("live/"))) return takeLabel(id);
+    if (!isLiveTakeId(id)) return takeLabel(id);
     const QString kind = id.mid(5);
     const TakePointer found = take(id);
     if (!found || found->labels.function.empty()) return kind;
@@ -145,7 +151,7 @@ TakePointer Document::setLiveBody(const QString& name, const QString& label, ana
 TakePointer Document::publishLive(const QString& name, const QString& label, TakePointer take, TakePointer perChannelGhost,
                                   const analysis::PerChannelDistance& distance, const QString& ghostId)
 {
-    const QString id = QStringLiteral("live/") + name;
+    const QString id = liveTakeId(name);
     const int index = indexOfDerived(id);
     if (!take) {
         if (index < 0) return nullptr;

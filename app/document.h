@@ -89,6 +89,12 @@ public:
 
     /// Id of the corpus take with index `index` in corpus().takes.
     static QString corpusTakeId(std::size_t index);
+    /// The id of the live take `name` ("designed", "weighted", ...).
+    static QString liveTakeId(const QString& name);
+    /// What kind of take an id names. Take ids are built and read here only (and stored by the
+    /// project file, project_file.cpp): the rest of the app asks these (a ctest check greps).
+    static bool isCorpusTakeId(const QString& id);
+    static bool isLiveTakeId(const QString& id);
     /// The take with `id` (corpus or derived), null when unknown.
     TakePointer take(const QString& id) const;
     /// The label the user sees for `id` (a live result's recipe: "designed from bow functional

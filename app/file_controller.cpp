@@ -445,7 +445,7 @@ bool FileController::applyStateNow(const ProjectState& state)
     // shown when published (showPendingLiveTakes); until then A keeps the corpus's first take.
     const QString ids[2] = {state.takeA, state.takeB};
     for (int slot = 0; slot < 2; ++slot) {
-        if (ids[slot].startsWith(QStringLiteral("live/")) && !m_document.take(ids[slot]))
+        if (Document::isLiveTakeId(ids[slot]) && !m_document.take(ids[slot]))
             m_pending[slot] = ids[slot];
         else
             m_document.selectTake(TakeSlot(slot), ids[slot]);

@@ -420,7 +420,7 @@ void MainWindow::refreshBoundaries()
 {
     const QString idA = m_document->selectedId(TakeSlot::A);
     const TakePointer takeA = m_document->selectedTake(TakeSlot::A);
-    const bool designed = m_design->ready() && (idA == m_design->sourceId() || idA == QStringLiteral("live/designed"));
+    const bool designed = m_design->showsBoundariesOn(idA);
     std::vector<double> boundaries;
     if (designed)
         boundaries = m_design->boundarySecondsOn(idA);

@@ -38,7 +38,7 @@ std::pair<std::string, std::string> cellOfTakeA(const Document& document)
 {
     const QString id = document.selectedId(TakeSlot::A);
     const TakePointer take = document.take(id);
-    if (!take || !id.startsWith(QStringLiteral("corpus/"))) return {};
+    if (!take || !Document::isCorpusTakeId(id)) return {};
     return {take->labels.function, take->labels.emotion};
 }
 
@@ -212,7 +212,7 @@ NormalisePanel::~NormalisePanel() = default;
 
 TakePointer NormalisePanel::normalisedTake() const
 {
-    return m_analysis.normalised() ? m_document.take(QStringLiteral("live/normalised")) : nullptr;
+    return m_analysis.normalised() ? m_document.take(Document::liveTakeId(QStringLiteral("normalised"))) : nullptr;
 }
 
 QString NormalisePanel::summaryText() const { return m_summary->text(); }
