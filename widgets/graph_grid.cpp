@@ -266,9 +266,12 @@ void GraphGrid::rebuild(bool allData)
     }
     std::vector<GraphCell> current;
     for (const auto& graph : m_graphs) current.push_back(graph.cell);
-    const bool sameStructure = !m_graphs.empty() && sameCells(cells, current) &&
-                               bool(m_ghosts[0]) == (m_graphs.front().ghosts[0] != nullptr) &&
-                               bool(m_ghosts[1]) == (m_graphs.front().ghosts[1] != nullptr);
+    // The ghosts are take A's (its source take, its per-channel result): drawn in the graphs of
+    // A, never in B's column side by side.
+    const auto firstOfA = std::find_if(m_graphs.begin(), m_graphs.end(), [](const Graph& graph) { return drawsSlot(graph.cell.takes, 0); });
+    const bool sameStructure = !m_graphs.empty() && sameCells(cells, current) && firstOfA != m_graphs.end() &&
+                               bool(m_ghosts[0]) == (firstOfA->ghosts[0] != nullptr) &&
+                               bool(m_ghosts[1]) == (firstOfA->ghosts[1] != nullptr);
 
     if (!sameStructure) {
         m_plot->clearItems();
@@ -309,7 +312,7 @@ void GraphGrid::rebuild(bool allData)
                     [this, rect = graph.rect](const QCPRange&) { propagateTimeRange(rect); });
 
             for (int g = 0; g < 2; ++g) {
-                if (!m_ghosts[g]) continue;
+                if (!m_ghosts[g] || !drawsSlot(cell.takes, 0)) continue;
                 graph.ghosts[g] = m_plot->addGraph(timeAxis, valueAxis);
                 graph.ghosts[g]->setPen(g == 0 ? QPen(m_colours.ghost, 1.0, Qt::DashLine) : QPen(m_colours.perChannel, 1.0, Qt::SolidLine));
             }

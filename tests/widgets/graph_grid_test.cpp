@@ -213,6 +213,37 @@ TEST_CASE("during an interaction new data redraws only the curves and value rang
     CHECK(after.second == Approx(std::max(ghostRange.second, lastRange.second)));
 }
 
+TEST_CASE("take A's ghost and per-channel result are drawn in A's graphs only, never in B's column side by side",
+          "[widgets][graph_grid]")
+{
+    widgets::GraphGrid grid;
+    const auto takeA = test::syntheticPuppetTake(60);
+    grid.setTakes(takeA, test::syntheticPuppetTake(60, 1.0));
+    grid.setGhost(scaled(*takeA, 0.8));
+    grid.setPerChannelGhost(scaled(*takeA, 1.2));
+    showGrid(grid);
+    // Overlaid: every graph shows A (and B), so every graph has A's two ghosts.
+    REQUIRE(grid.graphCount() == 24);
+    CHECK(grid.plot()->graphCount() == 24 * 4);
+    grid.setTwoTakeMode(TwoTakeMode::SideBySide);
+    REQUIRE(grid.graphCount() == 48);
+    // Side by side: A's 24 graphs hold A's curve and both ghosts, B's 24 hold B's curve alone.
+    CHECK(grid.plot()->graphCount() == 24 * 3 + 24);
+    int withGhosts = 0, alone = 0;
+    for (int r = 0; r < grid.plot()->axisRectCount(); ++r) {
+        const auto curves = grid.plot()->axisRect(r)->graphs().size();
+        withGhosts += curves == 3;
+        alone += curves == 1;
+    }
+    CHECK(withGhosts == 24);
+    CHECK(alone == 24);
+    // Back to overlaid, and side by side again: the structure follows each time.
+    grid.setTwoTakeMode(TwoTakeMode::Overlay);
+    CHECK(grid.plot()->graphCount() == 24 * 4);
+    grid.setTwoTakeMode(TwoTakeMode::SideBySide);
+    CHECK(grid.plot()->graphCount() == 24 * 3 + 24);
+}
+
 TEST_CASE("the per-channel result is drawn beside the ghost and follows a drag when it ends", "[widgets][graph_grid]")
 {
     widgets::GraphGrid grid;
