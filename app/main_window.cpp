@@ -588,6 +588,7 @@ ViewState MainWindow::viewState() const
     // difference unless told (SideColumns keeps this width instead).
     state.windowState = saveState(kLayoutVersion);
     state.leftWidth = m_columns->leftWidth();
+    state.windowWidth = width();
     return state;
 }
 
@@ -611,7 +612,8 @@ void MainWindow::restoreViewState(const ViewState& state)
     if (state.graphLayout) m_graphs->setGraphLayout(widgets::GraphLayout(*state.graphLayout));
     if (state.speed) m_timeline->setSpeed(*state.speed);
     // A layout that is not one of this layout version is ignored.
-    if (state.windowState && restoreState(*state.windowState, kLayoutVersion)) m_columns->adoptLayoutNow(state.leftWidth.value_or(0));
+    if (state.windowState && restoreState(*state.windowState, kLayoutVersion))
+        m_columns->adoptLayoutNow(state.leftWidth.value_or(0), state.windowWidth.value_or(0));
 }
 
 void MainWindow::closeEvent(QCloseEvent* event)

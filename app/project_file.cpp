@@ -36,7 +36,7 @@ struct ViewRange {
     const char* key;
     double low, high;
 };
-constexpr ViewRange kViewRanges[] = {{"graphLayout", 0, 3}, {"twoTakeMode", 0, 1}, {"valueScale", 0, 1}, {"angleDisplay", 0, 1}, {"figureA", 0, 4}, {"figureB", 0, 4}, {"cloth", 0, 1}, {"speed", 0.1, 4.0}, {"leftWidth", 0, 100000}};
+constexpr ViewRange kViewRanges[] = {{"graphLayout", 0, 3}, {"twoTakeMode", 0, 1}, {"valueScale", 0, 1}, {"angleDisplay", 0, 1}, {"figureA", 0, 4}, {"figureB", 0, 4}, {"cloth", 0, 1}, {"speed", 0.1, 4.0}, {"leftWidth", 0, 100000}, {"windowWidth", 0, 100000}};
 
 QJsonObject viewJson(const ViewState& view)
 {
@@ -72,6 +72,7 @@ QJsonObject viewJson(const ViewState& view)
     put("speed", view.speed);
     if (view.windowState) out["windowState"] = QString::fromLatin1(view.windowState->toBase64());
     put("leftWidth", view.leftWidth);
+    put("windowWidth", view.windowWidth);
     return out;
 }
 
@@ -117,6 +118,7 @@ ViewState viewState(const QJsonObject& view)
     text("weightEmotion", out.weightEmotion);
     number("speed", out.speed);
     number("leftWidth", out.leftWidth);
+    number("windowWidth", out.windowWidth);
     // The window's dock layout (base64 of QMainWindow::saveState): a malformed one is left out,
     // the project still opens (the layout as it is).
     const QJsonValue layout = view["windowState"];

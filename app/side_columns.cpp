@@ -63,11 +63,12 @@ void SideColumns::reset()
 
 int SideColumns::maxLeftWidth(int width) { return std::max(preferredLeftWidth(width), width * 2 / 5); }
 
-void SideColumns::adoptLayoutNow(int savedWidth)
+void SideColumns::adoptLayoutNow(int savedWidth, int savedWindowWidth)
 {
     m_leftWidth = 0;
     m_adopt = true;
     m_adoptWidth = savedWidth;
+    m_adoptWindowWidth = savedWindowWidth;
     m_windowSize = QSize();
     QTimer::singleShot(0, this, &SideColumns::keepLeftWidth);
 }
@@ -79,11 +80,15 @@ void SideColumns::keepLeftWidth()
     m_windowSize = m_window->size();
     const auto left = docksIn(*m_window, Qt::LeftDockWidgetArea);
     if (left.empty()) return;
+    // A layout adopted in a window no wider than the one it was saved in keeps its right
+    // columns as laid out: the favoured column's share is for a window that grew.
+    const bool asLaidOut = m_adopt && m_adoptWindowWidth > 0 && m_window->width() <= m_adoptWindowWidth;
     if (first || m_leftWidth <= 0) {
         const int adopted = m_adoptWidth > 0 ? m_adoptWidth : left.front()->width();
         m_leftWidth = m_adopt ? std::min(adopted, maxLeftWidth(m_window->width())) : preferredLeftWidth(m_window->width());
         m_adopt = false;
         m_adoptWidth = 0;
+        m_adoptWindowWidth = 0;
     }
     // The right area's columns (docks side by side; stacked or tabbed docks share a column)
     // share the rest of the window in proportion to their widths. Every dock gets a width and
@@ -101,7 +106,7 @@ void SideColumns::keepLeftWidth()
     // right columns' width above their minimum.
     std::size_t index = 0;
     for (const auto& [x, column] : columns) {
-        if (m_favoured && std::find(column.begin(), column.end(), m_favoured.data()) != column.end()) {
+        if (!asLaidOut && m_favoured && std::find(column.begin(), column.end(), m_favoured.data()) != column.end()) {
             int deficit = int(std::lround(m_favouredFraction * m_window->width())) - columnWidths[index];
             std::size_t other = 0;
             for (const auto& [ox, otherColumn] : columns) {

@@ -31,8 +31,11 @@ public:
     /// Keeps the width a layout restored now gives the column (a project's), once laid out:
     /// `savedWidth` when the project says what it was (a layout restored into a window of
     /// another size gives the left column the difference), else what the layout gives it. Either
-    /// is kept within maxLeftWidth.
-    void adoptLayoutNow(int savedWidth = 0);
+    /// is kept within maxLeftWidth. `savedWindowWidth`: the window's width when the layout was
+    /// saved (0: unknown); in a window no wider the right columns keep their widths as laid out
+    /// (a 3D view narrowed by the person stays narrow), in a wider one the favoured column gets
+    /// its share first.
+    void adoptLayoutNow(int savedWidth = 0, int savedWindowWidth = 0);
     /// The widest the left column is adopted in a window `width` pixels wide: 40 % of it, at
     /// least the preferred width (a wider column was the layout of a smaller window stretched).
     static int maxLeftWidth(int width);
@@ -55,6 +58,7 @@ private:
     int m_leftWidth = 0;
     bool m_adopt = false; ///< the first width kept is the one laid out (a restored layout)
     int m_adoptWidth = 0; ///< or this width, when a project said it
+    int m_adoptWindowWidth = 0; ///< the width of the window the adopted layout was saved in
     QPointer<QDockWidget> m_favoured;
     double m_favouredFraction = 0.0;
 };

@@ -47,6 +47,8 @@ struct ViewState {
     /// The docks' places and sizes (QMainWindow::saveState) and the left column's width.
     std::optional<QByteArray> windowState;
     std::optional<int> leftWidth;
+    /// The window's width the layout was saved in.
+    std::optional<int> windowWidth;
 };
 
 } // namespace bunraku::app

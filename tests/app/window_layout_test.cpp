@@ -255,6 +255,38 @@ TEST_CASE("a project reopens with its dock layout and ignores a malformed one", 
     }
 }
 
+TEST_CASE("a 3D view narrowed below a third of the window reopens as narrow in a window of the same size",
+          "[app][layout][project]")
+{
+    const auto folder = test::scratchDir("project-layout-narrow-view");
+    const QString file = QString::fromStdString((folder / "narrow.bunraku.json").string());
+    const auto settle = [] {
+        for (int pass = 0; pass < 6; ++pass) QCoreApplication::processEvents();
+    };
+    const QSize size(1500, 920);
+    int saved = 0;
+    {
+        auto window = test::demoWindow();
+        REQUIRE(window);
+        resetLayoutAt(*window, size);
+        settle();
+        const int laidOut = window->dock("viewDock")->width();
+        window->resizeDocks({window->dock("viewDock")}, {laidOut - 90}, Qt::Horizontal);
+        settle();
+        saved = window->dock("viewDock")->width();
+        INFO("laid out " << laidOut << ", narrowed to " << saved);
+        REQUIRE(saved * 3 < size.width()); // narrower than the third a larger window gives it
+        REQUIRE(window->files().saveProject(file));
+    }
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    resetLayoutAt(*window, size);
+    settle();
+    REQUIRE(window->files().openProject(file));
+    settle();
+    CHECK(window->dock("viewDock")->width() == Approx(saved).margin(4));
+}
+
 TEST_CASE("a project saved at 1366x768 reopens at 1920x1080 with every dock useful and the 3D view a third of the width",
           "[app][layout][project]")
 {
