@@ -131,7 +131,7 @@ TEST_CASE("hiding the 3D view during an export at its size stops with the cause"
     REQUIRE(allEntries(folder).isEmpty()); // the folder it made is gone again
 }
 
-TEST_CASE("a cancelled MP4 export leaves an existing MP4 of the same name untouched", "[app][video]")
+TEST_CASE("a cancelled MP4 export leaves an existing MP4 of the same name untouched", "[app][video][ffmpeg]")
 {
     if (!test::requirePeer(ffmpegInstalled(), "ffmpeg and ffprobe on PATH (MP4 cancel)", "apt-get install ffmpeg")) return;
     auto window = exportWindow(0.0);

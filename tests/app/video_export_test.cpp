@@ -25,7 +25,7 @@ TEST_CASE("the planned export frames cover the range at the take's or a chosen r
     REQUIRE(app::planFrames(5.0, 4, 3, 0.0).times.empty());
 }
 
-TEST_CASE("an MP4 of the 3D view has the frames and size asked for, and the time is restored", "[app][video]")
+TEST_CASE("an MP4 of the 3D view has the frames and size asked for, and the time is restored", "[app][video][ffmpeg]")
 {
     if (!test::requirePeer(ffmpegInstalled(), "ffmpeg and ffprobe on PATH (MP4 export)", "apt-get install ffmpeg")) return;
     auto window = exportWindow(1.0);
@@ -95,7 +95,7 @@ TEST_CASE("a PNG sequence of the 3D view has one image per planned frame", "[app
     REQUIRE(first != last); // the puppet moved between frames 2 and 6
 }
 
-TEST_CASE("cancelling a video export leaves no file behind", "[app][video]")
+TEST_CASE("cancelling a video export leaves no file behind", "[app][video][ffmpeg]")
 {
     auto window = exportWindow(0.5);
     REQUIRE(window);
@@ -139,7 +139,7 @@ TEST_CASE("cancelling a video export leaves no file behind", "[app][video]")
     REQUIRE(window->document().currentTime() == Approx(0.5));
 }
 
-TEST_CASE("an MP4 export without ffmpeg, or with a failing one, says why and writes nothing", "[app][video]")
+TEST_CASE("an MP4 export without ffmpeg, or with a failing one, says why and writes nothing", "[app][video][ffmpeg]")
 {
     auto window = exportWindow(0.0);
     REQUIRE(window);

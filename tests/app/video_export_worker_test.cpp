@@ -79,7 +79,7 @@ TEST_CASE("a job renders on the GUI thread and reports progress, results and can
     CHECK(finished == 1);
 }
 
-TEST_CASE("ffmpeg writes into a private folder of its own, moved into place when it succeeds", "[app][video]")
+TEST_CASE("ffmpeg writes into a private folder of its own, moved into place when it succeeds", "[app][video][ffmpeg]")
 {
     if (!test::requirePeer(ffmpegInstalled(), "ffmpeg and ffprobe on PATH (MP4 export)", "apt-get install ffmpeg")) return;
     auto window = exportWindow(0.0);
