@@ -86,6 +86,20 @@ public:
         out = value->get<double>();
     }
 
+    /// A numeric parameter with its range from the one table (stage_parameters.h).
+    template <class Number> void number(const char* key, Number& out)
+    {
+        const json* value = find(key);
+        if (!value) return;
+        const std::string path = m_path.substr(m_path.find('.') + 1) + "." + key; // "parameters.normalise" -> "normalise.tau"
+        const ParameterRange& range = parameterRange(path);
+        if (!value->is_number() || !range.contains(value->get<double>())) {
+            fail(m_path + "." + key, rangeProblem(range, *value));
+            return;
+        }
+        out = Number(value->get<double>());
+    }
+
     void boolean(const char* key, bool& out)
     {
         const json* value = find(key);
@@ -202,7 +216,7 @@ void readNormalise(Reader& r, NormaliseParameters& p)
                 "averageBase", "averageExcluded", "scales", "weighting", "level", "approximationWeight"});
     r.choice("weighting", p.weighting, kWeightings);
     r.choice("level", p.level, kLevels);
-    r.real("approximationWeight", p.approximationWeight, 0.0, kMaxApproximationWeight);
+    r.number("approximationWeight", p.approximationWeight);
     if (const json* scales = r.find("scales")) {
         if (!scales->is_array() || scales->size() > std::size_t(kMaxScale)) {
             r.fail(r.path() + ".scales", "expected an array of at most 256 scales, got " + describe(*scales));
@@ -217,7 +231,7 @@ void readNormalise(Reader& r, NormaliseParameters& p)
             p.scales.push_back(scale.get<double>());
         }
     }
-    r.integer("averageBase", p.averageBase, 0, kMaxTakeIndex);
+    r.number("averageBase", p.averageBase);
     if (const json* excluded = r.find("averageExcluded")) {
         if (!excluded->is_array() || excluded->size() > 10000) {
             r.fail(r.path() + ".averageExcluded", "expected an array of take indices, got " + describe(*excluded));
@@ -225,17 +239,17 @@ void readNormalise(Reader& r, NormaliseParameters& p)
         }
         for (std::size_t i = 0; i < excluded->size(); ++i) {
             const json& take = (*excluded)[i];
-            if (!take.is_number_integer() || take.get<std::int64_t>() < 1 || take.get<std::int64_t>() > kMaxTakeIndex) {
-                r.fail(r.path() + ".averageExcluded[" + std::to_string(i) + "]", "expected a take index 1.." +
-                                                                                     std::to_string(kMaxTakeIndex) + ", got " + describe(take));
+            const ParameterRange& range = parameterRange("normalise.averageExcluded");
+            if (!take.is_number() || !range.contains(take.get<double>())) {
+                r.fail(r.path() + ".averageExcluded[" + std::to_string(i) + "]", rangeProblem(range, take));
                 return;
             }
-            p.averageExcluded.push_back(int(take.get<std::int64_t>()));
+            p.averageExcluded.push_back(int(take.get<double>()));
         }
     }
-    r.integer("tau", p.tau, 0, kMaxTau);
-    r.integer("searchBand", p.searchBand, 0, kMaxSearchBand);
-    r.integer("maxScale", p.maxScale, 1, kMaxScale);
+    r.number("tau", p.tau);
+    r.number("searchBand", p.searchBand);
+    r.number("maxScale", p.maxScale);
     r.text("coupling", p.coupling, 4096);
     r.choice("path", p.path, kPaths);
     if (const json* reference = r.find("reference")) readReference(r, *reference, r.path() + ".reference", p.reference);
@@ -262,7 +276,7 @@ void readNormalise(Reader& r, NormaliseParameters& p)
 void readDesign(Reader& r, DesignEdits& d)
 {
     r.onlyKeys({"emotionWeight", "warp", "gains", "boundaries"});
-    r.real("emotionWeight", d.emotionWeight, kMinEmotionWeight, kMaxEmotionWeight);
+    r.number("emotionWeight", d.emotionWeight);
     if (const json* warp = r.find("warp"); warp && !warp->is_null()) {
         if (!warp->is_array() || warp->size() < 2 || warp->size() > kMaxWarpPoints) {
             r.fail(r.path() + ".warp", "expected null or 2.." + std::to_string(kMaxWarpPoints) +
@@ -354,6 +368,11 @@ template <> const std::map<std::string, LevelAlignment>& parameterNames<LevelAli
 template <> const std::map<std::string, FrontBackAxis>& parameterNames<FrontBackAxis>() { return kFrontBack; }
 template <> const std::map<std::string, MassSource>& parameterNames<MassSource>() { return kMassSources; }
 template <> const std::map<std::string, SegmentTable>& parameterNames<SegmentTable>() { return kSegmentTables; }
+
+std::string rangeProblem(const ParameterRange& range, const json& value)
+{
+    return "expected " + range.expected() + ", got " + describe(value);
+}
 
 std::string pathName(PathMethod path) { return parameterName(path); }
 
@@ -461,36 +480,36 @@ Result<ChainParameters> chainParametersFromJson(const json& value, const std::st
         r.boolean("alignHeading", p.preprocess.alignHeading);
         r.boolean("alignPosition", p.preprocess.alignPosition);
         r.choice("positionAlignment", p.preprocess.positionAlignment, kPositionAlignments);
-        r.integer("referenceTake", p.preprocess.referenceTakeIndex, 0, kMaxTakeIndex);
+        r.number("referenceTake", p.preprocess.referenceTakeIndex);
     });
     root.nested("normalise", [&](Reader& r) { readNormalise(r, p.normalise); });
     root.nested("decompose", [&](Reader& r) {
         r.onlyKeys({"input", "method", "M"});
         r.choice("input", p.decompose.input, kInputs);
         r.choice("method", p.decompose.method, kMethods);
-        r.integer("M", p.decompose.correlationLength, 0, kMaxCorrelationLength);
+        r.number("M", p.decompose.correlationLength);
     });
     root.nested("fluctuations", [&](Reader& r) {
         r.onlyKeys({"armaP", "armaQ", "welchSegment"});
-        r.integer("armaP", p.fluctuations.armaP, 0, kMaxArmaOrder);
-        r.integer("armaQ", p.fluctuations.armaQ, 0, kMaxArmaOrder);
-        r.integer("welchSegment", p.fluctuations.welchSegment, 2, kMaxWelchSegment);
+        r.number("armaP", p.fluctuations.armaP);
+        r.number("armaQ", p.fluctuations.armaQ);
+        r.number("welchSegment", p.fluctuations.welchSegment);
     });
     root.nested("axis", [&](Reader& r) {
         r.onlyKeys({"frontBack", "massSpacing", "masses", "segments", "tau", "searchBand", "maxScale", "approximationWeight", "level", "path", "controlSpacing",
                     "refinementPasses"});
         r.choice("frontBack", p.axis.frontBack, kFrontBack);
-        r.real("massSpacing", p.axis.massSpacing, kMinMassSpacing, kMaxMassSpacing);
+        r.number("massSpacing", p.axis.massSpacing);
         r.choice("masses", p.axis.masses, kMassSources);
         r.choice("segments", p.axis.segments, kSegmentTables);
-        r.integer("tau", p.axis.tau, 0, kMaxTau);
-        r.integer("searchBand", p.axis.searchBand, 0, kMaxSearchBand);
-        r.integer("maxScale", p.axis.maxScale, 1, kMaxScale);
-        r.real("approximationWeight", p.axis.approximationWeight, 0.0, kMaxApproximationWeight);
+        r.number("tau", p.axis.tau);
+        r.number("searchBand", p.axis.searchBand);
+        r.number("maxScale", p.axis.maxScale);
+        r.number("approximationWeight", p.axis.approximationWeight);
         r.choice("level", p.axis.level, kLevels);
         r.choice("path", p.axis.path, kPaths);
-        r.integer("controlSpacing", p.axis.controlSpacing, 1, kMaxControlSpacing);
-        r.integer("refinementPasses", p.axis.refinementPasses, 0, kMaxRefinementPasses);
+        r.number("controlSpacing", p.axis.controlSpacing);
+        r.number("refinementPasses", p.axis.refinementPasses);
     });
     root.nested("design", [&](Reader& r) { readDesign(r, p.design); });
     if (!root.ok()) return root.error();

@@ -91,6 +91,11 @@ std::vector<std::string> parameterNameList()
     return list;
 }
 
+/// What the parameter files say of a value outside a numeric parameter's range (parameterRange):
+/// "expected an integer in 0..200, got the number 500". The command line's options bound to a
+/// parameter say the same of their value.
+std::string rangeProblem(const ParameterRange& range, const nlohmann::json& value);
+
 /// "greedy" / "optimal"; "suggested" / "average" / a take index; "km2o" / "least-squares" ...
 std::string pathName(PathMethod path);
 std::string referenceName(const ReferenceChoice& choice);

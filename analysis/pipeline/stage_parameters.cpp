@@ -7,7 +7,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <sstream>
+#include <stdexcept>
 
 namespace bunraku::analysis::pipeline {
 namespace {
@@ -25,6 +27,36 @@ Status checkInt(const std::string& name, int value, int low, int high)
         return outOfRange(name, std::to_string(low) + ".." + std::to_string(high), double(value));
     return okStatus();
 }
+
+/// `value` against the table's range of `path`.
+Status check(std::string_view path, double value)
+{
+    const ParameterRange& range = parameterRange(path);
+    if (!range.contains(value)) return outOfRange(std::string(path), range.interval(), value);
+    return okStatus();
+}
+
+constexpr ParameterRange kRanges[] = {
+    {"preprocess.referenceTake", 0, kMaxTakeIndex},
+    {"normalise.tau", 0, kMaxTau},
+    {"normalise.searchBand", 0, kMaxSearchBand},
+    {"normalise.maxScale", 1, kMaxScale},
+    {"normalise.averageBase", 0, kMaxTakeIndex},
+    {"normalise.averageExcluded", 1, kMaxTakeIndex},
+    {"normalise.approximationWeight", 0.0, kMaxApproximationWeight, false},
+    {"decompose.M", 0, kMaxCorrelationLength},
+    {"fluctuations.armaP", 0, kMaxArmaOrder},
+    {"fluctuations.armaQ", 0, kMaxArmaOrder},
+    {"fluctuations.welchSegment", 2, kMaxWelchSegment},
+    {"axis.massSpacing", kMinMassSpacing, kMaxMassSpacing, false},
+    {"axis.tau", 0, kMaxTau},
+    {"axis.searchBand", 0, kMaxSearchBand},
+    {"axis.maxScale", 1, kMaxScale},
+    {"axis.approximationWeight", 0.0, kMaxApproximationWeight, false},
+    {"axis.controlSpacing", 1, kMaxControlSpacing},
+    {"axis.refinementPasses", 0, kMaxRefinementPasses},
+    {"design.emotionWeight", kMinEmotionWeight, kMaxEmotionWeight, false},
+};
 
 Status checkReal(const std::string& name, double value, double low, double high, bool openLow = false)
 {
@@ -52,6 +84,30 @@ template <class... Checks> Status firstFailure(Checks&&... checks)
 }
 
 } // namespace
+
+bool ParameterRange::contains(double value) const
+{
+    return std::isfinite(value) && value >= low && value <= high && (!integer || value == std::floor(value));
+}
+
+std::string ParameterRange::interval() const
+{
+    std::ostringstream text;
+    if (integer) text << std::int64_t(low) << ".." << std::int64_t(high);
+    else text << "[" << low << ", " << high << "]";
+    return text.str();
+}
+
+std::string ParameterRange::expected() const { return (integer ? "an integer in " : "a number in ") + interval(); }
+
+std::span<const ParameterRange> parameterRanges() { return kRanges; }
+
+const ParameterRange& parameterRange(std::string_view path)
+{
+    for (const ParameterRange& range : kRanges)
+        if (range.path == path) return range;
+    throw std::logic_error("no range for the parameter " + std::string(path));
+}
 
 preprocess::PreprocessOptions PreprocessParameters::options() const
 {
@@ -164,14 +220,14 @@ int usableCorrelationLength(const Corpus& corpus)
 
 Status validate(const PreprocessParameters& p)
 {
-    return checkInt("preprocess.referenceTake", p.referenceTakeIndex, 0, kMaxTakeIndex);
+    return check("preprocess.referenceTake", p.referenceTakeIndex);
 }
 
 Status validate(const NormaliseParameters& p)
 {
-    return firstFailure([&] { return checkInt("normalise.tau", p.tau, 0, kMaxTau); },
-                        [&] { return checkInt("normalise.searchBand", p.searchBand, 0, kMaxSearchBand); },
-                        [&] { return checkInt("normalise.maxScale", p.maxScale, 1, kMaxScale); },
+    return firstFailure([&] { return check("normalise.tau", p.tau); },
+                        [&] { return check("normalise.searchBand", p.searchBand); },
+                        [&] { return check("normalise.maxScale", p.maxScale); },
                         [&]() -> Status {
                             if (p.coupling.empty())
                                 return makeError(ErrorCode::InvalidArgument, "normalise.coupling is empty (expected a preset "
@@ -181,8 +237,8 @@ Status validate(const NormaliseParameters& p)
                             return okStatus();
                         },
                         [&] { return checkReference("normalise.reference", p.reference); },
-                        [&] { return checkInt("normalise.averageBase", p.averageBase, 0, kMaxTakeIndex); },
-                        [&] { return checkReal("normalise.approximationWeight", p.approximationWeight, 0.0, kMaxApproximationWeight); },
+                        [&] { return check("normalise.averageBase", p.averageBase); },
+                        [&] { return check("normalise.approximationWeight", p.approximationWeight); },
                         [&]() -> Status {
                             if (p.scales.size() > std::size_t(kMaxScale))
                                 return makeError(ErrorCode::InvalidArgument, "normalise.scales: more than 256 scales");
@@ -194,7 +250,7 @@ Status validate(const NormaliseParameters& p)
                             if (p.averageExcluded.size() > 10000)
                                 return makeError(ErrorCode::InvalidArgument, "normalise.averageExcluded has more than 10000 takes");
                             for (int take : p.averageExcluded)
-                                if (auto status = checkInt("normalise.averageExcluded", take, 1, kMaxTakeIndex); !status) return status;
+                                if (auto status = check("normalise.averageExcluded", take); !status) return status;
                             return okStatus();
                         },
                         [&]() -> Status {
@@ -206,30 +262,30 @@ Status validate(const NormaliseParameters& p)
 
 Status validate(const DecomposeParameters& p)
 {
-    return checkInt("decompose.M", p.correlationLength, 0, kMaxCorrelationLength);
+    return check("decompose.M", p.correlationLength);
 }
 
 Status validate(const FluctuationParameters& p)
 {
-    return firstFailure([&] { return checkInt("fluctuations.armaP", p.armaP, 0, kMaxArmaOrder); },
-                        [&] { return checkInt("fluctuations.armaQ", p.armaQ, 0, kMaxArmaOrder); },
-                        [&] { return checkInt("fluctuations.welchSegment", p.welchSegment, 2, kMaxWelchSegment); });
+    return firstFailure([&] { return check("fluctuations.armaP", p.armaP); },
+                        [&] { return check("fluctuations.armaQ", p.armaQ); },
+                        [&] { return check("fluctuations.welchSegment", p.welchSegment); });
 }
 
 Status validate(const AxisParameters& p)
 {
-    return firstFailure([&] { return checkReal("axis.massSpacing", p.massSpacing, kMinMassSpacing, kMaxMassSpacing); },
-                        [&] { return checkInt("axis.tau", p.tau, 0, kMaxTau); },
-                        [&] { return checkInt("axis.searchBand", p.searchBand, 0, kMaxSearchBand); },
-                        [&] { return checkInt("axis.maxScale", p.maxScale, 1, kMaxScale); },
-                        [&] { return checkReal("axis.approximationWeight", p.approximationWeight, 0.0, kMaxApproximationWeight); },
-                        [&] { return checkInt("axis.controlSpacing", p.controlSpacing, 1, kMaxControlSpacing); },
-                        [&] { return checkInt("axis.refinementPasses", p.refinementPasses, 0, kMaxRefinementPasses); });
+    return firstFailure([&] { return check("axis.massSpacing", p.massSpacing); },
+                        [&] { return check("axis.tau", p.tau); },
+                        [&] { return check("axis.searchBand", p.searchBand); },
+                        [&] { return check("axis.maxScale", p.maxScale); },
+                        [&] { return check("axis.approximationWeight", p.approximationWeight); },
+                        [&] { return check("axis.controlSpacing", p.controlSpacing); },
+                        [&] { return check("axis.refinementPasses", p.refinementPasses); });
 }
 
 Status validate(const DesignEdits& d)
 {
-    if (auto status = checkReal("design.emotionWeight", d.emotionWeight, kMinEmotionWeight, kMaxEmotionWeight); !status)
+    if (auto status = check("design.emotionWeight", d.emotionWeight); !status)
         return status;
     if (d.warp) {
         if (d.warp->points.size() > kMaxWarpPoints)

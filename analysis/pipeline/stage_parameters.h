@@ -19,7 +19,9 @@
 
 #include <map>
 #include <optional>
+#include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace bunraku::analysis::pipeline {
@@ -206,6 +208,26 @@ inline constexpr std::size_t kMaxGainEdits = 100000;
 /// Frames a warp may reach (output and source): 10^8 frames, over 5 hours at 5 kHz.
 inline constexpr double kMaxWarpFrame = 1e8;
 inline constexpr double kMaxGain = 1e6;
+
+/// A numeric parameter's range: the one table that validation, the parameter files and the
+/// command line's options check (docs/FORMATS.md). `path` is the parameter's in the files
+/// ("normalise.tau"); for an array ("normalise.averageExcluded") the range of each element.
+struct ParameterRange {
+    std::string_view path;
+    double low = 0.0;
+    double high = 0.0;
+    bool integer = true;
+    bool contains(double value) const;
+    /// "0..200" for an integer, "[0, 1e+06]" for a number.
+    std::string interval() const;
+    /// What a value must be: "an integer in 0..200", "a number in [0, 1e+06]".
+    std::string expected() const;
+};
+/// Every numeric parameter of ChainParameters but the design's warp and gains, one entry each.
+std::span<const ParameterRange> parameterRanges();
+/// The entry of `path`; throws std::logic_error for a path the table does not hold (a
+/// parameter added without its range).
+const ParameterRange& parameterRange(std::string_view path);
 
 /// The largest NormaliseParameters::maxScale the normalisation accepts on `corpus`: the largest
 /// scale whose wavelet (sym3) fits its shortest take (thesis 5.3.2: 21 for 106 frames), at most

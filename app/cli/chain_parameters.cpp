@@ -8,6 +8,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
+#include <cstdlib>
+
 namespace bunraku::app::cli {
 
 analysis::pipeline::ChainParameters readChainParameters(const std::string& file)
@@ -30,10 +33,20 @@ namespace {
 namespace an = analysis;
 namespace pl = analysis::pipeline;
 
+/// The option's text as the parameter files would hold it: a number when it reads as one.
+nlohmann::json asJsonValue(const std::string& text)
+{
+    char* end = nullptr;
+    const double number = std::strtod(text.c_str(), &end);
+    if (!text.empty() && end == text.c_str() + text.size()) return number;
+    return text;
+}
+
 template <class Parameters>
-MatchingArguments defaultsOf(const Parameters& p)
+MatchingArguments defaultsOf(const Parameters& p, std::string section)
 {
     MatchingArguments arguments;
+    arguments.section = std::move(section);
     arguments.tau = p.tau;
     arguments.searchBand = p.searchBand;
     arguments.approximationWeight = p.approximationWeight;
@@ -49,24 +62,38 @@ const std::vector<std::string> kTimeScalings{"auto", "global", "none"};
 
 MatchingArguments matchingDefaults(const pl::NormaliseParameters& parameters)
 {
-    MatchingArguments arguments = defaultsOf(parameters);
+    MatchingArguments arguments = defaultsOf(parameters, "normalise");
     arguments.weighting = pl::parameterName(parameters.weighting);
     return arguments;
 }
 
-MatchingArguments matchingDefaults(const pl::AxisParameters& parameters) { return defaultsOf(parameters); }
+MatchingArguments matchingDefaults(const pl::AxisParameters& parameters) { return defaultsOf(parameters, "axis"); }
+
+CLI::Validator parameterCheck(std::string_view path)
+{
+    const pl::ParameterRange& range = pl::parameterRange(path);
+    // The description --help shows is CLI11's own ("INT in [0 - 200]"); the check and its message are the files'.
+    CLI::Validator check = range.integer ? CLI::Validator(CLI::Range(std::int64_t(range.low), std::int64_t(range.high)))
+                                         : CLI::Validator(CLI::Range(range.low, range.high));
+    check.operation([&range](std::string& text) -> std::string {
+        const nlohmann::json value = asJsonValue(text);
+        if (value.is_number() && range.contains(value.get<double>())) return {};
+        return pl::rangeProblem(range, value);
+    });
+    return check;
+}
 
 void addMatchingOptions(CLI::App* command, MatchingArguments& arguments, bool timeScale)
 {
     command->add_option("--tau", arguments.tau, "Half window tau, frames (thesis 3.5.2)")
-        ->check(CLI::Range(0, pl::kMaxTau))
+        ->check(parameterCheck(arguments.section + ".tau"))
         ->capture_default_str();
     command->add_option("--tcmp", arguments.searchBand, "Search band T_cmp, frames (thesis 3.5.1)")
-        ->check(CLI::Range(0, pl::kMaxSearchBand))
+        ->check(parameterCheck(arguments.section + ".searchBand"))
         ->capture_default_str();
     command->add_option("--approximation-weight", arguments.approximationWeight,
                         "Weight M of the approximation term (thesis eq. 5.17; 0 = off)")
-        ->check(CLI::Range(0.0, pl::kMaxApproximationWeight))
+        ->check(parameterCheck(arguments.section + ".approximationWeight"))
         ->capture_default_str();
     command->add_option("--path", arguments.path,
                         "Correspondence path: optimal (the least-cost monotone path) or greedy (the thesis's scan, 3.5.3)")

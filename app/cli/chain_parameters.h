@@ -12,6 +12,7 @@
 #include <CLI/CLI.hpp>
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace bunraku::app::cli {
@@ -41,12 +42,18 @@ Enum namedParameter(const std::string& name)
     throw CliError("'" + name + "' is not one of the names the parameter files use");
 }
 
+/// The check of an option bound to the numeric parameter `path` ("normalise.tau"): the range of
+/// the one table (analysis::pipeline::parameterRange) and the parameter files' message for a value
+/// outside it ("--tau: expected an integer in 0..200, got the number 500"). --help shows the range.
+CLI::Validator parameterCheck(std::string_view path);
+
 /// The wavelet matching's options as every command that matches takes them - `normalise` and
 /// `experiment truth` (thesis 3.5), `phase` and `experiment axis` (5.3): one spelling, one check
 /// and one help line per option, the ranges of the analysis's table of limits
 /// (stage_parameters.h) and the names of the parameter files' tables. The defaults are the
 /// command's stage's (matchingDefaults).
 struct MatchingArguments {
+    std::string section; ///< "normalise" or "axis": whose parameters the options are (their ranges)
     int tau = 0;
     int searchBand = 0;
     double approximationWeight = 0.0;

@@ -1,5 +1,6 @@
 // Subcommands: info, convert, preprocess.
 #include "app/cli/commands.h"
+#include "app/cli/chain_parameters.h"
 #include "app/cli/import_options.h"
 #include "app/cli/take_output.h"
 #include "app/cli/output_guard.h"
@@ -578,7 +579,7 @@ void addIoCommands(CommandSet& commands)
             ->check(CLI::IsMember({"onset", "xcorr"}))
             ->capture_default_str();
         preprocess->add_option("--reference-take", arguments->referenceTake, "Take index of each cell's time reference; 0 = automatic (median onset among the longest takes)")
-            ->check(CLI::Range(0, analysis::pipeline::kMaxTakeIndex))
+            ->check(parameterCheck("preprocess.referenceTake"))
             ->capture_default_str();
         preprocess->add_option("--max-shift", arguments->maxShift, "Largest shift in frames tried by xcorr")
             ->check(CLI::Range(0, 1000000))

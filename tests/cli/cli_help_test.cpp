@@ -5,6 +5,7 @@
 
 #include "app/build_info.h"
 #include "analysis/decompose/emotion_weight.h"
+#include "analysis/pipeline/parameters_json.h"
 #include "analysis/pipeline/stage_parameters.h"
 
 #include <catch2/catch.hpp>
@@ -234,5 +235,64 @@ TEST_CASE("every subcommand that does work offers a --json summary for batch job
     for (const auto& command : commands) {
         INFO(command << " has no --json run in this test");
         CHECK(run.count(command) == 1);
+    }
+}
+
+TEST_CASE("an option bound to a parameter refuses what the parameter files refuse with their message", "[cli][help][limits]")
+{
+    namespace pl = bunraku::analysis::pipeline;
+    struct Bound {
+        std::vector<std::string> words; ///< the command and what it needs before the option is checked
+        std::string option;
+        std::string path; ///< the parameter in the files ("normalise.tau")
+        std::string value;
+    };
+    const std::string folder = bunraku::test::scratchDir("cli-parameter-ranges").string();
+    const std::vector<Bound> bound = {
+        {{"normalise", folder}, "--tau", "normalise.tau", "201"},
+        {{"normalise", folder}, "--tcmp", "normalise.searchBand", "16001"},
+        {{"normalise", folder}, "--approximation-weight", "normalise.approximationWeight", "2e6"},
+        {{"normalise", folder}, "--exclude", "normalise.averageExcluded", "0"},
+        {{"normalise", folder}, "--base", "normalise.averageBase", "1000001"},
+        {{"normalise", folder}, "--tau", "normalise.tau", "abc"},
+        {{"phase"}, "--tau", "axis.tau", "2.5"},
+        {{"phase"}, "--tcmp", "axis.searchBand", "16001"},
+        {{"phase"}, "--max-scale", "axis.maxScale", "0"},
+        {{"phase"}, "--control-spacing", "axis.controlSpacing", "0"},
+        {{"phase"}, "--spacing", "axis.massSpacing", "0.25"},
+        {{"phase"}, "--approximation-weight", "axis.approximationWeight", "2e6"},
+        {{"decompose", "demo"}, "--M", "decompose.M", "1001"},
+        {{"decompose", "demo"}, "--arma-table", "fluctuations.armaP", "5"},
+        {{"emotion", "demo"}, "--weight", "design.emotionWeight", "3.5"},
+        {{"preprocess", folder}, "--reference-take", "preprocess.referenceTake", "1000001"},
+    };
+    for (const Bound& b : bound) {
+        // The parameter files' reader, the peer: the same value at the same path.
+        const auto dot = b.path.find('.');
+        nlohmann::json value = b.value == "abc" ? nlohmann::json(b.value) : nlohmann::json(std::stod(b.value));
+        if (b.path == "normalise.averageExcluded") value = nlohmann::json::array({value});
+        const nlohmann::json file = {{b.path.substr(0, dot), {{b.path.substr(dot + 1), value}}}};
+        const auto read = pl::chainParametersFromJson(file, "file");
+        REQUIRE_FALSE(read.ok());
+        const std::string message = read.error().message.substr(read.error().message.rfind(": expected") + 2);
+        std::vector<std::string> words = b.words;
+        words.push_back(b.option);
+        words.push_back(b.value);
+        if (b.option == "--arma-table") words.push_back("0");
+        const auto run = runBunraku(words);
+        INFO(b.words.front() << " " << b.option << " " << b.value << ": " << run.err << "\nthe files: " << read.error().message);
+        CHECK(run.exitCode == 2);
+        CHECK(run.err.find(b.option + ": " + message) != std::string::npos);
+    }
+    // Every entry of the table is a parameter the files read, with the range they check.
+    for (const pl::ParameterRange& range : pl::parameterRanges()) {
+        const std::string path(range.path);
+        const auto dot = path.find('.');
+        nlohmann::json past = range.high + 1.0;
+        if (path == "normalise.averageExcluded") past = nlohmann::json::array({past});
+        const auto read = pl::chainParametersFromJson({{path.substr(0, dot), {{path.substr(dot + 1), past}}}}, "file");
+        INFO(path);
+        REQUIRE_FALSE(read.ok());
+        CHECK(read.error().message.find(range.expected()) != std::string::npos);
     }
 }
