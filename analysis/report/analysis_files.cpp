@@ -2,6 +2,8 @@
 
 #include "analysis/axis/axis_channels.h"
 #include "analysis/decompose/emotion_weight.h"
+#include "analysis/decompose/km2o_decomposition.h"
+#include "analysis/decompose/spectrum.h"
 #include "analysis/io/atomic_file.h"
 #include "analysis/io/staged_folder.h"
 #include "analysis/io/take_csv.h"
@@ -9,6 +11,11 @@
 #include "analysis/pipeline/parameters_json.h"
 
 #include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
 
 namespace bunraku::analysis::report {
 namespace {
@@ -166,6 +173,122 @@ Result<std::vector<OutputFile>> fluctuationTakeFiles(const Decomposition& d)
         if (!csv) return csv.error();
         files.push_back({name, std::move(csv).value()});
     }
+    return files;
+}
+
+namespace {
+
+/// Each take's spectra of eta (spectra.csv holds the cells' averages).
+Result<std::string> spectraCsv(const Decomposition& d, bool useWelch, int welchSegment)
+{
+    std::ostringstream out;
+    out << std::setprecision(10) << "function,emotion,take,channel,frequency_hz,power\n";
+    for (const auto& eta : d.fluctuations) {
+        if (cellTakeCount(d, eta.labels.function, eta.labels.emotion) < 2) continue; // one take: no fluctuation (eq. 4.24)
+        for (std::size_t ch = 0; ch < d.channels.size(); ++ch) {
+            const Eigen::VectorXd x = eta.values.col(Eigen::Index(ch));
+            WelchOptions welchOptions;
+            welchOptions.segmentLength = std::min<int>(welchSegment, int(x.size()));
+            auto spectrum = useWelch ? welch(x, d.rateHz, welchOptions) : periodogram(x, d.rateHz);
+            if (!spectrum) return spectrum.error();
+            const Spectrum& s = *spectrum;
+            for (Eigen::Index k = 0; k < s.power.size(); ++k)
+                out << eta.labels.function << ',' << eta.labels.emotion << ',' << eta.labels.takeIndex << ','
+                    << d.channels[ch].name() << ',' << s.frequencyHz(k) << ',' << s.power(k) << '\n';
+        }
+    }
+    return out.str();
+}
+
+std::string armaTakesCsv(const Decomposition& d, ArmaOrderSearch search, int maxOrder)
+{
+    std::ostringstream out;
+    out << std::setprecision(8) << "function,emotion,take,channel,p,q,fpe,innovation_variance";
+    for (int m = 1; m <= maxOrder; ++m) out << ",a" << m;
+    for (int n = 0; n <= maxOrder; ++n) out << ",b" << n;
+    for (int n = 0; n <= maxOrder; ++n) out << ",b" << n << "_thesis";
+    out << '\n';
+    ArmaOrderOptions options;
+    options.maxOrder = maxOrder;
+    options.search = search;
+    for (const auto& eta : d.fluctuations) {
+        if (cellTakeCount(d, eta.labels.function, eta.labels.emotion) < 2) continue; // one take: no fluctuation (eq. 4.24)
+        for (std::size_t ch = 0; ch < d.channels.size(); ++ch) {
+            const Eigen::VectorXd x = eta.values.col(Eigen::Index(ch));
+            if (!(x.squaredNorm() > 0.0)) continue;
+            auto selection = selectArmaOrder(x, options);
+            if (!selection) continue; // too short for any order: nothing to report
+            const ArmaModel& m = selection->best;
+            out << eta.labels.function << ',' << eta.labels.emotion << ',' << eta.labels.takeIndex << ','
+                << d.channels[ch].name() << ',' << m.p << ',' << m.q << ',' << m.fpe << ',' << m.innovationVariance;
+            for (int i = 0; i < maxOrder; ++i) out << ',' << (i < m.p ? std::to_string(m.a(i)) : "");
+            for (int i = 0; i <= maxOrder; ++i) out << ',' << (i <= m.q ? std::to_string(m.b(i)) : "");
+            for (int i = 0; i <= maxOrder; ++i) out << ',' << (i <= m.q ? std::to_string(m.bThesis(i)) : "");
+            out << '\n';
+        }
+    }
+    return out.str();
+}
+
+} // namespace
+
+Result<nlohmann::json> groundTruthErrorsJson(const Decomposition& d, const synth::DemoGroundTruth& truth)
+{
+    nlohmann::json out = nlohmann::json::object();
+    auto percent = [](const Eigen::MatrixXd& estimate, const Eigen::MatrixXd& reference) {
+        const double den = reference.squaredNorm();
+        return den > 0.0 ? 100.0 * (estimate - reference).squaredNorm() / den : 0.0;
+    };
+    auto rms = [](const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
+        return std::sqrt((a - b).squaredNorm() / double(std::max<Eigen::Index>(1, a.size())));
+    };
+    // y as a pose (Euler angles, compared modulo 360); z as rotation coordinates about the
+    // function's chart on both sides (the truth's z is the difference of its cell motion and y).
+    auto truthTake = [&](const Eigen::MatrixXd& values) {
+        Take take;
+        take.values = values;
+        take.channels = d.channels;
+        return take;
+    };
+    for (std::size_t i = 0; i < d.functions.size(); ++i) {
+        const auto& f = d.functions[i];
+        const auto* t = truth.function(f.function);
+        if (!t || t->motion.rows() != f.values.rows() || t->motion.cols() != f.values.cols()) continue;
+        auto component = functionComponentTake(d, f.function);
+        if (!component) return component.error();
+        Eigen::MatrixXd y = component->values;
+        for (Eigen::Index c = 0; c < y.cols(); ++c)
+            if (d.channels[std::size_t(c)].unit == "deg")
+                for (Eigen::Index r = 0; r < y.rows(); ++r) y(r, c) = t->motion(r, c) + std::remainder(y(r, c) - t->motion(r, c), 360.0);
+        out["y"][f.function] = {{"relative_error_percent", percent(y, t->motion)}, {"rms", rms(y, t->motion)}};
+    }
+    for (const auto& z : d.emotions) {
+        const auto* t = truth.cell(z.function, z.emotion);
+        const auto* y = truth.function(z.function);
+        const int function = [&] {
+            for (std::size_t i = 0; i < d.functions.size(); ++i)
+                if (d.functions[i].function == z.function) return int(i);
+            return -1;
+        }();
+        if (!t || !y || function < 0 || t->motion.rows() != z.values.rows() || t->motion.cols() != z.values.cols() ||
+            y->motion.rows() != z.values.rows())
+            continue;
+        const RotationChart& chart = d.charts[std::size_t(function)];
+        const Eigen::MatrixXd trueZ = rotationCoordinates(truthTake(t->motion), chart) - rotationCoordinates(truthTake(y->motion), chart);
+        out["z"][z.function + "/" + z.emotion] = {{"rms", rms(z.values, trueZ)}};
+    }
+    return out;
+}
+
+Result<std::vector<OutputFile>> takeFluctuationFiles(const Decomposition& d, const TakeFluctuationOptions& options)
+{
+    std::vector<OutputFile> files;
+    for (const bool useWelch : {false, true}) {
+        auto csv = spectraCsv(d, useWelch, options.welchSegment);
+        if (!csv) return csv.error();
+        files.push_back({useWelch ? "spectra_welch.csv" : "spectra_periodogram.csv", std::move(csv).value()});
+    }
+    files.push_back({"arma_takes.csv", armaTakesCsv(d, options.search, options.armaMaxOrder)});
     return files;
 }
 

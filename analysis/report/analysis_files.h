@@ -12,7 +12,9 @@
 /// Formats: docs/FORMATS.md.
 
 #include "analysis/core/result.h"
+#include "analysis/decompose/arma.h"
 #include "analysis/pipeline/chain.h"
+#include "analysis/synth/demo_corpus.h"
 
 #include <nlohmann/json.hpp>
 
@@ -52,6 +54,22 @@ Result<std::vector<OutputFile>> fluctuationTakeFiles(const Decomposition& decomp
 /// spectra.csv (each cell's Welch spectra of eta, averaged over its takes) and arma_table.csv
 /// (Table 4.1: ARMA(p,q) averaged per cell).
 std::vector<OutputFile> fluctuationFiles(const pipeline::FluctuationOutput& fluctuations);
+
+/// What `decompose` writes of each take's fluctuation beyond `analyse`'s files, for every take of
+/// a cell of two or more (one take has no fluctuation, eq. 4.24):
+///   spectra_periodogram.csv, spectra_welch.csv   eta's spectra (Welch segments of `welchSegment` frames)
+///   arma_takes.csv                               each channel's ARMA order chosen by FPE, up to `armaMaxOrder`
+struct TakeFluctuationOptions {
+    int welchSegment = 32;
+    ArmaOrderSearch search = ArmaOrderSearch::EqualOrders;
+    int armaMaxOrder = 4;
+};
+Result<std::vector<OutputFile>> takeFluctuationFiles(const Decomposition& decomposition, const TakeFluctuationOptions& options);
+
+/// The decomposition against a synthetic corpus's ground truth (`decompose` on a demo corpus):
+/// {"y": {f: {"relative_error_percent", "rms"}}, "z": {"f/e": {"rms"}}}; y compared as a pose
+/// (angles modulo 360), z as rotation coordinates about the function's chart on both sides.
+Result<nlohmann::json> groundTruthErrorsJson(const Decomposition& decomposition, const synth::DemoGroundTruth& truth);
 
 /// What KM2O did per cell, for summary.json and the CLI's --json summaries (docs/FORMATS.md):
 /// {"estimable", "outcome", "notes", "cells": [{"function", "emotion", "takes", "gamma": "own

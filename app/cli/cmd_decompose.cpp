@@ -4,22 +4,15 @@
 #include "app/cli/take_output.h"
 #include "app/cli/output_guard.h"
 
-#include "analysis/decompose/arma.h"
 #include "analysis/decompose/emotion_weight.h"
 #include "analysis/decompose/km2o_decomposition.h"
 #include "analysis/decompose/km2o_experiment.h"
-#include "analysis/decompose/least_squares.h"
-#include "analysis/decompose/spectrum.h"
-#include "analysis/io/corpus_io.h"
-#include "analysis/io/staged_folder.h"
-#include "analysis/io/take_csv.h"
-#include "analysis/io/text_format.h"
 #include "analysis/core/parallel.h"
+#include "analysis/io/corpus_io.h"
 #include "analysis/pipeline/chain.h"
 #include "analysis/pipeline/parameters_json.h"
 #include "analysis/pipeline/stages.h"
 #include "analysis/report/analysis_files.h"
-#include "analysis/preprocess/preprocess.h"
 #include "analysis/synth/demo_corpus.h"
 
 #include <algorithm>
@@ -167,103 +160,6 @@ nlohmann::json chainSummary(const ChainOutcome& chain)
     return summary;
 }
 
-/// Each take's spectra of eta (`decompose` only; spectra.csv holds the cells' averages).
-std::string spectraCsv(const Decomposition& d, bool useWelch, int welchSegment)
-{
-    std::ostringstream out;
-    out << std::setprecision(10) << "function,emotion,take,channel,frequency_hz,power\n";
-    for (const auto& eta : d.fluctuations) {
-        if (cellTakeCount(d, eta.labels.function, eta.labels.emotion) < 2) continue; // one take: no fluctuation (eq. 4.24)
-        for (std::size_t ch = 0; ch < d.channels.size(); ++ch) {
-            const Eigen::VectorXd x = eta.values.col(Eigen::Index(ch));
-            WelchOptions welchOptions;
-            welchOptions.segmentLength = std::min<int>(welchSegment, int(x.size()));
-            const Spectrum s = unwrap(useWelch ? welch(x, d.rateHz, welchOptions) : periodogram(x, d.rateHz));
-            for (Eigen::Index k = 0; k < s.power.size(); ++k)
-                out << eta.labels.function << ',' << eta.labels.emotion << ',' << eta.labels.takeIndex << ','
-                    << d.channels[ch].name() << ',' << s.frequencyHz(k) << ',' << s.power(k) << '\n';
-        }
-    }
-    return out.str();
-}
-
-std::string armaTakesCsv(const Decomposition& d, ArmaOrderSearch search, int maxOrder)
-{
-    std::ostringstream out;
-    out << std::setprecision(8) << "function,emotion,take,channel,p,q,fpe,innovation_variance";
-    for (int m = 1; m <= maxOrder; ++m) out << ",a" << m;
-    for (int n = 0; n <= maxOrder; ++n) out << ",b" << n;
-    for (int n = 0; n <= maxOrder; ++n) out << ",b" << n << "_thesis";
-    out << '\n';
-    ArmaOrderOptions options;
-    options.maxOrder = maxOrder;
-    options.search = search;
-    for (const auto& eta : d.fluctuations) {
-        if (cellTakeCount(d, eta.labels.function, eta.labels.emotion) < 2) continue; // one take: no fluctuation (eq. 4.24)
-        for (std::size_t ch = 0; ch < d.channels.size(); ++ch) {
-            const Eigen::VectorXd x = eta.values.col(Eigen::Index(ch));
-            if (!(x.squaredNorm() > 0.0)) continue;
-            auto selection = selectArmaOrder(x, options);
-            if (!selection) continue; // too short for any order: nothing to report
-            const ArmaModel& m = selection->best;
-            out << eta.labels.function << ',' << eta.labels.emotion << ',' << eta.labels.takeIndex << ','
-                << d.channels[ch].name() << ',' << m.p << ',' << m.q << ',' << m.fpe << ',' << m.innovationVariance;
-            for (int i = 0; i < maxOrder; ++i) out << ',' << (i < m.p ? std::to_string(m.a(i)) : "");
-            for (int i = 0; i <= maxOrder; ++i) out << ',' << (i <= m.q ? std::to_string(m.b(i)) : "");
-            for (int i = 0; i <= maxOrder; ++i) out << ',' << (i <= m.q ? std::to_string(m.bThesis(i)) : "");
-            out << '\n';
-        }
-    }
-    return out.str();
-}
-
-/// Relative error (eq. 4.40 style, percent) of y^i and z^{ij} against the synthetic truth.
-nlohmann::json truthErrors(const Decomposition& d, const synth::DemoGroundTruth& truth)
-{
-    nlohmann::json out = nlohmann::json::object();
-    auto percent = [](const Eigen::MatrixXd& estimate, const Eigen::MatrixXd& reference) {
-        const double den = reference.squaredNorm();
-        return den > 0.0 ? 100.0 * (estimate - reference).squaredNorm() / den : 0.0;
-    };
-    auto rms = [](const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
-        return std::sqrt((a - b).squaredNorm() / double(std::max<Eigen::Index>(1, a.size())));
-    };
-    // y as a pose (Euler angles, compared modulo 360); z as rotation coordinates about the
-    // function's chart on both sides (the truth's z is the difference of its cell motion and y).
-    auto truthTake = [&](const Eigen::MatrixXd& values) {
-        Take take;
-        take.values = values;
-        take.channels = d.channels;
-        return take;
-    };
-    for (std::size_t i = 0; i < d.functions.size(); ++i) {
-        const auto& f = d.functions[i];
-        const auto* t = truth.function(f.function);
-        if (!t || t->motion.rows() != f.values.rows() || t->motion.cols() != f.values.cols()) continue;
-        Eigen::MatrixXd y = unwrap(functionComponentTake(d, f.function)).values;
-        for (Eigen::Index c = 0; c < y.cols(); ++c)
-            if (d.channels[std::size_t(c)].unit == "deg")
-                for (Eigen::Index r = 0; r < y.rows(); ++r) y(r, c) = t->motion(r, c) + std::remainder(y(r, c) - t->motion(r, c), 360.0);
-        out["y"][f.function] = {{"relative_error_percent", percent(y, t->motion)}, {"rms", rms(y, t->motion)}};
-    }
-    for (const auto& z : d.emotions) {
-        const auto* t = truth.cell(z.function, z.emotion);
-        const auto* y = truth.function(z.function);
-        const int function = [&] {
-            for (std::size_t i = 0; i < d.functions.size(); ++i)
-                if (d.functions[i].function == z.function) return int(i);
-            return -1;
-        }();
-        if (!t || !y || function < 0 || t->motion.rows() != z.values.rows() || t->motion.cols() != z.values.cols() ||
-            y->motion.rows() != z.values.rows())
-            continue;
-        const RotationChart& chart = d.charts[std::size_t(function)];
-        const Eigen::MatrixXd trueZ = rotationCoordinates(truthTake(t->motion), chart) - rotationCoordinates(truthTake(y->motion), chart);
-        out["z"][z.function + "/" + z.emotion] = {{"rms", rms(z.values, trueZ)}};
-    }
-    return out;
-}
-
 struct DecomposeArgs {
     ChainArgs chain;
     std::string output;
@@ -289,19 +185,16 @@ void runDecompose(const DecomposeArgs& args)
     // `analyse` writes too come from its writers (the same bytes); eta, each take's spectra
     // and ARMA orders are this command's own.
     const fs::path out = args.output;
-    std::vector<std::pair<std::string, std::string>> outputs; // file name, content
-    const auto add = [&](std::vector<report::OutputFile> files) {
-        for (auto& file : files) outputs.emplace_back(std::move(file.name), std::move(file.content));
-    };
+    std::vector<report::OutputFile> outputs;
+    const auto add = [&](std::vector<report::OutputFile> files) { std::move(files.begin(), files.end(), std::back_inserter(outputs)); };
+    const report::TakeFluctuationOptions takeOptions{chain.parameters.fluctuations.welchSegment,
+                                                     args.armaSearch == "all" ? ArmaOrderSearch::AllPairs : ArmaOrderSearch::EqualOrders,
+                                                     args.armaMaxOrder};
     aboutCorpus(corpusPath, [&] {
         add(unwrap(report::decompositionFiles(*chain.decomposed)));
         add(unwrap(report::fluctuationTakeFiles(d)));
         add(report::fluctuationFiles(*chain.fluctuations));
-        const int welchSegment = chain.parameters.fluctuations.welchSegment;
-        outputs.emplace_back("spectra_periodogram.csv", spectraCsv(d, false, welchSegment));
-        outputs.emplace_back("spectra_welch.csv", spectraCsv(d, true, welchSegment));
-        const ArmaOrderSearch search = args.armaSearch == "all" ? ArmaOrderSearch::AllPairs : ArmaOrderSearch::EqualOrders;
-        outputs.emplace_back("arma_takes.csv", armaTakesCsv(d, search, args.armaMaxOrder));
+        add(unwrap(report::takeFluctuationFiles(d, takeOptions)));
     });
     if (chain.decomposed->km2o && chain.decomposed->km2o->estimable()) {
         summary["candidate_M"] = chain.decomposed->km2o->candidateLengths;
@@ -312,12 +205,11 @@ void runDecompose(const DecomposeArgs& args)
     if (truthFolder.empty() && fs::exists(fs::path(corpusPath) / "truth" / "truth.json"))
         truthFolder = fs::path(corpusPath) / "truth";
     if (!truthFolder.empty()) {
-        const auto truth = unwrap(synth::readGroundTruth(truthFolder));
-        summary["truth"] = truthErrors(d, truth);
+        summary["truth"] = unwrap(report::groundTruthErrorsJson(d, unwrap(synth::readGroundTruth(truthFolder))));
         summary["truth_folder"] = truthFolder.string();
     }
     std::vector<std::string> files;
-    for (const auto& [name, content] : outputs) files.push_back(name);
+    for (const auto& file : outputs) files.push_back(file.name);
     summary["functions"] = nlohmann::json::array();
     for (const auto& f : d.functions) summary["functions"].push_back(f.function);
     summary["cells"] = nlohmann::json::array();
@@ -326,12 +218,9 @@ void runDecompose(const DecomposeArgs& args)
     summary["channels"] = d.channels.size();
     summary["files"] = files;
     summary["output"] = out.string();
-    outputs.emplace_back("summary.json", summary.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
-
+    outputs.push_back({"summary.json", summary.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n"});
     // Built in a hidden folder and swapped in: the previous output stays whole until then.
-    io::StagedFolder staged = unwrap(io::StagedFolder::begin(out));
-    for (const auto& [name, content] : outputs) unwrap(staged.writeFile(name, content));
-    unwrap(staged.commit());
+    unwrap(report::writeOutputFiles(out, outputs));
     if (args.json) {
         printJson(summary);
     } else {
