@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -51,6 +52,29 @@ inline void unwrap(const analysis::Status& status)
 
 /// Pretty-prints JSON on standard output, one document per call.
 void printJson(const nlohmann::json& document);
+
+/// How every command reports what it did: with --json the summary (one JSON document, what a
+/// folder output's summary.json holds too), else the command's lines, which `text` prints.
+template <class Text>
+void report(bool json, const nlohmann::json& summary, Text&& text)
+{
+    if (json) printJson(summary);
+    else text();
+}
+
+/// A subcommand of `parent` whose callback is `run(*arguments)`; the caller binds its options to
+/// `arguments`, which live as long as the command line. Arguments with a `json` member get --json
+/// (`jsonHelp` its help line).
+template <class Arguments>
+CLI::App* addCommand(CLI::App& parent, const std::string& name, const std::string& description,
+                     const std::shared_ptr<Arguments>& arguments, void (*run)(const Arguments&),
+                     const char* jsonHelp = "Print a machine-readable summary")
+{
+    CLI::App* command = parent.add_subcommand(name, description);
+    if constexpr (requires { arguments->json; }) command->add_flag("--json", arguments->json, jsonHelp);
+    command->callback([arguments, run] { run(*arguments); });
+    return command;
+}
 
 /// Registers every subcommand (app/cli/commands.cpp).
 void addAllCommands(CommandSet& commands);

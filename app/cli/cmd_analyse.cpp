@@ -109,11 +109,12 @@ void runAnalyse(const AnalyseArguments& arguments)
 void addAnalyseCommands(CommandSet& commands)
 {
     auto arguments = std::make_shared<AnalyseArguments>();
-    CLI::App* command = commands.root.add_subcommand(
-        "analyse", "The thesis's whole chain: preprocess (2.2), normalise every cell (3), decompose (4: KM2O with M chosen by "
-                   "P), spectra and ARMA (4.3.2), motion axes, phase and gains (5); writes the data files and report.html. A corpus of a "
-                   "skeleton's joints (--all-joints) is normalised with the chains coupling; the motion axes need the puppet's 4 "
-                   "parts and are skipped with a note");
+    CLI::App* command = addCommand(commands.root, "analyse",
+        "The thesis's whole chain: preprocess (2.2), normalise every cell (3), decompose (4: KM2O with M chosen by "
+        "P), spectra and ARMA (4.3.2), motion axes, phase and gains (5); writes the data files and report.html. A corpus of a "
+        "skeleton's joints (--all-joints) is normalised with the chains coupling; the motion axes need the puppet's 4 "
+        "parts and are skipped with a note",
+        arguments, runAnalyse, "Progress and the summary as JSON lines on standard output");
     command->add_option("CORPUS", arguments->corpus, "Corpus folder (corpus.json), or 'demo' for the embedded demo corpus")->required();
     command->add_option("-o,--output", arguments->output, "Output folder")->required()->type_name("DIR");
     command->add_option("--parameters", arguments->parameters,
@@ -125,8 +126,6 @@ void addAnalyseCommands(CommandSet& commands)
                         "the same for any count")
         ->check(CLI::Range(0, analysis::kMaxThreads))
         ->capture_default_str();
-    command->add_flag("--json", arguments->json, "Progress and the summary as JSON lines on standard output");
-    command->callback([arguments] { runAnalyse(*arguments); });
 }
 
 } // namespace bunraku::app::cli

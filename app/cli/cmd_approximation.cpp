@@ -123,17 +123,16 @@ void runApproximation(const ApproximationArguments& arguments)
 void addApproximationCommands(CommandSet& commands)
 {
     auto arguments = std::make_shared<ApproximationArguments>();
-    CLI::App* command = commands.experiment.add_subcommand(
-        "approximation", "Thesis 5.4.1 (eq. 5.18, Fig. 5.16): per largest scale c, the error between the wavelet "
-                         "approximations of the functional axis and of the phase-adjusted emotional axis, per axis DOF");
+    CLI::App* command = addCommand(commands.experiment, "approximation",
+        "Thesis 5.4.1 (eq. 5.18, Fig. 5.16): per largest scale c, the error between the wavelet "
+        "approximations of the functional axis and of the phase-adjusted emotional axis, per axis DOF",
+        arguments, runApproximation);
     command->add_option("CORPUS", arguments->corpus, "Corpus folder (corpus.json), or 'demo' for the embedded synthetic corpus")
         ->required();
     command->add_option("--max-scale", arguments->maxScale, "Largest scale c (default 16, the phase's scales 1..16)")
         ->check(CLI::Range(1, 64));
     command->add_option("--csv", arguments->csv, "Also write the table as CSV (function,emotion,scale,dof,relative_error,thesis)")
         ->type_name("FILE");
-    command->add_flag("--json", arguments->json, "Print JSON");
-    command->callback([arguments] { runApproximation(*arguments); });
 }
 
 } // namespace bunraku::app::cli

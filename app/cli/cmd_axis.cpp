@@ -436,66 +436,63 @@ void addMotionAxisCommands(CommandSet& commands)
 {
     {
         auto arguments = std::make_shared<AxisCommandArguments>();
-        CLI::App* command = commands.root.add_subcommand(
-            "axis", "Motion axis of a take (thesis 5.2.1): principal axes of inertia of the posed body per frame, "
-                    "written as the thesis's 6 axis channels");
+        CLI::App* command = addCommand(commands.root, "axis",
+            "Motion axis of a take (thesis 5.2.1): principal axes of inertia of the posed body per frame, "
+            "written as the thesis's 6 axis channels",
+            arguments, runAxis);
         command->add_option("TAKE", arguments->take, "Take file (.csv, .bvh, FASTRAK text)")->required()->check(CLI::ExistingFile);
         command->add_option("-o,--output", arguments->output, "Axis take CSV")->required()->type_name("FILE");
         command->add_flag("--coordinates", arguments->coordinates,
                           "Write the axis coordinates (centre + continuous rotation vector) instead of the thesis channels");
-        command->add_flag("--json", arguments->json, "Print a machine-readable summary");
         addAxisOptions(command, arguments->axis);
-        command->callback([arguments] { runAxis(*arguments); });
     }
     {
         auto arguments = std::make_shared<PhaseCommandArguments>();
-        CLI::App* command = commands.root.add_subcommand(
-            "phase", "Phase component (thesis 5.3): match the sample's (emotional) axis to the reference's (functional) "
-                     "on all 6 DOF; writes the warp curve (emotional frame -> functional frame control points)");
+        CLI::App* command = addCommand(commands.root, "phase",
+            "Phase component (thesis 5.3): match the sample's (emotional) axis to the reference's (functional) "
+            "on all 6 DOF; writes the warp curve (emotional frame -> functional frame control points)",
+            arguments, runPhase);
         command->add_option("--reference", arguments->reference, "Functional take")->required()->check(CLI::ExistingFile);
         command->add_option("--sample", arguments->sample, "Emotional take")->required()->check(CLI::ExistingFile);
         command->add_option("-o,--output", arguments->output, "Warp curve CSV")->required()->type_name("FILE");
-        command->add_flag("--json", arguments->json, "Print a machine-readable summary");
         addAxisOptions(command, arguments->axis);
         addPhaseOptions(command, arguments->phase);
-        command->callback([arguments] { runPhase(*arguments); });
     }
     {
         auto arguments = std::make_shared<GainsCommandArguments>();
-        CLI::App* command = commands.root.add_subcommand(
-            "gains", "Amplitude component (thesis 5.4): per phrase and axis DOF the gains g0, g1 of the functional axis "
-                     "against the phase-adjusted emotional axis");
+        CLI::App* command = addCommand(commands.root, "gains",
+            "Amplitude component (thesis 5.4): per phrase and axis DOF the gains g0, g1 of the functional axis "
+            "against the phase-adjusted emotional axis",
+            arguments, runGains);
         command->add_option("--reference", arguments->reference, "Functional take")->required()->check(CLI::ExistingFile);
         command->add_option("--sample", arguments->sample, "Emotional take")->required()->check(CLI::ExistingFile);
         command->add_option("--warp", arguments->warp, "Warp curve CSV from `bunraku phase`")->required()->check(CLI::ExistingFile);
         command->add_option("--phrases", arguments->phrases,
                             "Phrase boundaries in functional frames, e.g. 0,40,105 (default: minima of the axis speed)");
         command->add_option("-o,--output", arguments->output, "Gains JSON")->required()->type_name("FILE");
-        command->add_flag("--json", arguments->json, "Print a machine-readable summary");
         addAxisOptions(command, arguments->axis);
-        command->callback([arguments] { runGains(*arguments); });
     }
     {
         auto arguments = std::make_shared<DesignCommandArguments>();
-        CLI::App* command = commands.root.add_subcommand(
-            "design", "Motion design (thesis 5.5): scale the functional take's axis per phrase, recombine with its "
-                      "relative motion and warp time");
+        CLI::App* command = addCommand(commands.root, "design",
+            "Motion design (thesis 5.5): scale the functional take's axis per phrase, recombine with its "
+            "relative motion and warp time",
+            arguments, runDesign);
         command->add_option("TAKE", arguments->take, "Functional take")->required()->check(CLI::ExistingFile);
         command->add_option("--warp", arguments->warp, "Warp curve CSV (default: identity)")->check(CLI::ExistingFile);
         command->add_option("--gains", arguments->gains, "Gains JSON (default: no scaling)")->check(CLI::ExistingFile);
         command->add_option("-o,--output", arguments->output, "Designed take (.bvh, .glb or .csv)")->required()->type_name("FILE");
         command->add_option("--axis-output", arguments->axisOutput, "Also write the designed axis take (CSV)");
-        command->add_flag("--json", arguments->json, "Print a machine-readable summary");
         addAxisOptions(command, arguments->axis);
         addKimonoOutputOptions(command, arguments->kimono);
-        command->callback([arguments] { runDesign(*arguments); });
     }
     {
         auto arguments = std::make_shared<ExperimentArguments>();
-        CLI::App* command = commands.experiment.add_subcommand(
-            "design", "Thesis 5.5 on the synthetic corpus: per function and emotion extract phase and gains between the "
-                      "functional and emotional means, design from the functional mean, compare with the measured axis "
-                      "(eq. 5.18 relative error) and the phase with the ground truth");
+        CLI::App* command = addCommand(commands.experiment, "design",
+            "Thesis 5.5 on the synthetic corpus: per function and emotion extract phase and gains between the "
+            "functional and emotional means, design from the functional mean, compare with the measured axis "
+            "(eq. 5.18 relative error) and the phase with the ground truth",
+            arguments, runExperiment);
         command->add_option("CORPUS", arguments->corpus, "Demo corpus folder (with truth/ from `bunraku demo`)")
             ->required()
             ->check(CLI::ExistingDirectory);
@@ -507,10 +504,8 @@ void addMotionAxisCommands(CommandSet& commands)
                             "Start-position step of the preprocessing (thesis 2.2-4): rigid (one translation per take, "
                             "default) or per-part")
             ->check(CLI::IsMember({"rigid", "per-part"}));
-        command->add_flag("--json", arguments->json, "Print a machine-readable summary");
         addAxisOptions(command, arguments->axis, false);
         addPhaseOptions(command, arguments->phase);
-        command->callback([arguments] { runExperiment(*arguments); });
     }
 }
 

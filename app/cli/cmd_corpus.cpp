@@ -92,9 +92,10 @@ void runCorpus(const CorpusArguments& arguments)
 void addCorpusCommands(CommandSet& commands)
 {
     auto arguments = std::make_shared<CorpusArguments>();
-    CLI::App* command = commands.root.add_subcommand(
-        "corpus", "Make a corpus folder from take files (BVH, FBX, glTF, Collada, CSV, FASTRAK) or folders of them: labels from the file names, each "
-                  "file's part map reported, takes resampled to one rate when their rates differ");
+    CLI::App* command = addCommand(commands.root, "corpus",
+        "Make a corpus folder from take files (BVH, FBX, glTF, Collada, CSV, FASTRAK) or folders of them: labels from the file names, each "
+        "file's part map reported, takes resampled to one rate when their rates differ",
+        arguments, runCorpus);
     command->add_option("INPUTS", arguments->inputs, "Take files and/or folders of take files")->required();
     command->add_option("-o,--output", arguments->output, "Corpus folder to write")->required();
     command->add_option("--pattern", arguments->pattern,
@@ -104,9 +105,7 @@ void addCorpusCommands(CommandSet& commands)
     command->add_option("--neutral", arguments->neutral, "The emotion label meaning 'no emotion' (default: neutral, normal or none)");
     command->add_option("--name", arguments->name, "The corpus's name (default: the output folder's name)");
     command->add_option("--resample", arguments->resampleHz, "Rate of the corpus in Hz, in (0, 1000000] (default: the rate most files have)");
-    command->add_flag("--json", arguments->json, "Print a machine-readable summary");
     addImportOptions(command, arguments->import);
-    command->callback([arguments] { runCorpus(*arguments); });
 }
 
 } // namespace bunraku::app::cli

@@ -400,10 +400,11 @@ void addChainOptions(CLI::App* command, ChainArgs& args)
 void addDecompositionCommands(CommandSet& commands)
 {
     auto decomposeArgs = std::make_shared<DecomposeArgs>();
-    CLI::App* dec = commands.root.add_subcommand(
-        "decompose", "Decompose a corpus into function y^i, emotion z^{ij} and fluctuation eta (thesis ch. 4) as the "
-                     "workbench's Emotion tab does (preprocess 2.2, normalise every cell 3, KM2O with M chosen by P); write "
-                     "components, spectra and ARMA tables");
+    CLI::App* dec = addCommand(commands.root, "decompose",
+        "Decompose a corpus into function y^i, emotion z^{ij} and fluctuation eta (thesis ch. 4) as the "
+        "workbench's Emotion tab does (preprocess 2.2, normalise every cell 3, KM2O with M chosen by P); write "
+        "components, spectra and ARMA tables",
+        decomposeArgs, runDecompose);
     addChainOptions(dec, decomposeArgs->chain);
     dec->add_option("-o,--output", decomposeArgs->output, "Output folder")->required()->type_name("DIR");
     dec->add_option("--truth", decomposeArgs->truth,
@@ -416,13 +417,12 @@ void addDecompositionCommands(CommandSet& commands)
                     "ARMA(p,q) averaged per cell (Table 4.1), each 0..4; default the parameters' (2 2), as `bunraku analyse`")
         ->expected(2)
         ->check(parameterCheck("fluctuations.armaP"));
-    dec->add_flag("--json", decomposeArgs->json, "Print a JSON summary");
-    dec->callback([decomposeArgs] { runDecompose(*decomposeArgs); });
 
     auto emotionArgs = std::make_shared<EmotionArgs>();
-    CLI::App* emo = commands.root.add_subcommand(
-        "emotion", "Design a motion with an emotion weight: x = y^i + a z^{ij} (thesis eq. 4.45), the workbench's weighted "
-                   "take: the same chain as `decompose`");
+    CLI::App* emo = addCommand(commands.root, "emotion",
+        "Design a motion with an emotion weight: x = y^i + a z^{ij} (thesis eq. 4.45), the workbench's weighted "
+        "take: the same chain as `decompose`",
+        emotionArgs, runEmotion);
     addChainOptions(emo, emotionArgs->chain);
     emo->add_option("--function", emotionArgs->function, "Function label, e.g. greeting")->required();
     emo->add_option("--emotion", emotionArgs->emotion, "Emotion label, e.g. friendly")->required();
@@ -435,14 +435,13 @@ void addDecompositionCommands(CommandSet& commands)
     emo->add_flag("--per-channel", emotionArgs->perChannel,
                   "Write the thesis's per-channel x = y + a z (each channel on its own, the puppet's parts, no skeleton) instead of "
                   "the weighted body's motion");
-    emo->add_flag("--json", emotionArgs->json, "Print a JSON summary");
     addKimonoOutputOptions(emo, emotionArgs->kimono);
-    emo->callback([emotionArgs] { runEmotion(*emotionArgs); });
 
     auto experimentArgs = std::make_shared<ExperimentArgs>();
-    CLI::App* exp = commands.experiment.add_subcommand(
-        "km2o", "Thesis 4.4.3: identify the exogenous inputs of simulated ARX series (eq. 4.39) for each M and compare "
-                "the relative error P with Table 4.4");
+    CLI::App* exp = addCommand(commands.experiment, "km2o",
+        "Thesis 4.4.3: identify the exogenous inputs of simulated ARX series (eq. 4.39) for each M and compare "
+        "the relative error P with Table 4.4",
+        experimentArgs, runExperiment);
     exp->add_option("--T", experimentArgs->finalTime, "Final time T: 300 (Table 4.2) or 1000 (Table 4.3)")
         ->check(CLI::IsMember({300, 1000}));
     exp->add_option("--M", experimentArgs->range, "Correlation lengths FIRST:LAST (default 3:20)");
@@ -459,8 +458,6 @@ void addDecompositionCommands(CommandSet& commands)
                     "4.39 puts no i, j on w)")
         ->check(CLI::IsMember({"per-cell", "shared"}));
     exp->add_option("--takes", experimentArgs->takes, "K, takes per cell (default 5, as the thesis)")->check(CLI::Range(2, 1000));
-    exp->add_flag("--json", experimentArgs->json, "Print JSON");
-    exp->callback([experimentArgs] { runExperiment(*experimentArgs); });
 }
 
 } // namespace bunraku::app::cli

@@ -80,9 +80,10 @@ void runDemo(const DemoArguments& arguments)
 void addDemoCommands(CommandSet& commands)
 {
     auto arguments = std::make_shared<DemoArguments>();
-    CLI::App* demo = commands.root.add_subcommand(
-        "demo", "Write the synthetic Bunraku corpus (2 functions x 3 emotions x 5 takes) and its ground truth "
-                "(DIR/truth, see docs/DEMO-CORPUS.md)");
+    CLI::App* demo = addCommand(commands.root, "demo",
+        "Write the synthetic Bunraku corpus (2 functions x 3 emotions x 5 takes) and its ground truth "
+        "(DIR/truth, see docs/DEMO-CORPUS.md)",
+        arguments, runDemo);
     demo->add_option("-o,--output", arguments->output, "Corpus folder to write (replaced when it exists); with --long, the folder the take is written into")
         ->required()
         ->type_name("DIR");
@@ -102,8 +103,6 @@ void addDemoCommands(CommandSet& commands)
     demo->add_option("--rate", arguments->rateHz, "Frame rate of the --long take (Hz)")
         ->check(CLI::Range(1e-3, 1000.0))
         ->capture_default_str();
-    demo->add_flag("--json", arguments->json, "Print a machine-readable summary");
-    demo->callback([arguments] { runDemo(*arguments); });
 }
 
 } // namespace bunraku::app::cli

@@ -529,22 +529,21 @@ void addIoCommands(CommandSet& commands)
 {
     {
         auto arguments = std::make_shared<InfoArguments>();
-        CLI::App* info = commands.root.add_subcommand(
-            "info", "Describe a corpus folder or a take file (.csv, .bvh, .fbx, .glb/.gltf, .dae, .txt/.fastrak): labels, frames, rate, "
-                    "channels, ranges, and a BVH (or converted FBX, glTF, Collada) file's joints");
+        CLI::App* info = addCommand(commands.root, "info",
+            "Describe a corpus folder or a take file (.csv, .bvh, .fbx, .glb/.gltf, .dae, .txt/.fastrak): labels, frames, rate, "
+            "channels, ranges, and a BVH (or converted FBX, glTF, Collada) file's joints",
+            arguments, runInfo);
         info->add_option("PATH", arguments->path, "Corpus folder or take file")->required();
-        info->add_flag("--json", arguments->json, "Print a machine-readable summary");
         addImportOptions(info, arguments->import);
-        info->callback([arguments] { runInfo(*arguments); });
     }
     {
         auto arguments = std::make_shared<ConvertArguments>();
-        CLI::App* convert = commands.root.add_subcommand(
-            "convert", "Convert a take file (.csv, .bvh, .fbx, .glb/.gltf, .dae, .txt/.fastrak) to .csv, .bvh (on the take's own skeleton when it has one) or .glb (glTF binary) by the output's extension, or a corpus "
-                       "folder to a corpus folder");
+        CLI::App* convert = addCommand(commands.root, "convert",
+            "Convert a take file (.csv, .bvh, .fbx, .glb/.gltf, .dae, .txt/.fastrak) to .csv, .bvh (on the take's own skeleton when it has one) or .glb (glTF binary) by the output's extension, or a corpus "
+            "folder to a corpus folder",
+            arguments, runConvert);
         convert->add_option("IN", arguments->input, "Input take file or corpus folder")->required();
         convert->add_option("-o,--output", arguments->output, "Output file (.bvh, .glb or .csv) or corpus folder")->required();
-        convert->add_flag("--json", arguments->json, "Print a machine-readable summary");
         convert->add_flag("--kimono", arguments->kimono,
                           "Simulate the puppet's kimono as cloth over the take: a .csv output gets its measured points (sleeve tips, hem "
                           "front/back/left/right; x y z cm) as 18 more channels; a .glb output the cloth as a mesh 'kimono_cloth' moving by "
@@ -552,13 +551,13 @@ void addIoCommands(CommandSet& commands)
                           " key shapes), the figure without its skinned skirt and sleeves (docs/KIMONO.md)");
         addClothOptions(convert, arguments->cloth);
         addImportOptions(convert, arguments->import);
-        convert->callback([arguments] { runConvert(*arguments); });
     }
     {
         auto arguments = std::make_shared<PreprocessArguments>();
-        CLI::App* preprocess = commands.root.add_subcommand(
-            "preprocess", "Thesis 2.2 preprocessing of a corpus: unwrap angles, pad to the longest take, align start times to "
-                          "each cell's reference take and start positions to each function's reference take");
+        CLI::App* preprocess = addCommand(commands.root, "preprocess",
+            "Thesis 2.2 preprocessing of a corpus: unwrap angles, pad to the longest take, align start times to "
+            "each cell's reference take and start positions to each function's reference take",
+            arguments, runPreprocess, "Print the per-take report as JSON");
         preprocess->add_option("CORPUS", arguments->input, "Input corpus folder")->required();
         preprocess->add_option("-o,--output", arguments->output, "Output corpus folder")->required();
         preprocess->add_flag("--no-pad", arguments->noPad, "Do not pad takes to the longest");
@@ -587,8 +586,6 @@ void addIoCommands(CommandSet& commands)
         preprocess->add_option("--onset-fraction", arguments->onsetFraction, "Onset threshold as a fraction of the peak speed")
             ->check(CLI::Range(1e-6, 1.0))
             ->capture_default_str();
-        preprocess->add_flag("--json", arguments->json, "Print the per-take report as JSON");
-        preprocess->callback([arguments] { runPreprocess(*arguments); });
     }
 }
 

@@ -175,16 +175,15 @@ void addClothOptions(CLI::App* command, analysis::ClothParameters& cloth)
 void addKimonoCommands(CommandSet& commands)
 {
     auto arguments = std::make_shared<KimonoArguments>();
-    CLI::App* command = commands.experiment.add_subcommand(
-        "kimono", "The kimono simulated as cloth over every take of a corpus: per take and per emotion, each sleeve's and the hem's "
-                  "own swing (RMS cm beyond what the parts carry) and the sleeve's lag behind the hand (docs/KIMONO.md)");
+    CLI::App* command = addCommand(commands.experiment, "kimono",
+        "The kimono simulated as cloth over every take of a corpus: per take and per emotion, each sleeve's and the hem's "
+        "own swing (RMS cm beyond what the parts carry) and the sleeve's lag behind the hand (docs/KIMONO.md)",
+        arguments, runKimonoExperiment, "Print JSON (every take and the means per cell)");
     command->add_option("CORPUS", arguments->corpus, "Corpus folder (corpus.json), or 'demo' for the embedded synthetic corpus")->required();
-    command->add_flag("--json", arguments->json, "Print JSON (every take and the means per cell)");
     command->add_option("--figure", arguments->figure,
                         "Also write an SVG figure: per take, the sleeve's own swing against the hand's and its lag behind the hand, "
                         "coloured by emotion");
     addClothOptions(command, arguments->cloth);
-    command->callback([arguments] { runKimonoExperiment(*arguments); });
 }
 
 } // namespace bunraku::app::cli

@@ -431,9 +431,10 @@ void addNormalisationCommands(CommandSet& commands)
 {
     {
         auto arguments = std::make_shared<NormaliseArguments>();
-        CLI::App* command = commands.root.add_subcommand(
-            "normalise", "Normalise the takes of one function x emotion cell in time by wavelet matching (thesis ch. 3): "
-                         "writes the normalised takes, correspondences, the reference and the variance table");
+        CLI::App* command = addCommand(commands.root, "normalise",
+            "Normalise the takes of one function x emotion cell in time by wavelet matching (thesis ch. 3): "
+            "writes the normalised takes, correspondences, the reference and the variance table",
+            arguments, runNormalise);
         command->add_option("CORPUS", arguments->corpus, "Corpus folder")->required()->check(CLI::ExistingDirectory);
         command->add_option("--function", arguments->function, "Function label, e.g. greeting")->required();
         command->add_option("--emotion", arguments->emotion, "Emotion label, e.g. none")->required();
@@ -450,10 +451,8 @@ void addNormalisationCommands(CommandSet& commands)
             ->type_name("DIR|FILE");
         command->add_flag("--no-preprocess", arguments->noPreprocess,
                           "Use the takes as stored (default: thesis 2.2 preprocessing first, as `bunraku preprocess`)");
-        command->add_flag("--json", arguments->json, "Print a machine-readable summary");
         addMatchOptions(command, arguments->match, false);
         addKimonoOutputOptions(command, arguments->kimono);
-        command->callback([arguments] { runNormalise(*arguments); });
     }
     {
         auto json = std::make_shared<bool>(false);
@@ -464,17 +463,16 @@ void addNormalisationCommands(CommandSet& commands)
     }
     {
         auto arguments = std::make_shared<TruthArguments>();
-        CLI::App* command = commands.experiment.add_subcommand(
-            "truth", "Normalise every take of the synthetic corpus to its cell's reference and compare the "
-                     "correspondences with the ground truth (greedy, optimal, amplitude DTW)");
+        CLI::App* command = addCommand(commands.experiment, "truth",
+            "Normalise every take of the synthetic corpus to its cell's reference and compare the "
+            "correspondences with the ground truth (greedy, optimal, amplitude DTW)",
+            arguments, runTruth);
         command->add_option("CORPUS", arguments->corpus, "Demo corpus folder (with truth/ from `bunraku demo`)")
             ->required()
             ->check(CLI::ExistingDirectory);
         command->add_option("--reference", arguments->reference, "Reference take index in every cell (default: suggested)");
-        command->add_flag("--json", arguments->json, "Print a machine-readable summary");
         // The workbench and `normalise` use auto; the experiment compares the readings.
         addMatchOptions(command, arguments->match, true);
-        command->callback([arguments] { runTruth(*arguments); });
     }
 }
 

@@ -460,8 +460,9 @@ void runRender(const RenderArguments& args)
 void addRenderCommands(CommandSet& commands)
 {
     auto args = std::make_shared<RenderArguments>();
-    CLI::App* render = commands.root.add_subcommand(
-        "render", "Render the puppet, motion axis and orbits of a take (or two side by side) to PNG offscreen");
+    CLI::App* render = addCommand(commands.root, "render",
+        "Render the puppet, motion axis and orbits of a take (or two side by side) to PNG offscreen",
+        args, runRender);
     render->add_option("take", args->take, "Take file (.csv, .bvh, FASTRAK .txt) or demo:FUNCTION/EMOTION/K")
         ->required();
     render->add_option("--take-b", args->takeB, "A second take, shown to the right of the first");
@@ -503,12 +504,10 @@ void addRenderCommands(CommandSet& commands)
         ->capture_default_str();
     render->add_option("--fps", args->fps, "--multimodal video: frames per second (default: the take's rate)");
     render->add_flag("--overwrite", args->overwrite, "--multimodal PNG frames: replace the frame_*.png of an earlier export");
-    render->add_flag("--json", args->json, "Print a JSON summary");
     render->add_flag("--kimono", args->kimono,
                      "Dress the puppet in its kimono simulated as cloth (the skirt and long sleeves swing with the motion; "
                      "the orbits then include the sleeve tips and the hem); the --cloth-* options set the cloth");
     addClothOptions(render, args->cloth);
-    render->callback([args] { runRender(*args); });
 }
 
 } // namespace bunraku::app::cli

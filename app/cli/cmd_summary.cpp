@@ -145,14 +145,13 @@ void runSummary(const SummaryArguments& arguments)
 void addSummaryCommands(CommandSet& commands)
 {
     auto arguments = std::make_shared<SummaryArguments>();
-    CLI::App* command = commands.root.add_subcommand(
-        "summary", "One table (CSV) and one HTML index over folders written by 'bunraku analyse': per corpus its takes, cells, "
-                   "KM2O M and mean P, mean design error, and the link to its report.html (workflows/Snakefile)");
+    CLI::App* command = addCommand(commands.root, "summary",
+        "One table (CSV) and one HTML index over folders written by 'bunraku analyse': per corpus its takes, cells, "
+        "KM2O M and mean P, mean design error, and the link to its report.html (workflows/Snakefile)",
+        arguments, runSummary);
     command->add_option("ANALYSES", arguments->analyses, "Folders written by 'bunraku analyse -o', in the order of the rows")->required();
     command->add_option("--table", arguments->table, "CSV table to write (one row per folder)")->type_name("FILE");
     command->add_option("--index", arguments->index, "HTML index to write, linking each report.html relative to it")->type_name("FILE");
-    command->add_flag("--json", arguments->json, "Print a machine-readable summary");
-    command->callback([arguments] { runSummary(*arguments); });
 }
 
 } // namespace bunraku::app::cli
