@@ -3,10 +3,10 @@
 #include "app/cli/output_guard.h"
 
 #include "app/multimodal_export.h"
+#include "app/video_export.h"
 
 #include "analysis/body/body_description.h"
 #include "analysis/io/atomic_file.h"
-#include "analysis/io/staged_folder.h"
 #include "analysis/io/take_reader.h"
 #include "analysis/pipeline/stages.h"
 #include "analysis/synth/demo_corpus.h"
@@ -21,6 +21,7 @@
 #include <QStandardPaths>
 
 #include <atomic>
+#include <cmath>
 #include <csignal>
 #include <cstdlib>
 #include <fstream>
@@ -202,26 +203,26 @@ QByteArray pngBytes(const QImage& image, const std::filesystem::path& file)
 
 std::string_view view(const QByteArray& bytes) { return {bytes.constData(), std::size_t(bytes.size())}; }
 
-/// Encodes `folder`'s PNG sequence to `mp4`: ffmpeg writes into a private hidden folder beside
-/// it, and the finished file is moved over `mp4` only when ffmpeg succeeds.
-void encodeMp4(const std::filesystem::path& frames, double rate, const std::string& mp4)
+/// Runs a video export (app/video_export.h) that Ctrl+C or SIGTERM stop, removing what it wrote;
+/// progress on standard error when it is a terminal and --json is not given. Throws CliError
+/// naming `output` when the export fails or is stopped.
+template <class Export>
+VideoExportResult interruptible(const char* what, bool json, const std::string& output, Export&& run)
 {
-    const std::filesystem::path target = std::filesystem::absolute(mp4);
-    const std::filesystem::path temporary = unwrap(analysis::io::makeTemporaryFolderBeside(target));
-    const std::filesystem::path encoded = temporary / target.filename();
-    const std::string command = "ffmpeg -n -loglevel error -framerate " + std::to_string(rate) + " -i '" +
-                                (frames / "frame_%05d.png").string() +
-                                "' -c:v libx264 -pix_fmt yuv420p -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -f mp4 '" + encoded.string() +
-                                "'";
-    const int status = std::system(command.c_str());
-    std::error_code ignored;
-    if (status != 0) {
-        std::filesystem::remove_all(temporary, ignored);
-        throw CliError(mp4 + ": ffmpeg failed to write it");
-    }
-    const auto moved = analysis::io::moveIntoPlace(encoded, target);
-    std::filesystem::remove_all(temporary, ignored);
-    unwrap(moved);
+    g_interrupted = false;
+    std::signal(SIGINT, interruptExport);
+    std::signal(SIGTERM, interruptExport);
+    const bool terminal = ::isatty(STDERR_FILENO) == 1 && !json;
+    const VideoExportResult result = run([terminal, what](int done, int total) {
+        if (terminal) std::fprintf(stderr, "\r%s %d / %d", what, done, total);
+        if (terminal && done == total) std::fprintf(stderr, "\n");
+        return !g_interrupted.load();
+    });
+    std::signal(SIGINT, SIG_DFL);
+    std::signal(SIGTERM, SIG_DFL);
+    if (result.cancelled) throw CliError("interrupted: nothing was written to " + output);
+    if (!result.ok()) throw CliError(result.error.toStdString());
+    return result;
 }
 
 nlohmann::json rectJson(const QRect& rect) { return {rect.x(), rect.y(), rect.width(), rect.height()}; }
@@ -294,18 +295,9 @@ void runMultimodal(const RenderArguments& args, const render::SceneContent& scen
         video.firstFrame = int(range.first);
         video.lastFrame = int(range.second);
     }
-    std::signal(SIGINT, interruptExport);
-    std::signal(SIGTERM, interruptExport);
-    const bool terminal = ::isatty(STDERR_FILENO) == 1 && !args.json;
-    const VideoExportResult result = exportMultimodalVideo(frame, view, video, [terminal](int done, int total) {
-        if (terminal) std::fprintf(stderr, "\rmultimodal frames %d / %d", done, total);
-        if (terminal && done == total) std::fprintf(stderr, "\n");
-        return !g_interrupted.load();
+    const VideoExportResult result = interruptible("multimodal frames", args.json, args.output, [&](const ExportProgress& progress) {
+        return exportMultimodalVideo(frame, view, video, progress);
     });
-    std::signal(SIGINT, SIG_DFL);
-    std::signal(SIGTERM, SIG_DFL);
-    if (result.cancelled) throw CliError("interrupted: nothing was written to " + args.output);
-    if (!result.ok()) throw CliError(result.error.toStdString());
     summary["output"] = args.output;
     summary["format"] = mp4 ? "mp4" : "png";
     summary["frames_written"] = result.frames;
@@ -432,25 +424,44 @@ void runRender(const RenderArguments& args)
         summary["output"] = args.output;
         summary["frame"] = offscreen->renderer().frame(0);
     } else {
-        // The frames are built in a hidden folder beside the output and swapped in when all are
-        // written (and encoded): a killed run leaves the previous sequence whole.
-        const std::filesystem::path folder = args.output;
-        analysis::io::StagedFolder staged = unwrap(analysis::io::StagedFolder::begin(folder));
-        for (long f = range->first; f <= range->second; ++f) {
-            offscreen->makeCurrent();
-            offscreen->renderer().setFrame(f);
+        // The 3D view's video export (app/video_export.h), as View > Export Video: the frames
+        // appear in the folder only once all are written, and the MP4 is encoded from them.
+        const std::string folder = args.output;
+        const double rate = scene.takes.front().take.rateHz;
+        FramePlan plan;
+        plan.fps = plan.rateHz = rate;
+        for (long f = range->first; f <= range->second; ++f) plan.times.push_back(double(f) / rate);
+        const FrameRenderer renderFrame = [&](double seconds) -> analysis::Result<QImage> {
+            if (!offscreen->makeCurrent())
+                return analysis::makeError(analysis::ErrorCode::Io, "the offscreen OpenGL context could not be made current");
+            offscreen->renderer().setFrame(std::lround(seconds * rate));
             follow();
-            char name[32];
-            std::snprintf(name, sizeof name, "frame_%05ld.png", f - range->first);
-            unwrap(staged.writeFile(name, view(pngBytes(offscreen->render(camera, size), folder / name))));
-        }
-        summary["output"] = folder.string();
+            return offscreen->render(camera, size);
+        };
+        VideoExportOptions video;
+        video.format = VideoFormat::PngSequence;
+        video.output = QString::fromStdString(folder);
+        video.overwrite = true; // as before: the folder holds the new sequence alone
+        video.size = size;
+        interruptible("frames", args.json, folder, [&](const ExportProgress& progress) { return exportFrames(video, plan, renderFrame, progress); });
+        summary["output"] = folder;
         summary["frames"] = {range->first, range->second};
         if (!args.mp4.empty()) {
-            encodeMp4(staged.path(), scene.takes.front().take.rateHz, args.mp4);
+            const FrameRenderer writtenFrame = [&](double seconds) -> analysis::Result<QImage> {
+                char name[32];
+                std::snprintf(name, sizeof name, "frame_%05ld.png", std::lround((seconds - plan.times.front()) * rate));
+                const std::string file = (std::filesystem::path(folder) / name).string();
+                QImage image(QString::fromStdString(file));
+                if (image.isNull()) return analysis::makeError(analysis::ErrorCode::Io, file + ": the frame could not be read back");
+                return image;
+            };
+            video.format = VideoFormat::Mp4;
+            video.output = QString::fromStdString(args.mp4);
+            interruptible("MP4 frames", args.json, args.mp4, [&](const ExportProgress& progress) {
+                return exportFrames(video, plan, writtenFrame, progress);
+            });
             summary["mp4"] = args.mp4;
         }
-        unwrap(staged.commit());
     }
     if (args.json) printJson(summary);
 }

@@ -12,6 +12,8 @@
 #include <catch2/catch.hpp>
 
 #include <QImage>
+#include <QProcess>
+#include <QStandardPaths>
 
 #include <algorithm>
 #include <cstdio>
@@ -182,6 +184,44 @@ TEST_CASE("bunraku render --mp4 without ffmpeg on PATH says how to get it and wr
     CHECK(errors.find("bunraku: error: --mp4 needs ffmpeg") != std::string::npos);
     CHECK(std::count(errors.begin(), errors.end(), '\n') == 1);
     CHECK_FALSE(std::filesystem::exists(dir / "take.mp4"));
+}
+
+TEST_CASE("bunraku render --frames --mp4 writes the frames and their MP4 into paths with a quote and a space", "[render][cli][video]")
+{
+    if (!test::requirePeer(std::filesystem::exists(cliPath()), "the bunraku executable (" + cliPath().string() + ")",
+                           "build the target bunraku"))
+        return;
+    if (!test::requirePeer(!QStandardPaths::findExecutable(QStringLiteral("ffmpeg")).isEmpty() &&
+                               !QStandardPaths::findExecutable(QStringLiteral("ffprobe")).isEmpty(),
+                           "ffmpeg and ffprobe on PATH (render --mp4)", "apt-get install ffmpeg"))
+        return;
+    // The encoder once ran through a shell, and a quote in a path broke it.
+    const auto dir = test::scratchDir("render_cli_mp4_quote") / "it's a take";
+    std::filesystem::create_directories(dir);
+    QProcess cli;
+    cli.start(QString::fromStdString(cliPath().string()),
+              {"render", "demo:greeting/friendly/1", "--frames", "2:7", "--size", "322x240", "--samples", "0", "-o",
+               QString::fromStdString((dir / "frames").string()), "--mp4", QString::fromStdString((dir / "take's.mp4").string())});
+    REQUIRE(cli.waitForFinished(300000));
+    INFO(cli.readAllStandardError().toStdString());
+    REQUIRE(cli.exitCode() == 0);
+    for (int k = 0; k < 6; ++k) {
+        char name[32];
+        std::snprintf(name, sizeof name, "frame_%05d.png", k);
+        CHECK(QImage(QString::fromStdString((dir / "frames" / name).string())).size() == QSize(322, 240));
+    }
+    CHECK_FALSE(std::filesystem::exists(dir / "frames" / "frame_00006.png"));
+    // ffprobe, the peer: six frames of the size asked for (even already: nothing cropped).
+    QProcess probe;
+    probe.start(QStringLiteral("ffprobe"), {"-v", "error", "-count_frames", "-select_streams", "v:0", "-show_entries",
+                                            "stream=nb_read_frames,width,height", "-of", "csv=p=0",
+                                            QString::fromStdString((dir / "take's.mp4").string())});
+    REQUIRE(probe.waitForFinished(30000));
+    CHECK(QString::fromLatin1(probe.readAllStandardOutput()).trimmed() == QStringLiteral("322,240,6"));
+    // Only the two outputs: no temporary file or folder of the encoder is left beside them.
+    std::set<std::string> entries;
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) entries.insert(entry.path().filename().string());
+    CHECK(entries == std::set<std::string>{"frames", "take's.mp4"});
 }
 
 TEST_CASE("a take scene carries the motion axis of every take, one pose per frame", "[render][scene]")
