@@ -577,6 +577,7 @@ ViewState MainWindow::viewState() const
     state.part = m_graphs->selectedPart();
     state.dof = m_graphs->selectedDof();
     state.camera = m_viewportPanel->cameraState();
+    state.shown = m_viewportPanel->shownObjects();
     state.figureA = m_viewportPanel->figureBox(0)->currentIndex();
     state.figureB = m_viewportPanel->figureBox(1)->currentIndex();
     state.cloth = m_viewportPanel->clothBox()->isChecked();
@@ -602,6 +603,7 @@ void MainWindow::restoreViewState(const ViewState& state)
     if (state.part) m_graphs->selectPart(*state.part);
     if (state.dof) m_graphs->selectDof(*state.dof);
     if (state.camera) m_viewportPanel->setCameraState(*state.camera);
+    m_viewportPanel->setShownObjects(state.shown);
     // The 3D view's figure per take: puppet, skeleton, both or body (the boxes' order).
     if (state.figureA) m_viewportPanel->figureBox(0)->setCurrentIndex(*state.figureA);
     if (state.figureB) m_viewportPanel->figureBox(1)->setCurrentIndex(*state.figureB);

@@ -59,6 +59,10 @@ QJsonObject viewJson(const ViewState& view)
                                     {"target", QJsonArray{c.target[0], c.target[1], c.target[2]}},
                                     {"fov", c.fov}};
     }
+    QJsonObject shown;
+    for (const auto& [key, member] : kShownObjectKeys)
+        if (const std::optional<bool>& value = view.shown.*member) shown[QLatin1String(key)] = *value;
+    if (!shown.isEmpty()) out["show"] = shown;
     put("figureA", view.figureA);
     put("figureB", view.figureB);
     if (view.cloth) out["cloth"] = *view.cloth ? 1 : 0;
@@ -104,6 +108,9 @@ ViewState viewState(const QJsonObject& view)
         c.fov = camera["fov"].toDouble(35.0);
         out.camera = c;
     }
+    const QJsonObject shown = view["show"].toObject();
+    for (const auto& [key, member] : kShownObjectKeys)
+        if (shown.contains(QLatin1String(key))) out.shown.*member = shown[QLatin1String(key)].toBool();
     number("figureA", out.figureA);
     number("figureB", out.figureB);
     if (view.contains("cloth")) out.cloth = view["cloth"].toDouble() != 0.0;
@@ -309,6 +316,22 @@ analysis::Result<ProjectState> parseProject(const QByteArray& text, const QStrin
         if (!valid)
             return parseError(name, 0, "expected \"view\".\"camera\": {\"angle\": deg, \"elevation\": deg in -90..90, "
                                        "\"distance\": cm in 10..5000, \"target\": [x, y, z] cm, \"fov\": deg in 1..170}");
+    }
+    if (viewObject.contains("show")) {
+        // The 3D view's boxes: each key one of them, true or false.
+        const QJsonValue shown = viewObject["show"];
+        std::string keys;
+        for (const auto& [key, member] : kShownObjectKeys) keys += std::string(keys.empty() ? "" : ", ") + key;
+        if (!shown.isObject()) return parseError(name, 0, "expected \"view\".\"show\": {" + keys + ": true or false}");
+        const QJsonObject values = shown.toObject();
+        for (auto it = values.begin(); it != values.end(); ++it) {
+            const bool known = std::any_of(std::begin(kShownObjectKeys), std::end(kShownObjectKeys),
+                                           [&](const auto& entry) { return it.key() == QLatin1String(entry.first); });
+            if (!known)
+                return parseError(name, 0, "\"view\".\"show\": unknown object \"" + it.key().left(64).toStdString() + "\" (known: " + keys + ")");
+            if (!it.value().isBool())
+                return parseError(name, 0, "expected \"view\".\"show\".\"" + it.key().toStdString() + "\": true or false");
+        }
     }
     if (viewObject.contains("clothParameters")) {
         // The 3D view's cloth settings: every key a cloth parameter in its range (one table).

@@ -11,6 +11,7 @@
 
 #include <array>
 #include <optional>
+#include <utility>
 
 namespace bunraku::app {
 
@@ -22,6 +23,22 @@ struct CameraState {
     std::array<double, 3> target{};
     double fov = 35.0;
 };
+
+/// The 3D view's boxes of what it draws and Follow, each kept when the project holds it.
+struct ShownObjects {
+    std::optional<bool> puppet;
+    std::optional<bool> axis;
+    std::optional<bool> orbits;
+    std::optional<bool> grid;
+    std::optional<bool> shadows;
+    std::optional<bool> partner;
+    std::optional<bool> follow;
+};
+/// Their keys in the project file's "view"."show" object, one table for the file and the view.
+inline constexpr std::pair<const char*, std::optional<bool> ShownObjects::*> kShownObjectKeys[] = {
+    {"puppet", &ShownObjects::puppet}, {"axis", &ShownObjects::axis},       {"orbits", &ShownObjects::orbits},
+    {"grid", &ShownObjects::grid},     {"shadows", &ShownObjects::shadows}, {"partner", &ShownObjects::partner},
+    {"follow", &ShownObjects::follow}};
 
 struct ViewState {
     // The Graphs dock: widgets::GraphLayout, TwoTakeMode, ValueScale and AngleDisplay as numbers,
@@ -36,6 +53,7 @@ struct ViewState {
     // The 3D view: its camera, each take's figure (the boxes' indices), the kimono as cloth and
     // its settings.
     std::optional<CameraState> camera;
+    ShownObjects shown;
     std::optional<int> figureA;
     std::optional<int> figureB;
     std::optional<bool> cloth;

@@ -191,6 +191,26 @@ ViewportPanel::ViewportPanel(Document& document, AnalysisController& analysis, Q
     rebuildScene();
 }
 
+std::array<QCheckBox*, std::size(kShownObjectKeys)> ViewportPanel::shownObjectBoxes() const
+{
+    return {m_puppet, m_axis, m_orbits, m_grid, m_shadows, m_partner, m_follow};
+}
+
+ShownObjects ViewportPanel::shownObjects() const
+{
+    ShownObjects shown;
+    const auto boxes = shownObjectBoxes();
+    for (std::size_t i = 0; i < boxes.size(); ++i) shown.*(kShownObjectKeys[i].second) = boxes[i]->isChecked();
+    return shown;
+}
+
+void ViewportPanel::setShownObjects(const ShownObjects& shown)
+{
+    const auto boxes = shownObjectBoxes();
+    for (std::size_t i = 0; i < boxes.size(); ++i)
+        if (const std::optional<bool>& value = shown.*(kShownObjectKeys[i].second)) boxes[i]->setChecked(*value);
+}
+
 void ViewportPanel::rebuildScene()
 {
     const auto takes = shownTakes(m_document);

@@ -17,6 +17,8 @@
 
 #include <QWidget>
 
+#include <array>
+#include <iterator>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -56,6 +58,10 @@ public:
     /// "fov"}), and back (ignored when malformed; project_file.cpp validates it).
     CameraState cameraState() const;
     void setCameraState(const CameraState& state);
+    /// The boxes of what the view draws (Puppet, Axis, Orbits, Grid, Shadows, Partner) and
+    /// Follow, as project view state, and back (the values a state holds; the others stay).
+    ShownObjects shownObjects() const;
+    void setShownObjects(const ShownObjects& shown);
 
 signals:
     /// A part of the puppet was clicked (its name in the take's channels when it has one), or a
@@ -90,6 +96,8 @@ private:
     void updateGapLabels();
     /// The camera actions, added to `bar` as buttons in its layout (viewport_panel_camera.cpp).
     void createCameraActions(QWidget* bar);
+    /// The box of each kShownObjectKeys entry, in its order.
+    std::array<QCheckBox*, std::size(kShownObjectKeys)> shownObjectBoxes() const;
 
     Document& m_document;
     AnalysisController& m_analysis;

@@ -19,6 +19,7 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include <QCheckBox>
 #include <QComboBox>
 
 #include <QFile>
@@ -26,6 +27,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <tuple>
 
 #include <sys/stat.h>
 
@@ -454,4 +457,50 @@ TEST_CASE("a project's view state is written and read back typed, value for valu
     CHECK(back.speed == 0.5);
     CHECK(back.windowState == view.windowState);
     CHECK(back.leftWidth == 321);
+}
+
+TEST_CASE("a project keeps what the 3D view draws and Follow, and refuses a show object it does not know", "[app][files][project]")
+{
+    const QString file = scratchFile("view-boxes", "boxes.bunraku.json");
+    // Each box the other way round from its default, so a box not restored shows.
+    std::map<QString, bool> saved;
+    {
+        auto window = test::demoWindow();
+        REQUIRE(window);
+        for (const char* name : {"showPuppet", "showAxis", "showOrbits", "showGrid", "showShadows", "showPartner", "followFigures"}) {
+            auto* box = window->findChild<QCheckBox*>(name);
+            REQUIRE(box);
+            box->setChecked(!box->isChecked());
+            saved[name] = box->isChecked();
+        }
+        REQUIRE(window->files().saveProject(file));
+    }
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    for (const auto& [name, checked] : saved) REQUIRE(window->findChild<QCheckBox*>(name)->isChecked() != checked);
+    REQUIRE(window->files().openProject(file));
+    for (const auto& [name, checked] : saved) {
+        INFO(name.toStdString());
+        CHECK(window->findChild<QCheckBox*>(name)->isChecked() == checked);
+    }
+    // The file holds them by name; a value that is not true or false, or an unknown name, is refused naming it.
+    QFile text(file);
+    REQUIRE(text.open(QIODevice::ReadOnly));
+    auto project = nlohmann::json::parse(text.readAll().toStdString());
+    CHECK(project["view"]["show"]["orbits"] == saved["showOrbits"]);
+    CHECK(project["view"]["show"]["follow"] == saved["followFigures"]);
+    for (const auto& [key, value, expected] : std::vector<std::tuple<std::string, nlohmann::json, std::string>>{
+             {"orbits", 1, "\"view\".\"show\".\"orbits\": true or false"}, {"sleeves", true, "unknown object \"sleeves\""}}) {
+        auto changed = project;
+        changed["view"]["show"][key] = value;
+        const QString bad = scratchFile("view-boxes", "bad.bunraku.json");
+        QFile out(bad);
+        REQUIRE(out.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        out.write(QByteArray::fromStdString(changed.dump()));
+        out.close();
+        const auto read = app::readProject(bad);
+        REQUIRE_FALSE(read);
+        INFO(read.error().message);
+        CHECK(read.error().message.find(expected) != std::string::npos);
+    }
 }
