@@ -28,17 +28,17 @@ QString openLaunchPaths(FileController& files, const Document& document, const Q
         (path.kind == LaunchPathKind::Take ? takes : sources).push_back(path);
     }
     const auto showSomething = [&] {
-        if (document.corpus().takes.empty()) files.openDemoCorpus();
+        if (document.corpus().takes.empty()) files.corpora().openDemoCorpus();
     };
     if (sources.size() > 1) {
         showSomething();
         return QStringLiteral("open one corpus or project at a time (given: %1 and %2)").arg(sources[0].path, sources[1].path);
     }
     if (sources.empty()) {
-        files.openDemoCorpus();
+        files.corpora().openDemoCorpus();
     } else {
         const LaunchPath& source = sources.front();
-        const bool opened = source.kind == LaunchPathKind::Corpus ? files.openCorpusFolder(source.path) : files.openProject(source.path);
+        const bool opened = source.kind == LaunchPathKind::Corpus ? files.corpora().openCorpusFolder(source.path) : files.projects().openProject(source.path);
         if (!opened) {
             showSomething();
             return files.lastError();
@@ -47,7 +47,7 @@ QString openLaunchPaths(FileController& files, const Document& document, const Q
     if (beforeTakes) beforeTakes();
     QStringList paths;
     for (const LaunchPath& take : takes) paths << take.path;
-    if (!paths.isEmpty() && files.importTakeFiles(paths) < int(paths.size())) return files.lastError();
+    if (!paths.isEmpty() && files.imports().importTakeFiles(paths) < int(paths.size())) return files.lastError();
     return {};
 }
 

@@ -116,7 +116,7 @@ MainWindow::MainWindow(QWidget* parent, std::shared_ptr<Executor> executor) : QM
     setDockOptions(AnimatedDocks | AllowNestedDocks | AllowTabbedDocks);
     m_files = new FileController(*m_document, this);
     m_exports = new ExportController(*m_document, this);
-    m_files->setViewStateHooks([this] { return viewState(); }, [this](const ViewState& state) { restoreViewState(state); });
+    m_files->projects().setViewStateHooks([this] { return viewState(); }, [this](const ViewState& state) { restoreViewState(state); });
     m_playback = new PlaybackController(*m_document, this);
     m_status = new widgets::ElidedLabel(this);
     m_status->setObjectName("statusMessage");
@@ -246,16 +246,16 @@ void MainWindow::createViews(std::shared_ptr<Executor> executor)
 void MainWindow::createMenus()
 {
     auto* file = menuBar()->addMenu(tr("&File"));
-    file->addAction(m_files->openDemoAction());
-    file->addAction(m_files->openCorpusAction());
-    file->addAction(m_files->newCorpusAction());
+    file->addAction(m_files->corpora().openDemoAction());
+    file->addAction(m_files->corpora().openCorpusAction());
+    file->addAction(m_files->corpora().newCorpusAction());
     file->addMenu(m_files->recentMenu());
     file->addSeparator();
-    file->addAction(m_files->openProjectAction());
-    file->addAction(m_files->saveProjectAction());
-    file->addAction(m_files->saveProjectAsAction());
+    file->addAction(m_files->projects().openProjectAction());
+    file->addAction(m_files->projects().saveProjectAction());
+    file->addAction(m_files->projects().saveProjectAsAction());
     file->addSeparator();
-    file->addAction(m_files->importAction());
+    file->addAction(m_files->imports().importAction());
     file->addAction(m_exports->exportAction(TakeSlot::A));
     file->addAction(m_exports->exportAction(TakeSlot::B));
     file->addAction(tr("Save &Screenshot..."), this, &MainWindow::chooseScreenshot);
@@ -520,7 +520,7 @@ void MainWindow::chooseReport()
 {
     QString file = chooseSaveFile(this, FilePurpose::Report, tr("Export report"),
                                   suggestedFileName(*m_document, QStringLiteral("-report.html"), NameParts::Corpus), tr("HTML (*.html)"),
-                                  m_files->projectPath());
+                                  m_files->projects().projectPath());
     if (file.isEmpty()) return;
     if (!file.endsWith(QStringLiteral(".html"), Qt::CaseInsensitive)) file += QStringLiteral(".html");
     if (!exportReport(file)) QMessageBox::warning(this, tr("Export Report"), m_status->text());
@@ -556,7 +556,7 @@ void MainWindow::chooseScreenshot()
     for (auto* dock : m_docks)
         if (dock->isVisible()) views << dock->windowTitle();
     QString file = chooseSaveFile(this, FilePurpose::Screenshot, tr("Save screenshot"), suggestedFileName(*m_document, QStringLiteral(".png")),
-                                  tr("PNG images (*.png)"), m_files->projectPath());
+                                  tr("PNG images (*.png)"), m_files->projects().projectPath());
     if (file.isEmpty()) return;
     if (!file.endsWith(QStringLiteral(".png"), Qt::CaseInsensitive)) file += QStringLiteral(".png");
     // The view to grab: the dock that has focus, else the whole window.
@@ -620,13 +620,13 @@ void MainWindow::restoreViewState(const ViewState& state)
 
 void MainWindow::closeEvent(QCloseEvent* event)
 {
-    if (!m_files->maybeSave()) {
+    if (!m_files->projects().maybeSave()) {
         event->ignore();
         return;
     }
     m_playback->setPlaying(false);
     saveLayout();
-    m_files->autosaveSession().removeOwn(); // saved, discarded or clean: nothing left to recover
+    m_files->projects().autosaveSession().removeOwn(); // saved, discarded or clean: nothing left to recover
     event->accept();
 }
 

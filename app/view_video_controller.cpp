@@ -1,5 +1,7 @@
 #include "app/view_video_controller.h"
 
+#include "app/project_controller.h"
+
 #include "render/scene.h"
 
 #include "app/document.h"
@@ -155,7 +157,7 @@ void ViewVideoController::choose()
     limits.viewSize = QSize(int(std::lround(view->width() * view->devicePixelRatioF())),
                             int(std::lround(view->height() * view->devicePixelRatioF())));
     VideoExportDialog dialog(limits, m_window);
-    dialog.suggestOutput(suggestedFileName(m_document, {}), m_files.projectPath());
+    dialog.suggestOutput(suggestedFileName(m_document, {}), m_files.projects().projectPath());
     if (dialog.exec() != QDialog::Accepted) return;
     const VideoExportResult result = exportVideo(dialog.options());
     if (!result.ok() && !result.cancelled) QMessageBox::warning(m_window, tr("Export 3D View Video"), result.error);

@@ -154,7 +154,7 @@ int runWorkbench(int argc, char** argv)
     if (batch) {
         screenshotWhenIdle(window, parser.value(QStringLiteral("screenshot")));
     } else {
-        window.files().offerRecovery();
+        window.files().projects().offerRecovery();
     }
     return application.exec();
 }

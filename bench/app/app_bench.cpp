@@ -285,7 +285,7 @@ bool showBandaiAsB(app::MainWindow& main, bool skeleton)
     static QString id;
     if (id.isEmpty()) {
         const auto file = std::filesystem::path(BUNRAKU_SHARED_DIR) / "data" / "bandai" / "bye_angry_001.bvh";
-        if (!main.files().importTakeFile(QString::fromStdString(file.string()))) return false;
+        if (!main.files().imports().importTakeFile(QString::fromStdString(file.string()))) return false;
         for (const auto& derived : main.document().derivedTakes())
             if (derived.id.startsWith(QStringLiteral("imported/"))) id = derived.id;
     }
@@ -373,7 +373,7 @@ app::MainWindow* wholeBodyWindow()
     std::filesystem::remove_all(folder);
     if (!analysis::io::writeCorpus(built->corpus, folder)) return nullptr;
     auto window = bench::shownDemoWindow();
-    if (!window->files().openCorpusFolder(QString::fromStdString(folder.string()))) return nullptr;
+    if (!window->files().corpora().openCorpusFolder(QString::fromStdString(folder.string()))) return nullptr;
     (void)QTest::qWaitFor([&] { return window->design().ready(); }, 120000);
     waitIdle(*window);
     made = std::move(window);

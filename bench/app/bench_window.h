@@ -15,7 +15,7 @@ inline std::unique_ptr<app::MainWindow> shownDemoWindow()
 {
     auto window = std::make_unique<app::MainWindow>();
     window->files().setDialogsEnabled(false);
-    window->files().openDemoCorpus();
+    window->files().corpora().openDemoCorpus();
     window->resize(1600, 1000);
     window->show();
     (void)QTest::qWaitForWindowExposed(window.get());

@@ -93,7 +93,7 @@ void openLongTake(benchmark::State& state)
         sinceTick.start();
         probe.start();
         main.files().setDialogsEnabled(true);
-        const bool imported = main.files().importTakeFile(QString::fromStdString(file.string()),
+        const bool imported = main.files().imports().importTakeFile(QString::fromStdString(file.string()),
                                                           QStringLiteral("head=Head,shoulder=Chest,arm=LowerArm_R,hand=Hand_R"));
         main.files().setDialogsEnabled(false);
         probe.stop();

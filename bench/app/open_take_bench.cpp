@@ -55,7 +55,7 @@ void openLongBvhTake(benchmark::State& state)
     for (auto _ : state) {
         QElapsedTimer timer;
         timer.start();
-        if (!main.files().importTakeFile(QString::fromStdString(file.string()))) {
+        if (!main.files().imports().importTakeFile(QString::fromStdString(file.string()))) {
             state.SkipWithError(main.files().lastError().toStdString().c_str());
             return;
         }

@@ -353,7 +353,7 @@ TEST_CASE("the analysis docks say they analyse the corpus while take A is an imp
         REQUIRE(notice);
         CHECK_FALSE(notice->isVisibleTo(notice->parentWidget()));
     }
-    REQUIRE(window->files().importTakeFile(QString::fromStdString(file.string())));
+    REQUIRE(window->files().imports().importTakeFile(QString::fromStdString(file.string())));
     REQUIRE(window->document().selectedId(TakeSlot::A).startsWith(QStringLiteral("imported/")));
     for (QLabel* notice : notices()) {
         CHECK(notice->isVisibleTo(notice->parentWidget()));

@@ -43,7 +43,7 @@ inline std::unique_ptr<app::MainWindow> demoWindow()
     auto window = std::make_unique<app::MainWindow>();
     window->files().setDialogsEnabled(false);
     window->exports().setDialogsEnabled(false);
-    window->files().openDemoCorpus();
+    window->files().corpora().openDemoCorpus();
     window->resize(1400, 900);
     window->show();
     if (!QTest::qWaitForWindowExposed(window.get())) return nullptr;

@@ -54,7 +54,7 @@ inline std::vector<std::string> bandaiWaveNames(const std::string& style)
 inline std::unique_ptr<app::MainWindow> windowOnCorpus(const std::filesystem::path& folder)
 {
     auto window = demoWindow();
-    if (!window || !window->files().openCorpusFolder(QString::fromStdString(folder.string()))) return nullptr;
+    if (!window || !window->files().corpora().openCorpusFolder(QString::fromStdString(folder.string()))) return nullptr;
     return window;
 }
 

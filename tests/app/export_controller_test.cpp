@@ -48,8 +48,8 @@ bool showBandaiTakes(app::MainWindow& window)
     const auto normal = test::bandaiDir() / "bye_normal_001.bvh", angry = test::bandaiDir() / "bye_angry_001.bvh";
     if (!test::requireBandaiData(std::filesystem::exists(normal) && std::filesystem::exists(angry)))
         return false;
-    REQUIRE(window.files().importTakeFile(QString::fromStdString(normal.string())));
-    REQUIRE(window.files().importTakeFile(QString::fromStdString(angry.string())));
+    REQUIRE(window.files().imports().importTakeFile(QString::fromStdString(normal.string())));
+    REQUIRE(window.files().imports().importTakeFile(QString::fromStdString(angry.string())));
     QStringList imported;
     for (const auto& derived : window.document().derivedTakes())
         if (derived.id.startsWith(QStringLiteral("imported/"))) imported << derived.id;
@@ -280,7 +280,7 @@ TEST_CASE("a timing designed on a corpus of Bandai waves exports on the performe
 
     auto window = test::demoWindow();
     REQUIRE(window);
-    REQUIRE(window->files().openCorpusFolder(QString::fromStdString((dir / "corpus").string())));
+    REQUIRE(window->files().corpora().openCorpusFolder(QString::fromStdString((dir / "corpus").string())));
     REQUIRE(QTest::qWaitFor([&] { return window->design().ready() && !window->analysis().scheduler().busy(); }, 120000));
     const auto designed = window->design().designedTake();
     REQUIRE(designed);

@@ -61,7 +61,7 @@ TEST_CASE("take A exported to CSV re-imports with the same values", "[app][files
     const auto original = window->document().selectedTake(TakeSlot::A);
     const QString file = scratchFile("export-csv", "take.csv");
     REQUIRE(window->exports().exportTake(TakeSlot::A, file));
-    REQUIRE(files.importTakeFile(file));
+    REQUIRE(files.imports().importTakeFile(file));
     const auto imported = window->document().selectedTake(TakeSlot::A);
     REQUIRE(imported != original);
     REQUIRE(imported->channels == original->channels);
@@ -82,7 +82,7 @@ TEST_CASE("take A exported to BVH re-imports to the same part poses", "[app][fil
     const auto original = window->document().selectedTake(TakeSlot::A);
     const QString file = scratchFile("export-bvh", "take.bvh");
     REQUIRE(window->exports().exportTake(TakeSlot::A, file));
-    REQUIRE(files.importTakeFile(file, QStringLiteral("head=head,shoulder=shoulder,arm=arm,hand=hand")));
+    REQUIRE(files.imports().importTakeFile(file, QStringLiteral("head=head,shoulder=shoulder,arm=arm,hand=hand")));
     const auto imported = window->document().selectedTake(TakeSlot::A);
     REQUIRE(imported->frameCount() == original->frameCount());
     REQUIRE(imported->rateHz == Approx(original->rateHz));
@@ -106,7 +106,7 @@ TEST_CASE("a take file with a bad value is refused with its file and line, and n
         std::ofstream out(file.toStdString());
         out << "time_s,head.x\n0,1\n0.2,nan\n";
     }
-    REQUIRE_FALSE(window->files().importTakeFile(file));
+    REQUIRE_FALSE(window->files().imports().importTakeFile(file));
     REQUIRE(window->files().lastError().contains(QStringLiteral("bad.csv:3")));
     REQUIRE(importedTakes(window->document()).empty());
     REQUIRE(window->document().undoStack()->count() == 0);
@@ -122,7 +122,7 @@ TEST_CASE("a saved project reopens to the same state", "[app][files]")
         REQUIRE(window);
         auto& document = window->document();
         REQUIRE(window->exports().exportTake(TakeSlot::A, takeFile));
-        REQUIRE(window->files().importTakeFile(takeFile));
+        REQUIRE(window->files().imports().importTakeFile(takeFile));
         app::changeStageParameters(document, [](app::AnalysisParameters& p) { p.normalise.tau = 6; }, QStringLiteral("tau"));
         app::setEmotionWeight(document, 1.75);
         takeB = app::Document::corpusTakeId(12);
@@ -135,12 +135,12 @@ TEST_CASE("a saved project reopens to the same state", "[app][files]")
         window->viewportPanel()->figureBox(1)->setCurrentIndex(2); // take B as both figures
         REQUIRE(window->graphPanel()->grid()->graphCount() == 12);
         REQUIRE(window->isWindowModified());
-        REQUIRE(window->files().saveProject(project));
+        REQUIRE(window->files().projects().saveProject(project));
         REQUIRE_FALSE(window->isWindowModified());
     }
     auto window = test::demoWindow();
     REQUIRE(window);
-    REQUIRE(window->files().openProject(project));
+    REQUIRE(window->files().projects().openProject(project));
     const auto& document = window->document();
     REQUIRE(document.corpusSource() == QStringLiteral("demo"));
     REQUIRE(document.parameters().normalise.tau == 6);
@@ -156,7 +156,7 @@ TEST_CASE("a saved project reopens to the same state", "[app][files]")
     REQUIRE(window->viewportPanel()->figureBox(0)->currentIndex() == 0);
     REQUIRE(window->viewportPanel()->figureBox(1)->currentIndex() == 2);
     REQUIRE(window->graphPanel()->shownTakeA() != document.selectedTake(TakeSlot::A)); // the coordinates' copy
-    REQUIRE(window->files().projectPath() == project);
+    REQUIRE(window->files().projects().projectPath() == project);
     REQUIRE_FALSE(window->isWindowModified());
 }
 
@@ -176,11 +176,11 @@ TEST_CASE("a project saved while live takes are shown reopens showing them once 
         document.selectTake(TakeSlot::B, QStringLiteral("live/weighted"));
         REQUIRE(document.selectedId(TakeSlot::A) == QStringLiteral("live/designed"));
         document.setCurrentTime(2.0);
-        REQUIRE(window->files().saveProject(project));
+        REQUIRE(window->files().projects().saveProject(project));
     }
     auto window = test::demoWindow();
     REQUIRE(window);
-    REQUIRE(window->files().openProject(project));
+    REQUIRE(window->files().projects().openProject(project));
     const auto& document = window->document();
     const bool shown = QTest::qWaitFor(
         [&] {
@@ -189,13 +189,13 @@ TEST_CASE("a project saved while live takes are shown reopens showing them once 
         },
         60000);
     INFO("A " << document.selectedId(TakeSlot::A).toStdString() << ", B " << document.selectedId(TakeSlot::B).toStdString()
-              << ", pending A " << window->files().pendingLiveTake(TakeSlot::A).toStdString() << ", pending B "
-              << window->files().pendingLiveTake(TakeSlot::B).toStdString() << ", designed "
+              << ", pending A " << window->files().projects().pendingLiveTake(TakeSlot::A).toStdString() << ", pending B "
+              << window->files().projects().pendingLiveTake(TakeSlot::B).toStdString() << ", designed "
               << (document.take(QStringLiteral("live/designed")) != nullptr) << ", weighted "
               << (document.take(QStringLiteral("live/weighted")) != nullptr));
     REQUIRE(shown);
-    REQUIRE(window->files().pendingLiveTake(TakeSlot::A).isEmpty());
-    REQUIRE(window->files().pendingLiveTake(TakeSlot::B).isEmpty());
+    REQUIRE(window->files().projects().pendingLiveTake(TakeSlot::A).isEmpty());
+    REQUIRE(window->files().projects().pendingLiveTake(TakeSlot::B).isEmpty());
     REQUIRE(document.currentTime() == Approx(2.0));
     REQUIRE(window->design().boundaries() == boundaries);
     REQUIRE(document.selectedTake(TakeSlot::A) == window->design().designedTake());
@@ -210,13 +210,13 @@ TEST_CASE("a broken project file is reported with its line and what was expected
         std::ofstream out(file.toStdString());
         out << "{\n  \"format\": \"bunraku-project\",\n  \"version\": 1,\n  oops\n}\n";
     }
-    REQUIRE_FALSE(window->files().openProject(file));
+    REQUIRE_FALSE(window->files().projects().openProject(file));
     REQUIRE(window->files().lastError().contains(QStringLiteral("broken.bunraku.json:4")));
     {
         std::ofstream out(file.toStdString());
         out << "{\"format\": \"something-else\"}";
     }
-    REQUIRE_FALSE(window->files().openProject(file));
+    REQUIRE_FALSE(window->files().projects().openProject(file));
     REQUIRE(window->files().lastError().contains(QStringLiteral("bunraku-project")));
     REQUIRE(window->document().corpusSource() == QStringLiteral("demo")); // unchanged
 }
@@ -226,22 +226,22 @@ TEST_CASE("autosave writes the unsaved work and a saved project removes it", "[a
     auto window = test::demoWindow();
     REQUIRE(window);
     auto& files = window->files();
-    QFile::remove(files.autosavePath());
-    REQUIRE_FALSE(files.autosave()); // nothing to save
+    QFile::remove(files.projects().autosavePath());
+    REQUIRE_FALSE(files.projects().autosave()); // nothing to save
     app::changeStageParameters(window->document(), [](app::AnalysisParameters& p) { p.normalise.searchBand = 12; }, QStringLiteral("band"));
-    REQUIRE(files.autosave());
-    const auto recovered = app::readProject(files.autosavePath());
+    REQUIRE(files.projects().autosave());
+    const auto recovered = app::readProject(files.projects().autosavePath());
     REQUIRE(recovered.ok());
     REQUIRE(recovered->parameters.normalise.searchBand == 12);
-    REQUIRE(files.saveProject(scratchFile("autosave-project", "p.bunraku.json")));
-    REQUIRE_FALSE(QFile::exists(files.autosavePath()));
+    REQUIRE(files.projects().saveProject(scratchFile("autosave-project", "p.bunraku.json")));
+    REQUIRE_FALSE(QFile::exists(files.projects().autosavePath()));
 }
 
 TEST_CASE("opening a missing corpus folder is an error message, not a crash", "[app][files]")
 {
     auto window = test::demoWindow();
     REQUIRE(window);
-    REQUIRE_FALSE(window->files().openCorpusFolder(QStringLiteral("/nonexistent/corpus")));
+    REQUIRE_FALSE(window->files().corpora().openCorpusFolder(QStringLiteral("/nonexistent/corpus")));
     REQUIRE(window->files().lastError().contains(QStringLiteral("/nonexistent/corpus")));
     REQUIRE(window->document().corpus().takes.size() == 30);
 }
@@ -270,7 +270,7 @@ TEST_CASE("projects with out-of-range parameters, take ids, times or view values
             out << head << body << "}\n";
         }
         changeStageParameters(window->document(), [](app::AnalysisParameters& p) { p.normalise.tau = 5; }, QStringLiteral("tau"));
-        REQUIRE_FALSE(window->files().openProject(file));
+        REQUIRE_FALSE(window->files().projects().openProject(file));
         CHECK(window->files().lastError().contains(QStringLiteral("invalid.bunraku.json")));
         CHECK(window->files().lastError().contains(QString::fromStdString(named)));
         CHECK(window->document().parameters().normalise.tau == 5); // nothing changed
@@ -281,7 +281,7 @@ TEST_CASE("projects with out-of-range parameters, take ids, times or view values
         out << R"({"format": "bunraku-project", "version": 1, "corpus": "demo", "parameters": {"normalise.tau": 6, )"
             << R"("emotion.weight": 1.5, "design.boundaries": [0], "design.gains": {"1/2": [0.5, 2.0]}}})";
     }
-    REQUIRE(window->files().openProject(file));
+    REQUIRE(window->files().projects().openProject(file));
     const auto& p = window->document().parameters();
     CHECK(p.normalise.tau == 6);
     CHECK(p.design.emotionWeight == 1.5);
@@ -313,7 +313,7 @@ TEST_CASE("a project whose imported takes cannot be read opens saying which take
     }
     QStringList messages;
     QObject::connect(&window->files(), &app::FileController::statusMessage, [&](const QString& m) { messages.append(m); });
-    REQUIRE(window->files().openProject(file)); // the corpus and the rest of the project open
+    REQUIRE(window->files().projects().openProject(file)); // the corpus and the rest of the project open
     REQUIRE_FALSE(messages.isEmpty());
     const QString last = messages.back();
     INFO(last.toStdString());
@@ -346,7 +346,7 @@ TEST_CASE("a project of 2000 imported takes adds them to the document in one cha
     }
     int changes = 0;
     QObject::connect(&window->document(), &app::Document::derivedTakesChanged, [&] { ++changes; });
-    REQUIRE(window->files().openProject(file));
+    REQUIRE(window->files().projects().openProject(file));
     const auto imported = importedTakes(window->document());
     REQUIRE(imported.size() == 2000);
     CHECK(imported.front().label == QStringLiteral("t0"));
@@ -367,7 +367,7 @@ TEST_CASE("a project holding a number beyond a double is refused naming the file
         out << "{\"format\": \"bunraku-project\", \"version\": 2, \"corpus\": \"demo\",\n"
                "\"parameters\": {\"normalise\": {\"tau\": 1e400}}}\n";
     }
-    REQUIRE_FALSE(window->files().openProject(file));
+    REQUIRE_FALSE(window->files().projects().openProject(file));
     INFO(window->files().lastError().toStdString());
     CHECK(window->files().lastError().contains(QStringLiteral("huge.bunraku.json:2")));
     CHECK(window->files().lastError().contains(QStringLiteral("1e400")));
@@ -473,12 +473,12 @@ TEST_CASE("a project keeps what the 3D view draws and Follow, and refuses a show
             box->setChecked(!box->isChecked());
             saved[name] = box->isChecked();
         }
-        REQUIRE(window->files().saveProject(file));
+        REQUIRE(window->files().projects().saveProject(file));
     }
     auto window = test::demoWindow();
     REQUIRE(window);
     for (const auto& [name, checked] : saved) REQUIRE(window->findChild<QCheckBox*>(name)->isChecked() != checked);
-    REQUIRE(window->files().openProject(file));
+    REQUIRE(window->files().projects().openProject(file));
     for (const auto& [name, checked] : saved) {
         INFO(name.toStdString());
         CHECK(window->findChild<QCheckBox*>(name)->isChecked() == checked);

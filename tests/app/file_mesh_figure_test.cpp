@@ -63,7 +63,7 @@ TEST_CASE("the File's mesh figure is offered for a take whose file carries one a
         CHECK(figure->itemText(mesh) == QStringLiteral("File's mesh"));
         CHECK_FALSE(meshItemEnabled(figure)); // a demo take: no file, no mesh
         // The round trip keeps the moving joints (the fixture's still head and hands are End Sites).
-        const bool imported = window->files().importTakeFile(QString::fromStdString(glb.string()),
+        const bool imported = window->files().imports().importTakeFile(QString::fromStdString(glb.string()),
                                                              QStringLiteral("head=Neck,shoulder=Chest,arm=UpperArm_R,hand=LowerArm_R"));
         INFO(window->files().lastError().toStdString());
         REQUIRE(imported);
@@ -75,11 +75,11 @@ TEST_CASE("the File's mesh figure is offered for a take whose file carries one a
         CHECK(meshItemEnabled(figure));
         figure->setCurrentIndex(mesh);
         CHECK(window->viewportPanel()->viewport()->visibility().figures[0] == render::FigureStyle::FileMesh);
-        REQUIRE(window->files().saveProject(project));
+        REQUIRE(window->files().projects().saveProject(project));
     }
     auto window = test::demoWindow();
     REQUIRE(window);
-    REQUIRE(window->files().openProject(project));
+    REQUIRE(window->files().projects().openProject(project));
     QComboBox* figure = window->viewportPanel()->figureBox(0);
     CHECK(figure->currentIndex() == 4);
     const auto shown = window->document().selectedTake(TakeSlot::A);

@@ -233,7 +233,7 @@ TEST_CASE("command-line paths: a corpus.json opens its corpus, a project its sta
         REQUIRE(analysis::io::writeCorpus(window->document().corpus(), folder.toStdString()).ok());
         REQUIRE(window->exports().exportTake(app::TakeSlot::A, bvh));
         window->document().setCurrentTime(2.0);
-        REQUIRE(window->files().saveProject(project));
+        REQUIRE(window->files().projects().saveProject(project));
     }
 
     test::isolateSettings();
@@ -248,7 +248,7 @@ TEST_CASE("command-line paths: a corpus.json opens its corpus, a project its sta
         app::MainWindow window;
         window.files().setDialogsEnabled(false);
         REQUIRE(app::openLaunchPaths(window.files(), window.document(), {project}).isEmpty());
-        CHECK(window.files().projectPath() == project);
+        CHECK(window.files().projects().projectPath() == project);
         CHECK(window.document().currentTime() == Approx(2.0));
     }
     {

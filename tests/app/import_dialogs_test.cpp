@@ -125,7 +125,7 @@ TEST_CASE("a BVH file of any common skeleton imports without a map and keeps its
     REQUIRE(window);
     const auto dir = test::scratchDir("app_import_mixamo");
     const auto file = writeFixtures(dir, {"mixamo.bvh"}).front();
-    REQUIRE(window->files().importTakeFile(QString::fromStdString(file.string())));
+    REQUIRE(window->files().imports().importTakeFile(QString::fromStdString(file.string())));
     const auto& derived = window->document().derivedTakes();
     const auto imported = std::find_if(derived.begin(), derived.end(), [](const auto& d) { return !d.sourcePath.isEmpty(); });
     REQUIRE(imported != derived.end());
@@ -171,7 +171,7 @@ TEST_CASE("new corpus from files: labels from the names, corrected in the table,
     REQUIRE(sources.size() == 3);
     CHECK(sources[2].labels == analysis::TakeLabels{"wave", "calm", 1, ""});
 
-    REQUIRE(window->files().createCorpusFromFiles(sources, dialog.buildOptions(), output));
+    REQUIRE(window->files().corpora().createCorpusFromFiles(sources, dialog.buildOptions(), output));
     const auto& corpus = window->document().corpus();
     CHECK(window->document().corpusSource() == QFileInfo(output).absoluteFilePath());
     REQUIRE(corpus.takes.size() == 3);
@@ -267,7 +267,7 @@ TEST_CASE("new corpus from files: a file that is not a take keeps the dialog ope
     // The files picked one by one (a folder's .txt files are not collected as takes).
     QStringList picked;
     for (const char* name : {"walk_happy_1.bvh", "walk_sad_1.bvh", "walk_calm_1.txt"}) picked << QString::fromStdString((in / name).string());
-    window->files().chooseFilesForCorpus(picked);
+    window->files().corpora().chooseFilesForCorpus(picked);
     REQUIRE(steps == 2);
     const auto& corpus = window->document().corpus();
     CHECK(window->document().corpusSource() == QFileInfo(made).absoluteFilePath());
@@ -352,7 +352,7 @@ TEST_CASE("new corpus from the bandai files in the workbench", "[app][import]")
     const QString output = QString::fromStdString((test::scratchDir("app_new_corpus_bandai") / "bandai").string());
     dialog.setOutputFolder(output);
     REQUIRE(dialog.problem().isEmpty());
-    REQUIRE(window->files().createCorpusFromFiles(dialog.sources(), dialog.buildOptions(), output));
+    REQUIRE(window->files().corpora().createCorpusFromFiles(dialog.sources(), dialog.buildOptions(), output));
     const auto& corpus = window->document().corpus();
     CHECK(corpus.takes.size() == files.size());
     CHECK(corpus.neutralEmotion == "normal");
@@ -365,7 +365,7 @@ TEST_CASE("new corpus from the bandai files in the workbench", "[app][import]")
     CHECK(dialog.buildOptions().import.bvhLayout == analysis::io::BvhTakeLayout::AllJoints);
     const QString whole = QString::fromStdString((test::scratchDir("app_new_corpus_bandai_joints") / "bandai").string());
     dialog.setOutputFolder(whole);
-    REQUIRE(window->files().createCorpusFromFiles(dialog.sources(), dialog.buildOptions(), whole));
+    REQUIRE(window->files().corpora().createCorpusFromFiles(dialog.sources(), dialog.buildOptions(), whole));
     const auto& joints = window->document().corpus();
     CHECK(joints.takes.size() == files.size());
     CHECK(joints.takes.front().channels.size() == 132);
@@ -388,7 +388,7 @@ TEST_CASE("File > Import Take of a BVH file takes the map chosen in the joint di
         dialog->sideBox()->setCurrentIndex(1);
         QTest::mouseClick(okButton(*dialog), Qt::LeftButton);
     });
-    const bool imported = window->files().importTakeFile(QString::fromStdString(file.string()));
+    const bool imported = window->files().imports().importTakeFile(QString::fromStdString(file.string()));
     window->files().setDialogsEnabled(false);
     REQUIRE(shown);
     REQUIRE(imported);
@@ -419,7 +419,7 @@ TEST_CASE("File > Import Take of an inch-unit BVH stands at a person's height wh
         chosen = dialog->findChild<QLabel*>("height")->text();
         QTest::mouseClick(okButton(*dialog), Qt::LeftButton);
     });
-    const bool imported = window->files().importTakeFile(QString::fromStdString(file.string()));
+    const bool imported = window->files().imports().importTakeFile(QString::fromStdString(file.string()));
     window->files().setDialogsEnabled(false);
     INFO("guessed: " << guessed.toStdString() << "; chosen: " << chosen.toStdString());
     REQUIRE(imported);
@@ -493,7 +493,7 @@ TEST_CASE("six BVH files imported at once ask one dialog for all of them and imp
         }
     });
     watcher.start();
-    const int imported = window->files().importTakeFiles(files);
+    const int imported = window->files().imports().importTakeFiles(files);
     watcher.stop();
     window->files().setDialogsEnabled(false);
     CHECK(dialogs == 1);
@@ -515,7 +515,7 @@ namespace {
 fs::path mixamoGlb(app::MainWindow& window, const fs::path& dir, const std::string& name)
 {
     const auto bvh = writeFixtures(dir, {name + ".bvh"}).front();
-    REQUIRE(window.files().importTakeFile(QString::fromStdString(bvh.string())));
+    REQUIRE(window.files().imports().importTakeFile(QString::fromStdString(bvh.string())));
     const fs::path glb = dir / (name + ".glb");
     REQUIRE(window.exports().exportTake(app::TakeSlot::A, QString::fromStdString(glb.string())));
     return glb;
@@ -541,7 +541,7 @@ TEST_CASE("File > Import Take and drag and drop of a glTF take keep its skeleton
         QTest::mouseClick(okButton(*dialog), Qt::LeftButton);
     });
     poll.start(20);
-    const bool imported = window->files().importTakeFile(QString::fromStdString(glb.string()));
+    const bool imported = window->files().imports().importTakeFile(QString::fromStdString(glb.string()));
     poll.stop();
     window->files().setDialogsEnabled(false);
     REQUIRE(shown);
@@ -567,10 +567,10 @@ TEST_CASE("File > Import Take and drag and drop of a glTF take keep its skeleton
     CHECK(window->document().selectedTake(app::TakeSlot::A)->frameCount() == source->frameCount());
     // A project keeps the imported glTF takes and reads them again when reopened.
     const QString project = QString::fromStdString((dir / "glb.bunraku.json").string());
-    REQUIRE(window->files().saveProject(project));
+    REQUIRE(window->files().projects().saveProject(project));
     auto reopened = test::demoWindow();
     REQUIRE(reopened);
-    REQUIRE(reopened->files().openProject(project));
+    REQUIRE(reopened->files().projects().openProject(project));
     int fromGlb = 0;
     for (const auto& derived : reopened->document().derivedTakes()) {
         if (!derived.sourcePath.endsWith(QStringLiteral(".glb"))) continue;
@@ -608,7 +608,7 @@ TEST_CASE("new corpus from glTF files lists each file's animation and part map a
     const QString output = QString::fromStdString((dir / "corpus").string());
     dialog.setOutputFolder(output);
     REQUIRE(dialog.problem().isEmpty());
-    REQUIRE(window->files().createCorpusFromFiles(dialog.sources(), dialog.buildOptions(), output));
+    REQUIRE(window->files().corpora().createCorpusFromFiles(dialog.sources(), dialog.buildOptions(), output));
     const auto& corpus = window->document().corpus();
     REQUIRE(corpus.takes.size() == 2);
     for (const auto& take : corpus.takes) {
@@ -647,7 +647,7 @@ TEST_CASE("File > Import Take of a glTF file with two animations lists them befo
         }
     });
     poll.start(20);
-    const bool imported = window->files().importTakeFile(QString::fromStdString(file.string()));
+    const bool imported = window->files().imports().importTakeFile(QString::fromStdString(file.string()));
     poll.stop();
     window->files().setDialogsEnabled(false);
     CHECK(listed == QStringList({QStringLiteral("0: walk"), QStringLiteral("1: idle")}));

@@ -137,7 +137,7 @@ TEST_CASE("File > Import Take reads a long BVH off the GUI thread, and Cancel ha
     bool jointDialog = false;
     acceptJointDialogWhenShown(jointDialog);
     cancel.start();
-    const bool imported = window->files().importTakeFile(QString::fromStdString(file.string()));
+    const bool imported = window->files().imports().importTakeFile(QString::fromStdString(file.string()));
     cancel.release();
     window->files().setDialogsEnabled(false);
 
@@ -172,7 +172,7 @@ TEST_CASE("File > Import Take of a long BVH reports its progress to the end and 
     window->files().setDialogsEnabled(true);
     bool jointDialog = false;
     acceptJointDialogWhenShown(jointDialog);
-    const bool imported = window->files().importTakeFile(QString::fromStdString(file.string()));
+    const bool imported = window->files().imports().importTakeFile(QString::fromStdString(file.string()));
     window->files().setDialogsEnabled(false);
 
     CHECK(jointDialog);
@@ -195,10 +195,10 @@ TEST_CASE("a project holding a long imported take reopens behind the progress di
     auto window = test::demoWindow();
     REQUIRE(window);
     const auto file = longTakeFile("app_project_cancel");
-    REQUIRE(window->files().importTakeFile(QString::fromStdString(file.string())));
+    REQUIRE(window->files().imports().importTakeFile(QString::fromStdString(file.string())));
     const auto project = test::scratchDir("app_project_cancel_file") / "long.bunraku.json";
-    REQUIRE(window->files().saveProject(QString::fromStdString(project.string())));
-    REQUIRE(window->files().openDemoCorpus());
+    REQUIRE(window->files().projects().saveProject(QString::fromStdString(project.string())));
+    REQUIRE(window->files().corpora().openDemoCorpus());
     REQUIRE(importedTakes(window->document()).empty());
     const QString shownBefore = window->document().selectedId(app::TakeSlot::A);
 
@@ -206,7 +206,7 @@ TEST_CASE("a project holding a long imported take reopens behind the progress di
     window->files().setProgressOptionsForTesting(cancel.options());
     window->files().setDialogsEnabled(true);
     cancel.start();
-    const bool opened = window->files().openProject(QString::fromStdString(project.string()));
+    const bool opened = window->files().projects().openProject(QString::fromStdString(project.string()));
     cancel.release();
     window->files().setDialogsEnabled(false);
 
@@ -216,11 +216,11 @@ TEST_CASE("a project holding a long imported take reopens behind the progress di
     CHECK(window->files().lastError().isEmpty());
     CHECK(importedTakes(window->document()).empty());
     CHECK(window->document().selectedId(app::TakeSlot::A) == shownBefore);
-    CHECK(window->files().projectPath().isEmpty());
+    CHECK(window->files().projects().projectPath().isEmpty());
 
     // Not cancelled, the same project brings the take back.
     window->files().setProgressOptionsForTesting({});
-    REQUIRE(window->files().openProject(QString::fromStdString(project.string())));
+    REQUIRE(window->files().projects().openProject(QString::fromStdString(project.string())));
     const auto imported = importedTakes(window->document());
     REQUIRE(imported.size() == 1);
     CHECK(imported.front()->take->frameCount() == kFrames);

@@ -412,11 +412,11 @@ TEST_CASE("a project brings back the graphs' part and DOF, the camera and the em
         viewport->setCamera(camera);
         saved = camera;
         window->analysis().setWeightEmotion(QStringLiteral("hostile"));
-        REQUIRE(window->files().saveProject(file));
+        REQUIRE(window->files().projects().saveProject(file));
     }
     auto window = test::demoWindow();
     REQUIRE(window);
-    REQUIRE(window->files().openProject(file));
+    REQUIRE(window->files().projects().openProject(file));
     CHECK(window->graphPanel()->grid()->graphLayout() == widgets::GraphLayout::Single);
     CHECK(window->graphPanel()->selectedPart() == QStringLiteral("hand"));
     CHECK(window->graphPanel()->selectedDof() == QStringLiteral("pitch"));
@@ -447,7 +447,7 @@ TEST_CASE("a project brings back the graphs' part and DOF, the camera and the em
     out.write(QJsonDocument(root).toJson());
     out.close();
     window->graphPanel()->selectDof(QStringLiteral("x"));
-    CHECK_FALSE(window->files().openProject(broken));
+    CHECK_FALSE(window->files().projects().openProject(broken));
     CHECK(window->files().lastError().contains(QStringLiteral("\"view\".\"camera\"")));
     CHECK(window->graphPanel()->selectedDof() == QStringLiteral("x"));
 }

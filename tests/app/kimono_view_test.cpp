@@ -78,11 +78,11 @@ TEST_CASE("the Cloth box and Cloth Settings dress the view and a project keeps t
         REQUIRE(test::waitUntilIdle(*window));
         REQUIRE(panel->drawnKimonos()[0]);
         CHECK(panel->drawnKimonos()[0]->parameters.damping == 0.25);
-        REQUIRE(window->files().saveProject(project));
+        REQUIRE(window->files().projects().saveProject(project));
     }
     auto window = test::demoWindow();
     REQUIRE(window);
-    REQUIRE(window->files().openProject(project));
+    REQUIRE(window->files().projects().openProject(project));
     CHECK(window->viewportPanel()->clothBox()->isChecked());
     CHECK(window->analysis().clothParameters().damping == 0.25);
     REQUIRE(test::waitUntilIdle(*window));
@@ -100,7 +100,7 @@ TEST_CASE("the Cloth box and Cloth Settings dress the view and a project keeps t
     REQUIRE(out.open(QIODevice::WriteOnly));
     out.write(text);
     out.close();
-    CHECK_FALSE(window->files().openProject(bad));
+    CHECK_FALSE(window->files().projects().openProject(bad));
     CHECK(window->files().lastError().contains(QStringLiteral("clothParameters")));
     CHECK(window->files().lastError().contains(QStringLiteral("damping")));
 }

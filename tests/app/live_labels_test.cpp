@@ -124,7 +124,7 @@ TEST_CASE("after another corpus opens, the emotion panel's controls and text agr
     // The demo corpus written to a folder and opened as another corpus.
     const auto folder = test::scratchDir("labels-other-corpus");
     REQUIRE(analysis::io::writeCorpus(analysis::synth::generateDemoCorpus().corpus, folder).ok());
-    REQUIRE(window->files().openCorpusFolder(QString::fromStdString(folder.string())));
+    REQUIRE(window->files().corpora().openCorpusFolder(QString::fromStdString(folder.string())));
     // Its parameters are the defaults, and every control shows them at once...
     CHECK(document.parameters().design.emotionWeight == 1.0);
     CHECK(panel->weightSlider()->value() == 100);
@@ -255,7 +255,7 @@ TEST_CASE("the designed take's label names its warp, gains and phrases, and the 
     // An imported file: named as it is listed (the file's name), not by its full path.
     const auto families = test::bvhFamilies();
     const auto file = test::writeText(dir / "imported-wave.bvh", test::fixtureBvh(families[3], 40));
-    REQUIRE(window->files().importTakeFile(QString::fromStdString(file.string())));
+    REQUIRE(window->files().imports().importTakeFile(QString::fromStdString(file.string())));
     QString imported;
     for (const auto& derived : document.derivedTakes())
         if (derived.id.startsWith(QStringLiteral("imported/"))) imported = derived.id;

@@ -91,7 +91,7 @@ QString orphanedAutosave(const QString& folder, const app::ProjectState& state)
 
 QString autosaveFolder(const app::MainWindow& window)
 {
-    return QFileInfo(const_cast<app::MainWindow&>(window).files().autosavePath()).absolutePath();
+    return QFileInfo(const_cast<app::MainWindow&>(window).files().projects().autosavePath()).absolutePath();
 }
 
 } // namespace
@@ -102,19 +102,19 @@ TEST_CASE("two running workbenches keep separate autosaves", "[app][session]")
     auto second = test::demoWindow();
     REQUIRE(first);
     REQUIRE(second);
-    REQUIRE(first->files().autosavePath() != second->files().autosavePath());
+    REQUIRE(first->files().projects().autosavePath() != second->files().projects().autosavePath());
     app::changeStageParameters(first->document(), [](app::AnalysisParameters& p) { p.normalise.tau = 6; }, QStringLiteral("tau"));
     app::changeStageParameters(second->document(), [](app::AnalysisParameters& p) { p.normalise.tau = 7; }, QStringLiteral("tau"));
-    REQUIRE(first->files().autosave());
-    REQUIRE(second->files().autosave());
-    first->files().setUnsavedAnswerForTesting([] { return int(QMessageBox::Discard); });
+    REQUIRE(first->files().projects().autosave());
+    REQUIRE(second->files().projects().autosave());
+    first->files().projects().setUnsavedAnswerForTesting([] { return int(QMessageBox::Discard); });
     REQUIRE(first->close()); // discards its own work: its autosave goes, the other's stays
-    REQUIRE_FALSE(QFile::exists(first->files().autosavePath()));
-    REQUIRE(QFile::exists(second->files().autosavePath()));
-    REQUIRE(app::readProject(second->files().autosavePath())->parameters.normalise.tau == 7);
+    REQUIRE_FALSE(QFile::exists(first->files().projects().autosavePath()));
+    REQUIRE(QFile::exists(second->files().projects().autosavePath()));
+    REQUIRE(app::readProject(second->files().projects().autosavePath())->parameters.normalise.tau == 7);
     // A running workbench's autosave is never offered as an orphan.
-    for (const auto& orphan : first->files().autosaveSession().orphans())
-        REQUIRE(orphan.path != second->files().autosavePath());
+    for (const auto& orphan : first->files().projects().autosaveSession().orphans())
+        REQUIRE(orphan.path != second->files().projects().autosavePath());
 }
 
 TEST_CASE("an orphaned autosave is offered with its time and content, and recovered as unsaved work", "[app][session]")
@@ -127,7 +127,7 @@ TEST_CASE("an orphaned autosave is offered with its time and content, and recove
     state.takeA = app::Document::corpusTakeId(5);
     const QString orphan = orphanedAutosave(autosaveFolder(*window), state);
 
-    const auto orphans = window->files().autosaveSession().orphans();
+    const auto orphans = window->files().projects().autosaveSession().orphans();
     const auto found = std::find_if(orphans.begin(), orphans.end(), [&](const app::OrphanedAutosave& o) { return o.path == orphan; });
     REQUIRE(found != orphans.end());
     CHECK(found->summary.contains(QStringLiteral("demo corpus")));
@@ -147,7 +147,7 @@ TEST_CASE("an orphaned autosave is offered with its time and content, and recove
             }
         dialog->recoverButton()->click();
     });
-    window->files().offerRecovery();
+    window->files().projects().offerRecovery();
     window->files().setDialogsEnabled(false);
     REQUIRE(listed.contains(QStringLiteral("demo corpus")));
     auto& document = window->document();
@@ -156,12 +156,12 @@ TEST_CASE("an orphaned autosave is offered with its time and content, and recove
     // Unsaved work: the title is marked, the autosave is this window's and stays.
     REQUIRE_FALSE(document.undoStack()->isClean());
     REQUIRE(window->isWindowModified());
-    REQUIRE(window->files().autosavePath() == orphan);
-    REQUIRE(window->files().projectPath().isEmpty());
+    REQUIRE(window->files().projects().autosavePath() == orphan);
+    REQUIRE(window->files().projects().projectPath().isEmpty());
 
     // Quitting asks: Cancel keeps the window and the autosave.
     int asked = 0;
-    window->files().setUnsavedAnswerForTesting([&asked] {
+    window->files().projects().setUnsavedAnswerForTesting([&asked] {
         ++asked;
         return int(QMessageBox::Cancel);
     });
@@ -169,7 +169,7 @@ TEST_CASE("an orphaned autosave is offered with its time and content, and recove
     REQUIRE(asked == 1);
     REQUIRE(QFile::exists(orphan));
     // Saving it removes the autosave; the window then closes without asking.
-    REQUIRE(window->files().saveProject(QString::fromStdString((test::scratchDir("recovered") / "r.bunraku.json").string())));
+    REQUIRE(window->files().projects().saveProject(QString::fromStdString((test::scratchDir("recovered") / "r.bunraku.json").string())));
     REQUIRE_FALSE(QFile::exists(orphan));
     REQUIRE(window->close());
     REQUIRE(asked == 1);
@@ -183,15 +183,15 @@ TEST_CASE("an orphan discarded from the dialog is removed, one kept for later st
     state.corpus = QStringLiteral("demo");
     const QString kept = orphanedAutosave(autosaveFolder(*window), state);
     const QString dropped = orphanedAutosave(autosaveFolder(*window), state);
-    app::RecoveryDialog dialog(window->files().autosaveSession().orphans(),
-                               [&](const QString& path) { return window->files().autosaveSession().discardOrphan(path); });
+    app::RecoveryDialog dialog(window->files().projects().autosaveSession().orphans(),
+                               [&](const QString& path) { return window->files().projects().autosaveSession().discardOrphan(path); });
     for (int row = 0; row < dialog.list()->count(); ++row)
         if (dialog.list()->item(row)->data(Qt::UserRole).toString() == dropped) dialog.list()->setCurrentRow(row);
     dialog.discardButton()->click();
     REQUIRE_FALSE(QFile::exists(dropped));
     REQUIRE_FALSE(QFile::exists(dropped + QStringLiteral(".lock")));
     REQUIRE(QFile::exists(kept));
-    window->files().autosaveSession().discardOrphan(kept); // tidy: other tests share the folder
+    window->files().projects().autosaveSession().discardOrphan(kept); // tidy: other tests share the folder
 }
 
 TEST_CASE("dropping a corpus folder or project on unsaved work asks first", "[app][session]")
@@ -201,8 +201,8 @@ TEST_CASE("dropping a corpus folder or project on unsaved work asks first", "[ap
     const auto dir = test::scratchDir("drop-asks");
     REQUIRE(analysis::io::writeCorpus(window->document().corpus(), dir / "corpus").ok());
     app::changeStageParameters(window->document(), [](app::AnalysisParameters& p) { p.normalise.tau = 6; }, QStringLiteral("tau"));
-    REQUIRE(window->files().autosave());
-    const QString autosave = window->files().autosavePath();
+    REQUIRE(window->files().projects().autosave());
+    const QString autosave = window->files().projects().autosavePath();
 
     const auto drop = [&](const QString& path) {
         QMimeData mime;
@@ -215,7 +215,7 @@ TEST_CASE("dropping a corpus folder or project on unsaved work asks first", "[ap
         REQUIRE(event.isAccepted());
     };
     int asked = 0;
-    window->files().setUnsavedAnswerForTesting([&asked] {
+    window->files().projects().setUnsavedAnswerForTesting([&asked] {
         ++asked;
         return int(QMessageBox::Cancel);
     });
@@ -225,7 +225,7 @@ TEST_CASE("dropping a corpus folder or project on unsaved work asks first", "[ap
     REQUIRE(window->document().parameters().normalise.tau == 6);
     REQUIRE(QFile::exists(autosave));
 
-    window->files().setUnsavedAnswerForTesting([&asked] {
+    window->files().projects().setUnsavedAnswerForTesting([&asked] {
         ++asked;
         return int(QMessageBox::Discard);
     });
@@ -249,9 +249,9 @@ TEST_CASE("a BVH imported with a non-default joint map reopens from its project 
     {
         auto window = test::demoWindow();
         REQUIRE(window);
-        REQUIRE(window->files().importTakeFile(bvh, map));
+        REQUIRE(window->files().imports().importTakeFile(bvh, map));
         imported = window->document().selectedTake(TakeSlot::A);
-        REQUIRE(window->files().saveProject(project));
+        REQUIRE(window->files().projects().saveProject(project));
     }
     // The map matters: the default one takes the other arm.
     const auto byDefault = analysis::io::readTakeFile(bvh.toStdString());
@@ -260,7 +260,7 @@ TEST_CASE("a BVH imported with a non-default joint map reopens from its project 
 
     auto window = test::demoWindow();
     REQUIRE(window);
-    REQUIRE(window->files().openProject(project));
+    REQUIRE(window->files().projects().openProject(project));
     const auto& derived = window->document().derivedTakes();
     const auto found = std::find_if(derived.begin(), derived.end(), [](const app::DerivedTake& d) { return !d.sourcePath.isEmpty(); });
     REQUIRE(found != derived.end());
@@ -287,7 +287,7 @@ TEST_CASE("a corpus, project or take that cannot be read is an error in the work
         std::ofstream out(dir / "corpus" / "corpus.json");
         out << manifest;
     }
-    REQUIRE_FALSE(window->files().openCorpusFolder(QString::fromStdString((dir / "corpus").string())));
+    REQUIRE_FALSE(window->files().corpora().openCorpusFolder(QString::fromStdString((dir / "corpus").string())));
     REQUIRE(window->files().lastError().contains(QStringLiteral("corpus.json")));
     // A take's skeleton file holding an offset of 1e400 (used to abort with exit 134).
     {
@@ -313,13 +313,13 @@ TEST_CASE("a corpus, project or take that cannot be read is an error in the work
             std::ofstream out(skeleton);
             out << text;
         }
-        REQUIRE_FALSE(window->files().openCorpusFolder(QString::fromStdString((dir / "skeletal").string())));
+        REQUIRE_FALSE(window->files().corpora().openCorpusFolder(QString::fromStdString((dir / "skeletal").string())));
         REQUIRE(window->files().lastError().contains(QStringLiteral("greeting_none_1.skeleton.json:")));
     }
-    REQUIRE_FALSE(window->files().openProject(QStringLiteral("/dev/zero")));
+    REQUIRE_FALSE(window->files().projects().openProject(QStringLiteral("/dev/zero")));
     REQUIRE(window->files().lastError().contains(QStringLiteral("/dev/zero")));
     std::filesystem::create_symlink("/dev/urandom", dir / "noise.csv");
-    REQUIRE_FALSE(window->files().importTakeFile(QString::fromStdString((dir / "noise.csv").string())));
+    REQUIRE_FALSE(window->files().imports().importTakeFile(QString::fromStdString((dir / "noise.csv").string())));
     REQUIRE(window->files().lastError().contains(QStringLiteral("device")));
     REQUIRE(window->document().corpus().takes.size() == 30); // still the demo corpus
 }

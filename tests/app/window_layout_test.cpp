@@ -213,7 +213,7 @@ TEST_CASE("a project reopens with its dock layout and ignores a malformed one", 
         settle();
         saved = leftWidth(*window); // as wide as the other docks' minimum widths let it be
         CHECK(saved >= 440);
-        REQUIRE(window->files().saveProject(file));
+        REQUIRE(window->files().projects().saveProject(file));
     }
     auto window = test::demoWindow();
     REQUIRE(window);
@@ -222,7 +222,7 @@ TEST_CASE("a project reopens with its dock layout and ignores a malformed one", 
     const int fresh = leftWidth(*window);
     INFO("fresh " << fresh << " saved " << saved);
     REQUIRE(fresh < saved - 100);
-    REQUIRE(window->files().openProject(file));
+    REQUIRE(window->files().projects().openProject(file));
     settle();
     CHECK(leftWidth(*window) == Approx(saved).margin(4));
     // The restored width is the one kept when the window is resized.
@@ -248,7 +248,7 @@ TEST_CASE("a project reopens with its dock layout and ignores a malformed one", 
         REQUIRE(out.open(QIODevice::WriteOnly | QIODevice::Truncate));
         out.write(QJsonDocument(root).toJson());
         out.close();
-        REQUIRE(window->files().openProject(broken));
+        REQUIRE(window->files().projects().openProject(broken));
         settle();
         CHECK(leftWidth(*window) == Approx(before).margin(4));
         for (QDockWidget* dock : window->docks()) CHECK(dock->isVisible());
@@ -276,13 +276,13 @@ TEST_CASE("a 3D view narrowed below a third of the window reopens as narrow in a
         saved = window->dock("viewDock")->width();
         INFO("laid out " << laidOut << ", narrowed to " << saved);
         REQUIRE(saved * 3 < size.width()); // narrower than the third a larger window gives it
-        REQUIRE(window->files().saveProject(file));
+        REQUIRE(window->files().projects().saveProject(file));
     }
     auto window = test::demoWindow();
     REQUIRE(window);
     resetLayoutAt(*window, size);
     settle();
-    REQUIRE(window->files().openProject(file));
+    REQUIRE(window->files().projects().openProject(file));
     settle();
     CHECK(window->dock("viewDock")->width() == Approx(saved).margin(4));
 }
@@ -300,13 +300,13 @@ TEST_CASE("a project saved at 1366x768 reopens at 1920x1080 with every dock usef
         REQUIRE(window);
         resetLayoutAt(*window, QSize(1366, 768));
         settle();
-        REQUIRE(window->files().saveProject(file));
+        REQUIRE(window->files().projects().saveProject(file));
     }
     for (const QSize size : {QSize(1920, 1080), QSize(2560, 1440)}) {
         auto window = test::demoWindow();
         REQUIRE(window);
         resetLayoutAt(*window, size);
-        REQUIRE(window->files().openProject(file));
+        REQUIRE(window->files().projects().openProject(file));
         settle();
         INFO("reopened at " << size.width() << "x" << size.height());
         for (QDockWidget* dock : window->docks()) {

@@ -32,7 +32,7 @@ TEST_CASE("a window size as large as the screen keeps the window and its status 
     test::isolateSettings();
     app::MainWindow window;
     window.files().setDialogsEnabled(false);
-    window.files().openDemoCorpus();
+    window.files().corpora().openDemoCorpus();
     window.move(0, 20);
     QScreen* screen = window.screen();
     REQUIRE(screen);

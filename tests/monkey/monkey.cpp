@@ -500,7 +500,7 @@ void Monkey::openFile()
     const int mode = below(7);
     if (mode == 0) {
         note("open demo corpus");
-        files.openDemoCorpus();
+        files.corpora().openDemoCorpus();
     } else if (mode == 1 && !m_files.corpora.isEmpty()) {
         const QString path = m_files.corpora[below(int(m_files.corpora.size()))];
         note("open corpus " + str(path));
@@ -524,7 +524,7 @@ void Monkey::saveProject()
 {
     const QString path = m_files.scratch + QStringLiteral("/project-%1").arg(below(3)) + QString::fromLatin1(app::kProjectSuffix);
     note("save project " + str(path));
-    if (m_window.files().saveProject(path)) {
+    if (m_window.files().projects().saveProject(path)) {
         if (!m_projects.contains(path)) m_projects << path;
     }
 }

@@ -158,7 +158,7 @@ TEST_CASE("a main window is destroyed without its side columns' filter reading i
     // QPointer<QMainWindow> when it was no more a QMainWindow (UBSan: downcast of a QWidget).
     test::isolateSettings();
     auto window = std::make_unique<app::MainWindow>();
-    window->files().openDemoCorpus();
+    window->files().corpora().openDemoCorpus();
     window->show();
     REQUIRE(QTest::qWaitForWindowExposed(window.get()));
     window.reset();
@@ -185,12 +185,12 @@ TEST_CASE("the monkey: random user actions on the demo and Bandai corpora keep e
         widgets::ManualClock clock; // outlives the window, whose timers run on it
         auto window = std::make_unique<app::MainWindow>(nullptr, executor);
         // Dialogs on: the monkey answers them (Monkey::answerModal), some of them midway.
-        window->files().openDemoCorpus();
+        window->files().corpora().openDemoCorpus();
         window->resize(1400, 900);
         window->show();
         REQUIRE(QTest::qWaitForWindowExposed(window.get()));
         // Odd seeds start on the Bandai corpus, even ones on the demo corpus.
-        if (seed % 2 == 1 && !files.corpora.isEmpty()) REQUIRE(window->files().openCorpusFolder(files.corpora.front()));
+        if (seed % 2 == 1 && !files.corpora.isEmpty()) REQUIRE(window->files().corpora().openCorpusFolder(files.corpora.front()));
         test::Monkey monkey(*window, *executor, clock, files, seed);
         monkey.setVerbose(verbose);
         for (std::uint64_t k = 0; k < actions; ++k) {
@@ -203,7 +203,7 @@ TEST_CASE("the monkey: random user actions on the demo and Bandai corpora keep e
         total += monkey.actions();
         if (envNumber("BUNRAKU_MONKEY_PROFILE", 0) != 0) std::printf("monkey: seed %llu\n%s", (unsigned long long)seed, monkey.profile().c_str());
         window->files().setDialogsEnabled(false);
-        window->files().setUnsavedAnswerForTesting({}); // closing asks nothing
+        window->files().projects().setUnsavedAnswerForTesting({}); // closing asks nothing
         while (executor->runNext()) QCoreApplication::processEvents();
         window.reset();
         QCoreApplication::processEvents();
