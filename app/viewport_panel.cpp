@@ -222,12 +222,18 @@ void ViewportPanel::rebuildScene()
     }
     render::SceneContent scene;
     scene.body = analysis::defaultBodyDescription();
+    // The shipped body lives as long as the program: its address is its identity.
+    scene.bodySource = std::shared_ptr<const void>(&analysis::defaultBodyDescription(), [](const void*) {});
     for (const auto& [slot, take] : takes) {
         render::TakeSlot shown;
         shown.take = *take;
-        // A take with its performer's skeleton is drawn with the puppet fitted to it.
-        if (take->skeleton)
-            shown.body = std::make_shared<const analysis::BodyDescription>(analysis::bodyForTake(scene.body, *take));
+        // A take with its performer's skeleton is drawn with the puppet fitted to it (fitted once per take).
+        FittedBody& fitted = m_fittedBodies[int(slot)];
+        if (take->skeleton && fitted.take.lock() != take) {
+            fitted.take = take;
+            fitted.body = std::make_shared<const analysis::BodyDescription>(analysis::bodyForTake(scene.body, *take));
+        }
+        if (take->skeleton) shown.body = fitted.body;
         // The axis of this very take (and the current axis parameters), or none until it is computed.
         const auto axis = m_analysis.takeAxis(slot, take);
         if (axis) shown.world_T_axis = axis->world_T_axis;
@@ -236,6 +242,8 @@ void ViewportPanel::rebuildScene()
         const auto kimono = m_analysis.kimono(slot, take);
         shown.kimono = kimono;
         m_drawnKimonos.push_back(kimono);
+        // What the slot is made from: a scene replaced for the other take keeps this one's (a drag of A).
+        shown.sources = {take, axis, shown.body, kimono};
         scene.takes.push_back(std::move(shown));
     }
     m_viewport->setScene(std::move(scene));

@@ -123,6 +123,12 @@ private:
         std::optional<analysis::SkeletonChannelGap> gap;
     };
     GapMemo m_gapMemo[2];
+    /// The puppet fitted to each slot's take with a skeleton, kept while that take is shown.
+    struct FittedBody {
+        std::weak_ptr<const analysis::Take> take;
+        std::shared_ptr<const analysis::BodyDescription> body;
+    };
+    FittedBody m_fittedBodies[2];
     std::vector<analysis::pipeline::Shared<analysis::pipeline::TakeAxis>> m_drawnAxes;
     std::vector<analysis::pipeline::Shared<analysis::KimonoSimulation>> m_drawnKimonos;
 };

@@ -136,6 +136,8 @@ analysis::Status Renderer::initialize()
 
 void Renderer::releaseSceneBuffers()
 {
+    m_slotSources.clear(); // nothing is kept from buffers released
+    m_slotsBuilt = 0;
     for (GpuMesh& mesh : m_partMeshes) mesh.release(*m_gl);
     m_partMeshes.clear();
     if (m_puppet) m_puppet->release(*m_gl);
@@ -181,8 +183,15 @@ analysis::Status Renderer::setScene(const SceneContent& scene, const LayoutOptio
         ++m_sceneGeneration;
         return analysis::okStatus();
     }
+    // A slot made from what the same slot of the scene before was made from, in a scene of the
+    // same body, no part meshes and the same layout, keeps its Slot (TakeSlot::sources).
+    const bool sameStage = scene.bodySource && scene.bodySource == m_bodySource && scene.partMeshes.empty() && !m_sceneHadMeshes &&
+                           layout == m_builtLayout;
+    std::vector<bool> keep(scene.takes.size(), false);
+    for (std::size_t s = 0; sameStage && s < scene.takes.size() && s < m_slots.size() && s < m_slotSources.size(); ++s)
+        keep[s] = !scene.takes[s].sources.empty() && scene.takes[s].sources == m_slotSources[s];
     std::vector<analysis::Take> drawn; // each slot's take as the renderer poses it (drawnTake)
-    if (auto status = validateScene(scene, &drawn); !status.ok()) {
+    if (auto status = validateScene(scene, &drawn, keep); !status.ok()) {
         // Nothing of the scene before stays drawn as if it were the new one's.
         releaseSceneBuffers();
         ++m_sceneGeneration;
@@ -190,6 +199,12 @@ analysis::Status Renderer::setScene(const SceneContent& scene, const LayoutOptio
     }
     ++m_sceneGeneration;
     m_shadowKey.clear();
+    std::vector<std::optional<Slot>> kept(scene.takes.size());
+    for (std::size_t s = 0; s < keep.size(); ++s)
+        if (keep[s]) {
+            kept[s].emplace(std::move(m_slots[s]));
+            m_slots[s] = Slot{}; // nothing of it is released below
+        }
     std::vector<std::shared_ptr<SkeletonFigure>> reusable;
     for (Slot& slot : m_slots)
         if (slot.skeleton) reusable.push_back(std::move(slot.skeleton));
@@ -221,7 +236,13 @@ analysis::Status Renderer::setScene(const SceneContent& scene, const LayoutOptio
     for (std::size_t i = 0; i < meshes.size(); ++i)
         for (const Vertex& vertex : meshes[i].vertices) m_partBounds[i].add(vertex.position);
 
+    m_slotsBuilt = 0;
     for (std::size_t s = 0; s < scene.takes.size(); ++s) {
+        if (kept[s]) {
+            m_slots.push_back(std::move(*kept[s]));
+            continue;
+        }
+        ++m_slotsBuilt;
         const TakeSlot& source = scene.takes[s];
         Slot slot;
         slot.body = source.body ? *source.body : m_body;
@@ -339,6 +360,11 @@ analysis::Status Renderer::setScene(const SceneContent& scene, const LayoutOptio
     m_floorHalfExtent = std::min(std::ceil(m_floorHalfExtent / m_layout.gridSpacing) * m_layout.gridSpacing, kMaxFloorHalfExtent);
     m_grid.upload(*m_gl, gridMesh(m_floorHalfExtent, m_layout.gridSpacing));
     m_floor.upload(*m_gl, floorMesh(m_floorHalfExtent));
+    m_slotSources.clear();
+    for (const TakeSlot& source : scene.takes) m_slotSources.push_back(source.sources);
+    m_bodySource = scene.bodySource;
+    m_sceneHadMeshes = !scene.partMeshes.empty();
+    m_builtLayout = layout;
     setFrame(0);
     return analysis::okStatus();
 }

@@ -62,6 +62,8 @@ public:
     analysis::Status setScene(const SceneContent& scene, const LayoutOptions& layout = {});
     bool hasScene() const;
     int takeCount() const;
+    /// The slots the last setScene built; the others it kept from the scene before (TakeSlot::sources).
+    int slotsBuilt() const { return m_slotsBuilt; }
 
     void setVisibility(const SceneVisibility& visibility) { m_visibility = visibility; }
     /// Draft frames (a view moving: playback, a scrub, a drag) filter the shadows with 4
@@ -211,6 +213,13 @@ private:
     std::vector<float> m_shadowKey; ///< what the shadow map was drawn for (drawShadowMap)
     bool m_draft = false;
     int m_sceneGeneration = 0;      ///< counts setScene calls
+    int m_slotsBuilt = 0;           ///< slots the last setScene built (slotsBuilt)
+    /// What the slots of the scene drawn were built from (TakeSlot::sources), and the body source,
+    /// meshes and layout of that scene: a slot of the next scene with the same keeps its Slot.
+    std::vector<std::vector<std::shared_ptr<const void>>> m_slotSources;
+    std::shared_ptr<const void> m_bodySource;
+    bool m_sceneHadMeshes = false;
+    LayoutOptions m_builtLayout;
     std::shared_ptr<PuppetFigure> m_puppet; ///< the scene body's modelled puppet, or null
 
     analysis::BodyDescription m_body;

@@ -31,7 +31,7 @@ bool takeHasFileMesh(const analysis::Take& take)
            analysis::meshFitsSkeleton(*take.skeleton->skeleton->mesh, *take.skeleton->skeleton);
 }
 
-analysis::Status validateScene(const SceneContent& scene, std::vector<analysis::Take>* drawn)
+analysis::Status validateScene(const SceneContent& scene, std::vector<analysis::Take>* drawn, const std::vector<bool>& kept)
 {
     using analysis::ErrorCode;
     using analysis::makeError;
@@ -41,7 +41,12 @@ analysis::Status validateScene(const SceneContent& scene, std::vector<analysis::
     if (scene.body.parts.empty() || scene.body.parts.size() > kMaxBodyParts)
         return makeError(ErrorCode::Unsupported, "the renderer draws bodies of 1.." + std::to_string(kMaxBodyParts) +
                                                      " parts, the body has " + std::to_string(scene.body.parts.size()));
-    for (const TakeSlot& slot : scene.takes) {
+    for (std::size_t s = 0; s < scene.takes.size(); ++s) {
+        const TakeSlot& slot = scene.takes[s];
+        if (s < kept.size() && kept[s]) {
+            if (drawn) drawn->emplace_back();
+            continue;
+        }
         const std::string name = slot.take.displayName();
         if (auto status = analysis::validateTake(slot.take); !status.ok()) return status.error();
         const analysis::BodyDescription& body = slot.body ? *slot.body : scene.body;

@@ -42,10 +42,19 @@ struct TakeSlot {
     /// orbits show the sleeve tips and the hem. Null, or simulated for another take or body: the
     /// skinned kimono.
     std::shared_ptr<const analysis::KimonoSimulation> kimono = nullptr;
+    /// What the slot is made from, as the caller holds it (the document's take, its axis, body
+    /// and kimono), compared by address: a slot whose sources are those of the same slot of the
+    /// scene before, in a scene of the same body source, no part meshes and the same layout,
+    /// keeps what the renderer built for it (its posed take, binding, orbits, bounds and
+    /// figures), so a scene replaced on every step of a drag of take A rebuilds A alone. The
+    /// caller vouches that equal sources mean equal content. Empty: the slot is always built.
+    std::vector<std::shared_ptr<const void>> sources = {};
 };
 
 struct SceneContent {
     analysis::BodyDescription body;
+    /// What `body` is, as the caller holds it (for TakeSlot::sources); null: slots are always built.
+    std::shared_ptr<const void> bodySource = nullptr;
     /// Meshes loaded from files (mesh_file.h) that replace a body part's primitives, by body
     /// part name; vertices in the part (sensor) frame, cm.
     std::map<std::string, Mesh> partMeshes;
@@ -100,13 +109,16 @@ struct LayoutOptions {
     float axisBarLength = 30.0f;   ///< cm, each bar from the centre of mass along +x, +y, +z
     float axisBarThickness = 1.6f; ///< cm
     float orbitPointRadius = 1.6f; ///< cm, the moving point on each orbit
+    bool operator==(const LayoutOptions&) const = default;
 };
 
 /// Checks 1..2 takes, a body of 1..kMaxBodyParts parts, every take valid and able to drive its body (bindBody, through
 /// drawnTake), a take's own body with the scene body's parts, axis poses one per frame when given, part meshes named
 /// after body parts. `drawn` (optional) receives each slot's drawnTake, so a caller poses them
-/// without making them again.
-analysis::Status validateScene(const SceneContent& scene, std::vector<analysis::Take>* drawn = nullptr);
+/// without making them again. Slots whose `kept` entry is true are not checked again (a renderer
+/// keeps what it built for them); `drawn` receives an empty take for each.
+analysis::Status validateScene(const SceneContent& scene, std::vector<analysis::Take>* drawn = nullptr,
+                               const std::vector<bool>& kept = {});
 
 /// The take a slot draws: `take` itself when it has the parts that drive `body`; else, for a take
 /// of a skeleton's joints (the whole body, every joint a part) whose skeleton binds the puppet's

@@ -308,7 +308,7 @@ void dragWarpPoint(benchmark::State& state, app::MainWindow& main, const analysi
     const std::size_t index = base.points.size() / 2;
     const auto* view = main.viewportPanel()->viewport();
     const int framesBefore = view->renderedFrameCount();
-    int changed = 0, step = 0;
+    int changed = 0, step = 0, slotsBuilt = 0;
     main.document().beginInteraction();
     for (auto _ : state) {
         step = (step + 1) % 6;
@@ -319,9 +319,12 @@ void dragWarpPoint(benchmark::State& state, app::MainWindow& main, const analysi
         changed += main.document().selectedTake(app::TakeSlot::A) != before ? 1 : 0;
         QCoreApplication::processEvents();
         main.graphPanel()->grid()->plot()->repaint();
+        slotsBuilt += view->renderer() ? view->renderer()->slotsBuilt() : 0;
     }
     main.document().endInteraction();
     state.counters["changed"] = double(changed) / double(state.iterations());
+    // Scene slots the 3D view built per step: 1 when take B's is kept (render::TakeSlot::sources).
+    state.counters["slots_built"] = double(slotsBuilt) / double(state.iterations());
     state.counters["view_frames"] = double(view->renderedFrameCount() - framesBefore) / double(state.iterations());
     state.counters["graphs"] = main.graphPanel()->grid()->graphCount();
     design.editWarp(base);

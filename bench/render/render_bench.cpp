@@ -185,8 +185,50 @@ void BM_FitPuppetMesh(benchmark::State& state)
     for (auto _ : state) benchmark::DoNotOptimize(analysis::fittedPuppetMesh(shipped, body));
 }
 
+/// A scene replaced because take A changed (a step of a drag) beside a long take B, 20,000
+/// frames (the demo take repeated): argument 1, B's slot kept (render::TakeSlot::sources: its
+/// posed take, binding, orbits and bounds are those of the scene before); 0, every slot built.
+void BM_SceneReplacedBesideLongTake(benchmark::State& state)
+{
+    auto created = render::OffscreenRenderer::create(render::OffscreenOptions{0});
+    if (!created.ok()) {
+        state.SkipWithError(created.error().message.c_str());
+        return;
+    }
+    auto offscreen = std::move(created).value();
+    const auto demo = analysis::synth::generateDemoCorpus();
+    const analysis::Take& short1 = *demo.corpus.find("greeting", "none", 1);
+    analysis::Take longTake = *demo.corpus.find("greeting", "friendly", 1);
+    const Eigen::MatrixXd once = longTake.values;
+    longTake.values.resize(20000, once.cols());
+    for (Eigen::Index f = 0; f < longTake.values.rows(); ++f) longTake.values.row(f) = once.row(f % once.rows());
+    const auto takeB = std::make_shared<const analysis::Take>(longTake);
+    const std::shared_ptr<const void> body(&analysis::defaultBodyDescription(), [](const void*) {});
+    std::shared_ptr<const analysis::Take> takesA[2] = {std::make_shared<const analysis::Take>(short1),
+                                                       std::make_shared<const analysis::Take>(*demo.corpus.find("greeting", "hostile", 1))};
+    const bool keep = state.range(0) != 0;
+    int step = 0, built = 0;
+    for (auto _ : state) {
+        render::SceneContent scene;
+        scene.body = analysis::defaultBodyDescription();
+        scene.bodySource = body;
+        const auto& takeA = takesA[step++ % 2];
+        scene.takes.push_back(render::TakeSlot{*takeA, {}});
+        scene.takes.push_back(render::TakeSlot{*takeB, {}});
+        if (keep) {
+            scene.takes[0].sources = {takeA};
+            scene.takes[1].sources = {takeB};
+        }
+        if (!offscreen->setScene(scene).ok()) state.SkipWithError("setScene failed");
+        built += offscreen->renderer().slotsBuilt();
+    }
+    state.counters["slots_built"] = double(built) / double(state.iterations());
+    offscreen.reset();
+}
+
 } // namespace
 
+BENCHMARK(BM_SceneReplacedBesideLongTake)->ArgName("keep")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_GeneratePuppetMesh)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->Iterations(5);
 BENCHMARK(BM_FitPuppetMesh)->Unit(benchmark::kMillisecond);
 // Arguments: width, height, multisampling (0 = none, 1 = 4x), lit stage (1 shadows + 2 partners).

@@ -80,3 +80,65 @@ TEST_CASE("each take of two keeps its own motion axis", "[render][two takes]")
     const glm::vec3 expected = glm::vec3(0, 0, 80) - camera.right() * (offscreen->renderer().layout().separation / 2.0f);
     CHECK(glm::distance(origin, expected) < 1e-3f);
 }
+
+TEST_CASE("a scene replaced for take A keeps what was built for take B and draws what a scene built whole draws",
+          "[render][two takes][keep]")
+{
+    auto offscreen = test::makeOffscreenRenderer();
+    const auto body = std::make_shared<const int>(0); // the body's identity, as the caller holds it
+    const auto takeB = std::make_shared<const analysis::Take>(test::travellingTake(6, 60.0));
+    const auto sceneWith = [&](const std::shared_ptr<const analysis::Take>& takeA, bool sources) {
+        render::SceneContent scene;
+        scene.body = analysis::defaultBodyDescription();
+        scene.bodySource = body;
+        for (const auto& take : {takeA, takeB}) {
+            render::TakeSlot slot{*take, {}};
+            if (sources) slot.sources = {take};
+            scene.takes.push_back(std::move(slot));
+        }
+        return scene;
+    };
+    const auto firstA = std::make_shared<const analysis::Take>(test::spreadArmsTake(6, {0, 0, 100}));
+    REQUIRE(offscreen->setScene(sceneWith(firstA, true)).ok());
+    CHECK(offscreen->renderer().slotsBuilt() == 2);
+    // Take A replaced (a step of a drag): B is kept.
+    const auto nextA = std::make_shared<const analysis::Take>(test::spreadArmsTake(6, {0, 10, 95}));
+    REQUIRE(offscreen->setScene(sceneWith(nextA, true)).ok());
+    CHECK(offscreen->renderer().slotsBuilt() == 1);
+    render::Camera camera;
+    camera.angleDeg = 20.0f;
+    camera.elevationDeg = 15.0f;
+    camera.distance = 400.0f;
+    camera.target = {0.0f, 0.0f, 70.0f};
+    const QSize size(480, 270);
+    auto framesOf = [&] {
+        std::vector<QImage> images;
+        for (Eigen::Index frame : {0, 5}) {
+            offscreen->renderer().setFrame(frame);
+            images.push_back(offscreen->render(camera, size));
+            images.push_back(offscreen->partIdImage(camera, size));
+        }
+        return images;
+    };
+    const std::vector<QImage> kept = framesOf();
+    // The same scene built whole (no sources): the same pixels, colours and part IDs.
+    REQUIRE(offscreen->setScene(sceneWith(nextA, false)).ok());
+    CHECK(offscreen->renderer().slotsBuilt() == 2);
+    const std::vector<QImage> whole = framesOf();
+    REQUIRE(kept.size() == whole.size());
+    for (std::size_t i = 0; i < kept.size(); ++i) {
+        INFO("image " << i);
+        CHECK(kept[i] == whole[i]);
+    }
+    // A scene of another layout, or of another body, builds every slot; the same scene again, none.
+    render::LayoutOptions wider;
+    wider.separation = 90.0f;
+    REQUIRE(offscreen->setScene(sceneWith(nextA, true), wider).ok());
+    CHECK(offscreen->renderer().slotsBuilt() == 2);
+    REQUIRE(offscreen->setScene(sceneWith(nextA, true), wider).ok());
+    CHECK(offscreen->renderer().slotsBuilt() == 0);
+    render::SceneContent otherBody = sceneWith(nextA, true);
+    otherBody.bodySource = std::make_shared<const int>(1);
+    REQUIRE(offscreen->setScene(otherBody, wider).ok());
+    CHECK(offscreen->renderer().slotsBuilt() == 2);
+}
