@@ -56,14 +56,8 @@ bool CorpusController::openCorpusFolder(const QString& folder)
     analysis::Result<analysis::Corpus> corpus = analysis::makeError(analysis::ErrorCode::Cancelled, "not run");
     m_files.runTask(tr("Reading the corpus %1...").arg(QFileInfo(folder).fileName()),
                     [&](const analysis::RunControl& control) { corpus = analysis::io::readCorpus(toPath(folder), control); });
-    if (!corpus && corpus.error().code == analysis::ErrorCode::Cancelled) {
-        emit m_files.statusMessage(tr("Opening %1 cancelled; nothing was changed").arg(folder));
+    if (!m_files.succeeded(corpus, tr("Opening %1 cancelled; nothing was changed").arg(folder), tr("Cannot open the corpus")))
         return false;
-    }
-    if (!corpus) {
-        m_files.report(tr("Cannot open the corpus"), corpus.error());
-        return false;
-    }
     const QString absolute = QFileInfo(folder).absoluteFilePath();
     m_document.setCorpus(std::move(corpus).value(), absolute);
     emit corpusOpened();
@@ -82,14 +76,8 @@ bool CorpusController::createCorpusFromFiles(const std::vector<analysis::io::Cor
                         if (!result) return;
                         if (auto written = analysis::io::writeCorpus(result->corpus, toPath(folder)); !written) result = written.error();
                     });
-    if (!result && result.error().code == analysis::ErrorCode::Cancelled) {
-        emit m_files.statusMessage(tr("Making the corpus %1 cancelled; nothing was written").arg(folder));
+    if (!m_files.succeeded(result, tr("Making the corpus %1 cancelled; nothing was written").arg(folder), tr("Cannot make the corpus")))
         return false;
-    }
-    if (!result) {
-        m_files.report(tr("Cannot make the corpus"), result.error());
-        return false;
-    }
     if (!openCorpusFolder(folder)) return false;
     QStringList notes;
     for (const auto& note : result->notes) notes << QString::fromStdString(note);

@@ -43,6 +43,14 @@ void FileController::runTask(const QString& label, const std::function<void(cons
     runProgressTask(m_dialogs ? m_window : nullptr, label, work, m_progressOptions);
 }
 
+bool FileController::succeeded(const analysis::Error* error, const QString& cancelled, const QString& failed)
+{
+    if (!error) return true;
+    if (error->code == analysis::ErrorCode::Cancelled) emit statusMessage(cancelled);
+    else report(failed, *error);
+    return false;
+}
+
 bool FileController::openPath(const QString& path)
 {
     const QFileInfo info(path);

@@ -77,6 +77,13 @@ public:
     /// Runs `work` off the GUI thread, with a progress dialog over the window when dialogs are on.
     void runTask(const QString& label, const std::function<void(const analysis::RunControl&)>& work);
     void addRecent(const QString& path);
+    /// Whether work run by runTask succeeded; if not, says so: `cancelled` in the status bar when
+    /// the user stopped it, else report(failed, its error).
+    bool succeeded(const analysis::Error* error, const QString& cancelled, const QString& failed);
+    template <class T> bool succeeded(const analysis::Result<T>& result, const QString& cancelled, const QString& failed)
+    {
+        return succeeded(result ? nullptr : &result.error(), cancelled, failed);
+    }
     /// While `asking` (a dialog) is open: progress dialogs open over it, and errors are shown by
     /// it rather than by a message box.
     template <class Work> auto whileDialogAsks(QWidget* asking, Work&& work)

@@ -87,14 +87,7 @@ bool ImportController::importTake(const QString& file, const std::optional<analy
         m_files.runTask(tr("Reading %1...").arg(name), [&](const analysis::RunControl& control) {
             read = analysis::io::readSkeletalFile(toPath(file), options, control);
         });
-        if (!read && read.error().code == analysis::ErrorCode::Cancelled) {
-            emit m_files.statusMessage(tr("Import of %1 cancelled; nothing was changed").arg(name));
-            return false;
-        }
-        if (!read) {
-            m_files.report(title, read.error());
-            return false;
-        }
+        if (!m_files.succeeded(read, tr("Import of %1 cancelled; nothing was changed").arg(name), title)) return false;
         converted = std::move(read).value();
     }
     if (bvh && preset) {
@@ -142,14 +135,7 @@ bool ImportController::importTake(const QString& file, const std::optional<analy
         partMap = imported->map->describe();
         take = std::move(imported->take);
     });
-    if (!take && take.error().code == analysis::ErrorCode::Cancelled) {
-        emit m_files.statusMessage(tr("Import of %1 cancelled; nothing was changed").arg(name));
-        return false;
-    }
-    if (!take) {
-        m_files.report(title, take.error());
-        return false;
-    }
+    if (!m_files.succeeded(take, tr("Import of %1 cancelled; nothing was changed").arg(name), title)) return false;
     const QString mapNote = partMap.empty() ? QString() : tr(" (part map: %1)").arg(QString::fromStdString(partMap));
     const QString absolute = QFileInfo(file).absoluteFilePath();
     auto pointer = std::make_shared<const analysis::Take>(std::move(take).value());

@@ -424,7 +424,7 @@ void runRender(const RenderArguments& args)
         summary["output"] = args.output;
         summary["frame"] = offscreen->renderer().frame(0);
     } else {
-        // The 3D view's video export (app/video_export.h), as View > Export Video: the frames
+        // The 3D view's video export (app/video_export.h), as File > Export 3D View Video: the frames
         // appear in the folder only once all are written, and the MP4 is encoded from them.
         const std::string folder = args.output;
         const double rate = scene.takes.front().take.rateHz;
