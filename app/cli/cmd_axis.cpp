@@ -351,12 +351,10 @@ void runDesign(const DesignCommandArguments& arguments)
         axis.labels = designed.take.labels;
         unwrap(an::io::writeTakeCsv(an::axisTake(axis), arguments.axisOutput));
     }
-    if (arguments.json) {
-        printJson({{"frames", designed.take.frameCount()}, {"phrases", gains.phrases.size()}, {"output", arguments.output}});
-        return;
-    }
-    std::cout << "designed " << designed.take.frameCount() << " frames from " << take.displayName() << " -> " << arguments.output
-              << "\n";
+    report(arguments.json, {{"frames", designed.take.frameCount()}, {"phrases", gains.phrases.size()}, {"output", arguments.output}}, [&] {
+        std::cout << "designed " << designed.take.frameCount() << " frames from " << take.displayName() << " -> " << arguments.output
+                  << "\n";
+    });
 }
 
 // ---- experiment design --------------------------------------------------------------------

@@ -221,9 +221,7 @@ void runDecompose(const DecomposeArgs& args)
     outputs.push_back({"summary.json", summary.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n"});
     // Built in a hidden folder and swapped in: the previous output stays whole until then.
     unwrap(report::writeOutputFiles(out, outputs));
-    if (args.json) {
-        printJson(summary);
-    } else {
+    report(args.json, summary, [&] {
         std::cout << "decomposed " << chain.corpus.corpus->takes.size() << " " << summary["input"].get<std::string>() << " takes ("
                   << summary["method"].get<std::string>() << ") into " << out.string() << ": "
                   << d.functions.size() << " y, " << d.emotions.size() << " z, " << d.fluctuations.size() << " eta\n";
@@ -234,7 +232,7 @@ void runDecompose(const DecomposeArgs& args)
             for (const auto& note : km2o->notes) std::cout << "  " << note << "\n";
         }
         if (summary.contains("truth")) std::cout << "error against ground truth: " << summary["truth"].dump() << "\n";
-    }
+    });
 }
 
 struct EmotionArgs {
@@ -273,17 +271,15 @@ void runEmotion(const EmotionArgs& args)
     summary["channels"] = take.channels.size();
     summary["rate_hz"] = take.rateHz;
     summary["output"] = args.output;
-    if (args.json) {
-        printJson(summary);
-        return;
-    }
-    std::cout << "wrote " << args.output << ": " << args.function << "/" << args.emotion << " with emotion weight a = " << args.weight
-              << " (" << take.frameCount() << " frames; " << summary["input"].get<std::string>() << " takes, "
-              << summary["method"].get<std::string>();
-    if (summary.contains("M")) std::cout << ", M = " << summary["M"].get<int>();
-    std::cout << ")\n";
-    if (summary["method"] != summary["method_requested"]) std::cout << summary["method_note"].get<std::string>() << "\n";
-    if (!written.skeleton) std::cout << args.output << " holds the per-channel result on the puppet's parts (no skeleton)\n";
+    report(args.json, summary, [&] {
+        std::cout << "wrote " << args.output << ": " << args.function << "/" << args.emotion << " with emotion weight a = " << args.weight
+                  << " (" << take.frameCount() << " frames; " << summary["input"].get<std::string>() << " takes, "
+                  << summary["method"].get<std::string>();
+        if (summary.contains("M")) std::cout << ", M = " << summary["M"].get<int>();
+        std::cout << ")\n";
+        if (summary["method"] != summary["method_requested"]) std::cout << summary["method_note"].get<std::string>() << "\n";
+        if (!written.skeleton) std::cout << args.output << " holds the per-channel result on the puppet's parts (no skeleton)\n";
+    });
 }
 
 struct ExperimentArgs {

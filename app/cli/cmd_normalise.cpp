@@ -264,35 +264,33 @@ void runNormalise(const NormaliseArguments& arguments)
                                  {"files", files}};
     writeText("summary.json", summary.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
     unwrap(staged.commit());
-    if (arguments.json) {
-        printJson(summary);
-        return;
-    }
-    std::cout << "normalised " << normalised.size() << " takes of " << arguments.function << "/" << arguments.emotion
-              << " to " << referenceName << " (" << coupling << ", " << arguments.match.matching.path << ")\n"
-              << "take  " << std::left << std::setw(27) << "variance to the reference" << std::right << std::setw(11) << "raw"
-              << std::setw(13) << "normalised" << std::setw(8) << "change" << "\n";
-    std::vector<int> worse;
-    for (std::size_t k = 0; k < normalised.size(); ++k) {
-        for (const an::VarianceRow& row : rows) {
-            if (row.take != table.takeNames[k] || !row.part.empty()) continue;
-            std::ostringstream change;
-            if (row.before > 0.0) change << std::showpos << std::fixed << std::setprecision(0) << 100.0 * (row.after - row.before) / row.before << " %";
-            else change << "-";
-            std::cout << std::setw(4) << cell[k]->labels.takeIndex << "  " << std::left << std::setw(27) << (row.family + " " + row.unit)
-                      << std::right << std::fixed << std::setprecision(1) << std::setw(11) << row.before << std::setw(13) << row.after
-                      << std::setw(8) << change.str() << (row.worse() ? "  worse" : "") << (suggestion.outlier[k] ? "  (outlier)" : "") << "\n";
-            if (row.worse() && (worse.empty() || worse.back() != cell[k]->labels.takeIndex)) worse.push_back(cell[k]->labels.takeIndex);
+    report(arguments.json, summary, [&] {
+        std::cout << "normalised " << normalised.size() << " takes of " << arguments.function << "/" << arguments.emotion
+                  << " to " << referenceName << " (" << coupling << ", " << arguments.match.matching.path << ")\n"
+                  << "take  " << std::left << std::setw(27) << "variance to the reference" << std::right << std::setw(11) << "raw"
+                  << std::setw(13) << "normalised" << std::setw(8) << "change" << "\n";
+        std::vector<int> worse;
+        for (std::size_t k = 0; k < normalised.size(); ++k) {
+            for (const an::VarianceRow& row : rows) {
+                if (row.take != table.takeNames[k] || !row.part.empty()) continue;
+                std::ostringstream change;
+                if (row.before > 0.0) change << std::showpos << std::fixed << std::setprecision(0) << 100.0 * (row.after - row.before) / row.before << " %";
+                else change << "-";
+                std::cout << std::setw(4) << cell[k]->labels.takeIndex << "  " << std::left << std::setw(27) << (row.family + " " + row.unit)
+                          << std::right << std::fixed << std::setprecision(1) << std::setw(11) << row.before << std::setw(13) << row.after
+                          << std::setw(8) << change.str() << (row.worse() ? "  worse" : "") << (suggestion.outlier[k] ? "  (outlier)" : "") << "\n";
+                if (row.worse() && (worse.empty() || worse.back() != cell[k]->labels.takeIndex)) worse.push_back(cell[k]->labels.takeIndex);
+            }
         }
-    }
-    std::cout.unsetf(std::ios::fixed);
-    if (!worse.empty()) {
-        std::cout << "take(s)";
-        for (int take : worse) std::cout << " " << take;
-        std::cout << ": normalised further from the reference than raw in some family"
-                  << (arguments.match.matching.path == "greedy" ? " (--path optimal finds the least-cost correspondence)" : "") << "\n";
-    }
-    std::cout << "wrote " << files.size() + 1 << " files to " << folder.string() << "\n";
+        std::cout.unsetf(std::ios::fixed);
+        if (!worse.empty()) {
+            std::cout << "take(s)";
+            for (int take : worse) std::cout << " " << take;
+            std::cout << ": normalised further from the reference than raw in some family"
+                      << (arguments.match.matching.path == "greedy" ? " (--path optimal finds the least-cost correspondence)" : "") << "\n";
+        }
+        std::cout << "wrote " << files.size() + 1 << " files to " << folder.string() << "\n";
+    });
 }
 
 nlohmann::json methodsJson(const std::vector<an::MethodError>& methods)
