@@ -495,7 +495,7 @@ void addRenderCommands(CommandSet& commands)
     render->add_option("--figure-b", args->figureB, "Figure of the second take (default: as --figure)");
     render->add_option("--size", args->size, "Image size WIDTHxHEIGHT")->capture_default_str();
     render->add_option("-o,--output", args->output, "PNG file, or the folder of a --frames sequence");
-    render->add_option("--mp4", args->mp4, "Also encode the --frames sequence to this MP4 file (needs ffmpeg)");
+    render->add_option("--mp4", args->mp4, "Also encode the --frames sequence to this MP4 file (needs ffmpeg), from the frames once they are in the -o folder");
     render->add_option("--body", args->body, "Body description JSON (default: the shipped puppet)");
     render->add_option("--mesh", args->meshes, "PART=FILE: a mesh file (glTF, OBJ...) replacing a body part");
     render->add_option("--samples", args->samples, "Multisampling, 0..16")->capture_default_str();
