@@ -109,6 +109,13 @@ void AnalysisController::corpusChanged()
     m_function.clear();
     m_emotion.clear();
     m_corpus = {};
+    // The results above were let go: the stages are asked again, so that each one announces its
+    // result, from the cache at once when the corpus is the one it was (a corpus opened again).
+    for (int slot : {kPreprocessSlot, kNormaliseSlot, kDecomposeSlot, kAxesSlot}) m_scheduler->clear(slot);
+    for (TakeSlot take : {TakeSlot::A, TakeSlot::B}) { // the axis take is published again too
+        m_scheduler->clear(takeAxisSlot(take));
+        m_scheduler->clear(kimonoSlot(take));
+    }
     if (!m_document.corpus().takes.empty()) {
         m_corpus.corpus = m_document.sharedCorpus();
         m_corpus.key = pl::corpusKey(*m_corpus.corpus);

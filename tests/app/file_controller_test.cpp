@@ -12,6 +12,7 @@
 
 #include "analysis/core/pose.h"
 #include "analysis/core/puppet_layout.h"
+#include "analysis/io/corpus_io.h"
 #include "analysis/io/take_csv.h"
 #include "analysis/pipeline/parameters_json.h"
 #include "app/project_file.h"
@@ -502,5 +503,37 @@ TEST_CASE("a project keeps what the 3D view draws and Follow, and refuses a show
         REQUIRE_FALSE(read);
         INFO(read.error().message);
         CHECK(read.error().message.find(expected) != std::string::npos);
+    }
+}
+
+TEST_CASE("a corpus opened again while it is open is analysed again: its weighted and designed takes come back",
+          "[app][files][corpus]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    REQUIRE(test::waitUntilIdle(*window));
+    const auto derivedIds = [&] {
+        QStringList ids;
+        for (const auto& derived : window->document().derivedTakes()) ids << derived.id;
+        ids.sort(); // published in the order the stages finish
+        return ids.join(QStringLiteral(", ")).toStdString();
+    };
+    REQUIRE(window->analysis().decomposed());
+    const std::string before = derivedIds();
+    REQUIRE(before.find(app::Document::liveTakeId(QStringLiteral("weighted")).toStdString()) != std::string::npos);
+    // The demo corpus again, then a corpus folder opened twice.
+    REQUIRE(window->files().corpora().openDemoCorpus());
+    REQUIRE(test::waitUntilIdle(*window));
+    CHECK(window->analysis().decomposed());
+    CHECK(derivedIds() == before);
+    const auto folder = test::scratchDir("corpus-opened-again");
+    REQUIRE(analysis::io::writeCorpus(window->document().corpus(), folder / "demo"));
+    const QString path = QString::fromStdString((folder / "demo").string());
+    for (int pass = 0; pass < 2; ++pass) {
+        INFO("opened " << pass + 1 << " time(s)");
+        REQUIRE(window->files().corpora().openCorpusFolder(path));
+        REQUIRE(test::waitUntilIdle(*window));
+        CHECK(window->analysis().decomposed());
+        CHECK(derivedIds() == before);
     }
 }
