@@ -1,6 +1,7 @@
 #include "analysis/pipeline/parameters_json.h"
 
 #include "analysis/decompose/emotion_weight.h"
+#include "analysis/io/text_format.h"
 
 #include <cmath>
 #include <functional>
@@ -14,14 +15,11 @@ namespace {
 
 using nlohmann::json;
 
-/// What a JSON value holds, for messages ("the number 2e+09", "a string").
+/// What a JSON value holds, for messages ("the number 2e+09", "a string"): a number as it reads
+/// back exactly (200.0000001 is not "200").
 std::string describe(const json& value)
 {
-    if (value.is_number()) {
-        std::ostringstream text;
-        text << "the number " << value.get<double>();
-        return text.str();
-    }
+    if (value.is_number()) return "the number " + io::shortestNumber(value.get<double>());
     if (value.is_string()) return "the string \"" + value.get<std::string>().substr(0, 40) + "\"";
     if (value.is_boolean()) return value.get<bool>() ? "true" : "false";
     if (value.is_null()) return "null";

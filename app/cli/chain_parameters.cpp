@@ -9,7 +9,6 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
-#include <cstdlib>
 
 namespace bunraku::app::cli {
 
@@ -33,12 +32,12 @@ namespace {
 namespace an = analysis;
 namespace pl = analysis::pipeline;
 
-/// The option's text as the parameter files would hold it: a number when it reads as one.
+/// The option's text read as the parameter files read a value: a JSON number ("100", "1e2",
+/// "2.5"; not "0x10" or "inf"), else the text itself.
 nlohmann::json asJsonValue(const std::string& text)
 {
-    char* end = nullptr;
-    const double number = std::strtod(text.c_str(), &end);
-    if (!text.empty() && end == text.c_str() + text.size()) return number;
+    const nlohmann::json number = nlohmann::json::parse(text, nullptr, false);
+    if (!number.is_discarded() && number.is_number()) return number;
     return text;
 }
 
@@ -77,8 +76,10 @@ CLI::Validator parameterCheck(std::string_view path)
                                          : CLI::Validator(CLI::Range(range.low, range.high));
     check.operation([&range](std::string& text) -> std::string {
         const nlohmann::json value = asJsonValue(text);
-        if (value.is_number() && range.contains(value.get<double>())) return {};
-        return pl::rangeProblem(range, value);
+        if (!value.is_number() || !range.contains(value.get<double>())) return pl::rangeProblem(range, value);
+        // An integer the files accept ("1e2") is given to the option as it converts it ("100").
+        if (range.integer) text = std::to_string(std::int64_t(value.get<double>()));
+        return {};
     });
     return check;
 }
@@ -86,14 +87,14 @@ CLI::Validator parameterCheck(std::string_view path)
 void addMatchingOptions(CLI::App* command, MatchingArguments& arguments, bool timeScale)
 {
     command->add_option("--tau", arguments.tau, "Half window tau, frames (thesis 3.5.2)")
-        ->check(parameterCheck(arguments.section + ".tau"))
+        ->transform(parameterCheck(arguments.section + ".tau"))
         ->capture_default_str();
     command->add_option("--tcmp", arguments.searchBand, "Search band T_cmp, frames (thesis 3.5.1)")
-        ->check(parameterCheck(arguments.section + ".searchBand"))
+        ->transform(parameterCheck(arguments.section + ".searchBand"))
         ->capture_default_str();
     command->add_option("--approximation-weight", arguments.approximationWeight,
                         "Weight M of the approximation term (thesis eq. 5.17; 0 = off)")
-        ->check(parameterCheck(arguments.section + ".approximationWeight"))
+        ->transform(parameterCheck(arguments.section + ".approximationWeight"))
         ->capture_default_str();
     command->add_option("--path", arguments.path,
                         "Correspondence path: optimal (the least-cost monotone path) or greedy (the thesis's scan, 3.5.3)")

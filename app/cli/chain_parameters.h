@@ -45,6 +45,7 @@ Enum namedParameter(const std::string& name)
 /// The check of an option bound to the numeric parameter `path` ("normalise.tau"): the range of
 /// the one table (analysis::pipeline::parameterRange) and the parameter files' message for a value
 /// outside it ("--tau: expected an integer in 0..200, got the number 500"). --help shows the range.
+/// Bound with `transform`: a value the files read as an integer ("1e2") reaches the option as one.
 CLI::Validator parameterCheck(std::string_view path);
 
 /// The wavelet matching's options as every command that matches takes them - `normalise` and

@@ -58,7 +58,7 @@ void addAxisOptions(CLI::App* command, AxisArguments& arguments, bool readsTakes
                         "Axis x: 'shoulder' (the shoulder's facing, default) or 'principal' (thesis-literal principal axis)")
         ->check(namedParameterCheck<an::FrontBackAxis>());
     command->add_option("--spacing", arguments.spacing, "Mass point lattice step, cm (default 1)")
-        ->check(parameterCheck("axis.massSpacing"));
+        ->transform(parameterCheck("axis.massSpacing"));
     command->add_option("--masses", arguments.masses,
                         "Where the masses come from: 'model' (the modelled puppet's solid, default) or 'primitives' (the body "
                         "description's primitives); a --body with other parts than the puppet's uses its primitives")
@@ -179,14 +179,14 @@ struct PhaseArguments {
 void addPhaseOptions(CLI::App* command, PhaseArguments& arguments)
 {
     addMatchingOptions(command, arguments.matching, true);
-    command->add_option("--max-scale", arguments.maxScale, "Scales 1..N")->check(parameterCheck("axis.maxScale"))->capture_default_str();
+    command->add_option("--max-scale", arguments.maxScale, "Scales 1..N")->transform(parameterCheck("axis.maxScale"))->capture_default_str();
     // --weight, the old name of --approximation-weight here, is kept out of the help (`emotion
     // --weight` is the emotion weight).
     command->add_option("--weight", arguments.matching.approximationWeight, "Old name of --approximation-weight")
-        ->check(parameterCheck("axis.approximationWeight"))
+        ->transform(parameterCheck("axis.approximationWeight"))
         ->group("");
     command->add_option("--control-spacing", arguments.spacing, "Frames between warp control points")
-        ->check(parameterCheck("axis.controlSpacing"))
+        ->transform(parameterCheck("axis.controlSpacing"))
         ->capture_default_str();
 }
 

@@ -382,7 +382,7 @@ void addChainOptions(CLI::App* command, ChainArgs& args)
     command->add_option("--M", args.correlationLength,
                         "KM2O correlation length M, at most M_max = floor(3 sqrt(T + 1)) - 1 for takes of T + 1 frames; "
                         "0 or not given: chosen by P (4.4.4)")
-        ->check(parameterCheck("decompose.M"));
+        ->transform(parameterCheck("decompose.M"));
     command->add_flag("--no-preprocess", args.noPreprocess,
                       "Skip thesis 2.2's padding and alignments (angles are still unwrapped), as `bunraku normalise "
                       "--no-preprocess`");
@@ -412,7 +412,7 @@ void addDecompositionCommands(CommandSet& commands)
     dec->add_option("--arma-table", decomposeArgs->armaTableOrder,
                     "ARMA(p,q) averaged per cell (Table 4.1), each 0..4; default the parameters' (2 2), as `bunraku analyse`")
         ->expected(2)
-        ->check(parameterCheck("fluctuations.armaP"));
+        ->transform(parameterCheck("fluctuations.armaP"));
 
     auto emotionArgs = std::make_shared<EmotionArgs>();
     CLI::App* emo = addCommand(commands.root, "emotion",
@@ -423,7 +423,7 @@ void addDecompositionCommands(CommandSet& commands)
     emo->add_option("--function", emotionArgs->function, "Function label, e.g. greeting")->required();
     emo->add_option("--emotion", emotionArgs->emotion, "Emotion label, e.g. friendly")->required();
     emo->add_option("--weight", emotionArgs->weight, "Emotion weight a (1 = as performed)")
-        ->check(parameterCheck("design.emotionWeight"))
+        ->transform(parameterCheck("design.emotionWeight"))
         ->required();
     emo->add_option("-o,--output", emotionArgs->output, "Output take (.bvh, .glb or .csv): the weighted body's motion")
         ->required()

@@ -578,7 +578,7 @@ void addIoCommands(CommandSet& commands)
             ->check(CLI::IsMember({"onset", "xcorr"}))
             ->capture_default_str();
         preprocess->add_option("--reference-take", arguments->referenceTake, "Take index of each cell's time reference; 0 = automatic (median onset among the longest takes)")
-            ->check(parameterCheck("preprocess.referenceTake"))
+            ->transform(parameterCheck("preprocess.referenceTake"))
             ->capture_default_str();
         preprocess->add_option("--max-shift", arguments->maxShift, "Largest shift in frames tried by xcorr")
             ->check(CLI::Range(0, 1000000))

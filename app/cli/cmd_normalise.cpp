@@ -439,9 +439,9 @@ void addNormalisationCommands(CommandSet& commands)
         command->add_option("--reference", arguments->reference,
                             "Reference: a take index, or 'average' (thesis 3.7); default the suggested take (3.6.1)");
         command->add_option("--exclude", arguments->exclude, "Take index left out of the average (e.g. the outlier: 4ave)")
-            ->check(parameterCheck("normalise.averageExcluded"));
+            ->transform(parameterCheck("normalise.averageExcluded"));
         command->add_option("--base", arguments->base, "Base take of the average (0, the default: the suggested reference)")
-            ->check(parameterCheck("normalise.averageBase"));
+            ->transform(parameterCheck("normalise.averageBase"));
         command->add_option("-o,--output", arguments->output,
                             "Output folder; or a take file (.bvh, .glb, .csv): the reference alone (the average take with "
                             "--reference average)")

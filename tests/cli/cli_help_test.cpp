@@ -265,11 +265,18 @@ TEST_CASE("an option bound to a parameter refuses what the parameter files refus
         {{"decompose", "demo"}, "--arma-table", "fluctuations.armaP", "5"},
         {{"emotion", "demo"}, "--weight", "design.emotionWeight", "3.5"},
         {{"preprocess", folder}, "--reference-take", "preprocess.referenceTake", "1000001"},
+        // Just past the limit: the message names the value as given, not rounded to the limit.
+        {{"normalise", folder}, "--tau", "normalise.tau", "200.0000001"},
+        {{"emotion", "demo"}, "--weight", "design.emotionWeight", "3.0000001"},
+        // Text the files would not read as a number either.
+        {{"normalise", folder}, "--tau", "normalise.tau", "0x10"},
+        {{"emotion", "demo"}, "--weight", "design.emotionWeight", "0x1"},
     };
     for (const Bound& b : bound) {
         // The parameter files' reader, the peer: the same value at the same path.
         const auto dot = b.path.find('.');
-        nlohmann::json value = b.value == "abc" ? nlohmann::json(b.value) : nlohmann::json(std::stod(b.value));
+        const nlohmann::json number = nlohmann::json::parse(b.value, nullptr, false);
+        nlohmann::json value = number.is_number() ? number : nlohmann::json(b.value);
         if (b.path == "normalise.averageExcluded") value = nlohmann::json::array({value});
         const nlohmann::json file = {{b.path.substr(0, dot), {{b.path.substr(dot + 1), value}}}};
         const auto read = pl::chainParametersFromJson(file, "file");
@@ -284,6 +291,12 @@ TEST_CASE("an option bound to a parameter refuses what the parameter files refus
         CHECK(run.exitCode == 2);
         CHECK(run.err.find(b.option + ": " + message) != std::string::npos);
     }
+    // What the files read as an integer in range ("1e2") the option takes too, as the same value.
+    const auto accepted = runBunraku({"normalise", folder, "--tau", "1e2", "--function", "f", "--emotion", "e", "-o",
+                                      folder + "/out"});
+    INFO(accepted.err);
+    CHECK(accepted.err.find("--tau") == std::string::npos);
+    CHECK(accepted.err.find("corpus.json: no such file") != std::string::npos); // past the options, at the corpus
     // Every entry of the table is a parameter the files read, with the range they check.
     for (const pl::ParameterRange& range : pl::parameterRanges()) {
         const std::string path(range.path);
