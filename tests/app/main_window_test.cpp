@@ -18,6 +18,10 @@
 #include "widgets/timeline_widget.h"
 
 #include <catch2/catch.hpp>
+
+#include <QUndoCommand>
+#include <QUndoStack>
+#include <QWindow>
 #include <qcustomplot.h>
 
 #include <QAction>
@@ -304,4 +308,22 @@ TEST_CASE("the 3D view exports one PNG per frame of take A", "[app][window][view
     const QImage middle(QString::fromStdString((folder / "frame_00050.png").string()));
     REQUIRE(first.size() == window->viewportPanel()->viewport()->size() * window->devicePixelRatio());
     REQUIRE(first != middle); // the puppet moved
+}
+
+TEST_CASE("the window title marks unsaved changes with an asterisk after the take and has no double space", "[app][window]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    window->show();
+    REQUIRE(window->windowHandle());
+    // The title the window system shows (Qt replaces the [*] placeholder).
+    const auto shown = [&] { return window->windowHandle()->title(); };
+    INFO(shown().toStdString());
+    CHECK_FALSE(shown().contains(QStringLiteral("  ")));
+    CHECK_FALSE(shown().contains(QLatin1Char('*')));
+    window->document().undoStack()->push(new QUndoCommand(QStringLiteral("an edit")));
+    INFO(shown().toStdString());
+    CHECK(shown().contains(QStringLiteral("* - Bunraku Motion Workbench")));
+    CHECK_FALSE(shown().contains(QStringLiteral(" *")));
+    CHECK_FALSE(shown().contains(QStringLiteral("  ")));
 }
