@@ -402,10 +402,11 @@ void MainWindow::refreshTakes()
     if (const auto distance = m_document->perChannelDistanceOf(idA))
         caption = tr("%1: the thesis's per-channel result (each channel computed on its own), up to %2 cm (%3) and %4 deg from "
                      "the body shown, which is what the 3D view draws and every export writes")
-                      .arg(ghost == perChannel ? tr("Grey dashes") : tr("Orange line"))
+                      .arg(ghost == perChannel ? tr("Grey dashes") : tr("Purple line"))
                       .arg(distance->maxPositionCm, 0, 'f', 1)
                       .arg(QString::fromStdString(distance->worstPart))
-                      .arg(distance->maxAngleDeg, 0, 'f', 1);
+                      .arg(distance->maxAngleDeg, 0, 'f', 1) +
+                  (ghost && ghost != perChannel ? tr(". Grey dashes: the take it was made from") : QString());
     m_graphs->setGhost(ghost);
     m_graphs->setPerChannelGhost(ghost == perChannel ? nullptr : perChannel, caption);
     m_graphs->setTakes(takeA, takeB, m_document->selectedId(TakeSlot::A) + QLatin1Char('|') + m_document->selectedId(TakeSlot::B));

@@ -54,7 +54,8 @@ struct GraphColours {
     QColor takeA{0x1f, 0x77, 0xb4};
     QColor takeB{0xd9, 0x5f, 0x02};
     QColor ghost{0xa0, 0xa0, 0xa0};
-    QColor perChannel{0xe6, 0x9f, 0x00}; ///< the thesis's per-channel result (Okabe-Ito orange)
+    /// The thesis's per-channel result: purple, apart in hue from take A's blue and B's orange.
+    QColor perChannel{0x7b, 0x32, 0x94};
 };
 
 class GraphGrid : public QWidget {

@@ -7,12 +7,16 @@
 #include "analysis/core/skeleton_take.h"
 #include "analysis/io/take_csv.h"
 #include "app/normalise_panel.h"
+#include "widgets/graph_grid.h"
 #include "widgets/graph_panel.h"
 #include "render/scene.h"
 
 #include <catch2/catch.hpp>
 
 #include <QComboBox>
+
+#include <algorithm>
+#include <cstdlib>
 #include <QLabel>
 
 using bunraku::app::TakeSlot;
@@ -63,7 +67,14 @@ TEST_CASE("a normalised Bandai take is shown, graphed and exported as one body, 
     auto* graphs = window->graphPanel();
     const QString caption = graphs->ghostCaption();
     INFO(caption.toStdString());
-    CHECK(caption.startsWith(QStringLiteral("Orange line: the thesis's per-channel result")));
+    CHECK(caption.startsWith(QStringLiteral("Purple line: the thesis's per-channel result")));
+    // Both lines are named, and the per-channel line's colour is far in hue from both takes'.
+    CHECK(caption.endsWith(QStringLiteral("Grey dashes: the take it was made from")));
+    const widgets::GraphColours colours;
+    for (const QColor& take : {colours.takeA, colours.takeB}) {
+        const int hueApart = std::abs(colours.perChannel.hue() - take.hue());
+        CHECK(std::min(hueApart, 360 - hueApart) > 60);
+    }
     CHECK(caption.contains(QStringLiteral("up to %1 cm (%2)").arg(distance->maxPositionCm, 0, 'f', 1).arg(QString::fromStdString(distance->worstPart))));
     CHECK(caption.contains(QStringLiteral("and %1 deg").arg(distance->maxAngleDeg, 0, 'f', 1)));
     CHECK(graphs->grid()->ghostTakes()[0] == document.take(app::Document::corpusTakeId(0)));
