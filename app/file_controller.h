@@ -16,6 +16,7 @@
 #include "analysis/core/result.h"
 
 #include <QObject>
+#include <QScopedValueRollback>
 #include <QString>
 #include <QStringList>
 
@@ -88,16 +89,8 @@ public:
     /// it rather than by a message box.
     template <class Work> auto whileDialogAsks(QWidget* asking, Work&& work)
     {
-        QWidget* const window = m_window;
-        const bool inDialog = m_errorsInDialog;
-        m_window = asking;
-        m_errorsInDialog = true;
-        struct Restore {
-            FileController* self;
-            QWidget* window;
-            bool inDialog;
-            ~Restore() { self->m_window = window, self->m_errorsInDialog = inDialog; }
-        } restore{this, window, inDialog};
+        const QScopedValueRollback<QWidget*> parent(m_window, asking);
+        const QScopedValueRollback<bool> inDialog(m_errorsInDialog, true);
         return work();
     }
 

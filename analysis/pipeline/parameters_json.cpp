@@ -235,9 +235,9 @@ void readNormalise(Reader& r, NormaliseParameters& p)
             r.fail(r.path() + ".averageExcluded", "expected an array of take indices, got " + describe(*excluded));
             return;
         }
+        const ParameterRange& range = parameterRange("normalise.averageExcluded");
         for (std::size_t i = 0; i < excluded->size(); ++i) {
             const json& take = (*excluded)[i];
-            const ParameterRange& range = parameterRange("normalise.averageExcluded");
             if (!take.is_number() || !range.contains(take.get<double>())) {
                 r.fail(r.path() + ".averageExcluded[" + std::to_string(i) + "]", rangeProblem(range, take));
                 return;
