@@ -3,7 +3,8 @@
 /// LightWave scenes). It draws into whatever framebuffer is bound: a QOpenGLWidget's, or the
 /// OffscreenRenderer's framebuffer object for tests, screenshots and frame sequences.
 ///
-/// Cost model: setScene uploads every buffer once; setFrame / setTime only recompute the poses
+/// Cost model: setScene uploads every buffer once (a slot whose TakeSlot::sources are unchanged
+/// keeps what was built for it); setFrame / setTime only recompute the poses
 /// on the CPU, and render() sends them as uniforms: no GPU buffer is (re)allocated per frame.
 /// Every method that touches OpenGL needs the context it was initialised in to be current.
 
