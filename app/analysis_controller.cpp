@@ -71,7 +71,7 @@ AnalysisController::AnalysisController(Document& document, QObject* parent, std:
         }
     });
     // Take A renamed (a live take recomputed with the same content): its axis is renamed too.
-    connect(&document, &Document::takeLabelChanged, this, [this](const QString& id) {
+    connect(&document, &Document::takeLabelChanged, this, [this](const TakeId& id) {
         if (id != m_document.selectedId(TakeSlot::A) || !m_axisTakes[0] || m_document.take(id) != m_axisTakes[0]) return;
         m_axisLabels[0] = m_document.takeLabel(id);
         if (isCurrent(kTakeAxisSlot)) publishAxis();
@@ -220,9 +220,9 @@ void AnalysisController::stageFinished(int slot)
 
 void AnalysisController::resolveCell()
 {
-    const QString idA = m_document.selectedId(TakeSlot::A);
+    const TakeId idA = m_document.selectedId(TakeSlot::A);
     const TakePointer takeA = m_document.take(idA);
-    if (takeA && Document::isCorpusTakeId(idA)) {
+    if (takeA && idA.isCorpus()) {
         m_function = takeA->labels.function;
         m_emotion = takeA->labels.emotion;
     } else if (m_function.empty() && !m_document.corpus().takes.empty()) {
@@ -289,13 +289,13 @@ void AnalysisController::publishNormalised()
     // Publishing the take shown as A announces a new selection, which would publish it again.
     if (m_publishing) return;
     const QScopedValueRollback<bool> publishing(m_publishing, true);
-    QString idA = m_document.selectedId(TakeSlot::A);
+    TakeId idA = m_document.selectedId(TakeSlot::A);
     // The normalised take itself shown as A: recomputed for the take it was computed from.
-    if (idA == Document::liveTakeId(QStringLiteral("normalised")))
+    if (idA == TakeId::live(QStringLiteral("normalised")))
         for (const auto& derived : m_document.derivedTakes())
             if (derived.id == idA) idA = derived.ghostId;
     const TakePointer takeA = m_document.take(idA);
-    if (!m_normalised || !takeA || !Document::isCorpusTakeId(idA)) return; // keep it while viewing derived takes
+    if (!m_normalised || !takeA || !idA.isCorpus()) return; // keep it while viewing derived takes
     const pl::CellNormalisation* cell = m_normalised->cell(takeA->labels.function, takeA->labels.emotion);
     if (!cell) return;
     for (std::size_t k = 0; k < cell->takeIndices.size(); ++k) {
@@ -310,7 +310,7 @@ void AnalysisController::publishNormalised()
             // A long take's body is made off the GUI thread (stageFinished publishes it).
             m_pendingNormalisedLabel = label;
             m_pendingNormalisedGhost = idA;
-            const pl::StageKey key = pl::KeyBuilder("normalised body").add(m_keys.normalise).add(idA.toStdString()).key();
+            const pl::StageKey key = pl::KeyBuilder("normalised body").add(m_keys.normalise).add(idA.toString().toStdString()).key();
             m_scheduler->request(kNormalisedBody, key, [take](const analysis::RunControl& control) -> analysis::Result<pl::Shared<analysis::BodyMotion>> {
                 auto body = std::make_shared<const analysis::BodyMotion>(analysis::bodyMotion(*take, control));
                 if (control.cancelled()) return analysis::makeError(analysis::ErrorCode::Cancelled, "cancelled");
@@ -385,7 +385,7 @@ void AnalysisController::publishKimono()
 {
     const auto simulated = kimono(TakeSlot::A, m_kimonoTakes[0]);
     if (!m_kimonoShown) {
-        if (m_document.take(Document::liveTakeId(QStringLiteral("kimono")))) m_document.setLiveTake(QStringLiteral("kimono"), QString(), nullptr);
+        if (m_document.take(TakeId::live(QStringLiteral("kimono")))) m_document.setLiveTake(QStringLiteral("kimono"), QString(), nullptr);
         return;
     }
     if (!simulated || !m_kimonoTakes[0]) return;

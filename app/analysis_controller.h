@@ -169,7 +169,7 @@ private:
     /// published with them when their job finishes.
     QString m_pendingWeightedLabel;
     QString m_pendingNormalisedLabel;
-    QString m_pendingNormalisedGhost;
+    TakeId m_pendingNormalisedGhost;
     TakePointer m_kimonoTakes[2]; ///< the takes the kimono slots were last asked for
     bool m_kimonoShown = false;
     analysis::ClothParameters m_clothParameters;

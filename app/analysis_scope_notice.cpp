@@ -20,7 +20,7 @@ AnalysisScopeNotice::AnalysisScopeNotice(const Document& document, QWidget* pare
 
 QString AnalysisScopeNotice::textFor(const Document& document)
 {
-    const QString idA = document.selectedId(TakeSlot::A);
+    const TakeId idA = document.selectedId(TakeSlot::A);
     for (const DerivedTake& derived : document.derivedTakes()) {
         if (derived.id != idA || derived.sourcePath.isEmpty()) continue;
         const QString corpus = document.corpusSource() == QStringLiteral("demo") ? tr("the demo corpus")

@@ -139,7 +139,7 @@ RemovePhraseBoundary::RemovePhraseBoundary(Document* document, AnalysisParameter
 
 ImportTake::ImportTake(Document* document, TakePointer take, const QString& label, const QString& sourcePath,
                        std::shared_ptr<const analysis::io::ImportOptions> options)
-    : m_document(document), m_take{document->nextImportedId(), label, std::move(take), sourcePath, QString(), std::move(options), nullptr, {}}
+    : m_document(document), m_take{document->nextImportedId(), label, std::move(take), sourcePath, TakeId(), std::move(options), nullptr, {}}
 {
     setText(QCoreApplication::translate("commands", "Import %1").arg(label));
 }
@@ -157,7 +157,7 @@ void ImportTake::undo()
     m_document->selectTake(TakeSlot::A, m_previousA);
 }
 
-RemoveImportedTake::RemoveImportedTake(Document* document, const QString& id) : m_document(document)
+RemoveImportedTake::RemoveImportedTake(Document* document, const TakeId& id) : m_document(document)
 {
     m_position = document->indexOfDerived(id);
     if (m_position >= 0) m_take = document->derivedTakes()[std::size_t(m_position)];

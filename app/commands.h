@@ -158,18 +158,18 @@ public:
 
     void undo() override;
     void redo() override;
-    const QString& takeId() const { return m_take.id; }
+    const TakeId& takeId() const { return m_take.id; }
 
 private:
     Document* m_document;
     DerivedTake m_take;
-    QString m_previousA;
+    TakeId m_previousA;
 };
 
 /// Removes an imported take (undo puts it back at its place).
 class RemoveImportedTake : public QUndoCommand {
 public:
-    RemoveImportedTake(Document* document, const QString& id);
+    RemoveImportedTake(Document* document, const TakeId& id);
 
     void undo() override;
     void redo() override;

@@ -45,7 +45,7 @@ bool CorpusController::openDemoCorpus()
     std::size_t first = 0;
     while (first + 1 < truth->takes.size() && truth->takes[first].yawWraps) ++first;
     m_document.setCorpus(std::move(demo.corpus), QStringLiteral("demo"), truth);
-    if (first > 0) m_document.selectTake(TakeSlot::A, Document::corpusTakeId(first));
+    if (first > 0) m_document.selectTake(TakeSlot::A, TakeId::corpus(first));
     emit corpusOpened();
     emit m_files.statusMessage(tr("Opened the demo corpus (%1 takes)").arg(m_document.corpus().takes.size()));
     return true;

@@ -16,8 +16,8 @@ namespace {
 
 namespace pl = analysis::pipeline;
 
-const QString kDesignedId = Document::liveTakeId(QStringLiteral("designed"));
-const QString kFunctionalId = Document::liveTakeId(QStringLiteral("functional"));
+const TakeId kDesignedId = TakeId::live(QStringLiteral("designed"));
+const TakeId kFunctionalId = TakeId::live(QStringLiteral("functional"));
 
 /// The gain edits with each phrase index moved by `remap` (an empty result drops the edit).
 template <typename Remap> std::vector<pl::GainEdit> remapGainEdits(const std::vector<pl::GainEdit>& edits, Remap remap)
@@ -118,7 +118,7 @@ void DesignController::resolveInputs()
     redesign();
 }
 
-QString DesignController::sourceId() const { return m_prepared ? kFunctionalId : QString(); }
+TakeId DesignController::sourceId() const { return m_prepared ? kFunctionalId : TakeId(); }
 
 QString DesignController::targetCell() const
 {
@@ -214,7 +214,7 @@ int DesignController::nearestBoundary(double frame) const
     return best;
 }
 
-std::vector<double> DesignController::boundarySecondsOn(const QString& takeId) const
+std::vector<double> DesignController::boundarySecondsOn(const TakeId& takeId) const
 {
     if (takeId != kDesignedId) return boundarySeconds();
     const double rate = functionalRateHz();
@@ -226,12 +226,12 @@ std::vector<double> DesignController::boundarySecondsOn(const QString& takeId) c
     return seconds;
 }
 
-bool DesignController::showsBoundariesOn(const QString& takeId) const
+bool DesignController::showsBoundariesOn(const TakeId& takeId) const
 {
     return ready() && (takeId == sourceId() || takeId == kDesignedId);
 }
 
-double DesignController::functionalFrameAt(const QString& takeId, double seconds) const
+double DesignController::functionalFrameAt(const TakeId& takeId, double seconds) const
 {
     const double frame = seconds * functionalRateHz();
     return takeId == kDesignedId ? analysis::evaluateWarp(warpCurve(), frame) : frame;

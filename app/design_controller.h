@@ -68,13 +68,13 @@ public:
     /// The inner boundaries in seconds on the take `takeId`: the functional take's times, and on
     /// the designed take ("live/designed") the designed times u / rate whose warp reaches each
     /// boundary, warp(u) = boundary (inverseWarp of the monotone curve).
-    std::vector<double> boundarySecondsOn(const QString& takeId) const;
+    std::vector<double> boundarySecondsOn(const TakeId& takeId) const;
     /// Whether the take `takeId` shows the design's phrase boundaries (editable): the
     /// functional take or the designed take, once the design is ready.
-    bool showsBoundariesOn(const QString& takeId) const;
+    bool showsBoundariesOn(const TakeId& takeId) const;
     /// The functional frame shown at `seconds` of the take `takeId`: seconds * rate, through the
     /// warp on the designed take.
-    double functionalFrameAt(const QString& takeId, double seconds) const;
+    double functionalFrameAt(const TakeId& takeId, double seconds) const;
     /// The index (among the inner ones) of the inner boundary nearest to functional frame
     /// `frame`, -1 when there is none.
     int nearestBoundary(double frame) const;
@@ -87,7 +87,7 @@ public:
     /// without an emotional cell.
     analysis::ApproximationError approximationError() const;
     /// "live/functional": the functional take (the neutral cell's average take).
-    QString sourceId() const;
+    TakeId sourceId() const;
     /// The emotional cell the phase and gains were extracted from ("function/emotion"), empty when none.
     QString targetCell() const;
     /// The designed take's label: its functional take and what it was designed with ("designed

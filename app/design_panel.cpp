@@ -86,7 +86,7 @@ DesignPanel::DesignPanel(Document& document, DesignController& controller, QWidg
     connect(removeBoundary, &QPushButton::clicked, this,
             [this] { m_controller.removeBoundary(m_controller.nearestBoundary(cursorFrame())); });
     connect(showDesigned, &QPushButton::clicked, this, [this] {
-        m_document.selectTake(TakeSlot::A, Document::liveTakeId(QStringLiteral("designed")));
+        m_document.selectTake(TakeSlot::A, TakeId::live(QStringLiteral("designed")));
     });
     connect(&controller, &DesignController::prepared, this, &DesignPanel::refresh);
     connect(&controller, &DesignController::designed, this, [this] {

@@ -22,8 +22,8 @@ void Document::setCorpus(analysis::Corpus corpus, const QString& source,
     m_parameters = {};
     m_importSerial = 0;
     ++m_version;
-    m_selected[0] = m_corpus->takes.empty() ? QString() : corpusTakeId(0);
-    m_selected[1].clear();
+    m_selected[0] = m_corpus->takes.empty() ? TakeId() : TakeId::corpus(0);
+    m_selected[1] = {};
     m_time = 0.0;
     emit corpusChanged();
     emit derivedTakesChanged();
@@ -32,29 +32,19 @@ void Document::setCorpus(analysis::Corpus corpus, const QString& source,
     emit currentTimeChanged(m_time);
 }
 
-QString Document::corpusTakeId(std::size_t index) { return QStringLiteral("corpus/%1").arg(index); }
-
-QString Document::liveTakeId(const QString& name) { return QStringLiteral("live/") + name; }
-
-bool Document::isCorpusTakeId(const QString& id) { return id.startsWith(QStringLiteral("corpus/")); }
-
-bool Document::isLiveTakeId(const QString& id) { return id.startsWith(QStringLiteral("live/")); }
-
-TakePointer Document::take(const QString& id) const
+TakePointer Document::take(const TakeId& id) const
 {
-    if (isCorpusTakeId(id)) {
-        bool ok = false;
-        const auto index = id.mid(7).toULongLong(&ok);
-        if (!ok || index >= m_corpus->takes.size()) return nullptr;
-        return TakePointer(m_corpus, &m_corpus->takes[index]); // aliasing: keeps the corpus alive
+    if (id.isCorpus()) {
+        if (id.index() >= m_corpus->takes.size()) return nullptr;
+        return TakePointer(m_corpus, &m_corpus->takes[id.index()]); // aliasing: keeps the corpus alive
     }
     const int index = indexOfDerived(id);
     return index < 0 ? nullptr : m_derived[std::size_t(index)].take;
 }
 
-QString Document::takeLabel(const QString& id) const
+QString Document::takeLabel(const TakeId& id) const
 {
-    if (isCorpusTakeId(id)) {
+    if (id.isCorpus()) {
         const TakePointer found = take(id);
         return found ? QString::fromStdString(found->displayName()) : QString();
     }
@@ -62,16 +52,16 @@ QString Document::takeLabel(const QString& id) const
     return index < 0 ? QString() : m_derived[std::size_t(index)].label;
 }
 
-QString Document::takeName(const QString& id) const
+QString Document::takeName(const TakeId& id) const
 {
-    if (!isLiveTakeId(id)) return takeLabel(id);
-    const QString kind = id.mid(5);
+    if (!id.isLive()) return takeLabel(id);
+    const QString& kind = id.name();
     const TakePointer found = take(id);
     if (!found || found->labels.function.empty()) return kind;
     return QString::fromStdString(found->labels.function) + QLatin1Char(' ') + kind;
 }
 
-void Document::selectTake(TakeSlot slot, const QString& id)
+void Document::selectTake(TakeSlot slot, const TakeId& id)
 {
     if (m_selected[int(slot)] == id) return;
     if (!id.isEmpty() && !take(id)) return;
@@ -103,7 +93,7 @@ double Document::rateHz() const
     return shown && shown->rateHz > 0.0 ? shown->rateHz : 5.0;
 }
 
-TakePointer Document::ghostOf(const QString& id) const
+TakePointer Document::ghostOf(const TakeId& id) const
 {
     const int index = indexOfDerived(id);
     if (index < 0) return nullptr;
@@ -111,20 +101,20 @@ TakePointer Document::ghostOf(const QString& id) const
     return derived.ghostId.isEmpty() ? derived.perChannelGhost : take(derived.ghostId);
 }
 
-TakePointer Document::perChannelGhostOf(const QString& id) const
+TakePointer Document::perChannelGhostOf(const TakeId& id) const
 {
     const int index = indexOfDerived(id);
     return index < 0 ? nullptr : m_derived[std::size_t(index)].perChannelGhost;
 }
 
-std::optional<analysis::PerChannelDistance> Document::perChannelDistanceOf(const QString& id) const
+std::optional<analysis::PerChannelDistance> Document::perChannelDistanceOf(const TakeId& id) const
 {
     const int index = indexOfDerived(id);
     if (index < 0 || !m_derived[std::size_t(index)].perChannelGhost) return std::nullopt;
     return m_derived[std::size_t(index)].perChannelDistance;
 }
 
-TakePointer Document::setLiveTake(const QString& name, const QString& label, TakePointer take, const QString& ghostId)
+TakePointer Document::setLiveTake(const QString& name, const QString& label, TakePointer take, const TakeId& ghostId)
 {
     // One motion: the figure, the graphs and every export show the body's.
     if (take && take->skeleton) {
@@ -134,7 +124,7 @@ TakePointer Document::setLiveTake(const QString& name, const QString& label, Tak
     return publishLive(name, label, std::move(take), nullptr, {}, ghostId);
 }
 
-TakePointer Document::setLiveBody(const QString& name, const QString& label, analysis::BodyMotion body, const QString& ghostId)
+TakePointer Document::setLiveBody(const QString& name, const QString& label, analysis::BodyMotion body, const TakeId& ghostId)
 {
     TakePointer perChannelGhost;
     if (body.perChannel) {
@@ -149,14 +139,14 @@ TakePointer Document::setLiveBody(const QString& name, const QString& label, ana
 }
 
 TakePointer Document::publishLive(const QString& name, const QString& label, TakePointer take, TakePointer perChannelGhost,
-                                  const analysis::PerChannelDistance& distance, const QString& ghostId)
+                                  const analysis::PerChannelDistance& distance, const TakeId& ghostId)
 {
-    const QString id = liveTakeId(name);
+    const TakeId id = TakeId::live(name);
     const int index = indexOfDerived(id);
     if (!take) {
         if (index < 0) return nullptr;
         m_derived.erase(m_derived.begin() + index);
-        if (m_selected[1] == id) selectTake(TakeSlot::B, QString());
+        if (m_selected[1] == id) selectTake(TakeSlot::B, {});
         emit derivedTakesChanged();
         return nullptr;
     }
@@ -257,7 +247,7 @@ void Document::restoreProject(std::vector<DerivedTake> imported, const AnalysisP
     restoreParameters(parameters);
 }
 
-void Document::removeImportedTake(const QString& id, CommandKey)
+void Document::removeImportedTake(const TakeId& id, CommandKey)
 {
     const int index = indexOfDerived(id);
     if (index < 0) return;
@@ -265,18 +255,18 @@ void Document::removeImportedTake(const QString& id, CommandKey)
     ++m_version;
     for (int slot = 1; slot >= 0; --slot) {
         if (m_selected[slot] != id) continue;
-        m_selected[slot] = slot == 0 && !m_corpus->takes.empty() ? corpusTakeId(0) : QString();
+        m_selected[slot] = slot == 0 && !m_corpus->takes.empty() ? TakeId::corpus(0) : TakeId();
         emit selectionChanged(TakeSlot(slot));
     }
     emit derivedTakesChanged();
 }
 
-int Document::indexOfDerived(const QString& id) const
+int Document::indexOfDerived(const TakeId& id) const
 {
     const auto found = std::find_if(m_derived.begin(), m_derived.end(), [&](const DerivedTake& d) { return d.id == id; });
     return found == m_derived.end() ? -1 : int(found - m_derived.begin());
 }
 
-QString Document::nextImportedId() { return QStringLiteral("imported/%1").arg(++m_importSerial); }
+TakeId Document::nextImportedId() { return TakeId::imported(std::size_t(++m_importSerial)); }
 
 } // namespace bunraku::app

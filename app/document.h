@@ -13,6 +13,7 @@
 #include "analysis/core/take.h"
 #include "analysis/pipeline/stage_parameters.h"
 #include "analysis/synth/demo_corpus.h"
+#include "app/take_id.h"
 
 #include <QObject>
 #include <QString>
@@ -54,11 +55,11 @@ ParameterSections changedSections(const AnalysisParameters& a, const AnalysisPar
 
 /// A take listed under "Derived takes": imported files and live analysis results.
 struct DerivedTake {
-    QString id;    ///< "imported/<n>" or "live/<name>"
+    TakeId id;     ///< an imported take or a live result
     QString label; ///< shown in the corpus browser
     TakePointer take;
     QString sourcePath; ///< imported takes: the file; empty for live results
-    QString ghostId;    ///< live results: the take drawn faintly behind it (its original)
+    TakeId ghostId;     ///< live results: the take drawn faintly behind it (its original)
     /// imported takes: the options they were read with (stored in projects); null for defaults
     std::shared_ptr<const analysis::io::ImportOptions> importOptions;
     /// live results shown as one body (analysis::bodyMotion): the thesis's per-channel result, drawn
@@ -87,28 +88,20 @@ public:
     std::shared_ptr<const analysis::Corpus> sharedCorpus() const { return m_corpus; }
     QString corpusSource() const { return m_corpusSource; }
 
-    /// Id of the corpus take with index `index` in corpus().takes.
-    static QString corpusTakeId(std::size_t index);
-    /// The id of the live take `name` ("designed", "weighted", ...).
-    static QString liveTakeId(const QString& name);
-    /// What kind of take an id names. Take ids are built and read here only (and stored by the
-    /// project file, project_file.cpp): the rest of the app asks these (a ctest check greps).
-    static bool isCorpusTakeId(const QString& id);
-    static bool isLiveTakeId(const QString& id);
     /// The take with `id` (corpus or derived), null when unknown.
-    TakePointer take(const QString& id) const;
+    TakePointer take(const TakeId& id) const;
     /// The label the user sees for `id` (a live result's recipe: "designed from bow functional
     /// (warp: 15 of 18 points moved; ...)").
-    QString takeLabel(const QString& id) const;
+    QString takeLabel(const TakeId& id) const;
     /// A short name for `id` that stays while the take is edited, for file names and the names
     /// inside exported files: a corpus take's "greeting/friendly/2", an imported take's label, a
     /// live result's kind after its function ("bow designed", or "designed" without one).
-    QString takeName(const QString& id) const;
+    QString takeName(const TakeId& id) const;
     const std::vector<DerivedTake>& derivedTakes() const { return m_derived; }
 
     /// Shows the take `id` (empty: none, allowed for B only) in `slot`. View state.
-    void selectTake(TakeSlot slot, const QString& id);
-    QString selectedId(TakeSlot slot) const { return m_selected[int(slot)]; }
+    void selectTake(TakeSlot slot, const TakeId& id);
+    TakeId selectedId(TakeSlot slot) const { return m_selected[int(slot)]; }
     TakePointer selectedTake(TakeSlot slot) const { return take(m_selected[int(slot)]); }
 
     /// Seconds; clamped to [0, duration()].
@@ -122,23 +115,23 @@ public:
     /// The analysis parameters (every stage's, and the design edits).
     const AnalysisParameters& parameters() const { return m_parameters; }
 
-    /// Publishes a live analysis result under "live/<name>" (replacing the previous one; null
+    /// Publishes a live analysis result as TakeId::live(name) (replacing the previous one; null
     /// removes it). For the AnalysisController only; not undoable: results are recomputed from
     /// the parameters. A result with a skeleton is published as its body moves
     /// (analysis::bodyMotion: one motion for the figure, the graphs and exports), its per-channel
     /// result kept as perChannelGhost.
     /// Returns the take as published (null when removed).
-    TakePointer setLiveTake(const QString& name, const QString& label, TakePointer take, const QString& ghostId = {});
+    TakePointer setLiveTake(const QString& name, const QString& label, TakePointer take, const TakeId& ghostId = {});
     /// setLiveTake with the body already computed (analysis::bodyMotion, off the GUI thread for a
     /// long take): `body.take` is published, `body.perChannel` kept as its per-channel ghost.
-    TakePointer setLiveBody(const QString& name, const QString& label, analysis::BodyMotion body, const QString& ghostId = {});
+    TakePointer setLiveBody(const QString& name, const QString& label, analysis::BodyMotion body, const TakeId& ghostId = {});
     /// The take drawn as a ghost behind `id` (a live result's original, else its per-channel
     /// result), null when none.
-    TakePointer ghostOf(const QString& id) const;
+    TakePointer ghostOf(const TakeId& id) const;
     /// A live result's per-channel (thesis) result when it is shown as its body, null otherwise.
-    TakePointer perChannelGhostOf(const QString& id) const;
+    TakePointer perChannelGhostOf(const TakeId& id) const;
     /// How far that per-channel result is from the body shown (nothing without one).
-    std::optional<analysis::PerChannelDistance> perChannelDistanceOf(const QString& id) const;
+    std::optional<analysis::PerChannelDistance> perChannelDistanceOf(const TakeId& id) const;
 
     /// Replaces every parameter (loading a project): not undoable, clears the undo stack.
     void restoreParameters(const AnalysisParameters& values);
@@ -181,19 +174,19 @@ public:
     // --- mutators for commands only (app/commands.cpp) ---
     void applyParameters(const AnalysisParameters& values, CommandKey);
     void insertImportedTake(const DerivedTake& take, int position, CommandKey);
-    void removeImportedTake(const QString& id, CommandKey);
-    int indexOfDerived(const QString& id) const;
-    /// The next unused "imported/<n>" id.
-    QString nextImportedId();
+    void removeImportedTake(const TakeId& id, CommandKey);
+    int indexOfDerived(const TakeId& id) const;
+    /// The next unused imported take's id.
+    TakeId nextImportedId();
 
 signals:
     void corpusChanged();
     void derivedTakesChanged();
     /// The content of take `id` changed (a live result was recomputed).
-    void takeChanged(const QString& id);
+    void takeChanged(const bunraku::app::TakeId& id);
     /// The label of derived take `id` changed (a live result computed from other parameters or
     /// another take).
-    void takeLabelChanged(const QString& id);
+    void takeLabelChanged(const bunraku::app::TakeId& id);
     /// Another take is chosen for `slot`.
     void selectionChanged(bunraku::app::TakeSlot slot);
     /// The take shown in `slot` was replaced by new content under the same id (a live result
@@ -208,13 +201,13 @@ signals:
 
 private:
     TakePointer publishLive(const QString& name, const QString& label, TakePointer take, TakePointer perChannelGhost,
-                            const analysis::PerChannelDistance& distance, const QString& ghostId);
+                            const analysis::PerChannelDistance& distance, const TakeId& ghostId);
 
     std::shared_ptr<const analysis::Corpus> m_corpus;
     QString m_corpusSource;
     std::shared_ptr<const analysis::synth::DemoGroundTruth> m_truth;
     std::vector<DerivedTake> m_derived;
-    QString m_selected[2];
+    TakeId m_selected[2];
     double m_time = 0.0;
     AnalysisParameters m_parameters;
     std::function<qint64()> m_clock;

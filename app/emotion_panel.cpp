@@ -135,7 +135,7 @@ EmotionPanel::EmotionPanel(Document& document, AnalysisController& analysis, QWi
     connect(m_emotion, &QComboBox::activated, this, [this](int index) {
         m_analysis.setWeightEmotion(m_emotion->itemData(index).toString());
     });
-    connect(show, &QPushButton::clicked, this, [this] { m_document.selectTake(TakeSlot::A, Document::liveTakeId(QStringLiteral("weighted"))); });
+    connect(show, &QPushButton::clicked, this, [this] { m_document.selectTake(TakeSlot::A, TakeId::live(QStringLiteral("weighted"))); });
 
     connect(&document, &Document::parametersChanged, this, [this](ParameterSections sections) {
         if (sections & (kDecomposeSection | kWeightSection)) showParameters();

@@ -42,7 +42,7 @@ bool ExportController::exportTake(TakeSlot slot, const QString& file, bool kimon
     }
     // Names inside the file are short and stable (the take's name: "bow designed"); the recipe
     // a live result is listed with goes into the file's metadata.
-    const QString id = m_document.selectedId(slot);
+    const TakeId id = m_document.selectedId(slot);
     const QString label = m_document.takeLabel(id);
     const QString name = m_document.takeName(id);
     const std::filesystem::path path(file.toStdString());

@@ -68,15 +68,22 @@ constexpr int kLayoutVersion = 1;
 /// message naming a written file needs the time to be read).
 constexpr int kStatusTimeoutMs = 12000;
 
-/// Corpus takes then derived takes, as the browser lists them.
-std::vector<widgets::BrowserEntry> browserEntries(const Document& document)
+/// Corpus takes then derived takes, as the browser lists them; `ids` maps each entry's key (the
+/// id's text) back to its id.
+std::vector<widgets::BrowserEntry> browserEntries(const Document& document, QHash<QString, TakeId>& ids)
 {
     std::vector<widgets::BrowserEntry> entries;
+    ids.clear();
+    const auto keyOf = [&ids](const TakeId& id) {
+        QString key = id.toString();
+        ids.insert(key, id);
+        return key;
+    };
     const auto& corpus = document.corpus();
     for (std::size_t i = 0; i < corpus.takes.size(); ++i) {
         const auto& take = corpus.takes[i];
         widgets::BrowserEntry entry;
-        entry.id = Document::corpusTakeId(i);
+        entry.id = keyOf(TakeId::corpus(i));
         entry.function = QString::fromStdString(take.labels.function.empty() ? "(no function)" : take.labels.function);
         entry.emotion = QString::fromStdString(take.labels.emotion.empty() ? "(no emotion)" : take.labels.emotion);
         entry.takeIndex = take.labels.takeIndex;
@@ -85,7 +92,7 @@ std::vector<widgets::BrowserEntry> browserEntries(const Document& document)
     }
     for (const auto& derived : document.derivedTakes()) {
         widgets::BrowserEntry entry;
-        entry.id = derived.id;
+        entry.id = keyOf(derived.id);
         entry.label = derived.label;
         entry.frames = derived.take ? int(derived.take->frameCount()) : 0;
         entry.derived = true;
@@ -314,13 +321,13 @@ void MainWindow::connectDocument()
     });
     connect(m_document, &Document::derivedTakesChanged, this, &MainWindow::refreshEntries);
     // A live take recomputed from other parameters or another take is renamed where it is listed.
-    connect(m_document, &Document::takeLabelChanged, this, [this](const QString& id) {
-        m_browser->setEntryLabel(id, m_document->takeLabel(id));
+    connect(m_document, &Document::takeLabelChanged, this, [this](const TakeId& id) {
+        m_browser->setEntryLabel(id.toString(), m_document->takeLabel(id));
         updateTitle();
     });
     // ... and its frame count is the new take's.
-    connect(m_document, &Document::takeChanged, this, [this](const QString& id) {
-        if (const TakePointer take = m_document->take(id)) m_browser->setEntryFrames(id, int(take->frameCount()));
+    connect(m_document, &Document::takeChanged, this, [this](const TakeId& id) {
+        if (const TakePointer take = m_document->take(id)) m_browser->setEntryFrames(id.toString(), int(take->frameCount()));
     });
     connect(m_document, &Document::selectionChanged, this, [this] { refreshTakes(); });
     connect(m_document, &Document::selectedTakeReplaced, this, [this] { refreshTakes(); });
@@ -335,7 +342,9 @@ void MainWindow::connectDocument()
     });
 
     connect(m_browser, &widgets::CorpusBrowser::takeChosen, this,
-            [this](widgets::TakeSlot slot, const QString& id) { m_document->selectTake(TakeSlot(int(slot)), id); });
+            [this](widgets::TakeSlot slot, const QString& key) {
+                if (key.isEmpty() || m_browserIds.contains(key)) m_document->selectTake(TakeSlot(int(slot)), m_browserIds.value(key));
+            });
     connect(m_graphs->grid(), &widgets::GraphGrid::timeScrubbed, m_document, &Document::setCurrentTime);
     connect(m_timeline, &widgets::TimelineWidget::timeScrubbed, m_document, &Document::setCurrentTime);
     connect(m_timeline, &widgets::TimelineWidget::playToggled, m_playback, &PlaybackController::setPlaying);
@@ -384,7 +393,7 @@ void MainWindow::setStatusClock(widgets::Clock* clock) { m_statusTimer->setClock
 
 void MainWindow::refreshEntries()
 {
-    m_browser->setEntries(browserEntries(*m_document));
+    m_browser->setEntries(browserEntries(*m_document, m_browserIds));
     refreshTakes();
 }
 
@@ -392,10 +401,10 @@ void MainWindow::refreshTakes()
 {
     const TakePointer takeA = m_document->selectedTake(TakeSlot::A);
     const TakePointer takeB = m_document->selectedTake(TakeSlot::B);
-    m_browser->setChosen(m_document->selectedId(TakeSlot::A), m_document->selectedId(TakeSlot::B));
+    m_browser->setChosen(m_document->selectedId(TakeSlot::A).toString(), m_document->selectedId(TakeSlot::B).toString());
     // The ghost (a live take's original), and the thesis's per-channel result of a take shown as
     // one body: as the ghost when there is no other, else beside it; the caption says how far.
-    const QString idA = m_document->selectedId(TakeSlot::A);
+    const TakeId idA = m_document->selectedId(TakeSlot::A);
     const TakePointer ghost = m_document->ghostOf(idA);
     const TakePointer perChannel = m_document->perChannelGhostOf(idA);
     QString caption;
@@ -409,7 +418,7 @@ void MainWindow::refreshTakes()
                   (ghost && ghost != perChannel ? tr(". Grey dashes: the take it was made from") : QString());
     m_graphs->setGhost(ghost);
     m_graphs->setPerChannelGhost(ghost == perChannel ? nullptr : perChannel, caption);
-    m_graphs->setTakes(takeA, takeB, m_document->selectedId(TakeSlot::A) + QLatin1Char('|') + m_document->selectedId(TakeSlot::B));
+    m_graphs->setTakes(takeA, takeB, m_document->selectedId(TakeSlot::A).toString() + QLatin1Char('|') + m_document->selectedId(TakeSlot::B).toString());
     m_inspector->setTakes(takeA, takeB);
     m_timeline->setDuration(m_document->duration(), m_document->rateHz());
     refreshBoundaries();
@@ -419,7 +428,7 @@ void MainWindow::refreshTakes()
 
 void MainWindow::refreshBoundaries()
 {
-    const QString idA = m_document->selectedId(TakeSlot::A);
+    const TakeId idA = m_document->selectedId(TakeSlot::A);
     const TakePointer takeA = m_document->selectedTake(TakeSlot::A);
     const bool designed = m_design->showsBoundariesOn(idA);
     std::vector<double> boundaries;

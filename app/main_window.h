@@ -8,6 +8,7 @@
 #include "app/video_export.h"
 #include "app/view_state.h"
 
+#include <QHash>
 #include <QMainWindow>
 
 #include <map>
@@ -140,6 +141,8 @@ private:
     widgets::TimelineWidget* m_timeline = nullptr;
     widgets::InspectorWidget* m_inspector = nullptr;
     widgets::CorpusBrowser* m_browser = nullptr;
+    /// The browser's entry keys (the ids' text) and the ids they stand for.
+    QHash<QString, TakeId> m_browserIds;
     ViewportPanel* m_viewportPanel = nullptr;
     AnalysisController* m_analysis = nullptr;
     DesignController* m_design = nullptr;

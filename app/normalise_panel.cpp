@@ -36,9 +36,9 @@ namespace pl = analysis::pipeline;
 /// The corpus cell of take A ("function/emotion"), empty when A is not a corpus take.
 std::pair<std::string, std::string> cellOfTakeA(const Document& document)
 {
-    const QString id = document.selectedId(TakeSlot::A);
+    const TakeId id = document.selectedId(TakeSlot::A);
     const TakePointer take = document.take(id);
-    if (!take || !Document::isCorpusTakeId(id)) return {};
+    if (!take || !id.isCorpus()) return {};
     return {take->labels.function, take->labels.emotion};
 }
 
@@ -212,7 +212,7 @@ NormalisePanel::~NormalisePanel() = default;
 
 TakePointer NormalisePanel::normalisedTake() const
 {
-    return m_analysis.normalised() ? m_document.take(Document::liveTakeId(QStringLiteral("normalised"))) : nullptr;
+    return m_analysis.normalised() ? m_document.take(TakeId::live(QStringLiteral("normalised"))) : nullptr;
 }
 
 QString NormalisePanel::summaryText() const { return m_summary->text(); }

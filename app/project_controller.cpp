@@ -21,7 +21,7 @@ ProjectController::ProjectController(Document& document, FileController& files)
 {
     connect(&document, &Document::derivedTakesChanged, this, &ProjectController::showPendingLiveTakes);
     connect(&document, &Document::selectionChanged, this, [this](TakeSlot slot) {
-        if (!m_applying) m_pending[int(slot)].clear(); // the user chose another take meanwhile
+        if (!m_applying) m_pending[int(slot)] = {}; // the user chose another take meanwhile
     });
     connect(&files.corpora(), &CorpusController::corpusOpened, this, [this] { m_projectPath.clear(); });
     m_openProject = new QAction(tr("Open &Project..."), this);
@@ -81,8 +81,8 @@ ProjectState ProjectController::captureState() const
 
 bool ProjectController::applyState(const ProjectState& state)
 {
-    m_pending[0].clear();
-    m_pending[1].clear();
+    m_pending[0] = {};
+    m_pending[1] = {};
     m_applying = true;
     const bool applied = applyStateNow(state);
     m_applying = false;
@@ -94,8 +94,8 @@ void ProjectController::showPendingLiveTakes()
     bool shown = false;
     for (int slot = 0; slot < 2; ++slot) {
         if (m_pending[slot].isEmpty() || !m_document.take(m_pending[slot])) continue;
-        const QString id = m_pending[slot];
-        m_pending[slot].clear();
+        const TakeId id = m_pending[slot];
+        m_pending[slot] = {};
         m_applying = true; // the project's own selection: do not drop the other pending slot
         m_document.selectTake(TakeSlot(slot), id);
         m_applying = false;
@@ -140,15 +140,15 @@ bool ProjectController::applyStateNow(const ProjectState& state)
             continue;
         }
         imported.push_back(DerivedTake{m_document.nextImportedId(), recipe.label,
-                                       std::make_shared<const analysis::Take>(std::move(take).value()), recipe.path, QString(),
+                                       std::make_shared<const analysis::Take>(std::move(take).value()), recipe.path, TakeId(),
                                        std::make_shared<const analysis::io::ImportOptions>(recipe.options), nullptr, {}});
     }
     m_document.restoreProject(std::move(imported), state.parameters);
     // Live results are recomputed after opening: a live take shown as A or B is awaited and
     // shown when published (showPendingLiveTakes); until then A keeps the corpus's first take.
-    const QString ids[2] = {state.takeA, state.takeB};
+    const TakeId ids[2] = {state.takeA, state.takeB};
     for (int slot = 0; slot < 2; ++slot) {
-        if (Document::isLiveTakeId(ids[slot]) && !m_document.take(ids[slot]))
+        if (ids[slot].isLive() && !m_document.take(ids[slot]))
             m_pending[slot] = ids[slot];
         else
             m_document.selectTake(TakeSlot(slot), ids[slot]);

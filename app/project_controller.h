@@ -52,7 +52,7 @@ public:
     QString projectPath() const { return m_projectPath; }
     /// The live take ("live/...") an opened project showed in `slot` and that is still being
     /// recomputed: it is shown as soon as it is published. Empty when none is awaited.
-    QString pendingLiveTake(TakeSlot slot) const { return m_pending[int(slot)]; }
+    TakeId pendingLiveTake(TakeSlot slot) const { return m_pending[int(slot)]; }
 
     QAction* openProjectAction() const { return m_openProject; }
     QAction* saveProjectAction() const { return m_save; }
@@ -68,7 +68,7 @@ private:
     Document& m_document;
     FileController& m_files;
     QString m_projectPath;
-    QString m_pending[2];       ///< awaited live takes per slot (see pendingLiveTake)
+    TakeId m_pending[2];        ///< awaited live takes per slot (see pendingLiveTake)
     double m_pendingTime = 0.0; ///< the project's time, applied when an awaited take appears
     bool m_applying = false;    ///< inside applyState: selections are the project's own
     QStringList m_unreadTakes;  ///< the last opened project's imported takes that could not be read, with why

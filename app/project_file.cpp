@@ -13,7 +13,9 @@
 #include <QRegularExpression>
 
 #include <filesystem>
+#include <optional>
 #include <string_view>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -186,10 +188,17 @@ json upgradeVersion1(const json& flat)
     return p;
 }
 
-bool validTakeId(const QString& id)
+/// The take id spelt `text` (TakeId::toString()'s "corpus/N", "imported/N", "live/name"; empty:
+/// no take); nothing when it is none of these. The one place that reads an id's text.
+std::optional<TakeId> parseTakeId(const QString& text)
 {
-    static const QRegularExpression pattern(QStringLiteral("^(corpus/\\d{1,9}|imported/\\d{1,9}|live/[a-z]{1,32})$"));
-    return id.isEmpty() || pattern.match(id).hasMatch();
+    if (text.isEmpty()) return TakeId();
+    static const QRegularExpression pattern(QStringLiteral("^(?:corpus/(\\d{1,9})|imported/(\\d{1,9})|live/([a-z]{1,32}))$"));
+    const QRegularExpressionMatch match = pattern.match(text);
+    if (!match.hasMatch()) return std::nullopt;
+    if (match.hasCaptured(1)) return TakeId::corpus(match.captured(1).toULongLong());
+    if (match.hasCaptured(2)) return TakeId::imported(match.captured(2).toULongLong());
+    return TakeId::live(match.captured(3));
 }
 
 } // namespace
@@ -208,8 +217,8 @@ analysis::Status writeProject(const ProjectState& state, const QString& file)
     }
     root["imported"] = imported;
     root["parameters"] = QJsonDocument::fromJson(QByteArray::fromStdString(analysis::pipeline::toJson(state.parameters).dump())).object();
-    root["takeA"] = state.takeA;
-    root["takeB"] = state.takeB;
+    root["takeA"] = state.takeA.toString();
+    root["takeB"] = state.takeB.toString();
     root["time_s"] = state.timeSeconds;
     root["view"] = viewJson(state.view);
 
@@ -276,13 +285,14 @@ analysis::Result<ProjectState> parseProject(const QByteArray& text, const QStrin
     if (!typed) return typed.error();
     state.parameters = std::move(typed).value();
 
-    for (const char* key : {"takeA", "takeB"}) {
+    for (auto [key, id] : {std::pair{"takeA", &state.takeA}, std::pair{"takeB", &state.takeB}}) {
         const QJsonValue value = root[key];
-        if (!value.isUndefined() && !value.isNull() && (!value.isString() || !validTakeId(value.toString())))
-            return parseError(name, 0, std::string("expected \"") + key + "\": a take id (corpus/N, imported/N or live/name)");
+        const std::optional<TakeId> read = value.isUndefined() || value.isNull() ? TakeId()
+                                           : value.isString()                    ? parseTakeId(value.toString())
+                                                                                 : std::nullopt;
+        if (!read) return parseError(name, 0, std::string("expected \"") + key + "\": a take id (corpus/N, imported/N or live/name)");
+        *id = *read;
     }
-    state.takeA = root["takeA"].toString();
-    state.takeB = root["takeB"].toString();
     const QJsonValue time = root["time_s"];
     if (!time.isUndefined() && (!time.isDouble() || !std::isfinite(time.toDouble()) || time.toDouble() < 0.0 || time.toDouble() > 1e9))
         return parseError(name, 0, "expected \"time_s\": seconds in [0, 1e9]");

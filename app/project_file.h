@@ -17,6 +17,7 @@
 #include "analysis/core/result.h"
 #include "analysis/io/take_reader.h"
 #include "analysis/pipeline/stage_parameters.h"
+#include "app/take_id.h"
 #include "app/view_state.h"
 
 #include <QByteArray>
@@ -37,8 +38,8 @@ struct ProjectState {
     QString corpus; ///< "demo" or the corpus folder
     QVector<ImportedTakeRecipe> imported;
     analysis::pipeline::ChainParameters parameters;
-    QString takeA;
-    QString takeB;
+    TakeId takeA;
+    TakeId takeB;
     double timeSeconds = 0.0;
     ViewState view;
 };

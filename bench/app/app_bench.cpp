@@ -55,7 +55,7 @@ app::MainWindow& window()
 {
     if (!g_window) g_window = [] {
         auto made = bench::shownDemoWindow();
-        made->document().selectTake(app::TakeSlot::B, app::Document::corpusTakeId(7));
+        made->document().selectTake(app::TakeSlot::B, app::TakeId::corpus(7));
         made->graphPanel()->setTwoTakeMode(widgets::TwoTakeMode::SideBySide);
         (void)QTest::qWaitFor([&] { return made->design().ready(); }, 60000);
         waitIdle(*made);
@@ -74,7 +74,7 @@ widgets::GraphGrid& standaloneGrid()
     if (!g_grid) g_grid = [] {
         auto made = std::make_unique<widgets::GraphGrid>();
         const auto& document = window().document();
-        made->setTakes(document.take(app::Document::corpusTakeId(0)), document.take(app::Document::corpusTakeId(7)));
+        made->setTakes(document.take(app::TakeId::corpus(0)), document.take(app::TakeId::corpus(7)));
         made->setTwoTakeMode(widgets::TwoTakeMode::SideBySide);
         made->resize(1200, 900);
         made->show();
@@ -139,7 +139,7 @@ render::SceneContent demoScene()
     render::SceneContent scene;
     scene.body = analysis::defaultBodyDescription();
     const auto& document = window().document();
-    for (std::size_t index : {0, 7}) scene.takes.push_back(render::TakeSlot{*document.take(app::Document::corpusTakeId(index)), {}});
+    for (std::size_t index : {0, 7}) scene.takes.push_back(render::TakeSlot{*document.take(app::TakeId::corpus(index)), {}});
     return scene;
 }
 
@@ -231,8 +231,8 @@ void warpDragStepToResult(benchmark::State& state)
     auto& main = window();
     auto& design = main.design();
     showView(main, state.range(0) != 0);
-    main.document().selectTake(app::TakeSlot::A, QStringLiteral("live/designed"));
-    main.document().selectTake(app::TakeSlot::B, QString()); // 24 graphs, the original as ghost
+    main.document().selectTake(app::TakeSlot::A, app::TakeId::live(QStringLiteral("designed")));
+    main.document().selectTake(app::TakeSlot::B, {}); // 24 graphs, the original as ghost
     waitIdle(main);
     // Every run drags the same point of the same curve (the curve as first found; a run that
     // started where the previous one left the point could clamp every step to no change).
@@ -282,12 +282,12 @@ BENCHMARK(warpDragStepToResult)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond);
 /// its skeleton (`skeleton` true) or as the puppet. False when the file is missing.
 bool showBandaiAsB(app::MainWindow& main, bool skeleton)
 {
-    static QString id;
+    static app::TakeId id;
     if (id.isEmpty()) {
         const auto file = std::filesystem::path(BUNRAKU_SHARED_DIR) / "data" / "bandai" / "bye_angry_001.bvh";
         if (!main.files().imports().importTakeFile(QString::fromStdString(file.string()))) return false;
         for (const auto& derived : main.document().derivedTakes())
-            if (derived.id.startsWith(QStringLiteral("imported/"))) id = derived.id;
+            if (derived.id.isImported()) id = derived.id;
     }
     main.document().selectTake(app::TakeSlot::B, id);
     QComboBox* figure = main.viewportPanel()->figureBox(1);
@@ -337,7 +337,7 @@ void warpDragStepBesideSkeleton(benchmark::State& state)
 {
     auto& main = window();
     auto& design = main.design();
-    main.document().selectTake(app::TakeSlot::A, QStringLiteral("live/designed"));
+    main.document().selectTake(app::TakeSlot::A, app::TakeId::live(QStringLiteral("designed")));
     if (!showBandaiAsB(main, state.range(0) != 0)) {
         state.SkipWithError("Bandai take not found");
         return;
@@ -347,7 +347,7 @@ void warpDragStepBesideSkeleton(benchmark::State& state)
     dragWarpPoint(state, main, base);
     const auto* view = main.viewportPanel()->viewport();
     state.counters["skeleton_drawn"] = view->renderer() && view->renderer()->takeCount() > 1 && view->renderer()->skeletonDrawn(1) ? 1 : 0;
-    main.document().selectTake(app::TakeSlot::B, QString());
+    main.document().selectTake(app::TakeSlot::B, {});
     waitIdle(main);
 }
 BENCHMARK(warpDragStepBesideSkeleton)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond);
@@ -393,7 +393,7 @@ void warpDragStepWholeBody(benchmark::State& state)
         state.SkipWithError("the whole-body Bandai corpus could not be made or designed");
         return;
     }
-    main->document().selectTake(app::TakeSlot::A, QStringLiteral("live/designed"));
+    main->document().selectTake(app::TakeSlot::A, app::TakeId::live(QStringLiteral("designed")));
     main->graphPanel()->setGraphLayout(state.range(1) != 0 ? widgets::GraphLayout::AllChannels : widgets::GraphLayout::OnePart);
     showView(*main, state.range(0) != 0);
     static const analysis::WarpCurve base = main->design().warpCurve();
@@ -407,7 +407,7 @@ BENCHMARK(warpDragStepWholeBody)->ArgNames({"view", "all_channels"})->Args({1, 0
 void playbackFrameBesideSkeleton(benchmark::State& state)
 {
     auto& main = window();
-    main.document().selectTake(app::TakeSlot::A, app::Document::corpusTakeId(0));
+    main.document().selectTake(app::TakeSlot::A, app::TakeId::corpus(0));
     if (!showBandaiAsB(main, state.range(0) != 0)) {
         state.SkipWithError("Bandai take not found");
         return;
@@ -424,7 +424,7 @@ void playbackFrameBesideSkeleton(benchmark::State& state)
     state.counters["graphs"] = main.graphPanel()->grid()->graphCount();
     state.counters["view_frames"] = double(view->renderedFrameCount() - framesBefore) / double(state.iterations());
     state.counters["skeleton_drawn"] = view->renderer() && view->renderer()->takeCount() > 1 && view->renderer()->skeletonDrawn(1) ? 1 : 0;
-    main.document().selectTake(app::TakeSlot::B, app::Document::corpusTakeId(7));
+    main.document().selectTake(app::TakeSlot::B, app::TakeId::corpus(7));
     waitIdle(main);
 }
 BENCHMARK(playbackFrameBesideSkeleton)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond);

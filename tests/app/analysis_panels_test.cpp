@@ -42,7 +42,7 @@ std::unique_ptr<app::MainWindow> windowWithWeightedFriendlyTake()
 {
     auto window = test::demoWindow();
     if (!window) return nullptr;
-    window->document().selectTake(TakeSlot::A, app::Document::corpusTakeId(7)); // a friendly take
+    window->document().selectTake(TakeSlot::A, app::TakeId::corpus(7)); // a friendly take
     auto* panel = window->emotionPanel();
     if (!QTest::qWaitFor([&] { return panel->ready() && panel->weightedTake(); }, 60000)) return nullptr;
     return window;
@@ -86,7 +86,7 @@ TEST_CASE("the emotion weight slider re-synthesises y + a z live as one undo ste
     auto& document = window->document();
     // The shown take is the weighted body's motion; its per-channel result (the thesis's
     // x = y + a z) is kept beside it.
-    const auto perChannel = [&] { return document.perChannelGhostOf(QStringLiteral("live/weighted")); };
+    const auto perChannel = [&] { return document.perChannelGhostOf(app::TakeId::live(QStringLiteral("weighted"))); };
     REQUIRE(perChannel());
     const Eigen::MatrixXd atOne = perChannel()->values;
 
@@ -97,8 +97,8 @@ TEST_CASE("the emotion weight slider re-synthesises y + a z live as one undo ste
     REQUIRE(document.undoStack()->count() == 1);
     REQUIRE(document.parameters().design.emotionWeight == Approx(2.0));
     const Eigen::MatrixXd atTwo = perChannel()->values;
-    REQUIRE(document.take(QStringLiteral("live/weighted")) == panel->weightedTake());
-    REQUIRE(document.take(QStringLiteral("live/weighted"))->values == analysis::bodyTake(*document.take(QStringLiteral("live/weighted"))).values);
+    REQUIRE(document.take(app::TakeId::live(QStringLiteral("weighted"))) == panel->weightedTake());
+    REQUIRE(document.take(app::TakeId::live(QStringLiteral("weighted")))->values == analysis::bodyTake(*document.take(app::TakeId::live(QStringLiteral("weighted")))).values);
 
     slider->setValue(0);
     const Eigen::MatrixXd atZero = perChannel() ? perChannel()->values : panel->weightedTake()->values;
@@ -190,13 +190,13 @@ TEST_CASE("Show weighted as A shows the weighted take, which follows the weight 
     // While shown, a new weight replaces it once (the replacement announces a new selection,
     // which must not synthesise it again), and A shows the new one.
     int replaced = 0;
-    QObject::connect(&document, &app::Document::takeChanged, [&](const QString& id) { replaced += id == QStringLiteral("live/weighted"); });
+    QObject::connect(&document, &app::Document::takeChanged, [&](const app::TakeId& id) { replaced += id == QStringLiteral("live/weighted"); });
     panel->weightSlider()->setValue(200);
     CHECK(replaced == 1);
     CHECK(document.selectedId(TakeSlot::A) == QStringLiteral("live/weighted"));
     CHECK(document.selectedTake(TakeSlot::A) == panel->weightedTake());
     CHECK(document.selectedTake(TakeSlot::A) != atOne);
-    CHECK(document.takeLabel(QStringLiteral("live/weighted")).contains(QStringLiteral("a=2.00")));
+    CHECK(document.takeLabel(app::TakeId::live(QStringLiteral("weighted"))).contains(QStringLiteral("a=2.00")));
 }
 
 TEST_CASE("chapter 4 defaults to the thesis: KM2O on the normalised takes with M chosen by P", "[app][emotion]")
@@ -205,7 +205,7 @@ TEST_CASE("chapter 4 defaults to the thesis: KM2O on the normalised takes with M
     REQUIRE(window);
     auto* panel = window->emotionPanel();
     auto& document = window->document();
-    document.selectTake(TakeSlot::A, app::Document::corpusTakeId(7));
+    document.selectTake(TakeSlot::A, app::TakeId::corpus(7));
     REQUIRE(idle(*window));
     REQUIRE(panel->decomposedMethod() == QStringLiteral("km2o"));
     const auto decomposed = window->analysis().decomposed();
@@ -280,7 +280,7 @@ TEST_CASE("the Emotion dock says KM2O is not estimable on the Bandai bye takes a
     const auto& takes = document.corpus().takes;
     const auto happy = std::find_if(takes.begin(), takes.end(), [](const analysis::Take& t) { return t.labels.emotion == "happy"; });
     REQUIRE(happy != takes.end());
-    document.selectTake(TakeSlot::A, app::Document::corpusTakeId(std::size_t(happy - takes.begin())));
+    document.selectTake(TakeSlot::A, app::TakeId::corpus(std::size_t(happy - takes.begin())));
     REQUIRE(idle(*window));
     auto* panel = window->emotionPanel();
     REQUIRE(QTest::qWaitFor([&] { return panel->weightedTake() != nullptr; }, 60000));
@@ -354,13 +354,13 @@ TEST_CASE("the analysis docks say they analyse the corpus while take A is an imp
         CHECK_FALSE(notice->isVisibleTo(notice->parentWidget()));
     }
     REQUIRE(window->files().imports().importTakeFile(QString::fromStdString(file.string())));
-    REQUIRE(window->document().selectedId(TakeSlot::A).startsWith(QStringLiteral("imported/")));
+    REQUIRE(window->document().selectedId(TakeSlot::A).isImported());
     for (QLabel* notice : notices()) {
         CHECK(notice->isVisibleTo(notice->parentWidget()));
         CHECK(notice->text().contains(QStringLiteral("Take A (bye_angry_001.bvh) is imported beside the corpus")));
         CHECK(notice->text().contains(QStringLiteral("the demo corpus (30 takes)")));
         CHECK(notice->text().contains(QStringLiteral("File &gt; New Corpus from Files")));
     }
-    window->document().selectTake(TakeSlot::A, app::Document::corpusTakeId(2));
+    window->document().selectTake(TakeSlot::A, app::TakeId::corpus(2));
     for (QLabel* notice : notices()) CHECK_FALSE(notice->isVisibleTo(notice->parentWidget()));
 }

@@ -9,6 +9,7 @@
 #include "app/stage_scheduler.h"
 #include "app/viewport_panel.h"
 
+#include "tests/app/take_id_text.h"
 #include "tests/support/test_paths.h"
 
 #include <QCoreApplication>

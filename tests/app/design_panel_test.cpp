@@ -75,7 +75,7 @@ TEST_CASE("the design is prepared in the background and the designed take is lis
     REQUIRE(window);
     REQUIRE(waitForDesign(*window));
     INFO(window->analysis().scheduler().error(app::AnalysisController::kAxesSlot).toStdString());
-    const auto designed = window->document().take(QStringLiteral("live/designed"));
+    const auto designed = window->document().take(app::TakeId::live(QStringLiteral("designed")));
     REQUIRE(designed);
     const auto source = window->document().take(window->design().sourceId());
     REQUIRE(source->labels.emotion == "none");
@@ -262,13 +262,13 @@ TEST_CASE("phrase marks of takes other than the design's cannot be dragged", "[a
     REQUIRE(waitForDesign(*window));
     auto& design = window->design();
     for (std::size_t i = 0; i < window->document().corpus().takes.size(); ++i) {
-        const QString id = app::Document::corpusTakeId(i);
+        const app::TakeId id = app::TakeId::corpus(i);
         if (id == design.sourceId()) continue;
         window->document().selectTake(TakeSlot::A, id);
         break;
     }
     REQUIRE_FALSE(window->timeline()->scrubBar()->boundariesEditable());
-    window->document().selectTake(TakeSlot::A, QStringLiteral("live/designed"));
+    window->document().selectTake(TakeSlot::A, app::TakeId::live(QStringLiteral("designed")));
     REQUIRE(window->timeline()->scrubBar()->boundariesEditable());
 }
 
@@ -453,7 +453,7 @@ TEST_CASE("on the warped designed take the ticks sit at the inverse-warped bound
     for (auto& point : curve.points) point.source = last * std::pow(point.output / last, 1.5);
     REQUIRE(analysis::validateWarpCurve(curve).ok());
     design.editWarp(curve);
-    document.selectTake(TakeSlot::A, QStringLiteral("live/designed"));
+    document.selectTake(TakeSlot::A, app::TakeId::live(QStringLiteral("designed")));
     auto* bar = window->timeline()->scrubBar();
     REQUIRE(bar->boundariesEditable());
     const auto boundaries = design.boundaries();
@@ -678,10 +678,10 @@ TEST_CASE("a warp drag on the designed take shown as A replaces the take, not th
     auto* editor = shownWarpEditor(*window);
     REQUIRE(editor);
     auto& document = window->document();
-    document.selectTake(TakeSlot::A, QStringLiteral("live/designed"));
+    document.selectTake(TakeSlot::A, app::TakeId::live(QStringLiteral("designed")));
     REQUIRE(waitForDesign(*window));
     document.setCurrentTime(1.0);
-    const auto weighted = document.take(QStringLiteral("live/weighted"));
+    const auto weighted = document.take(app::TakeId::live(QStringLiteral("weighted")));
     REQUIRE(weighted);
     auto* grid = window->graphPanel()->grid();
     const int graphs = grid->graphCount();
@@ -689,7 +689,7 @@ TEST_CASE("a warp drag on the designed take shown as A replaces the take, not th
     QSignalSpy chosen(&document, &app::Document::selectionChanged);
     QSignalSpy replaced(&document, &app::Document::selectedTakeReplaced);
     std::vector<std::shared_ptr<const analysis::Take>> steps;
-    QObject::connect(&document, &app::Document::takeChanged, [&](const QString& id) {
+    QObject::connect(&document, &app::Document::takeChanged, [&](const app::TakeId& id) {
         if (id == QStringLiteral("live/designed")) steps.push_back(document.take(id));
     });
 
@@ -704,7 +704,7 @@ TEST_CASE("a warp drag on the designed take shown as A replaces the take, not th
     CHECK(replaced.count() == int(steps.size()));
     // Its cell did not change, so neither did the weighted take (it was made again on every
     // step before, on the GUI thread).
-    CHECK(document.take(QStringLiteral("live/weighted")) == weighted);
+    CHECK(document.take(app::TakeId::live(QStringLiteral("weighted"))) == weighted);
     CHECK(document.selectedTake(TakeSlot::A) == steps.back());
     // The graphs keep their layout and show the last step's values at the cursor.
     REQUIRE(grid->graphCount() == graphs);

@@ -1,6 +1,7 @@
 #include "app/commands.h"
 #include "app/document.h"
 
+#include "tests/app/take_id_text.h"
 #include "tests/widgets/synthetic_take.h"
 
 #include <catch2/catch.hpp>
@@ -94,9 +95,9 @@ TEST_CASE("importing a take redoes, undoes and redoes its place and the selectio
 {
     Document document;
     document.setCorpus(smallCorpus(), "synthetic");
-    REQUIRE(document.selectedId(TakeSlot::A) == Document::corpusTakeId(0));
+    REQUIRE(document.selectedId(TakeSlot::A) == TakeId::corpus(0));
     auto* command = new ImportTake(&document, test::syntheticPuppetTake(33), "file.csv", "/tmp/file.csv");
-    const QString id = command->takeId();
+    const TakeId id = command->takeId();
     document.undoStack()->push(command);
     REQUIRE(document.derivedTakes().size() == 1);
     REQUIRE(document.selectedId(TakeSlot::A) == id);
@@ -104,7 +105,7 @@ TEST_CASE("importing a take redoes, undoes and redoes its place and the selectio
     document.undoStack()->undo();
     REQUIRE(document.derivedTakes().empty());
     REQUIRE_FALSE(document.take(id));
-    REQUIRE(document.selectedId(TakeSlot::A) == Document::corpusTakeId(0));
+    REQUIRE(document.selectedId(TakeSlot::A) == TakeId::corpus(0));
     document.undoStack()->redo();
     REQUIRE(document.take(id)->frameCount() == 33);
     REQUIRE(document.selectedId(TakeSlot::A) == id);
@@ -117,7 +118,7 @@ TEST_CASE("removing an imported take is undone back into its place", "[app][comm
     document.setCorpus(smallCorpus(), "synthetic");
     document.undoStack()->push(new ImportTake(&document, test::syntheticPuppetTake(30), "one.csv", "/tmp/one.csv"));
     document.undoStack()->push(new ImportTake(&document, test::syntheticPuppetTake(31), "two.csv", "/tmp/two.csv"));
-    const QString first = document.derivedTakes()[0].id;
+    const TakeId first = document.derivedTakes()[0].id;
     document.undoStack()->push(new RemoveImportedTake(&document, first));
     REQUIRE(document.derivedTakes().size() == 1);
     document.undoStack()->undo();
@@ -131,13 +132,13 @@ TEST_CASE("the current time is clamped to the shown takes and live takes are not
     document.setCorpus(smallCorpus(), "synthetic");
     document.setCurrentTime(100.0);
     REQUIRE(document.currentTime() == Approx(20.0 / 5.0));
-    document.selectTake(TakeSlot::B, Document::corpusTakeId(2));
+    document.selectTake(TakeSlot::B, TakeId::corpus(2));
     REQUIRE(document.duration() == Approx(22.0 / 5.0));
     document.setLiveTake("designed", "designed", test::syntheticPuppetTake(50));
-    REQUIRE(document.take("live/designed")->frameCount() == 50);
+    REQUIRE(document.take(app::TakeId::live(QStringLiteral("designed")))->frameCount() == 50);
     REQUIRE(document.undoStack()->count() == 0);
-    document.selectTake(TakeSlot::A, "no/such/take");
-    REQUIRE(document.selectedId(TakeSlot::A) == Document::corpusTakeId(0));
+    document.selectTake(TakeSlot::A, TakeId::live(QStringLiteral("nosuchtake")));
+    REQUIRE(document.selectedId(TakeSlot::A) == TakeId::corpus(0));
 }
 
 TEST_CASE("consecutive steps of one control are one undo step until the control loses the focus", "[app][commands]")
@@ -187,7 +188,7 @@ TEST_CASE("a project's imported takes and parameters are restored at once, outsi
     document.restoreProject(std::move(imported), parameters);
     CHECK(listed.count() == 1);
     CHECK(changed.count() == 1);
-    CHECK(document.take(QStringLiteral("imported/1")));
+    CHECK(document.take(app::TakeId::imported(1)));
     CHECK(document.parameters().normalise.tau == 7);
     CHECK(document.undoStack()->count() == 0);
 }
@@ -197,7 +198,7 @@ TEST_CASE("a shown live take replaced by a shorter one keeps the current time in
     Document document;
     document.setCorpus(smallCorpus(), QStringLiteral("test"));
     document.setLiveTake(QStringLiteral("axis"), QStringLiteral("long"), test::syntheticPuppetTake(200));
-    document.selectTake(TakeSlot::B, QStringLiteral("live/axis"));
+    document.selectTake(TakeSlot::B, app::TakeId::live(QStringLiteral("axis")));
     document.setCurrentTime(document.duration());
     const double longEnd = document.currentTime();
     QSignalSpy replaced(&document, &Document::selectedTakeReplaced);

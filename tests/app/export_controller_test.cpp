@@ -50,9 +50,9 @@ bool showBandaiTakes(app::MainWindow& window)
         return false;
     REQUIRE(window.files().imports().importTakeFile(QString::fromStdString(normal.string())));
     REQUIRE(window.files().imports().importTakeFile(QString::fromStdString(angry.string())));
-    QStringList imported;
+    QList<app::TakeId> imported;
     for (const auto& derived : window.document().derivedTakes())
-        if (derived.id.startsWith(QStringLiteral("imported/"))) imported << derived.id;
+        if (derived.id.isImported()) imported << derived.id;
     REQUIRE(imported.size() == 2);
     window.document().selectTake(TakeSlot::A, imported[0]);
     window.document().selectTake(TakeSlot::B, imported[1]);
@@ -79,9 +79,9 @@ TEST_CASE("an exported designed take is named short and stable, its recipe kept 
     REQUIRE(window);
     REQUIRE(QTest::qWaitFor([&] { return window->design().designedTake() && !window->analysis().scheduler().busy(); }, 120000));
     auto& document = window->document();
-    document.selectTake(TakeSlot::A, QStringLiteral("live/designed"));
-    const QString recipe = document.takeLabel(QStringLiteral("live/designed"));
-    const QString name = document.takeName(QStringLiteral("live/designed"));
+    document.selectTake(TakeSlot::A, app::TakeId::live(QStringLiteral("designed")));
+    const QString recipe = document.takeLabel(app::TakeId::live(QStringLiteral("designed")));
+    const QString name = document.takeName(app::TakeId::live(QStringLiteral("designed")));
     REQUIRE(recipe.startsWith(QStringLiteral("designed from ")));
     CHECK(recipe.size() > 63);
     const std::string function = window->design().designedTake()->labels.function;
@@ -114,7 +114,7 @@ TEST_CASE("an exported designed take is named short and stable, its recipe kept 
     CHECK(analysis::io::readBvh(dir / "designed.bvh").ok());
 
     // A corpus take: its own name, and no description.
-    document.selectTake(TakeSlot::A, app::Document::corpusTakeId(0));
+    document.selectTake(TakeSlot::A, app::TakeId::corpus(0));
     REQUIRE(window->exports().exportTake(TakeSlot::A, QString::fromStdString((dir / "corpus.glb").string())));
     const auto corpusGltf = glbJson(dir / "corpus.glb");
     CHECK(corpusGltf["animations"][0]["name"] == document.corpus().takes[0].displayName());
@@ -285,7 +285,7 @@ TEST_CASE("a timing designed on a corpus of Bandai waves exports on the performe
     const auto designed = window->design().designedTake();
     REQUIRE(designed);
     REQUIRE(designed->skeleton); // the functional take's whole skeleton, at the designed timing
-    window->document().selectTake(TakeSlot::A, QStringLiteral("live/designed"));
+    window->document().selectTake(TakeSlot::A, app::TakeId::live(QStringLiteral("designed")));
     REQUIRE(window->exports().exportTake(TakeSlot::A, QString::fromStdString((dir / "designed.bvh").string())));
     auto file = analysis::io::readBvh(dir / "designed.bvh");
     REQUIRE(file.ok());

@@ -79,7 +79,7 @@ TEST_CASE("take A exported to BVH re-imports to the same part poses", "[app][fil
     auto window = test::demoWindow();
     REQUIRE(window);
     auto& files = window->files();
-    window->document().selectTake(TakeSlot::A, app::Document::corpusTakeId(4));
+    window->document().selectTake(TakeSlot::A, app::TakeId::corpus(4));
     const auto original = window->document().selectedTake(TakeSlot::A);
     const QString file = scratchFile("export-bvh", "take.bvh");
     REQUIRE(window->exports().exportTake(TakeSlot::A, file));
@@ -117,7 +117,7 @@ TEST_CASE("a saved project reopens to the same state", "[app][files]")
 {
     const QString project = scratchFile("project", "session.bunraku.json");
     const QString takeFile = scratchFile("project-take", "take.csv");
-    QString takeB;
+    app::TakeId takeB;
     {
         auto window = test::demoWindow();
         REQUIRE(window);
@@ -126,8 +126,8 @@ TEST_CASE("a saved project reopens to the same state", "[app][files]")
         REQUIRE(window->files().imports().importTakeFile(takeFile));
         app::changeStageParameters(document, [](app::AnalysisParameters& p) { p.normalise.tau = 6; }, QStringLiteral("tau"));
         app::setEmotionWeight(document, 1.75);
-        takeB = app::Document::corpusTakeId(12);
-        document.selectTake(TakeSlot::A, app::Document::corpusTakeId(3));
+        takeB = app::TakeId::corpus(12);
+        document.selectTake(TakeSlot::A, app::TakeId::corpus(3));
         document.selectTake(TakeSlot::B, takeB);
         document.setCurrentTime(5.4);
         window->graphPanel()->selectPart(QStringLiteral("arm"));
@@ -146,7 +146,7 @@ TEST_CASE("a saved project reopens to the same state", "[app][files]")
     REQUIRE(document.corpusSource() == QStringLiteral("demo"));
     REQUIRE(document.parameters().normalise.tau == 6);
     REQUIRE(document.parameters().design.emotionWeight == 1.75);
-    REQUIRE(document.selectedId(TakeSlot::A) == app::Document::corpusTakeId(3));
+    REQUIRE(document.selectedId(TakeSlot::A) == app::TakeId::corpus(3));
     REQUIRE(document.selectedId(TakeSlot::B) == takeB);
     REQUIRE(document.currentTime() == Approx(5.4));
     REQUIRE(importedTakes(document).size() == 1);
@@ -173,8 +173,8 @@ TEST_CASE("a project saved while live takes are shown reopens showing them once 
         auto& design = window->design();
         design.moveBoundary(0, double(design.boundaries()[1] + 2)); // an edited phrase boundary
         boundaries = design.boundaries();
-        document.selectTake(TakeSlot::A, QStringLiteral("live/designed"));
-        document.selectTake(TakeSlot::B, QStringLiteral("live/weighted"));
+        document.selectTake(TakeSlot::A, app::TakeId::live(QStringLiteral("designed")));
+        document.selectTake(TakeSlot::B, app::TakeId::live(QStringLiteral("weighted")));
         REQUIRE(document.selectedId(TakeSlot::A) == QStringLiteral("live/designed"));
         document.setCurrentTime(2.0);
         REQUIRE(window->files().projects().saveProject(project));
@@ -189,11 +189,11 @@ TEST_CASE("a project saved while live takes are shown reopens showing them once 
                    document.selectedId(TakeSlot::B) == QStringLiteral("live/weighted");
         },
         60000);
-    INFO("A " << document.selectedId(TakeSlot::A).toStdString() << ", B " << document.selectedId(TakeSlot::B).toStdString()
-              << ", pending A " << window->files().projects().pendingLiveTake(TakeSlot::A).toStdString() << ", pending B "
-              << window->files().projects().pendingLiveTake(TakeSlot::B).toStdString() << ", designed "
-              << (document.take(QStringLiteral("live/designed")) != nullptr) << ", weighted "
-              << (document.take(QStringLiteral("live/weighted")) != nullptr));
+    INFO("A " << document.selectedId(TakeSlot::A).toString().toStdString() << ", B " << document.selectedId(TakeSlot::B).toString().toStdString()
+              << ", pending A " << window->files().projects().pendingLiveTake(TakeSlot::A).toString().toStdString() << ", pending B "
+              << window->files().projects().pendingLiveTake(TakeSlot::B).toString().toStdString() << ", designed "
+              << (document.take(app::TakeId::live(QStringLiteral("designed"))) != nullptr) << ", weighted "
+              << (document.take(app::TakeId::live(QStringLiteral("weighted"))) != nullptr));
     REQUIRE(shown);
     REQUIRE(window->files().projects().pendingLiveTake(TakeSlot::A).isEmpty());
     REQUIRE(window->files().projects().pendingLiveTake(TakeSlot::B).isEmpty());
@@ -290,6 +290,58 @@ TEST_CASE("projects with out-of-range parameters, take ids, times or view values
     REQUIRE(p.design.gain(1, 2));
     CHECK(p.design.gain(1, 2)->g1 == 2.0);
     CHECK(p.decompose.method == analysis::pipeline::DecomposeMethod::LeastSquares); // as version 1 decomposed
+}
+
+TEST_CASE("a take id is written as its text and read back by the project file as the same id", "[app][files][ids]")
+{
+    using app::TakeId;
+    // The values: kind, index and name, and ids of different kinds are different ids.
+    CHECK(TakeId::corpus(3).kind() == TakeId::Kind::Corpus);
+    CHECK(TakeId::corpus(3).index() == 3);
+    CHECK(TakeId::imported(2).kind() == TakeId::Kind::Imported);
+    CHECK(TakeId::live(QStringLiteral("designed")).name() == QStringLiteral("designed"));
+    CHECK(TakeId().isEmpty());
+    CHECK(TakeId::corpus(1) != TakeId::imported(1));
+    CHECK(TakeId::live(QStringLiteral("axis")) != TakeId::live(QStringLiteral("kimono")));
+    CHECK(TakeId::corpus(0) != TakeId());
+
+    // Each id is written as its text and read back as the same id.
+    const QString file = scratchFile("take-ids", "ids.bunraku.json");
+    const std::vector<std::pair<TakeId, std::string>> ids{
+        {TakeId::corpus(0), "corpus/0"},           {TakeId::corpus(123456789), "corpus/123456789"},
+        {TakeId::imported(1), "imported/1"},       {TakeId::imported(42), "imported/42"},
+        {TakeId::live(QStringLiteral("designed")), "live/designed"},
+        {TakeId::live(QStringLiteral("kimono")), "live/kimono"},
+        {TakeId(), ""},
+    };
+    for (const auto& [id, text] : ids) {
+        INFO(text);
+        app::ProjectState state;
+        state.corpus = QStringLiteral("demo");
+        state.takeA = id;
+        state.takeB = TakeId::live(QStringLiteral("weighted"));
+        REQUIRE(app::writeProject(state, file).ok());
+        QFile written(file);
+        REQUIRE(written.open(QIODevice::ReadOnly));
+        const auto root = nlohmann::json::parse(written.readAll().toStdString());
+        CHECK(root["takeA"] == text);
+        CHECK(root["takeB"] == "live/weighted");
+        const auto read = app::readProject(file);
+        REQUIRE(read.ok());
+        CHECK(read->takeA == id);
+        CHECK(read->takeB == TakeId::live(QStringLiteral("weighted")));
+    }
+
+    // Text that names no take is refused with the key it was found under.
+    for (const std::string bad : {R"("corpus/x")", R"("corpus/")", R"("corpus/1/2")", R"("live/Designed")", R"("live/")",
+                                  R"("imported/1234567890")", R"("Corpus/1")", R"(" corpus/1")", "5", "[]"}) {
+        INFO(bad);
+        const std::string text = R"({"format": "bunraku-project", "version": 2, "corpus": "demo", "takeB": )" + bad + "}";
+        const auto read = app::parseProject(QByteArray::fromStdString(text), QStringLiteral("ids.bunraku.json"));
+        REQUIRE_FALSE(read.ok());
+        CHECK(read.error().message.find("takeB") != std::string::npos);
+        CHECK(read.error().message.find("a take id (corpus/N, imported/N or live/name)") != std::string::npos);
+    }
 }
 
 TEST_CASE("a project whose imported takes cannot be read opens saying which takes and why", "[app][files]")
@@ -514,13 +566,13 @@ TEST_CASE("a corpus opened again while it is open is analysed again: its weighte
     REQUIRE(test::waitUntilIdle(*window));
     const auto derivedIds = [&] {
         QStringList ids;
-        for (const auto& derived : window->document().derivedTakes()) ids << derived.id;
+        for (const auto& derived : window->document().derivedTakes()) ids << derived.id.toString();
         ids.sort(); // published in the order the stages finish
         return ids.join(QStringLiteral(", ")).toStdString();
     };
     REQUIRE(window->analysis().decomposed());
     const std::string before = derivedIds();
-    REQUIRE(before.find(app::Document::liveTakeId(QStringLiteral("weighted")).toStdString()) != std::string::npos);
+    REQUIRE(before.find(app::TakeId::live(QStringLiteral("weighted")).toString().toStdString()) != std::string::npos);
     // The demo corpus again, then a corpus folder opened twice.
     REQUIRE(window->files().corpora().openDemoCorpus());
     REQUIRE(test::waitUntilIdle(*window));

@@ -89,7 +89,7 @@ TEST_CASE("the File's mesh figure is offered for a take whose file carries one a
     CHECK(meshItemEnabled(figure));
     CHECK(window->viewportPanel()->viewport()->visibility().figures[0] == render::FigureStyle::FileMesh);
     // A take without a mesh: the skeleton (or its puppet), and the view says why.
-    window->document().selectTake(TakeSlot::A, app::Document::corpusTakeId(3));
+    window->document().selectTake(TakeSlot::A, app::TakeId::corpus(3));
     CHECK_FALSE(meshItemEnabled(figure));
     CHECK(window->viewportPanel()->viewport()->visibility().figures[0] == render::FigureStyle::Skeleton);
     auto* label = window->findChild<QLabel*>("skeletonGap");

@@ -469,7 +469,7 @@ TEST_CASE("six BVH files imported at once ask one dialog for all of them and imp
         files << QString::fromStdString(path.string());
     const auto importedCount = [&window] {
         return std::count_if(window->document().derivedTakes().begin(), window->document().derivedTakes().end(),
-                             [](const app::DerivedTake& take) { return take.id.startsWith(QStringLiteral("imported/")); });
+                             [](const app::DerivedTake& take) { return take.id.isImported(); });
     };
     const auto importedBefore = importedCount();
     window->files().setDialogsEnabled(true);

@@ -28,7 +28,7 @@ std::vector<const app::DerivedTake*> importedTakes(const app::Document& document
 {
     std::vector<const app::DerivedTake*> out;
     for (const auto& derived : document.derivedTakes())
-        if (derived.id.startsWith(QStringLiteral("imported/"))) out.push_back(&derived);
+        if (derived.id.isImported()) out.push_back(&derived);
     return out;
 }
 
@@ -125,7 +125,7 @@ TEST_CASE("File > Import Take reads a long BVH off the GUI thread, and Cancel ha
     REQUIRE(window);
     REQUIRE(test::waitUntilIdle(*window));
     const auto file = longTakeFile("app_import_cancel");
-    const QString shownBefore = window->document().selectedId(app::TakeSlot::A);
+    const app::TakeId shownBefore = window->document().selectedId(app::TakeSlot::A);
     const auto takesBefore = importedTakes(window->document()).size();
     const int undoBefore = window->document().undoStack()->count();
 
@@ -200,7 +200,7 @@ TEST_CASE("a project holding a long imported take reopens behind the progress di
     REQUIRE(window->files().projects().saveProject(QString::fromStdString(project.string())));
     REQUIRE(window->files().corpora().openDemoCorpus());
     REQUIRE(importedTakes(window->document()).empty());
-    const QString shownBefore = window->document().selectedId(app::TakeSlot::A);
+    const app::TakeId shownBefore = window->document().selectedId(app::TakeSlot::A);
 
     CancelAtFirstProgress cancel(window.get());
     window->files().setProgressOptionsForTesting(cancel.options());

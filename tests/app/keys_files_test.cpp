@@ -330,8 +330,8 @@ TEST_CASE("file dialogs start in the folder last used for their purpose, with a 
     menuAction(*window, QStringLiteral("Export Report"))->trigger();
     CHECK(asked.back().second == shots + QStringLiteral("/demo-report.html"));
     // The next screenshot goes back to the screenshots' folder, named after the take shown now.
-    window->document().selectTake(app::TakeSlot::A, app::Document::corpusTakeId(7));
-    const QString other = window->document().takeLabel(app::Document::corpusTakeId(7)).replace(QLatin1Char('/'), QLatin1Char('-'));
+    window->document().selectTake(app::TakeSlot::A, app::TakeId::corpus(7));
+    const QString other = window->document().takeLabel(app::TakeId::corpus(7)).replace(QLatin1Char('/'), QLatin1Char('-'));
     answer.clear(); // cancelled
     menuAction(*window, QStringLiteral("Save Screenshot"))->trigger();
     CHECK(asked.back().second == shots + QStringLiteral("/demo-") + other + QStringLiteral(".png"));
@@ -361,10 +361,10 @@ TEST_CASE("File > Export Take A (Ctrl+E) suggests a name from the take and opens
     auto& asked = chooser.asked;
     auto& answer = chooser.answer;
     const auto named = [&](int take) {
-        return QStringLiteral("demo-") + window->document().takeLabel(app::Document::corpusTakeId(take)).replace(QLatin1Char('/'), QLatin1Char('-')) +
+        return QStringLiteral("demo-") + window->document().takeLabel(app::TakeId::corpus(take)).replace(QLatin1Char('/'), QLatin1Char('-')) +
                QStringLiteral(".bvh");
     };
-    window->document().selectTake(app::TakeSlot::A, app::Document::corpusTakeId(3));
+    window->document().selectTake(app::TakeSlot::A, app::TakeId::corpus(3));
     // Ctrl+E, as a user presses it.
     window->activateWindow();
     REQUIRE(QTest::qWaitForWindowActive(window.get()));
@@ -375,7 +375,7 @@ TEST_CASE("File > Export Take A (Ctrl+E) suggests a name from the take and opens
     CHECK(asked.back().second == QDir(QDir::homePath()).filePath(named(3))); // nothing chosen yet: home, a name of the take
     CHECK(QFileInfo::exists(answer));
     // The second export starts in the folder of the first, named after the take shown now.
-    window->document().selectTake(app::TakeSlot::A, app::Document::corpusTakeId(5));
+    window->document().selectTake(app::TakeSlot::A, app::TakeId::corpus(5));
     answer.clear(); // cancelled: nothing written
     press(*window, Qt::Key_E, Qt::ControlModifier);
     REQUIRE(asked.size() == 2);

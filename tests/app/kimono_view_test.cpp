@@ -46,8 +46,8 @@ TEST_CASE("the Cloth box and Cloth Settings dress the view and a project keeps t
         CHECK((panel->drawnKimonos()[0]->points.array() == truth->points.array()).all());
         // The measured points graphed: the "kimono" take shown as A fills the Graphs dock with
         // its 18 channels, values in cm, the moving points at the simulation's values.
-        const QString original = window->document().selectedId(TakeSlot::A);
-        window->document().selectTake(TakeSlot::A, QStringLiteral("live/kimono"));
+        const app::TakeId original = window->document().selectedId(TakeSlot::A);
+        window->document().selectTake(TakeSlot::A, app::TakeId::live(QStringLiteral("kimono")));
         widgets::GraphGrid* grid = window->graphPanel()->grid();
         REQUIRE(grid->graphCount() == 18);
         CHECK(grid->graphValueLabel(0) == QStringLiteral("cm"));

@@ -37,12 +37,12 @@ bool idle(app::MainWindow& window)
 }
 
 /// The id of corpus take function/emotion/index.
-QString takeId(const app::Document& document, const std::string& function, const std::string& emotion, int index)
+app::TakeId takeId(const app::Document& document, const std::string& function, const std::string& emotion, int index)
 {
     const auto& takes = document.corpus().takes;
     for (std::size_t i = 0; i < takes.size(); ++i)
         if (takes[i].labels.function == function && takes[i].labels.emotion == emotion && takes[i].labels.takeIndex == index)
-            return app::Document::corpusTakeId(i);
+            return app::TakeId::corpus(i);
     return {};
 }
 
@@ -60,8 +60,8 @@ TEST_CASE("the normalised take's label names its take, reference and parameters,
     auto window = test::demoWindow();
     REQUIRE(window);
     auto& document = window->document();
-    const QString two = takeId(document, "greeting", "none", 2);
-    const QString one = takeId(document, "greeting", "none", 1);
+    const app::TakeId two = takeId(document, "greeting", "none", 2);
+    const app::TakeId one = takeId(document, "greeting", "none", 1);
     document.selectTake(TakeSlot::A, two);
     REQUIRE(idle(*window));
     const auto labelled = [&] { return window->browser()->entryText(QStringLiteral("live/normalised")); };
@@ -75,12 +75,12 @@ TEST_CASE("the normalised take's label names its take, reference and parameters,
     REQUIRE(cell != nullptr);
     const auto position = std::find(cell->takeIndices.begin(), cell->takeIndices.end(), 1) - cell->takeIndices.begin();
     // shown as its body (the per-channel result beside it)
-    CHECK(document.take(QStringLiteral("live/normalised"))->values ==
+    CHECK(document.take(app::TakeId::live(QStringLiteral("normalised")))->values ==
           analysis::bodyTake(cell->normalisations[std::size_t(position)].normalised).values);
-    CHECK(document.perChannelGhostOf(QStringLiteral("live/normalised"))->values == cell->normalisations[std::size_t(position)].normalised.values);
+    CHECK(document.perChannelGhostOf(app::TakeId::live(QStringLiteral("normalised")))->values == cell->normalisations[std::size_t(position)].normalised.values);
 
     // Another tau: once recomputed, the label says tau 5 (and the window title too, with it shown).
-    document.selectTake(TakeSlot::A, QStringLiteral("live/normalised"));
+    document.selectTake(TakeSlot::A, app::TakeId::live(QStringLiteral("normalised")));
     window->normalisePanel()->tauSpin()->setValue(5);
     REQUIRE(QTest::qWaitFor([&] { return labelled().contains(QStringLiteral("tau 5, T_cmp 20")); }, 120000));
     CHECK(window->windowTitle().contains(QStringLiteral("tau 5")));
@@ -206,9 +206,9 @@ TEST_CASE("the designed take's label names its warp, gains and phrases, and the 
     auto& design = window->design();
     document.selectTake(TakeSlot::A, takeId(document, "greeting", "none", 2));
     REQUIRE(idle(*window));
-    REQUIRE(QTest::qWaitFor([&] { return bool(document.take(QStringLiteral("live/designed"))); }, 60000));
-    const auto listed = [&](const QString& id) { return window->browser()->entryText(id); };
-    const QString designed = QStringLiteral("live/designed"), axis = QStringLiteral("live/axis");
+    REQUIRE(QTest::qWaitFor([&] { return bool(document.take(app::TakeId::live(QStringLiteral("designed")))); }, 60000));
+    const auto listed = [&](const app::TakeId& id) { return window->browser()->entryText(id.toString()); };
+    const app::TakeId designed = app::TakeId::live(QStringLiteral("designed")), axis = app::TakeId::live(QStringLiteral("axis"));
     CHECK(listed(designed).startsWith(QStringLiteral("designed from greeting functional (identity warp; no gains; ")));
     CHECK(listed(designed).contains(QStringLiteral("suggested phrase")));
 
@@ -227,9 +227,9 @@ TEST_CASE("the designed take's label names its warp, gains and phrases, and the 
 
     // The designed take as A: its axis is named as it is listed (not "greeting/none/0") and
     // counts its frames.
-    const auto axisNames = [&](const QString& id) {
+    const auto axisNames = [&](const app::TakeId& id) {
         return listed(axis) == QStringLiteral("motion axis of ") + document.takeLabel(id) &&
-               window->browser()->entryFrames(axis) == int(document.take(id)->frameCount());
+               window->browser()->entryFrames(axis.toString()) == int(document.take(id)->frameCount());
     };
     document.selectTake(TakeSlot::A, designed);
     REQUIRE(QTest::qWaitFor([&] { return axisNames(designed); }, 60000));
@@ -244,21 +244,21 @@ TEST_CASE("the designed take's label names its warp, gains and phrases, and the 
 
     // Corpus takes of other lengths in turn: the axis entry's label and frame count follow.
     for (const auto& [emotion, index] : std::vector<std::pair<std::string, int>>{{"hostile", 1}, {"none", 1}, {"friendly", 2}}) {
-        const QString id = takeId(document, "greeting", emotion, index);
+        const app::TakeId id = takeId(document, "greeting", emotion, index);
         REQUIRE(!id.isEmpty());
         document.selectTake(TakeSlot::A, id);
         INFO(document.takeLabel(id).toStdString() << " of " << document.take(id)->frameCount() << " frames");
         REQUIRE(QTest::qWaitFor([&] { return axisNames(id); }, 60000));
-        CHECK(window->browser()->entryFrames(axis) == int(document.take(axis)->frameCount()));
+        CHECK(window->browser()->entryFrames(axis.toString()) == int(document.take(axis)->frameCount()));
     }
 
     // An imported file: named as it is listed (the file's name), not by its full path.
     const auto families = test::bvhFamilies();
     const auto file = test::writeText(dir / "imported-wave.bvh", test::fixtureBvh(families[3], 40));
     REQUIRE(window->files().imports().importTakeFile(QString::fromStdString(file.string())));
-    QString imported;
+    app::TakeId imported;
     for (const auto& derived : document.derivedTakes())
-        if (derived.id.startsWith(QStringLiteral("imported/"))) imported = derived.id;
+        if (derived.id.isImported()) imported = derived.id;
     REQUIRE(!imported.isEmpty());
     document.selectTake(TakeSlot::A, imported);
     REQUIRE(QTest::qWaitFor([&] { return axisNames(imported); }, 60000));

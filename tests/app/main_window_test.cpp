@@ -149,13 +149,13 @@ TEST_CASE("the layouts show 24, 6, 4, 1 graphs and with take B side by side 48, 
         REQUIRE(grid->graphCount() == single[layout]);
     }
     // Choose take B in the corpus browser: select a leaf, press "Show as B".
-    REQUIRE(window->browser()->selectId(app::Document::corpusTakeId(7)));
+    REQUIRE(window->browser()->selectId(app::TakeId::corpus(7).toString()));
     QPushButton* showB = nullptr;
     for (auto* button : window->browser()->findChildren<QPushButton*>())
         if (button->text() == QStringLiteral("Show as B")) showB = button;
     REQUIRE(showB);
     QTest::mouseClick(showB, Qt::LeftButton);
-    REQUIRE(window->document().selectedId(TakeSlot::B) == app::Document::corpusTakeId(7));
+    REQUIRE(window->document().selectedId(TakeSlot::B) == app::TakeId::corpus(7));
 
     const int sideBySide[] = {48, 12, 8, 2};
     for (int layout = 0; layout < 4; ++layout) {
@@ -234,7 +234,7 @@ TEST_CASE("the 3D view poses the puppet at the frame of the current time", "[app
         REQUIRE(viewport->renderer()->frame(0) == widgets::nearestFrame(*take, seconds));
     }
     // Take B becomes the second puppet, posed at the same time.
-    document.selectTake(TakeSlot::B, app::Document::corpusTakeId(12));
+    document.selectTake(TakeSlot::B, app::TakeId::corpus(12));
     REQUIRE(QTest::qWaitFor([&] { return viewport->renderer()->takeCount() == 2; }, 10000));
     document.setCurrentTime(3.0);
     viewport->repaint();
@@ -284,11 +284,11 @@ TEST_CASE("the motion axis of take A is listed as a take whose 6 channels can be
     auto window = test::demoWindow();
     REQUIRE(window);
     auto& document = window->document();
-    REQUIRE(QTest::qWaitFor([&] { return document.take(QStringLiteral("live/axis")) != nullptr; }, 20000));
-    const auto axis = document.take(QStringLiteral("live/axis"));
+    REQUIRE(QTest::qWaitFor([&] { return document.take(app::TakeId::live(QStringLiteral("axis"))) != nullptr; }, 20000));
+    const auto axis = document.take(app::TakeId::live(QStringLiteral("axis")));
     REQUIRE(axis->channelCount() == 6);
     REQUIRE(axis->frameCount() == document.selectedTake(TakeSlot::A)->frameCount());
-    document.selectTake(TakeSlot::A, QStringLiteral("live/axis"));
+    document.selectTake(TakeSlot::A, app::TakeId::live(QStringLiteral("axis")));
     REQUIRE(window->graphPanel()->grid()->graphCount() == 6);
     document.setCurrentTime(2.0);
     requireViewsAt(*window, 2.0);
@@ -298,7 +298,7 @@ TEST_CASE("the 3D view exports one PNG per frame of take A", "[app][window][view
 {
     auto window = test::demoWindow();
     REQUIRE(window);
-    window->document().selectTake(TakeSlot::A, app::Document::corpusTakeId(2));
+    window->document().selectTake(TakeSlot::A, app::TakeId::corpus(2));
     REQUIRE(test::waitUntilIdle(*window)); // the view keeps its size during the export
     const auto take = window->document().selectedTake(TakeSlot::A);
     const auto folder = test::scratchDir("view-frames");

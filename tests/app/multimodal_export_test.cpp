@@ -230,7 +230,7 @@ TEST_CASE("File > Export Multimodal Video writes PNG frames, cancels without a t
 {
     auto window = exportWindow(0.0);
     REQUIRE(window);
-    window->document().selectTake(app::TakeSlot::B, app::Document::corpusTakeId(8));
+    window->document().selectTake(app::TakeSlot::B, app::TakeId::corpus(8));
     auto& controller = window->multimodalExport();
     REQUIRE(controller.action()->objectName() == "exportMultimodalVideo");
     // the graph dock's choices are the default layout

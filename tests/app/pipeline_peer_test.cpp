@@ -49,12 +49,12 @@ void checkWeightedTakeEqualsCli(app::MainWindow& window, const std::string& corp
                                 const std::filesystem::path& dir)
 {
     auto& document = window.document();
-    document.selectTake(app::TakeSlot::A, app::Document::corpusTakeId(takeA));
+    document.selectTake(app::TakeSlot::A, app::TakeId::corpus(takeA));
     REQUIRE(app::setEmotionWeight(document, weight));
     auto& analysis = window.analysis();
     REQUIRE(QTest::qWaitFor([&] { return !analysis.scheduler().busy() && analysis.decomposed() && analysis.weightedTake(); }, 120000));
     const auto weighted = analysis.weightedTake();
-    REQUIRE(document.take(QStringLiteral("live/weighted")) == weighted);
+    REQUIRE(document.take(app::TakeId::live(QStringLiteral("weighted"))) == weighted);
     const auto [function, emotion] = analysis.weightedCell();
     // The window's parameters (the thesis's defaults here) as a --parameters file.
     const auto parameters = dir / "parameters.json";
@@ -144,7 +144,7 @@ TEST_CASE("the workbench's stage results equal bunraku analyse's data files bit 
         const auto* cell = analysis.normalised()->cell(takeA->labels.function, takeA->labels.emotion);
         REQUIRE(cell);
         // (shown as its body; the analysis's per-channel take is kept beside it)
-        const auto live = window->document().perChannelGhostOf(QStringLiteral("live/normalised"));
+        const auto live = window->document().perChannelGhostOf(app::TakeId::live(QStringLiteral("normalised")));
         REQUIRE(live);
         CHECK(csvValues(out / ("normalised_" + analysis::report::takeStem(takeA->labels) + ".csv")) == live->values);
     }

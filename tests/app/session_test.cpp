@@ -124,7 +124,7 @@ TEST_CASE("an orphaned autosave is offered with its time and content, and recove
     app::ProjectState state;
     state.corpus = QStringLiteral("demo");
     state.parameters.normalise.tau = 9;
-    state.takeA = app::Document::corpusTakeId(5);
+    state.takeA = app::TakeId::corpus(5);
     const QString orphan = orphanedAutosave(autosaveFolder(*window), state);
 
     const auto orphans = window->files().projects().autosaveSession().orphans();
@@ -152,7 +152,7 @@ TEST_CASE("an orphaned autosave is offered with its time and content, and recove
     REQUIRE(listed.contains(QStringLiteral("demo corpus")));
     auto& document = window->document();
     REQUIRE(document.parameters().normalise.tau == 9);
-    REQUIRE(document.selectedId(TakeSlot::A) == app::Document::corpusTakeId(5));
+    REQUIRE(document.selectedId(TakeSlot::A) == app::TakeId::corpus(5));
     // Unsaved work: the title is marked, the autosave is this window's and stays.
     REQUIRE_FALSE(document.undoStack()->isClean());
     REQUIRE(window->isWindowModified());

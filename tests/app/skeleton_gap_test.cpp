@@ -29,7 +29,7 @@ TEST_CASE("a normalised Bandai take is shown, graphed and exported as one body, 
     auto window = test::windowOnCorpus(corpus);
     REQUIRE(window);
     auto& document = window->document();
-    document.selectTake(TakeSlot::A, app::Document::corpusTakeId(0));
+    document.selectTake(TakeSlot::A, app::TakeId::corpus(0));
     auto* view = window->viewportPanel();
     QComboBox* figure = view->figureBox(0);
     QLabel* gap = view->skeletonGapLabel();
@@ -37,13 +37,13 @@ TEST_CASE("a normalised Bandai take is shown, graphed and exported as one body, 
     // A take read from BVH: its channels are its skeleton's parts.
     CHECK(analysis::skeletonChannelGap(*document.selectedTake(TakeSlot::A))->maxPositionCm < 1e-9);
     CHECK_FALSE(gap->isVisibleTo(view));
-    CHECK_FALSE(document.ghostOf(app::Document::corpusTakeId(0)));
+    CHECK_FALSE(document.ghostOf(app::TakeId::corpus(0)));
 
     // Take 1 normalised to the cell's reference with the thesis's coupling (one warp per
     // coordinate): the per-channel result is no body's motion; what is shown is its skeleton's.
     REQUIRE(QTest::qWaitFor([&] { return window->normalisePanel()->normalisedTake() != nullptr; }, 60000));
     REQUIRE(test::waitUntilIdle(*window));
-    const auto normalised = document.take(QStringLiteral("live/normalised"));
+    const auto normalised = document.take(app::TakeId::live(QStringLiteral("normalised")));
     REQUIRE(normalised);
     REQUIRE(normalised->skeleton);
     const auto shownGap = analysis::skeletonChannelGap(*normalised);
@@ -51,17 +51,17 @@ TEST_CASE("a normalised Bandai take is shown, graphed and exported as one body, 
     CHECK(shownGap->maxPositionCm < 1e-6);
     CHECK(shownGap->maxAngleDeg < 1e-6);
     // The thesis's per-channel take is kept beside it (its graphs' ghost is the raw take).
-    const int index = document.indexOfDerived(QStringLiteral("live/normalised"));
+    const int index = document.indexOfDerived(app::TakeId::live(QStringLiteral("normalised")));
     REQUIRE(index >= 0);
     const auto ghost = document.derivedTakes()[std::size_t(index)].perChannelGhost;
     REQUIRE(ghost);
     CHECK_FALSE(ghost->skeleton);
-    CHECK(document.ghostOf(QStringLiteral("live/normalised")) == document.take(app::Document::corpusTakeId(0)));
+    CHECK(document.ghostOf(app::TakeId::live(QStringLiteral("normalised"))) == document.take(app::TakeId::corpus(0)));
     const auto distance = analysis::perChannelDistance(*normalised, ghost->values);
     REQUIRE(distance);
     CHECK(distance->maxPositionCm > 1.0); // method2 really moves the parts apart
 
-    document.selectTake(TakeSlot::A, QStringLiteral("live/normalised"));
+    document.selectTake(TakeSlot::A, app::TakeId::live(QStringLiteral("normalised")));
     // The graphs draw the raw take as the ghost and the per-channel result beside it, and say how
     // far the per-channel result is from the body (measured as analysis::perChannelDistance does).
     auto* graphs = window->graphPanel();
@@ -77,8 +77,8 @@ TEST_CASE("a normalised Bandai take is shown, graphed and exported as one body, 
     }
     CHECK(caption.contains(QStringLiteral("up to %1 cm (%2)").arg(distance->maxPositionCm, 0, 'f', 1).arg(QString::fromStdString(distance->worstPart))));
     CHECK(caption.contains(QStringLiteral("and %1 deg").arg(distance->maxAngleDeg, 0, 'f', 1)));
-    CHECK(graphs->grid()->ghostTakes()[0] == document.take(app::Document::corpusTakeId(0)));
-    CHECK(graphs->grid()->ghostTakes()[1] == document.perChannelGhostOf(QStringLiteral("live/normalised")));
+    CHECK(graphs->grid()->ghostTakes()[0] == document.take(app::TakeId::corpus(0)));
+    CHECK(graphs->grid()->ghostTakes()[1] == document.perChannelGhostOf(app::TakeId::live(QStringLiteral("normalised"))));
     for (const auto style : {render::FigureStyle::PuppetAndSkeleton, render::FigureStyle::Skeleton, render::FigureStyle::Puppet}) {
         figure->setCurrentIndex(figure->findData(int(style)));
         CHECK_FALSE(gap->isVisibleTo(view)); // one motion: nothing to warn about
@@ -94,7 +94,7 @@ TEST_CASE("a normalised Bandai take is shown, graphed and exported as one body, 
     auto written = analysis::io::readTakeCsv(dir / "normalised.csv");
     REQUIRE(written);
     CHECK((written->values - normalised->values).cwiseAbs().maxCoeff() < 1e-6);
-    document.selectTake(TakeSlot::A, app::Document::corpusTakeId(0));
+    document.selectTake(TakeSlot::A, app::TakeId::corpus(0));
     CHECK_FALSE(gap->isVisibleTo(view));
     CHECK(graphs->ghostCaption().isEmpty()); // a take read from a file is its own body
     CHECK_FALSE(graphs->grid()->ghostTakes()[1]);

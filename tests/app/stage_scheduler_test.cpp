@@ -6,6 +6,8 @@
 #include "app/stage_scheduler.h"
 #include "app/viewport_panel.h"
 
+#include "tests/app/take_id_text.h"
+
 #include "analysis/axis/axis_channels.h"
 #include "analysis/axis/inertia_axis.h"
 #include "analysis/body/body_description.h"
@@ -171,10 +173,10 @@ TEST_CASE("a long take's weighted body is made off the GUI thread with progress 
     executor->drain();
     CHECK(analysis.scheduler().starts(AnalysisController::kWeightedSlot) == starts + 1);
     REQUIRE(analysis.weightedTake());
-    CHECK(document.take(QStringLiteral("live/weighted")) == analysis.weightedTake());
+    CHECK(document.take(app::TakeId::live(QStringLiteral("weighted"))) == analysis.weightedTake());
     CHECK(analysis.weightedTake()->values == atOnce->values);
     CHECK(analysis.weightedTake()->labels.source == atOnce->labels.source);
-    REQUIRE(document.perChannelGhostOf(QStringLiteral("live/weighted")));
+    REQUIRE(document.perChannelGhostOf(app::TakeId::live(QStringLiteral("weighted"))));
     CHECK_FALSE(progress.empty());
     CHECK(std::find_if(progress.begin(), progress.end(), [](double f) { return f >= 0.5 && f < 1.0; }) != progress.end());
 }
@@ -311,8 +313,8 @@ TEST_CASE("the 3D view draws each shown take's motion axis from the scheduler, o
     auto& scheduler = analysis.scheduler();
     const int startsA = scheduler.starts(AnalysisController::kTakeAxisSlot);
     const int startsB = scheduler.starts(AnalysisController::kTakeAxisBSlot);
-    document.selectTake(TakeSlot::A, Document::corpusTakeId(1));
-    document.selectTake(TakeSlot::B, Document::corpusTakeId(7));
+    document.selectTake(TakeSlot::A, TakeId::corpus(1));
+    document.selectTake(TakeSlot::B, TakeId::corpus(7));
     const auto takeA = document.selectedTake(TakeSlot::A);
     const auto takeB = document.selectedTake(TakeSlot::B);
     // The takes show at once, their axes once computed.
@@ -334,21 +336,21 @@ TEST_CASE("the 3D view draws each shown take's motion axis from the scheduler, o
     REQUIRE(panel.drawnAxes()[1]->world_T_axis.size() == truthB->world_T_axis.size());
     CHECK(panel.drawnAxes()[1]->world_T_axis.back().translation == truthB->world_T_axis.back().translation);
     // Take A's axis is the graphable "axis" take: the same computation.
-    REQUIRE(document.take(QStringLiteral("live/axis")));
-    CHECK(document.take(QStringLiteral("live/axis"))->values == analysis::axisTake(*truthA).values);
+    REQUIRE(document.take(app::TakeId::live(QStringLiteral("axis"))));
+    CHECK(document.take(app::TakeId::live(QStringLiteral("axis")))->values == analysis::axisTake(*truthA).values);
     CHECK(scheduler.starts(AnalysisController::kTakeAxisSlot) == startsA + 1);
     CHECK(scheduler.starts(AnalysisController::kTakeAxisBSlot) == startsB + 1);
 
     // B shows A's take: its axis is reused, nothing is computed.
-    document.selectTake(TakeSlot::B, Document::corpusTakeId(1));
+    document.selectTake(TakeSlot::B, TakeId::corpus(1));
     CHECK(executor->pending() == 0);
     QCoreApplication::processEvents();
     CHECK(panel.drawnAxes()[1] == panel.drawnAxes()[0]);
     CHECK(scheduler.starts(AnalysisController::kTakeAxisBSlot) == startsB + 1);
 
     // A changes twice before its first job runs: that job is cancelled and nothing of it drawn.
-    document.selectTake(TakeSlot::A, Document::corpusTakeId(3));
-    document.selectTake(TakeSlot::A, Document::corpusTakeId(4));
+    document.selectTake(TakeSlot::A, TakeId::corpus(3));
+    document.selectTake(TakeSlot::A, TakeId::corpus(4));
     REQUIRE(executor->pending() == 2);
     executor->runNext(); // take 3's axis, no longer wanted
     CHECK(panel.drawnAxes()[0] == nullptr);
@@ -359,7 +361,7 @@ TEST_CASE("the 3D view draws each shown take's motion axis from the scheduler, o
     CHECK(panel.drawnAxes()[0]->coordinates.values == truth4->coordinates.values);
     CHECK(panel.drawnAxes()[0]->coordinates.labels.source == "axis of " + document.selectedTake(TakeSlot::A)->displayName());
     // Back to take 1: computed before, so drawn again without a job.
-    document.selectTake(TakeSlot::A, Document::corpusTakeId(1));
+    document.selectTake(TakeSlot::A, TakeId::corpus(1));
     CHECK(executor->pending() == 0);
     QCoreApplication::processEvents();
     REQUIRE(panel.drawnAxes()[0]);
@@ -410,8 +412,8 @@ TEST_CASE("the 3D view dresses each shown take in its kimono simulated by the sc
     AnalysisController analysis(document, nullptr, executor);
     ViewportPanel panel(document, analysis);
     document.setCorpus(analysis::synth::generateDemoCorpus().corpus, QStringLiteral("demo"));
-    document.selectTake(TakeSlot::A, Document::corpusTakeId(1));
-    document.selectTake(TakeSlot::B, Document::corpusTakeId(7));
+    document.selectTake(TakeSlot::A, TakeId::corpus(1));
+    document.selectTake(TakeSlot::B, TakeId::corpus(7));
     executor->drain();
     auto& scheduler = analysis.scheduler();
     // Off by default: no cloth is simulated.
@@ -438,15 +440,15 @@ TEST_CASE("the 3D view dresses each shown take in its kimono simulated by the sc
     CHECK(scheduler.starts(AnalysisController::kKimonoSlot) == 1);
     CHECK(scheduler.starts(AnalysisController::kKimonoBSlot) == 1);
     // Take A's measured points are the graphable "kimono" take: the same simulation.
-    const auto kimonoTake = document.take(QStringLiteral("live/kimono"));
+    const auto kimonoTake = document.take(app::TakeId::live(QStringLiteral("kimono")));
     REQUIRE(kimonoTake);
     CHECK(kimonoTake->channelCount() == 18);
     CHECK(kimonoTake->channels.front().name() == "sleeve_right_tip.x");
     CHECK(kimonoTake->values == truth->points);
-    CHECK(document.takeLabel(QStringLiteral("live/kimono")).startsWith(QStringLiteral("kimono of")));
+    CHECK(document.takeLabel(app::TakeId::live(QStringLiteral("kimono"))).startsWith(QStringLiteral("kimono of")));
 
     // Another take A: its cloth is simulated, the old one never drawn on it.
-    document.selectTake(TakeSlot::A, Document::corpusTakeId(2));
+    document.selectTake(TakeSlot::A, TakeId::corpus(2));
     CHECK(panel.drawnKimonos()[0] == nullptr);
     CHECK(analysis.kimono(TakeSlot::A, takeA) == nullptr);
     executor->drain();
@@ -473,7 +475,7 @@ TEST_CASE("the 3D view dresses each shown take in its kimono simulated by the sc
     // step's.
     auto designed = std::make_shared<analysis::Take>(document.corpus().takes[3]);
     document.setLiveTake(QStringLiteral("designed"), QStringLiteral("designed"), designed);
-    document.selectTake(TakeSlot::A, QStringLiteral("live/designed"));
+    document.selectTake(TakeSlot::A, app::TakeId::live(QStringLiteral("designed")));
     executor->drain();
     REQUIRE(panel.drawnKimonos()[0]);
     const auto firstStep = panel.drawnKimonos()[0];
@@ -496,5 +498,5 @@ TEST_CASE("the 3D view dresses each shown take in its kimono simulated by the sc
     panel.clothBox()->setChecked(false);
     CHECK(panel.drawnKimonos()[0] == nullptr);
     CHECK(panel.drawnKimonos()[1] == nullptr);
-    CHECK(document.take(QStringLiteral("live/kimono")) == nullptr);
+    CHECK(document.take(app::TakeId::live(QStringLiteral("kimono"))) == nullptr);
 }

@@ -160,14 +160,14 @@ TEST_CASE("exporting the whole take gives take A's frames even when take B is lo
     auto window = exportWindow(0.0);
     REQUIRE(window);
     auto& document = window->document();
-    const auto full = document.take(app::Document::corpusTakeId(2));
+    const auto full = document.take(app::TakeId::corpus(2));
     REQUIRE(full);
     REQUIRE(full->frameCount() > 12);
     auto shorter = std::make_shared<analysis::Take>(*full);
     shorter->values = full->values.topRows(12).eval();
     document.setLiveTake(QStringLiteral("short"), QStringLiteral("first 12 frames"), shorter);
-    document.selectTake(TakeSlot::A, QStringLiteral("live/short"));
-    document.selectTake(TakeSlot::B, app::Document::corpusTakeId(2));
+    document.selectTake(TakeSlot::A, app::TakeId::live(QStringLiteral("short")));
+    document.selectTake(TakeSlot::B, app::TakeId::corpus(2));
     REQUIRE(document.selectedTake(TakeSlot::A)->frameCount() == 12);
     REQUIRE(document.duration() > document.selectedTake(TakeSlot::A)->duration()); // B is the longer one
 

@@ -105,7 +105,7 @@ inline std::unique_ptr<bunraku::app::MainWindow> exportWindow(double seconds)
 {
     auto window = bunraku::test::demoWindow();
     if (!window) return nullptr;
-    window->document().selectTake(bunraku::app::TakeSlot::A, bunraku::app::Document::corpusTakeId(2));
+    window->document().selectTake(bunraku::app::TakeSlot::A, bunraku::app::TakeId::corpus(2));
     window->document().setCurrentTime(seconds);
     return window;
 }

@@ -100,7 +100,7 @@ TEST_CASE("at 1280x720 and 1366x768 every dock is inside the window at a useful 
         CHECK(bar.width() >= 300);
         // Every control of the 3D view's and the graphs' rows is shown, whole, inside its dock:
         // nothing hidden behind an extension menu (the figure of take B with two takes shown).
-        window->document().selectTake(app::TakeSlot::B, app::Document::corpusTakeId(3));
+        window->document().selectTake(app::TakeSlot::B, app::TakeId::corpus(3));
         QCoreApplication::processEvents();
         for (const char* row : {"viewToolBar", "graphToolBar"}) {
             QWidget* controls = window->findChild<QWidget*>(QString::fromLatin1(row));
@@ -116,7 +116,7 @@ TEST_CASE("at 1280x720 and 1366x768 every dock is inside the window at a useful 
             }
             CHECK(checked >= (std::string(row) == "viewToolBar" ? 10 : 6));
         }
-        window->document().selectTake(app::TakeSlot::B, QString());
+        window->document().selectTake(app::TakeSlot::B, {});
     }
 }
 

@@ -58,8 +58,8 @@ TEST_CASE("the main window names take A and take B where they are seen, kept cur
     CHECK(shown->isVisible());
     CHECK(window->statusBar()->isAncestorOf(shown));
     CHECK(shown->text() == QStringLiteral("A: ") + QString::fromStdString(document.selectedTake(TakeSlot::A)->displayName()));
-    document.selectTake(TakeSlot::A, app::Document::corpusTakeId(3));
-    document.selectTake(TakeSlot::B, app::Document::corpusTakeId(7));
+    document.selectTake(TakeSlot::A, app::TakeId::corpus(3));
+    document.selectTake(TakeSlot::B, app::TakeId::corpus(7));
     const QString a = QString::fromStdString(document.corpus().takes[3].displayName());
     const QString b = QString::fromStdString(document.corpus().takes[7].displayName());
     CHECK(shown->text() == QStringLiteral("A: %1   B: %2").arg(a, b));
@@ -69,7 +69,7 @@ TEST_CASE("the main window names take A and take B where they are seen, kept cur
     const QRect inWindow(shown->mapTo(window.get(), QPoint(0, 0)), shown->size());
     CHECK(window->rect().contains(inWindow));
     CHECK(shown->width() >= shown->fontMetrics().horizontalAdvance(shown->text()));
-    document.selectTake(TakeSlot::B, QString());
+    document.selectTake(TakeSlot::B, {});
     CHECK(shown->text() == QStringLiteral("A: ") + a);
 }
 

@@ -410,19 +410,19 @@ void Monkey::phraseDrag()
 void Monkey::chooseTake()
 {
     auto& document = m_window.document();
-    QStringList ids;
-    for (std::size_t k = 0; k < document.corpus().takes.size(); ++k) ids << app::Document::corpusTakeId(k);
+    QList<app::TakeId> ids;
+    for (std::size_t k = 0; k < document.corpus().takes.size(); ++k) ids << app::TakeId::corpus(k);
     for (const auto& derived : document.derivedTakes()) ids << derived.id;
     if (ids.isEmpty()) return;
-    const QString id = ids[below(int(ids.size()))];
+    const app::TakeId id = ids[below(int(ids.size()))];
     const auto slot = chance(0.6) ? app::TakeSlot::A : app::TakeSlot::B;
     const char* name = slot == app::TakeSlot::A ? "A" : "B";
     if (chance(0.5)) { // as a person does: the browser's row, then its button
         auto* browser = m_window.browser();
-        if (!browser->selectId(id)) return;
+        if (!browser->selectId(id.toString())) return;
         for (auto* button : browser->findChildren<QPushButton*>()) {
             if (button->text() == (slot == app::TakeSlot::A ? QStringLiteral("Show as A") : QStringLiteral("Show as B"))) {
-                note(std::string("browser: ") + str(id) + " shown as " + name);
+                note(std::string("browser: ") + str(id.toString()) + " shown as " + name);
                 if (button->isEnabled()) button->click();
                 return;
             }
@@ -434,7 +434,7 @@ void Monkey::chooseTake()
         document.selectTake(slot, {});
         return;
     }
-    note("take " + std::string(name) + " " + str(id));
+    note("take " + std::string(name) + " " + str(id.toString()));
     document.selectTake(slot, id);
 }
 
@@ -628,10 +628,10 @@ void Monkey::checkInvariants(const std::string& action)
     if (stack->canUndo() != (stack->index() > 0) || stack->canRedo() != (stack->index() < stack->count()))
         fail("undo stack: canUndo/canRedo disagree with its index");
     // The shown takes exist; the time is inside them.
-    const QString idA = document.selectedId(app::TakeSlot::A);
-    const QString idB = document.selectedId(app::TakeSlot::B);
-    if (!idA.isEmpty() && !document.take(idA)) fail("take A " + str(idA) + " is shown but is no take of the document");
-    if (!idB.isEmpty() && !document.take(idB)) fail("take B " + str(idB) + " is shown but is no take of the document");
+    const app::TakeId idA = document.selectedId(app::TakeSlot::A);
+    const app::TakeId idB = document.selectedId(app::TakeSlot::B);
+    if (!idA.isEmpty() && !document.take(idA)) fail("take A " + str(idA.toString()) + " is shown but is no take of the document");
+    if (!idB.isEmpty() && !document.take(idB)) fail("take B " + str(idB.toString()) + " is shown but is no take of the document");
     if (idA.isEmpty() && !document.corpus().takes.empty()) fail("no take A with a corpus open");
     const double t = document.currentTime();
     if (!(t >= 0.0) || t > document.duration() + 1e-9)
@@ -658,8 +658,8 @@ void Monkey::checkInvariants(const std::string& action)
         }
         // The live takes shown are published ones.
         for (const auto& id : {idA, idB})
-            if (id.startsWith(QStringLiteral("live/")) && document.indexOfDerived(id) < 0)
-                fail("live take " + str(id) + " shown but not published");
+            if (id.isLive() && document.indexOfDerived(id) < 0)
+                fail("live take " + str(id.toString()) + " shown but not published");
     }
     // The 3D view's motion axis of take A is take A's (never another take's or older parameters').
     if (auto take = document.selectedTake(app::TakeSlot::A)) (void)analysis.takeAxis(app::TakeSlot::A, take);
