@@ -13,7 +13,9 @@
 #include <QFileInfo>
 #include <QMessageBox>
 
+#include <algorithm>
 #include <filesystem>
+#include <vector>
 
 namespace bunraku::app {
 ProjectController::ProjectController(Document& document, FileController& files)
@@ -67,13 +69,23 @@ ProjectState ProjectController::captureState() const
 {
     ProjectState state;
     state.corpus = m_document.corpusSource();
+    std::vector<TakeId> importedIds;
     for (const auto& derived : m_document.derivedTakes())
-        if (!derived.sourcePath.isEmpty())
+        if (!derived.sourcePath.isEmpty()) {
+            importedIds.push_back(derived.id);
             state.imported.push_back({derived.sourcePath, derived.label,
                                       derived.importOptions ? *derived.importOptions : analysis::io::ImportOptions{}});
+        }
     state.parameters = m_document.parameters();
-    state.takeA = m_document.selectedId(TakeSlot::A);
-    state.takeB = m_document.selectedId(TakeSlot::B);
+    // In the file an imported take is named by its place in "imported" (imported/1 the first),
+    // not by the serial number it has in this session.
+    const auto inFile = [&importedIds](const TakeId& id) {
+        if (!id.isImported()) return id;
+        const auto found = std::find(importedIds.begin(), importedIds.end(), id);
+        return found == importedIds.end() ? TakeId() : TakeId::imported(std::size_t(found - importedIds.begin()) + 1);
+    };
+    state.takeA = inFile(m_document.selectedId(TakeSlot::A));
+    state.takeB = inFile(m_document.selectedId(TakeSlot::B));
     state.timeSeconds = m_document.currentTime();
     if (m_saveView) state.view = m_saveView();
     return state;
@@ -111,6 +123,7 @@ bool ProjectController::applyStateNow(const ProjectState& state)
     std::vector<analysis::Result<analysis::Take>> takes;
     bool cancelled = false;
     m_unreadTakes.clear();
+    m_unshownTakes.clear();
     if (!state.imported.empty())
         m_files.runTask(tr("Reading the project's %n imported take(s)...", nullptr, int(state.imported.size())),
                         [&](const analysis::RunControl& control) {
@@ -131,6 +144,9 @@ bool ProjectController::applyStateNow(const ProjectState& state)
                                                                : m_files.corpora().openCorpusFolder(state.corpus);
     if (!opened) return false;
     std::vector<DerivedTake> imported;
+    // The ids the project's imported takes get in this session, by their place in the file (none
+    // for a take that could not be read): "imported/N" in the file is recipeIds[N - 1].
+    std::vector<TakeId> recipeIds(std::size_t(state.imported.size()));
     for (qsizetype i = 0; i < state.imported.size(); ++i) {
         const auto& recipe = state.imported[i];
         auto& take = takes[std::size_t(i)];
@@ -139,19 +155,32 @@ bool ProjectController::applyStateNow(const ProjectState& state)
             m_files.report(tr("Cannot re-import the take '%1' of the project").arg(recipe.label), take.error());
             continue;
         }
-        imported.push_back(DerivedTake{m_document.nextImportedId(), recipe.label,
+        recipeIds[std::size_t(i)] = m_document.nextImportedId();
+        imported.push_back(DerivedTake{recipeIds[std::size_t(i)], recipe.label,
                                        std::make_shared<const analysis::Take>(std::move(take).value()), recipe.path, TakeId(),
                                        std::make_shared<const analysis::io::ImportOptions>(recipe.options), nullptr, {}});
     }
     m_document.restoreProject(std::move(imported), state.parameters);
     // Live results are recomputed after opening: a live take shown as A or B is awaited and
     // shown when published (showPendingLiveTakes); until then A keeps the corpus's first take.
-    const TakeId ids[2] = {state.takeA, state.takeB};
+    const TakeId saved[2] = {state.takeA, state.takeB};
     for (int slot = 0; slot < 2; ++slot) {
-        if (ids[slot].isLive() && !m_document.take(ids[slot]))
-            m_pending[slot] = ids[slot];
-        else
-            m_document.selectTake(TakeSlot(slot), ids[slot]);
+        TakeId id = saved[slot];
+        if (id.isImported()) id = id.index() >= 1 && id.index() <= recipeIds.size() ? recipeIds[id.index() - 1] : TakeId();
+        if (id.isLive() && !m_document.take(id)) {
+            m_pending[slot] = id;
+            continue;
+        }
+        m_document.selectTake(TakeSlot(slot), id);
+        // A take the project names that is not here (a corpus changed since, an import that
+        // could not be read, an edited file): said, with the take shown instead.
+        if (!saved[slot].isEmpty() && (id.isEmpty() || m_document.selectedId(TakeSlot(slot)) != id)) {
+            const QString shown = m_document.selectedId(TakeSlot(slot)).isEmpty()
+                                      ? tr("no take")
+                                      : m_document.takeLabel(m_document.selectedId(TakeSlot(slot)));
+            m_unshownTakes.append(tr("its take %1, %2, is not in it (%1 shows %3)")
+                                      .arg(slot == 0 ? QStringLiteral("A") : QStringLiteral("B"), saved[slot].toString(), shown));
+        }
     }
     m_pendingTime = state.timeSeconds;
     m_document.setCurrentTime(state.timeSeconds);
@@ -183,13 +212,17 @@ bool ProjectController::openProject(const QString& file)
     if (!applyState(state.value())) return false;
     m_projectPath = file;
     m_files.addRecent(file);
-    if (m_unreadTakes.isEmpty()) {
+    if (m_unreadTakes.isEmpty() && m_unshownTakes.isEmpty()) {
         emit m_files.statusMessage(tr("Opened project %1").arg(file));
     } else {
-        // The last word in the status bar: which takes are missing and why (each was reported too).
-        m_files.noteError(tr("Opened project %1 without %n of its imported take(s), which could not be read: %2", nullptr,
-                             int(m_unreadTakes.size()))
-                              .arg(file, m_unreadTakes.join(QStringLiteral("; "))));
+        // The last word in the status bar: which takes are missing and why (each unread one was
+        // reported too), and a take A or B the project names that is not there.
+        QStringList said;
+        if (!m_unreadTakes.isEmpty())
+            said.append(tr("without %n of its imported take(s), which could not be read: %1", nullptr, int(m_unreadTakes.size()))
+                            .arg(m_unreadTakes.join(QStringLiteral("; "))));
+        said.append(m_unshownTakes);
+        m_files.noteError(tr("Opened project %1 %2").arg(file, said.join(QStringLiteral("; "))));
     }
     return true;
 }

@@ -72,6 +72,7 @@ private:
     double m_pendingTime = 0.0; ///< the project's time, applied when an awaited take appears
     bool m_applying = false;    ///< inside applyState: selections are the project's own
     QStringList m_unreadTakes;  ///< the last opened project's imported takes that could not be read, with why
+    QStringList m_unshownTakes; ///< its take A or B that is not there, with the take shown instead
     QTimer m_autosaveTimer;
     std::unique_ptr<AutosaveSession> m_autosave;
     std::function<int()> m_unsavedAnswer;

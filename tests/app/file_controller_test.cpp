@@ -378,6 +378,73 @@ TEST_CASE("a project whose imported takes cannot be read opens saying which take
     std::filesystem::remove(fifo);
 }
 
+TEST_CASE("a project names its imported takes by their place in it, and says when a take it shows is not there",
+          "[app][files][ids]")
+{
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    auto& document = window->document();
+    const auto dir = test::scratchDir("project-imported-places");
+    for (int k = 1; k <= 3; ++k) {
+        std::ofstream out(dir / ("t" + std::to_string(k) + ".csv"));
+        out << "time_s,a.x\n0," << k << "\n0.2," << 2 * k << "\n0.4," << 3 * k << "\n";
+    }
+    const auto path = [&](const char* name) { return QString::fromStdString((dir / name).string()); };
+    const auto writeProject = [&](const QString& file, const std::string& fields) {
+        std::ofstream out(file.toStdString());
+        out << R"({"format": "bunraku-project", "version": 2, "corpus": "demo", )" << fields << "}";
+    };
+    const auto labelOf = [&](TakeSlot slot) { return document.takeLabel(document.selectedId(slot)).toStdString(); };
+
+    SECTION("an imported take that cannot be read shifts no other") {
+        const QString file = path("unread-first.bunraku.json");
+        writeProject(file, R"("imported": [{"path": ")" + (dir / "gone.csv").string() + R"(", "label": "gone"}, {"path": ")" +
+                               (dir / "t2.csv").string() + R"(", "label": "two"}], "takeA": "imported/2", "takeB": "imported/1")");
+        REQUIRE(window->files().projects().openProject(file));
+        CHECK(labelOf(TakeSlot::A) == "two");
+        CHECK(document.selectedId(TakeSlot::B).isEmpty());
+        INFO(window->files().lastError().toStdString());
+        CHECK(window->files().lastError().contains(QStringLiteral("gone.csv")));
+        CHECK(window->files().lastError().contains(QStringLiteral("its take B, imported/1, is not in it (B shows no take)")));
+    }
+    SECTION("a take A the corpus does not have is said, with the take shown instead") {
+        const QString file = path("no-such-take.bunraku.json");
+        writeProject(file, R"("takeA": "corpus/999")");
+        REQUIRE(window->files().projects().openProject(file));
+        CHECK(document.selectedId(TakeSlot::A).isCorpus()); // the take the corpus opens with
+        const std::string expected = "its take A, corpus/999, is not in it (A shows " + labelOf(TakeSlot::A) + ")";
+        CHECK(window->files().lastError().toStdString().find(expected) != std::string::npos);
+    }
+    SECTION("saved after a take was removed, the takes shown reopen as they were") {
+        for (const char* name : {"t1.csv", "t2.csv", "t3.csv"}) REQUIRE(window->files().imports().importTakeFile(path(name)));
+        auto imported = importedTakes(document);
+        REQUIRE(imported.size() == 3);
+        document.undoStack()->push(new app::RemoveImportedTake(&document, imported[0].id));
+        imported = importedTakes(document);
+        REQUIRE(imported.size() == 2);
+        REQUIRE(imported[0].id != app::TakeId::imported(1)); // the session's serials no longer start at 1
+        document.selectTake(TakeSlot::A, imported[1].id);
+        document.selectTake(TakeSlot::B, imported[0].id);
+        const std::string shownA = labelOf(TakeSlot::A), shownB = labelOf(TakeSlot::B);
+        REQUIRE(shownA != shownB);
+        const QString file = path("after-removal.bunraku.json");
+        REQUIRE(window->files().projects().saveProject(file));
+        QFile saved(file);
+        REQUIRE(saved.open(QIODevice::ReadOnly));
+        const auto root = nlohmann::json::parse(saved.readAll().toStdString());
+        CHECK(root["takeA"] == "imported/2");
+        CHECK(root["takeB"] == "imported/1");
+
+        auto reopened = test::demoWindow();
+        REQUIRE(reopened);
+        REQUIRE(reopened->files().projects().openProject(file));
+        auto& again = reopened->document();
+        CHECK(again.takeLabel(again.selectedId(TakeSlot::A)).toStdString() == shownA);
+        CHECK(again.takeLabel(again.selectedId(TakeSlot::B)).toStdString() == shownB);
+        CHECK(again.selectedTake(TakeSlot::A)->values == document.selectedTake(TakeSlot::A)->values);
+    }
+}
+
 TEST_CASE("a project of 2000 imported takes adds them to the document in one change", "[app][files]")
 {
     // Issue 30: a project of 10,000 imported takes took 300 s to open - each take added was one
