@@ -290,12 +290,13 @@ void AnalysisController::publishNormalised()
     if (m_publishing) return;
     const QScopedValueRollback<bool> publishing(m_publishing, true);
     TakeId idA = m_document.selectedId(TakeSlot::A);
-    // The normalised take itself shown as A: recomputed for the take it was computed from.
-    if (idA == TakeId::live(QStringLiteral("normalised")))
+    // A derived take shown as A (the normalised take itself, or another): the normalised take is
+    // recomputed for the corpus take it was computed from, never kept with older parameters.
+    if (!idA.isCorpus())
         for (const auto& derived : m_document.derivedTakes())
-            if (derived.id == idA) idA = derived.ghostId;
+            if (derived.id == TakeId::live(QStringLiteral("normalised"))) idA = derived.ghostId;
     const TakePointer takeA = m_document.take(idA);
-    if (!m_normalised || !takeA || !idA.isCorpus()) return; // keep it while viewing derived takes
+    if (!m_normalised || !takeA || !idA.isCorpus()) return;
     const pl::CellNormalisation* cell = m_normalised->cell(takeA->labels.function, takeA->labels.emotion);
     if (!cell) return;
     for (std::size_t k = 0; k < cell->takeIndices.size(); ++k) {

@@ -87,6 +87,32 @@ TEST_CASE("the normalised take's label names its take, reference and parameters,
     CHECK(window->normalisePanel()->summaryText().contains(QStringLiteral("tau 5, T_cmp 20")));
 }
 
+TEST_CASE("the normalised take follows the parameters while another derived take is shown as A", "[app][labels]")
+{
+    // A GUI walk found a project reopened with tau 6 and a derived take as A listing a normalised
+    // take "... (tau 4, ...)": computed with the defaults while it opened, then kept.
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    auto& document = window->document();
+    document.selectTake(TakeSlot::A, takeId(document, "greeting", "none", 1));
+    REQUIRE(idle(*window));
+    const auto normalised = app::TakeId::live(QStringLiteral("normalised"));
+    const auto labelled = [&] { return window->browser()->entryText(normalised.toString()); };
+    REQUIRE(labelled().contains(QStringLiteral("tau 4, T_cmp 20")));
+    REQUIRE(QTest::qWaitFor([&] { return bool(document.take(app::TakeId::live(QStringLiteral("weighted")))); }, 120000));
+    document.selectTake(TakeSlot::A, app::TakeId::live(QStringLiteral("weighted")));
+
+    window->normalisePanel()->tauSpin()->setValue(6);
+    REQUIRE(QTest::qWaitFor([&] { return labelled().contains(QStringLiteral("tau 6, T_cmp 20")); }, 120000));
+    CHECK(labelled().startsWith(QStringLiteral("greeting/none/1 normalised")));
+    CHECK(document.selectedId(TakeSlot::A) == "live/weighted"); // A stays
+    const auto cell = window->analysis().normalised()->cell("greeting", "none");
+    REQUIRE(cell != nullptr);
+    const auto position = std::size_t(std::find(cell->takeIndices.begin(), cell->takeIndices.end(), 1) - cell->takeIndices.begin());
+    REQUIRE(position < cell->takeIndices.size());
+    CHECK(document.perChannelGhostOf(normalised)->values == cell->normalisations[position].normalised.values);
+}
+
 TEST_CASE("the weighted take's label follows the emotion weight and names the method", "[app][labels][emotion]")
 {
     auto window = test::demoWindow();
