@@ -593,6 +593,10 @@ ViewState MainWindow::viewState() const
     state.cloth = m_viewportPanel->clothBox()->isChecked();
     state.clothParameters = m_analysis->clothParameters();
     state.weightEmotion = m_analysis->weightEmotion();
+    if (!m_analysis->cellFunction().empty()) {
+        state.cellFunction = QString::fromStdString(m_analysis->cellFunction());
+        state.cellEmotion = QString::fromStdString(m_analysis->cellEmotion());
+    }
     state.speed = m_timeline->speed();
     // The docks' places and sizes (QMainWindow::saveState), so the project reopens as laid out,
     // and the left column's width: a layout restored into a larger window gives that column the

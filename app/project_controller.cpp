@@ -169,6 +169,17 @@ bool ProjectController::applyStateNow(const ProjectState& state)
         if (id.isImported()) id = id.index() >= 1 && id.index() <= recipeIds.size() ? recipeIds[id.index() - 1] : TakeId();
         if (id.isLive() && !m_document.take(id)) {
             m_pending[slot] = id;
+            // Until it is recomputed A shows a take of the cell the live results were computed
+            // for (they follow take A's cell), else the take the corpus opened with.
+            if (slot == 0 && state.view.cellFunction && state.view.cellEmotion) {
+                const auto& corpusTakes = m_document.corpus().takes;
+                const auto inCell = std::find_if(corpusTakes.begin(), corpusTakes.end(), [&](const analysis::Take& take) {
+                    return take.labels.function == state.view.cellFunction->toStdString() &&
+                           take.labels.emotion == state.view.cellEmotion->toStdString();
+                });
+                if (inCell != corpusTakes.end())
+                    m_document.selectTake(TakeSlot::A, TakeId::corpus(std::size_t(inCell - corpusTakes.begin())));
+            }
             continue;
         }
         m_document.selectTake(TakeSlot(slot), id);

@@ -75,6 +75,8 @@ QJsonObject viewJson(const ViewState& view)
         out["clothParameters"] = values;
     }
     put("weightEmotion", view.weightEmotion);
+    put("cellFunction", view.cellFunction);
+    put("cellEmotion", view.cellEmotion);
     put("speed", view.speed);
     if (view.windowState) out["windowState"] = QString::fromLatin1(view.windowState->toBase64());
     put("leftWidth", view.leftWidth);
@@ -125,6 +127,8 @@ ViewState viewState(const QJsonObject& view)
         out.clothParameters = cloth;
     }
     text("weightEmotion", out.weightEmotion);
+    text("cellFunction", out.cellFunction);
+    text("cellEmotion", out.cellEmotion);
     number("speed", out.speed);
     number("leftWidth", out.leftWidth);
     number("windowWidth", out.windowWidth);
@@ -308,7 +312,7 @@ analysis::Result<ProjectState> parseProject(const QByteArray& text, const QStrin
             return parseError(name, 0, std::string("expected \"view\".\"") + range.key + "\" in " + QString::number(range.low).toStdString() +
                                            ".." + QString::number(range.high).toStdString());
     }
-    for (const char* key : {"part", "dof", "weightEmotion"})
+    for (const char* key : {"part", "dof", "weightEmotion", "cellFunction", "cellEmotion"})
         if (viewObject.contains(key) && (!viewObject[key].isString() || viewObject[key].toString().size() > 256))
             return parseError(name, 0, std::string("expected \"view\".\"") + key + "\": a name of at most 256 characters");
     if (viewObject.contains("camera")) {

@@ -60,6 +60,10 @@ struct ViewState {
     std::optional<analysis::ClothParameters> clothParameters;
     /// The emotion a neutral take A is weighted against.
     std::optional<QString> weightEmotion;
+    /// The cell (function, emotion) the live results were computed for (AnalysisController's):
+    /// a project reopened on a live take A recomputes it for this cell.
+    std::optional<QString> cellFunction;
+    std::optional<QString> cellEmotion;
     /// Playback speed.
     std::optional<double> speed;
     /// The docks' places and sizes (QMainWindow::saveState) and the left column's width.

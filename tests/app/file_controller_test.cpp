@@ -202,6 +202,45 @@ TEST_CASE("a project saved while live takes are shown reopens showing them once 
     REQUIRE(document.selectedTake(TakeSlot::A) == window->design().designedTake());
 }
 
+TEST_CASE("a project saved with a live take of another cell as A reopens it computed for that cell", "[app][files]")
+{
+    // A GUI walk found a designed take of serving-tea reopened as one of greeting (the corpus's
+    // first cell): the project did not say which cell the live results were computed for.
+    const QString project = scratchFile("project-live-cell", "cell.bunraku.json");
+    QString designedLabel, weightedLabel;
+    std::vector<Eigen::Index> boundaries;
+    {
+        auto window = test::demoWindow();
+        REQUIRE(window);
+        auto& document = window->document();
+        const auto& takes = document.corpus().takes;
+        const auto other = std::find_if(takes.begin(), takes.end(), [&](const analysis::Take& take) {
+            return take.labels.function != takes.front().labels.function && take.labels.emotion == "hostile";
+        });
+        REQUIRE(other != takes.end());
+        document.selectTake(TakeSlot::A, app::TakeId::corpus(std::size_t(other - takes.begin())));
+        REQUIRE(test::waitUntilIdle(*window));
+        REQUIRE(window->analysis().cellFunction() == other->labels.function);
+        REQUIRE(QTest::qWaitFor([&] { return window->design().ready() && window->emotionPanel()->weightedTake(); }, 60000));
+        document.selectTake(TakeSlot::A, app::TakeId::live(QStringLiteral("designed")));
+        REQUIRE(test::waitUntilIdle(*window));
+        designedLabel = document.takeLabel(app::TakeId::live(QStringLiteral("designed")));
+        weightedLabel = document.takeLabel(app::TakeId::live(QStringLiteral("weighted")));
+        boundaries = window->design().boundaries();
+        REQUIRE(designedLabel.contains(QString::fromStdString(other->labels.function)));
+        REQUIRE(window->files().projects().saveProject(project));
+    }
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    REQUIRE(window->files().projects().openProject(project));
+    const auto& document = window->document();
+    REQUIRE(QTest::qWaitFor([&] { return document.selectedId(TakeSlot::A) == QStringLiteral("live/designed"); }, 60000));
+    REQUIRE(test::waitUntilIdle(*window));
+    CHECK(document.takeLabel(app::TakeId::live(QStringLiteral("designed"))).toStdString() == designedLabel.toStdString());
+    CHECK(document.takeLabel(app::TakeId::live(QStringLiteral("weighted"))).toStdString() == weightedLabel.toStdString());
+    CHECK(window->design().boundaries() == boundaries);
+}
+
 TEST_CASE("a broken project file is reported with its line and what was expected", "[app][files]")
 {
     auto window = test::demoWindow();
