@@ -454,7 +454,12 @@ void MainWindow::updateTitle()
     QString shown = m_document->takeLabel(m_document->selectedId(TakeSlot::A));
     if (!m_document->selectedId(TakeSlot::B).isEmpty())
         shown += tr(" vs ") + m_document->takeLabel(m_document->selectedId(TakeSlot::B));
-    setWindowTitle(tr("%1 - %2[*] - Bunraku Motion Workbench").arg(source.isEmpty() ? tr("no corpus") : source, shown));
+    // "demo corpus - greeting/none/2* - Bunraku Motion Workbench"; with no take shown, no empty
+    // part ("no corpus* - ...").
+    if (shown.isEmpty())
+        setWindowTitle(tr("%1[*] - Bunraku Motion Workbench").arg(source.isEmpty() ? tr("no corpus") : source));
+    else
+        setWindowTitle(tr("%1 - %2[*] - Bunraku Motion Workbench").arg(source.isEmpty() ? tr("no corpus") : source, shown));
     // A long derived take's name is elided here (in full in the tool tip and the title).
     const auto named = [this](TakeSlot slot) {
         return fontMetrics().elidedText(m_document->takeLabel(m_document->selectedId(slot)), Qt::ElideRight, 320);

@@ -327,3 +327,17 @@ TEST_CASE("the window title marks unsaved changes with an asterisk after the tak
     CHECK_FALSE(shown().contains(QStringLiteral(" *")));
     CHECK_FALSE(shown().contains(QStringLiteral("  ")));
 }
+
+TEST_CASE("the window title of a window with no corpus has no empty take and no double space", "[app][window]")
+{
+    // A GUI walk saw "no corpus -  - Bunraku Motion Workbench" while a refusal was on screen.
+    test::isolateSettings();
+    app::MainWindow window;
+    window.files().setDialogsEnabled(false);
+    window.show();
+    REQUIRE(QTest::qWaitForWindowExposed(&window));
+    REQUIRE(window.windowHandle());
+    const QString shown = window.windowHandle()->title();
+    INFO(shown.toStdString());
+    CHECK(shown == QStringLiteral("no corpus - Bunraku Motion Workbench"));
+}
