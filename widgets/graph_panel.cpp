@@ -46,6 +46,11 @@ GraphPanel::GraphPanel(QWidget* parent) : QWidget(parent), m_grid(new GraphGrid(
     // typing any part of a name ("hand", "_L") offers the joints that contain it.
     m_part->setEditable(true);
     m_part->setInsertPolicy(QComboBox::NoInsert);
+    // As wide as its longest name (the kimono's "sleeve_right_tip", a skeleton's long joint
+    // names), up to 32 characters; a longer name shows its beginning, not its end.
+    m_part->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    m_part->setMaximumWidth(m_part->fontMetrics().averageCharWidth() * 32 + 48);
+    connect(m_part, &QComboBox::currentIndexChanged, this, [this] { m_part->lineEdit()->setCursorPosition(0); });
     m_part->lineEdit()->setPlaceholderText(tr("Find a part or joint"));
     auto* finder = new QCompleter(m_part->model(), m_part);
     finder->setFilterMode(Qt::MatchContains);
@@ -159,6 +164,7 @@ void GraphPanel::setTakes(std::shared_ptr<const analysis::Take> takeA, std::shar
         }
     }
     refill(m_part, parts);
+    m_part->lineEdit()->setCursorPosition(0);
     refill(m_dof, dofs);
     m_grid->setSelectedChannel(selectedPart().toStdString(), selectedDof().toStdString());
     m_takeA = std::move(takeA);

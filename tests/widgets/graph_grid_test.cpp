@@ -457,6 +457,46 @@ TEST_CASE("a take of 10000 channels builds the first 96 graphs and says how many
     CHECK_FALSE(caption->isVisible());
 }
 
+TEST_CASE("the part box shows a long part name whole, from its beginning", "[widgets][graph_grid]")
+{
+    // A GUI walk saw "_right_tip" for the kimono's sleeve_right_tip: the box kept the width of the
+    // puppet's short names and showed the end of the longer one.
+    widgets::GraphPanel panel;
+    panel.resize(900, 700);
+    panel.setTakes(test::syntheticPuppetTake(20), nullptr, QStringLiteral("puppet"));
+    panel.show();
+    REQUIRE(QTest::qWaitForWindowExposed(&panel));
+    auto* part = panel.findChild<QComboBox*>(QStringLiteral("graphPart"));
+    REQUIRE(part);
+
+    auto take = std::make_shared<analysis::Take>();
+    for (const std::string name : {"head", "hem_front", "sleeve_right_tip"})
+        for (const auto& channel : analysis::sixDofChannels(name)) take->channels.push_back(channel);
+    take->rateHz = 30.0;
+    take->values = Eigen::MatrixXd::Zero(20, Eigen::Index(take->channels.size()));
+    take->labels = {"bow", "normal", 1, "synthetic"};
+    panel.setTakes(take, nullptr, QStringLiteral("kimono"));
+    panel.selectPart(QStringLiteral("sleeve_right_tip"));
+    QCoreApplication::processEvents();
+    REQUIRE(part->currentText() == QStringLiteral("sleeve_right_tip"));
+    // The text the line edit has room for holds the whole name, and it is scrolled to its start.
+    QLineEdit* edit = part->lineEdit();
+    const int room = edit->contentsRect().width() - edit->textMargins().left() - edit->textMargins().right();
+    CHECK(room >= edit->fontMetrics().horizontalAdvance(QStringLiteral("sleeve_right_tip")));
+    CHECK(edit->cursorPosition() == 0);
+    // A name longer than 32 characters shows its beginning.
+    auto longer = std::make_shared<analysis::Take>(*take);
+    longer->channels.clear();
+    for (const std::string name : {"head", "mixamorig:RightHandThumbMetacarpalEnd_Left"})
+        for (const auto& channel : analysis::sixDofChannels(name)) longer->channels.push_back(channel);
+    longer->values = Eigen::MatrixXd::Zero(20, Eigen::Index(longer->channels.size()));
+    panel.setTakes(longer, nullptr, QStringLiteral("long joint"));
+    panel.selectPart(QStringLiteral("mixamorig:RightHandThumbMetacarpalEnd_Left"));
+    QCoreApplication::processEvents();
+    CHECK(part->width() <= part->maximumWidth());
+    CHECK(edit->cursorPosition() == 0);
+}
+
 TEST_CASE("a skeleton's joints are found by typing in the part box and shown as one joint's graphs", "[widgets][graph_grid]")
 {
     // The 22 joints of a Bandai performer, 6 channels each (132 graphs: more than kMaxGraphs).
