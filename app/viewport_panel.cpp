@@ -218,6 +218,7 @@ void ViewportPanel::rebuildScene()
     m_drawnKimonos.clear();
     if (takes.empty()) {
         m_viewport->setScene(render::SceneContent{}); // nothing stays drawn of the takes shown before
+        updateGapLabels();                            // and the view says why (a take with no figure)
         return;
     }
     render::SceneContent scene;
@@ -295,6 +296,13 @@ void ViewportPanel::updateGapLabels()
 {
     const auto shown = shownTakes(m_document);
     QStringList lines;
+    // A take shown with no figure to draw (the motion axis's or the kimono's channels) is said,
+    // not left as an empty view.
+    for (TakeSlot slot : {TakeSlot::A, TakeSlot::B})
+        if (const TakePointer take = m_document.selectedTake(slot); take && !render::drawableTake(*take))
+            lines << tr("%1: %2 has no figure to draw: its channels are in the graphs")
+                         .arg(slot == TakeSlot::A ? QStringLiteral("A") : QStringLiteral("B"),
+                              m_document.takeLabel(m_document.selectedId(slot)));
     for (int slot = 0; slot < 2; ++slot) {
         TakePointer take;
         for (const auto& [s, t] : shown)

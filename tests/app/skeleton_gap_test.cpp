@@ -19,6 +19,7 @@
 #include <cstdlib>
 #include <QLabel>
 
+using bunraku::app::TakeId;
 using bunraku::app::TakeSlot;
 using namespace bunraku;
 
@@ -100,4 +101,35 @@ TEST_CASE("a normalised Bandai take is shown, graphed and exported as one body, 
     CHECK_FALSE(graphs->grid()->ghostTakes()[1]);
     REQUIRE(exports.exportTake(TakeSlot::A, QString::fromStdString((dir / "take.bvh").string())));
     CHECK(exports.lastNote().isEmpty());
+}
+
+TEST_CASE("a take with no figure to draw is said in the 3D view, as A and as B", "[app][gap]")
+{
+    // A GUI walk saw the motion axis as A leave the 3D view empty without a word, and as B
+    // nothing of it anywhere.
+    auto window = test::demoWindow();
+    REQUIRE(window);
+    auto& document = window->document();
+    const auto axis = app::TakeId::live(QStringLiteral("axis"));
+    REQUIRE(QTest::qWaitFor([&] { return document.take(axis) != nullptr; }, 60000));
+    REQUIRE_FALSE(render::drawableTake(*document.take(axis)));
+    auto* view = window->viewportPanel();
+    QLabel* said = view->skeletonGapLabel();
+    CHECK_FALSE(said->isVisibleTo(view));
+
+    const TakeId corpusA = document.selectedId(TakeSlot::A);
+    document.selectTake(TakeSlot::B, axis);
+    QCoreApplication::processEvents();
+    CHECK(said->isVisibleTo(view));
+    CHECK(said->text() == QStringLiteral("B: ") + document.takeLabel(axis) + QStringLiteral(" has no figure to draw: its channels are in the graphs"));
+
+    document.selectTake(TakeSlot::B, {});
+    document.selectTake(TakeSlot::A, axis);
+    QCoreApplication::processEvents();
+    CHECK(said->isVisibleTo(view));
+    CHECK(said->text().startsWith(QStringLiteral("A: motion axis of ")));
+
+    document.selectTake(TakeSlot::A, corpusA);
+    QCoreApplication::processEvents();
+    CHECK_FALSE(said->isVisibleTo(view));
 }
