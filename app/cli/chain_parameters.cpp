@@ -41,32 +41,16 @@ nlohmann::json asJsonValue(const std::string& text)
     return text;
 }
 
-template <class Parameters>
-MatchingArguments defaultsOf(const Parameters& p, std::string section)
-{
-    MatchingArguments arguments;
-    arguments.section = std::move(section);
-    arguments.tau = p.tau;
-    arguments.searchBand = p.searchBand;
-    arguments.approximationWeight = p.approximationWeight;
-    arguments.path = pl::parameterName(p.path);
-    arguments.weighting = pl::parameterName(an::ChannelWeighting::None);
-    arguments.level = pl::parameterName(p.level);
-    return arguments;
-}
-
 const std::vector<std::string> kTimeScalings{"auto", "global", "none"};
 
 } // namespace
 
-MatchingArguments matchingDefaults(const pl::NormaliseParameters& parameters)
-{
-    MatchingArguments arguments = defaultsOf(parameters, "normalise");
-    arguments.weighting = pl::parameterName(parameters.weighting);
-    return arguments;
-}
+MatchingArguments matchingDefaults(const pl::NormaliseParameters& parameters) { return {"normalise", parameters.options().match}; }
 
-MatchingArguments matchingDefaults(const pl::AxisParameters& parameters) { return defaultsOf(parameters, "axis"); }
+MatchingArguments matchingDefaults(const pl::AxisParameters& parameters)
+{
+    return {"axis", parameters.extractionOptions().phase.match};
+}
 
 CLI::Validator parameterCheck(std::string_view path)
 {
@@ -86,50 +70,35 @@ CLI::Validator parameterCheck(std::string_view path)
 
 void addMatchingOptions(CLI::App* command, MatchingArguments& arguments, bool timeScale)
 {
-    command->add_option("--tau", arguments.tau, "Half window tau, frames (thesis 3.5.2)")
+    an::MatchOptions& options = arguments.options;
+    command->add_option("--tau", options.tau, "Half window tau, frames (thesis 3.5.2)")
         ->transform(parameterCheck(arguments.section + ".tau"))
         ->capture_default_str();
-    command->add_option("--tcmp", arguments.searchBand, "Search band T_cmp, frames (thesis 3.5.1)")
+    command->add_option("--tcmp", options.searchBand, "Search band T_cmp, frames (thesis 3.5.1)")
         ->transform(parameterCheck(arguments.section + ".searchBand"))
         ->capture_default_str();
-    command->add_option("--approximation-weight", arguments.approximationWeight,
+    command->add_option("--approximation-weight", options.approximationWeight,
                         "Weight M of the approximation term (thesis eq. 5.17; 0 = off)")
         ->transform(parameterCheck(arguments.section + ".approximationWeight"))
         ->capture_default_str();
-    command->add_option("--path", arguments.path,
-                        "Correspondence path: optimal (the least-cost monotone path) or greedy (the thesis's scan, 3.5.3)")
-        ->check(namedParameterCheck<an::PathMethod>())
-        ->capture_default_str();
-    command->add_option("--weighting", arguments.weighting, "Channel weighting: none (the thesis) or standardise")
-        ->check(namedParameterCheck<an::ChannelWeighting>())
-        ->capture_default_str();
-    command->add_option("--level", arguments.level,
-                        "Level of each channel before the transform: first-frame (minus its first frame) or none "
-                        "(eq. 5.16 read literally)")
-        ->check(namedParameterCheck<an::LevelAlignment>())
-        ->capture_default_str();
-    if (timeScale)
-        command->add_option("--time-scale", arguments.timeScale,
-                            "Takes of other lengths: auto (a global time scale first when the lengths differ by more "
-                            "than half of T_cmp), global (always) or none (the thesis: the band alone)")
-            ->check(CLI::IsMember(kTimeScalings))
-            ->capture_default_str();
-}
-
-an::MatchOptions matchOptions(const MatchingArguments& arguments, std::vector<double> scales)
-{
-    an::MatchOptions options;
-    options.scales = std::move(scales);
-    options.tau = arguments.tau;
-    options.searchBand = arguments.searchBand;
-    options.approximationWeight = arguments.approximationWeight;
-    options.path = namedParameter<an::PathMethod>(arguments.path);
-    options.weighting = namedParameter<an::ChannelWeighting>(arguments.weighting);
-    options.level = namedParameter<an::LevelAlignment>(arguments.level);
-    options.timeScaling = arguments.timeScale == "global" ? an::TimeScaling::Global
-                          : arguments.timeScale == "none" ? an::TimeScaling::None
-                                                          : an::TimeScaling::Auto;
-    return options;
+    addNamedParameter(command, "--path", options.path,
+                      "Correspondence path: optimal (the least-cost monotone path) or greedy (the thesis's scan, 3.5.3)")
+        ->default_str(pl::parameterName(options.path));
+    addNamedParameter(command, "--weighting", options.weighting, "Channel weighting: none (the thesis) or standardise")
+        ->default_str(pl::parameterName(options.weighting));
+    addNamedParameter(command, "--level", options.level,
+                      "Level of each channel before the transform: first-frame (minus its first frame) or none "
+                      "(eq. 5.16 read literally)")
+        ->default_str(pl::parameterName(options.level));
+    if (!timeScale) return;
+    const auto setTimeScaling = [&options](const std::string& name) {
+        options.timeScaling = name == "global" ? an::TimeScaling::Global : name == "none" ? an::TimeScaling::None : an::TimeScaling::Auto;
+    };
+    command->add_option_function<std::string>("--time-scale", setTimeScaling,
+                                              "Takes of other lengths: auto (a global time scale first when the lengths differ by "
+                                              "more than half of T_cmp), global (always) or none (the thesis: the band alone)")
+        ->check(CLI::IsMember(kTimeScalings))
+        ->default_str("auto");
 }
 
 } // namespace bunraku::app::cli

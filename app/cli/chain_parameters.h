@@ -42,6 +42,15 @@ Enum namedParameter(const std::string& name)
     throw CliError("'" + name + "' is not one of the names the parameter files use");
 }
 
+/// An option naming an enumerated parameter, bound onto the typed `value`: checked against the
+/// names of the parameter files' tables (namedParameterCheck), one spelling for both.
+template <class Enum>
+CLI::Option* addNamedParameter(CLI::App* command, const std::string& name, Enum& value, const std::string& help)
+{
+    const auto set = [&value](const std::string& text) { value = namedParameter<Enum>(text); };
+    return command->add_option_function<std::string>(name, set, help)->check(namedParameterCheck<Enum>());
+}
+
 /// The check of an option bound to the numeric parameter `path` ("normalise.tau"): the range of
 /// the one table (analysis::pipeline::parameterRange) and the parameter files' message for a value
 /// outside it ("--tau: expected an integer in 0..200, got the number 500"). --help shows the range.
@@ -49,19 +58,13 @@ Enum namedParameter(const std::string& name)
 CLI::Validator parameterCheck(std::string_view path);
 
 /// The wavelet matching's options as every command that matches takes them - `normalise` and
-/// `experiment truth` (thesis 3.5), `phase` and `experiment axis` (5.3): one spelling, one check
+/// `experiment truth` (thesis 3.5), `phase` and `experiment design` (5.3): one spelling, one check
 /// and one help line per option, the ranges of the analysis's table of limits
-/// (stage_parameters.h) and the names of the parameter files' tables. The defaults are the
-/// command's stage's (matchingDefaults).
+/// (stage_parameters.h) and the names of the parameter files' tables, bound onto the typed
+/// options. The defaults are the command's stage's (matchingDefaults).
 struct MatchingArguments {
     std::string section; ///< "normalise" or "axis": whose parameters the options are (their ranges)
-    int tau = 0;
-    int searchBand = 0;
-    double approximationWeight = 0.0;
-    std::string path;
-    std::string weighting;
-    std::string level;
-    std::string timeScale = "auto";
+    analysis::MatchOptions options; ///< the scales are each command's: --scales or --max-scale
 };
 /// The defaults of the normalise stage or of the axis stage (`bunraku analyse`'s).
 MatchingArguments matchingDefaults(const analysis::pipeline::NormaliseParameters& parameters);
@@ -69,7 +72,5 @@ MatchingArguments matchingDefaults(const analysis::pipeline::AxisParameters& par
 /// --tau, --tcmp, --approximation-weight, --path, --weighting, --level, and --time-scale when
 /// `timeScale` (the scales are each command's: --scales or --max-scale).
 void addMatchingOptions(CLI::App* command, MatchingArguments& arguments, bool timeScale);
-/// The options the arguments name, with `scales`.
-analysis::MatchOptions matchOptions(const MatchingArguments& arguments, std::vector<double> scales);
 
 } // namespace bunraku::app::cli

@@ -62,18 +62,28 @@ void report(bool json, const nlohmann::json& summary, Text&& text)
     else text();
 }
 
-/// A subcommand of `parent` whose callback is `run(*arguments)`; the caller binds its options to
-/// `arguments`, which live as long as the command line. Arguments with a `json` member get --json
+/// A registered subcommand: its CLI11 app and the arguments its options bind to.
+template <class Arguments>
+struct Command {
+    CLI::App* app;
+    Arguments& arguments;
+};
+
+/// The description of `parent`'s subcommand `name`: one table of them (app/cli/commands.cpp).
+const std::string& commandDescription(const CLI::App& parent, const std::string& name);
+
+/// A subcommand of `parent` whose callback is `run(arguments)`; the arguments live as long as the
+/// command line, the caller binds its options to them. Arguments with a `json` member get --json
 /// (`jsonHelp` its help line).
 template <class Arguments>
-CLI::App* addCommand(CLI::App& parent, const std::string& name, const std::string& description,
-                     const std::shared_ptr<Arguments>& arguments, void (*run)(const Arguments&),
-                     const char* jsonHelp = "Print a machine-readable summary")
+Command<Arguments> addCommand(CLI::App& parent, const std::string& name, void (*run)(const Arguments&),
+                              const char* jsonHelp = "Print a machine-readable summary")
 {
-    CLI::App* command = parent.add_subcommand(name, description);
+    auto arguments = std::make_shared<Arguments>();
+    CLI::App* command = parent.add_subcommand(name, commandDescription(parent, name));
     if constexpr (requires { arguments->json; }) command->add_flag("--json", arguments->json, jsonHelp);
     command->callback([arguments, run] { run(*arguments); });
-    return command;
+    return {command, *arguments};
 }
 
 /// Registers every subcommand (app/cli/commands.cpp).

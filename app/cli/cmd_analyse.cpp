@@ -16,13 +16,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
-#include <memory>
 
 namespace bunraku::app::cli {
 namespace {
-
-namespace pl = bunraku::analysis::pipeline;
-namespace rp = bunraku::analysis::report;
 
 struct AnalyseArguments {
     std::string corpus;
@@ -82,13 +78,7 @@ void runAnalyse(const AnalyseArguments& arguments)
                            {"threads", options.threads},
                            {"seconds", seconds}};
     if (chain->axes && !chain->axes->unavailable.empty()) summary["skipped"] = {chain->axes->unavailable};
-    if (const auto& km2o = chain->decomposed->km2o) {
-        summary["km2o"] = rp::km2oOutcomeJson(*km2o);
-        if (km2o->estimable()) {
-            summary["M"] = km2o->correlationLength;
-            summary["mean_P_percent"] = km2o->meanCellErrorPercent;
-        }
-    }
+    addKm2oSummary(summary, *chain->decomposed);
     if (arguments.json) {
         std::cout << summary.dump() << std::endl;
         return;
@@ -98,30 +88,22 @@ void runAnalyse(const AnalyseArguments& arguments)
         std::cout << " (KM2O M = " << km2o->correlationLength << ", mean P = " << km2o->meanCellErrorPercent << " %)";
     std::cout << ": " << files.size() << " files and the report " << summary["report"].get<std::string>() << "\n";
     if (chain->axes && !chain->axes->unavailable.empty()) std::cout << chain->axes->unavailable << "\n";
-    if (const auto& km2o = chain->decomposed->km2o; km2o && !km2o->notes.empty()) {
-        std::cout << km2o->outcome() << "\n";
-        for (const auto& note : km2o->notes) std::cout << "  " << note << "\n";
-    }
+    printKm2oNotes(*chain->decomposed);
 }
 
 } // namespace
 
 void addAnalyseCommands(CommandSet& commands)
 {
-    auto arguments = std::make_shared<AnalyseArguments>();
-    CLI::App* command = addCommand(commands.root, "analyse",
-        "The thesis's whole chain: preprocess (2.2), normalise every cell (3), decompose (4: KM2O with M chosen by "
-        "P), spectra and ARMA (4.3.2), motion axes, phase and gains (5); writes the data files and report.html. A corpus of a "
-        "skeleton's joints (--all-joints) is normalised with the chains coupling; the motion axes need the puppet's 4 "
-        "parts and are skipped with a note",
-        arguments, runAnalyse, "Progress and the summary as JSON lines on standard output");
-    command->add_option("CORPUS", arguments->corpus, "Corpus folder (corpus.json), or 'demo' for the embedded demo corpus")->required();
-    command->add_option("-o,--output", arguments->output, "Output folder")->required()->type_name("DIR");
-    command->add_option("--parameters", arguments->parameters,
+    auto [command, arguments] =
+        addCommand(commands.root, "analyse", runAnalyse, "Progress and the summary as JSON lines on standard output");
+    command->add_option("CORPUS", arguments.corpus, "Corpus folder (corpus.json), or 'demo' for the embedded demo corpus")->required();
+    command->add_option("-o,--output", arguments.output, "Output folder")->required()->type_name("DIR");
+    command->add_option("--parameters", arguments.parameters,
                         "JSON file of the chain's parameters (docs/FORMATS.md), or a project file; default the thesis's, but "
                         "for normalisation's optimal path")
         ->type_name("FILE");
-    command->add_option("--threads", arguments->threads,
+    command->add_option("--threads", arguments.threads,
                         "Threads for the stages that split into cells and channels, 0 = one per hardware thread; the results are "
                         "the same for any count")
         ->check(CLI::Range(0, analysis::kMaxThreads))

@@ -24,55 +24,35 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
-#include <memory>
 
 namespace bunraku::app::cli {
 namespace {
 
-namespace an = bunraku::analysis;
-namespace pl = bunraku::analysis::pipeline;
-
 /// Options every chapter-5 command shares: which body and how its axis x is chosen.
 struct AxisArguments {
     std::string body;
-    std::string frontBack = "shoulder";
-    double spacing = 1.0;
-    std::string masses = "model";
-    std::string segments = "male";
+    an::AxisOptions options;
     bool allJoints = false;
 };
 
 void addAxisOptions(CLI::App* command, AxisArguments& arguments, bool readsTakes = true)
 {
     if (readsTakes)
-        command->add_option("--segments", arguments.segments,
-                            "The whole body's segment table (with --all-joints): de Leva's (1996) 'male' (default) or 'female'")
-            ->check(namedParameterCheck<an::SegmentTable>());
+        addNamedParameter(command, "--segments", arguments.options.segments,
+                          "The whole body's segment table (with --all-joints): de Leva's (1996) 'male' (default) or 'female'");
     if (readsTakes)
         command->add_flag("--all-joints", arguments.allJoints,
                       "Read a BVH, FBX, glTF or Collada take with every joint of its skeleton (6 channels each) instead of the "
                       "puppet's four parts: the axis is the performer's whole body, its segments from de Leva (1996)");
     command->add_option("--body", arguments.body, "Body description JSON (default: the shipped Bunraku puppet)")
         ->check(CLI::ExistingFile);
-    command->add_option("--front-back", arguments.frontBack,
-                        "Axis x: 'shoulder' (the shoulder's facing, default) or 'principal' (thesis-literal principal axis)")
-        ->check(namedParameterCheck<an::FrontBackAxis>());
-    command->add_option("--spacing", arguments.spacing, "Mass point lattice step, cm (default 1)")
+    addNamedParameter(command, "--front-back", arguments.options.frontBack,
+                      "Axis x: 'shoulder' (the shoulder's facing, default) or 'principal' (thesis-literal principal axis)");
+    command->add_option("--spacing", arguments.options.massPoints.spacing, "Mass point lattice step, cm (default 1)")
         ->transform(parameterCheck("axis.massSpacing"));
-    command->add_option("--masses", arguments.masses,
-                        "Where the masses come from: 'model' (the modelled puppet's solid, default) or 'primitives' (the body "
-                        "description's primitives); a --body with other parts than the puppet's uses its primitives")
-        ->check(namedParameterCheck<an::MassSource>());
-}
-
-an::AxisOptions axisOptions(const AxisArguments& arguments)
-{
-    an::AxisOptions options;
-    options.massPoints.spacing = arguments.spacing;
-    options.massPoints.source = namedParameter<an::MassSource>(arguments.masses);
-    options.frontBack = namedParameter<an::FrontBackAxis>(arguments.frontBack);
-    options.segments = namedParameter<an::SegmentTable>(arguments.segments);
-    return options;
+    addNamedParameter(command, "--masses", arguments.options.massPoints.source,
+                      "Where the masses come from: 'model' (the modelled puppet's solid, default) or 'primitives' (the body "
+                      "description's primitives); a --body with other parts than the puppet's uses its primitives");
 }
 
 /// A take file as the chapter-5 commands read it: every joint with --all-joints.
@@ -89,14 +69,14 @@ an::Take readAxisTake(const std::string& path, const AxisArguments& arguments)
 /// BVH take is its performer's).
 an::AxisModel axisModel(const AxisArguments& arguments, const an::Take* take = nullptr, bool fitToSkeleton = true)
 {
-    if (!arguments.body.empty()) return an::makeAxisModel(unwrap(an::loadBodyDescription(arguments.body)), axisOptions(arguments));
-    if (take) return *unwrap(an::pipeline::axisModelFor(*take, axisOptions(arguments), fitToSkeleton));
-    return an::makeAxisModel(an::defaultBodyDescription(), axisOptions(arguments));
+    if (!arguments.body.empty()) return an::makeAxisModel(unwrap(an::loadBodyDescription(arguments.body)), arguments.options);
+    if (take) return *unwrap(an::pipeline::axisModelFor(*take, arguments.options, fitToSkeleton));
+    return an::makeAxisModel(an::defaultBodyDescription(), arguments.options);
 }
 
 an::MotionAxis motionAxis(const an::AxisModel& model, const an::Take& take, const AxisArguments& arguments)
 {
-    an::MotionAxis axis = unwrap(an::computeMotionAxis(model, take, axisOptions(arguments)));
+    an::MotionAxis axis = unwrap(an::computeMotionAxis(model, take, arguments.options));
     if (const std::string report = axis.degeneracyReport(); !report.empty())
         std::cerr << "bunraku: warning: " << take.displayName() << ": " << report << "\n";
     return axis;
@@ -106,6 +86,34 @@ an::MotionAxis motionAxis(const an::AxisModel& model, const an::Take& take, cons
 Eigen::VectorXd functionalToEmotional(const an::WarpCurve& curve, Eigen::Index functionalFrames)
 {
     return an::invertMonotone(an::sampleWarp(curve), functionalFrames);
+}
+
+/// The two takes `phase` and `gains` compare: --reference (functional) and --sample (emotional).
+struct TakePair {
+    std::string reference;
+    std::string sample;
+};
+
+/// The pair's takes as read.
+struct AxisPair {
+    an::Take reference, sample;
+};
+
+AxisPair readAxisPair(const TakePair& takes, const AxisArguments& arguments)
+{
+    return {readAxisTake(takes.reference, arguments), readAxisTake(takes.sample, arguments)};
+}
+
+/// A take's axis coordinates on its own body (not fitted to its skeleton), as phase and gains compare them.
+Eigen::MatrixXd axisCoordinatesOf(const an::Take& take, const AxisArguments& arguments)
+{
+    return an::axisCoordinates(motionAxis(axisModel(arguments, &take, false), take, arguments).world_T_axis);
+}
+
+void addTakePairOptions(CLI::App* command, TakePair& takes)
+{
+    command->add_option("--reference", takes.reference, "Functional take")->required()->check(CLI::ExistingFile);
+    command->add_option("--sample", takes.sample, "Emotional take")->required()->check(CLI::ExistingFile);
 }
 
 // ---- axis ---------------------------------------------------------------------------------
@@ -130,41 +138,32 @@ void runAxis(const AxisCommandArguments& arguments)
         out.values = an::axisCoordinates(axis.world_T_axis);
     }
     unwrap(an::io::writeTakeCsv(out, arguments.output));
-    if (arguments.json) {
-        nlohmann::json degenerate = nlohmann::json::array();
-        for (const an::DegenerateFrame& frame : axis.degenerateFrames)
-            if (frame.affectsAxis) degenerate.push_back(frame.frame);
-        printJson({{"take", take.displayName()},
-                   {"frames", axis.frameCount()},
-                   {"mass_g", axis.totalMass},
-                   {"mass_source", an::massSourceName(model.massSource)},
-                   {"part_masses_g", [&] {
-                        nlohmann::json parts = nlohmann::json::object();
-                        for (std::size_t p = 0; p < model.parts.size() && p < model.body.parts.size(); ++p)
-                            parts[model.body.parts[p].name] = model.parts[p].mass;
-                        return parts;
-                    }()},
-                   {"part_centres_cm", [&] {
-                        nlohmann::json parts = nlohmann::json::object();
-                        for (std::size_t p = 0; p < model.parts.size() && p < model.body.parts.size(); ++p)
-                            parts[model.body.parts[p].name] = {model.parts[p].centre.x(), model.parts[p].centre.y(), model.parts[p].centre.z()};
-                        return parts;
-                    }()},
-                   {"channels", [&] {
-                        std::vector<std::string> names;
-                        for (const an::Channel& c : out.channels) names.push_back(c.name());
-                        return names;
-                    }()},
-                   {"degenerate_frames", degenerate},
-                   {"output", arguments.output}});
-        return;
+    nlohmann::json degenerate = nlohmann::json::array();
+    for (const an::DegenerateFrame& frame : axis.degenerateFrames)
+        if (frame.affectsAxis) degenerate.push_back(frame.frame);
+    nlohmann::json masses = nlohmann::json::object(), centres = nlohmann::json::object(), channels = nlohmann::json::array();
+    for (std::size_t p = 0; p < model.parts.size() && p < model.body.parts.size(); ++p) {
+        masses[model.body.parts[p].name] = model.parts[p].mass;
+        centres[model.body.parts[p].name] = {model.parts[p].centre.x(), model.parts[p].centre.y(), model.parts[p].centre.z()};
     }
-    std::cout << "axis of " << take.displayName() << ": " << axis.frameCount() << " frames, body mass "
-              << std::fixed << std::setprecision(0) << axis.totalMass << " g (masses from the "
-              << (model.massSource == an::MassSource::Model        ? "modelled puppet"
-                  : model.massSource == an::MassSource::Segments ? "performer's segments, de Leva 1996"
-                                                                 : "body's primitives")
-              << ") -> " << arguments.output << "\n";
+    for (const an::Channel& c : out.channels) channels.push_back(c.name());
+    const nlohmann::json summary{{"take", take.displayName()},
+                                 {"frames", axis.frameCount()},
+                                 {"mass_g", axis.totalMass},
+                                 {"mass_source", an::massSourceName(model.massSource)},
+                                 {"part_masses_g", masses},
+                                 {"part_centres_cm", centres},
+                                 {"channels", channels},
+                                 {"degenerate_frames", degenerate},
+                                 {"output", arguments.output}};
+    report(arguments.json, summary, [&] {
+        std::cout << "axis of " << take.displayName() << ": " << axis.frameCount() << " frames, body mass " << std::fixed
+                  << std::setprecision(0) << axis.totalMass << " g (masses from the "
+                  << (model.massSource == an::MassSource::Model        ? "modelled puppet"
+                      : model.massSource == an::MassSource::Segments ? "performer's segments, de Leva 1996"
+                                                                     : "body's primitives")
+                  << ") -> " << arguments.output << "\n";
+    });
 }
 
 // ---- phase --------------------------------------------------------------------------------
@@ -182,7 +181,7 @@ void addPhaseOptions(CLI::App* command, PhaseArguments& arguments)
     command->add_option("--max-scale", arguments.maxScale, "Scales 1..N")->transform(parameterCheck("axis.maxScale"))->capture_default_str();
     // --weight, the old name of --approximation-weight here, is kept out of the help (`emotion
     // --weight` is the emotion weight).
-    command->add_option("--weight", arguments.matching.approximationWeight, "Old name of --approximation-weight")
+    command->add_option("--weight", arguments.matching.options.approximationWeight, "Old name of --approximation-weight")
         ->transform(parameterCheck("axis.approximationWeight"))
         ->group("");
     command->add_option("--control-spacing", arguments.spacing, "Frames between warp control points")
@@ -193,14 +192,14 @@ void addPhaseOptions(CLI::App* command, PhaseArguments& arguments)
 an::PhaseOptions phaseOptions(const PhaseArguments& arguments)
 {
     an::PhaseOptions options;
-    options.match = matchOptions(arguments.matching, an::integerScales(arguments.maxScale));
+    options.match = arguments.matching.options;
+    options.match.scales = an::integerScales(arguments.maxScale);
     options.controlPointSpacing = arguments.spacing;
     return options;
 }
 
 struct PhaseCommandArguments {
-    std::string reference;
-    std::string sample;
+    TakePair takes;
     std::string output;
     bool json = false;
     AxisArguments axis;
@@ -209,44 +208,38 @@ struct PhaseCommandArguments {
 
 void runPhase(const PhaseCommandArguments& arguments)
 {
-    refuseOutputOverInputs(arguments.output, OutputKind::File, {arguments.reference, arguments.sample, arguments.axis.body});
-    const an::Take reference = readAxisTake(arguments.reference, arguments.axis);
-    const an::Take sample = readAxisTake(arguments.sample, arguments.axis);
-    const Eigen::MatrixXd functional =
-        an::axisCoordinates(motionAxis(axisModel(arguments.axis, &reference, false), reference, arguments.axis).world_T_axis);
-    const Eigen::MatrixXd emotional =
-        an::axisCoordinates(motionAxis(axisModel(arguments.axis, &sample, false), sample, arguments.axis).world_T_axis);
-    auto extracted = an::extractPhase(functional, emotional, phaseOptions(arguments.phase));
-    if (!extracted)
-        throw CliError(arguments.sample + " against " + arguments.reference + ": " + extracted.error().message);
+    const TakePair& takes = arguments.takes;
+    refuseOutputOverInputs(arguments.output, OutputKind::File, {takes.reference, takes.sample, arguments.axis.body});
+    const auto [reference, sample] = readAxisPair(takes, arguments.axis);
+    const Eigen::MatrixXd functional = axisCoordinatesOf(reference, arguments.axis);
+    auto extracted = an::extractPhase(functional, axisCoordinatesOf(sample, arguments.axis), phaseOptions(arguments.phase));
+    if (!extracted) throw CliError(takes.sample + " against " + takes.reference + ": " + extracted.error().message);
     const an::PhaseResult phase = std::move(extracted).value();
     unwrap(an::writeWarpCsv(phase.curve, arguments.output));
     const Eigen::VectorXd identity = Eigen::VectorXd::LinSpaced(phase.emotionalToFunctional.size(), 0.0,
                                                                  double(phase.emotionalToFunctional.size() - 1));
     const double meanShift = (phase.emotionalToFunctional - identity).cwiseAbs().mean();
-    if (arguments.json) {
-        nlohmann::json points = nlohmann::json::array();
-        for (const an::WarpPoint& p : phase.curve.points) points.push_back({p.output, p.source});
-        printJson({{"reference", reference.displayName()},
-                   {"sample", sample.displayName()},
-                   {"control_points", points},
-                   {"correspondence", std::vector<int>(phase.correspondence.data(),
-                                                       phase.correspondence.data() + phase.correspondence.size())},
-                   {"mean_abs_shift_frames", meanShift},
-                   {"cost", phase.cost},
-                   {"output", arguments.output}});
-        return;
-    }
-    std::cout << "phase of " << sample.displayName() << " against " << reference.displayName() << ": "
-              << phase.curve.points.size() << " control points, mean |shift| " << std::fixed << std::setprecision(2)
-              << meanShift << " frames -> " << arguments.output << "\n";
+    nlohmann::json points = nlohmann::json::array();
+    for (const an::WarpPoint& p : phase.curve.points) points.push_back({p.output, p.source});
+    const nlohmann::json summary{
+        {"reference", reference.displayName()},
+        {"sample", sample.displayName()},
+        {"control_points", points},
+        {"correspondence", std::vector<int>(phase.correspondence.data(), phase.correspondence.data() + phase.correspondence.size())},
+        {"mean_abs_shift_frames", meanShift},
+        {"cost", phase.cost},
+        {"output", arguments.output}};
+    report(arguments.json, summary, [&] {
+        std::cout << "phase of " << sample.displayName() << " against " << reference.displayName() << ": "
+                  << phase.curve.points.size() << " control points, mean |shift| " << std::fixed << std::setprecision(2)
+                  << meanShift << " frames -> " << arguments.output << "\n";
+    });
 }
 
 // ---- gains --------------------------------------------------------------------------------
 
 struct GainsCommandArguments {
-    std::string reference;
-    std::string sample;
+    TakePair takes;
     std::string warp;
     std::string phrases;
     std::string output;
@@ -257,14 +250,11 @@ struct GainsCommandArguments {
 void runGains(const GainsCommandArguments& arguments)
 {
     refuseOutputOverInputs(arguments.output, OutputKind::File,
-                           {arguments.reference, arguments.sample, arguments.warp, arguments.axis.body});
-    const an::Take reference = readAxisTake(arguments.reference, arguments.axis);
-    const an::Take sample = readAxisTake(arguments.sample, arguments.axis);
+                           {arguments.takes.reference, arguments.takes.sample, arguments.warp, arguments.axis.body});
+    const auto [reference, sample] = readAxisPair(arguments.takes, arguments.axis);
     const an::WarpCurve warp = unwrap(an::readWarpCsv(arguments.warp));
-    const Eigen::MatrixXd functional =
-        an::axisCoordinates(motionAxis(axisModel(arguments.axis, &reference, false), reference, arguments.axis).world_T_axis);
-    const Eigen::MatrixXd emotional =
-        an::axisCoordinates(motionAxis(axisModel(arguments.axis, &sample, false), sample, arguments.axis).world_T_axis);
+    const Eigen::MatrixXd functional = axisCoordinatesOf(reference, arguments.axis);
+    const Eigen::MatrixXd emotional = axisCoordinatesOf(sample, arguments.axis);
     const std::vector<Eigen::Index> boundaries = arguments.phrases.empty()
                                                      ? an::suggestPhraseBoundaries(functional)
                                                      : unwrap(an::parsePhraseBoundaries(arguments.phrases, functional.rows()));
@@ -278,32 +268,31 @@ void runGains(const GainsCommandArguments& arguments)
         for (const an::DofGain& gain : phrase.dofs)
             if (!gain.reason.empty()) reasons.push_back(gain.reason);
     const std::vector<an::IllConditionedGain> illConditioned = an::illConditionedGains(gains);
-    if (arguments.json) {
-        nlohmann::json ill = nlohmann::json::array();
-        for (const an::IllConditionedGain& gain : illConditioned)
-            ill.push_back({{"phrase", gain.phrase + 1},
-                           {"begin", gain.begin},
-                           {"end", gain.end},
-                           {"dof", gain.dofName},
-                           {"A1_functional", gain.a1Functional},
-                           {"A1_emotional", gain.a1Emotional},
-                           {"g1", gain.g1},
-                           {"reason", gain.reason}});
-        printJson({{"phrases", boundaries}, {"notes", reasons}, {"output", arguments.output}, {"ill_conditioned", ill}});
-        return;
-    }
-    std::cout << gains.phrases.size() << " phrases (boundaries";
-    for (Eigen::Index b : boundaries) std::cout << " " << b;
-    std::cout << (arguments.phrases.empty() ? ", suggested at minima of the axis speed" : "") << ") -> " << arguments.output
-              << "\n";
-    for (const std::string& reason : reasons) std::cout << "  note: " << reason << "\n";
-    if (illConditioned.empty()) return;
-    const double fraction = an::GainOptions{}.illConditionedFraction;
-    std::cout << illConditioned.size() << " ill-conditioned g1 (A1_em below " << fraction << " x A1_no; regularised to "
-              << 1.0 / fraction << "):\n";
+    nlohmann::json ill = nlohmann::json::array();
     for (const an::IllConditionedGain& gain : illConditioned)
-        std::cout << "  phrase " << gain.phrase + 1 << " (frames " << gain.begin << "-" << gain.end << "), " << gain.dofName
-                  << ": " << gain.reason << "\n";
+        ill.push_back({{"phrase", gain.phrase + 1},
+                       {"begin", gain.begin},
+                       {"end", gain.end},
+                       {"dof", gain.dofName},
+                       {"A1_functional", gain.a1Functional},
+                       {"A1_emotional", gain.a1Emotional},
+                       {"g1", gain.g1},
+                       {"reason", gain.reason}});
+    const nlohmann::json summary{{"phrases", boundaries}, {"notes", reasons}, {"output", arguments.output}, {"ill_conditioned", ill}};
+    report(arguments.json, summary, [&] {
+        std::cout << gains.phrases.size() << " phrases (boundaries";
+        for (Eigen::Index b : boundaries) std::cout << " " << b;
+        std::cout << (arguments.phrases.empty() ? ", suggested at minima of the axis speed" : "") << ") -> " << arguments.output
+                  << "\n";
+        for (const std::string& reason : reasons) std::cout << "  note: " << reason << "\n";
+        if (illConditioned.empty()) return;
+        const double fraction = an::GainOptions{}.illConditionedFraction;
+        std::cout << illConditioned.size() << " ill-conditioned g1 (A1_em below " << fraction << " x A1_no; regularised to "
+                  << 1.0 / fraction << "):\n";
+        for (const an::IllConditionedGain& gain : illConditioned)
+            std::cout << "  phrase " << gain.phrase + 1 << " (frames " << gain.begin << "-" << gain.end << "), " << gain.dofName
+                      << ": " << gain.reason << "\n";
+    });
 }
 
 // ---- design -------------------------------------------------------------------------------
@@ -329,7 +318,7 @@ void runDesign(const DesignCommandArguments& arguments)
     if (arguments.output == arguments.axisOutput) throw CliError(arguments.output + ": -o and --axis-output name the same file");
     const an::Take take = readAxisTake(arguments.take, arguments.axis);
     const an::AxisModel model = axisModel(arguments.axis, &take);
-    const an::DesignBasis basis = unwrap(an::prepareDesign(model, take, axisOptions(arguments.axis)));
+    const an::DesignBasis basis = unwrap(an::prepareDesign(model, take, arguments.axis.options));
     const an::WarpCurve warp = arguments.warp.empty() ? an::identityWarp(take.frameCount()) : unwrap(an::readWarpCsv(arguments.warp));
     if (!warp.points.empty() && warp.points.back().source > double(take.frameCount() - 1) + 1e-9)
         throw CliError(arguments.warp + ": the warp reaches source frame " + std::to_string(warp.points.back().source) +
@@ -351,7 +340,8 @@ void runDesign(const DesignCommandArguments& arguments)
         axis.labels = designed.take.labels;
         unwrap(an::io::writeTakeCsv(an::axisTake(axis), arguments.axisOutput));
     }
-    report(arguments.json, {{"frames", designed.take.frameCount()}, {"phrases", gains.phrases.size()}, {"output", arguments.output}}, [&] {
+    const nlohmann::json summary{{"frames", designed.take.frameCount()}, {"phrases", gains.phrases.size()}, {"output", arguments.output}};
+    report(arguments.json, summary, [&] {
         std::cout << "designed " << designed.take.frameCount() << " frames from " << take.displayName() << " -> " << arguments.output
                   << "\n";
     });
@@ -370,14 +360,7 @@ struct ExperimentArguments {
 
 void runExperiment(const ExperimentArguments& arguments)
 {
-    const std::filesystem::path truthFolder = an::synth::groundTruthFolder(arguments.corpus);
-    const an::synth::DemoGroundTruth truth = [&] {
-        auto read = an::synth::readGroundTruth(truthFolder);
-        if (!read.ok())
-            throw CliError("no ground truth for " + arguments.corpus + " (expected " + truthFolder.string() +
-                           ", written by `bunraku demo`): " + read.error().message);
-        return std::move(read).value();
-    }();
+    const an::synth::DemoGroundTruth truth = groundTruthOf(arguments.corpus);
     an::DesignCorpusOptions corpusOptions;
     an::preprocess::parsePositionAlignment(arguments.position, corpusOptions.preprocess.positionAlignment);
     an::Corpus corpus;
@@ -397,12 +380,12 @@ void runExperiment(const ExperimentArguments& arguments)
                      "mean vs truth (fun/emo)\n";
     for (const an::SyntheticDesignCell& designCell : designCells) {
         const an::DesignCell& cell = designCell.cell;
-        const an::DesignCellResult result = unwrap(an::evaluateDesignCell(model, cell, options, axisOptions(arguments.axis)));
+        const an::DesignCellResult result = unwrap(an::evaluateDesignCell(model, cell, options, arguments.axis.options));
         // amplitude alone: the gains against the emotional axis phase-adjusted by the true warp
         const Eigen::MatrixXd functional =
-            an::axisCoordinates(unwrap(an::computeMotionAxis(model, cell.functional, axisOptions(arguments.axis))).world_T_axis);
+            an::axisCoordinates(unwrap(an::computeMotionAxis(model, cell.functional, arguments.axis.options)).world_T_axis);
         const Eigen::MatrixXd emotional =
-            an::axisCoordinates(unwrap(an::computeMotionAxis(model, cell.emotional, axisOptions(arguments.axis))).world_T_axis);
+            an::axisCoordinates(unwrap(an::computeMotionAxis(model, cell.emotional, arguments.axis.options)).world_T_axis);
         const Eigen::VectorXd trueInverse = an::invertMonotone(cell.trueEmotionalToFunctional, functional.rows());
         const double amplitudeError =
             an::relativeError(an::applyGains(functional, result.parameters.gains), an::resampleRows(emotional, trueInverse));
@@ -433,77 +416,54 @@ void runExperiment(const ExperimentArguments& arguments)
 void addMotionAxisCommands(CommandSet& commands)
 {
     {
-        auto arguments = std::make_shared<AxisCommandArguments>();
-        CLI::App* command = addCommand(commands.root, "axis",
-            "Motion axis of a take (thesis 5.2.1): principal axes of inertia of the posed body per frame, "
-            "written as the thesis's 6 axis channels",
-            arguments, runAxis);
-        command->add_option("TAKE", arguments->take, "Take file (.csv, .bvh, FASTRAK text)")->required()->check(CLI::ExistingFile);
-        command->add_option("-o,--output", arguments->output, "Axis take CSV")->required()->type_name("FILE");
-        command->add_flag("--coordinates", arguments->coordinates,
+        auto [command, arguments] = addCommand(commands.root, "axis", runAxis);
+        command->add_option("TAKE", arguments.take, "Take file (.csv, .bvh, FASTRAK text)")->required()->check(CLI::ExistingFile);
+        command->add_option("-o,--output", arguments.output, "Axis take CSV")->required()->type_name("FILE");
+        command->add_flag("--coordinates", arguments.coordinates,
                           "Write the axis coordinates (centre + continuous rotation vector) instead of the thesis channels");
-        addAxisOptions(command, arguments->axis);
+        addAxisOptions(command, arguments.axis);
     }
     {
-        auto arguments = std::make_shared<PhaseCommandArguments>();
-        CLI::App* command = addCommand(commands.root, "phase",
-            "Phase component (thesis 5.3): match the sample's (emotional) axis to the reference's (functional) "
-            "on all 6 DOF; writes the warp curve (emotional frame -> functional frame control points)",
-            arguments, runPhase);
-        command->add_option("--reference", arguments->reference, "Functional take")->required()->check(CLI::ExistingFile);
-        command->add_option("--sample", arguments->sample, "Emotional take")->required()->check(CLI::ExistingFile);
-        command->add_option("-o,--output", arguments->output, "Warp curve CSV")->required()->type_name("FILE");
-        addAxisOptions(command, arguments->axis);
-        addPhaseOptions(command, arguments->phase);
+        auto [command, arguments] = addCommand(commands.root, "phase", runPhase);
+        addTakePairOptions(command, arguments.takes);
+        command->add_option("-o,--output", arguments.output, "Warp curve CSV")->required()->type_name("FILE");
+        addAxisOptions(command, arguments.axis);
+        addPhaseOptions(command, arguments.phase);
     }
     {
-        auto arguments = std::make_shared<GainsCommandArguments>();
-        CLI::App* command = addCommand(commands.root, "gains",
-            "Amplitude component (thesis 5.4): per phrase and axis DOF the gains g0, g1 of the functional axis "
-            "against the phase-adjusted emotional axis",
-            arguments, runGains);
-        command->add_option("--reference", arguments->reference, "Functional take")->required()->check(CLI::ExistingFile);
-        command->add_option("--sample", arguments->sample, "Emotional take")->required()->check(CLI::ExistingFile);
-        command->add_option("--warp", arguments->warp, "Warp curve CSV from `bunraku phase`")->required()->check(CLI::ExistingFile);
-        command->add_option("--phrases", arguments->phrases,
+        auto [command, arguments] = addCommand(commands.root, "gains", runGains);
+        addTakePairOptions(command, arguments.takes);
+        command->add_option("--warp", arguments.warp, "Warp curve CSV from `bunraku phase`")->required()->check(CLI::ExistingFile);
+        command->add_option("--phrases", arguments.phrases,
                             "Phrase boundaries in functional frames, e.g. 0,40,105 (default: minima of the axis speed)");
-        command->add_option("-o,--output", arguments->output, "Gains JSON")->required()->type_name("FILE");
-        addAxisOptions(command, arguments->axis);
+        command->add_option("-o,--output", arguments.output, "Gains JSON")->required()->type_name("FILE");
+        addAxisOptions(command, arguments.axis);
     }
     {
-        auto arguments = std::make_shared<DesignCommandArguments>();
-        CLI::App* command = addCommand(commands.root, "design",
-            "Motion design (thesis 5.5): scale the functional take's axis per phrase, recombine with its "
-            "relative motion and warp time",
-            arguments, runDesign);
-        command->add_option("TAKE", arguments->take, "Functional take")->required()->check(CLI::ExistingFile);
-        command->add_option("--warp", arguments->warp, "Warp curve CSV (default: identity)")->check(CLI::ExistingFile);
-        command->add_option("--gains", arguments->gains, "Gains JSON (default: no scaling)")->check(CLI::ExistingFile);
-        command->add_option("-o,--output", arguments->output, "Designed take (.bvh, .glb or .csv)")->required()->type_name("FILE");
-        command->add_option("--axis-output", arguments->axisOutput, "Also write the designed axis take (CSV)");
-        addAxisOptions(command, arguments->axis);
-        addKimonoOutputOptions(command, arguments->kimono);
+        auto [command, arguments] = addCommand(commands.root, "design", runDesign);
+        command->add_option("TAKE", arguments.take, "Functional take")->required()->check(CLI::ExistingFile);
+        command->add_option("--warp", arguments.warp, "Warp curve CSV (default: identity)")->check(CLI::ExistingFile);
+        command->add_option("--gains", arguments.gains, "Gains JSON (default: no scaling)")->check(CLI::ExistingFile);
+        command->add_option("-o,--output", arguments.output, "Designed take (.bvh, .glb or .csv)")->required()->type_name("FILE");
+        command->add_option("--axis-output", arguments.axisOutput, "Also write the designed axis take (CSV)");
+        addAxisOptions(command, arguments.axis);
+        addKimonoOutputOptions(command, arguments.kimono);
     }
     {
-        auto arguments = std::make_shared<ExperimentArguments>();
-        CLI::App* command = addCommand(commands.experiment, "design",
-            "Thesis 5.5 on the synthetic corpus: per function and emotion extract phase and gains between the "
-            "functional and emotional means, design from the functional mean, compare with the measured axis "
-            "(eq. 5.18 relative error) and the phase with the ground truth",
-            arguments, runExperiment);
-        command->add_option("CORPUS", arguments->corpus, "Demo corpus folder (with truth/ from `bunraku demo`)")
+        auto [command, arguments] = addCommand(commands.experiment, "design", runExperiment);
+        command->add_option("CORPUS", arguments.corpus, "Demo corpus folder (with truth/ from `bunraku demo`)")
             ->required()
             ->check(CLI::ExistingDirectory);
-        command->add_option("--means", arguments->means,
+        command->add_option("--means", arguments.means,
                             "'measured' (default): the preprocessed takes of each cell averaged by the thesis 3.7 average take; "
                             "'truth': the ground truth's noiseless cell motions")
             ->check(CLI::IsMember({"truth", "measured"}));
-        command->add_option("--position", arguments->position,
+        command->add_option("--position", arguments.position,
                             "Start-position step of the preprocessing (thesis 2.2-4): rigid (one translation per take, "
                             "default) or per-part")
             ->check(CLI::IsMember({"rigid", "per-part"}));
-        addAxisOptions(command, arguments->axis, false);
-        addPhaseOptions(command, arguments->phase);
+        addAxisOptions(command, arguments.axis, false);
+        addPhaseOptions(command, arguments.phase);
     }
 }
 

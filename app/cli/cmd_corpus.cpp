@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <iomanip>
 #include <iostream>
-#include <memory>
 
 namespace bunraku::app::cli {
 namespace {
@@ -44,68 +43,65 @@ void runCorpus(const CorpusArguments& arguments)
     unwrap(io::writeCorpus(build.corpus, arguments.output));
 
     const auto& corpus = build.corpus;
-    if (arguments.json) {
-        json takes = json::array();
-        for (const auto& f : build.files)
-            takes.push_back({{"file", f.file.string()},
-                             {"function", f.labels.function},
-                             {"emotion", f.labels.emotion},
-                             {"take", f.labels.takeIndex},
-                             {"frames", f.frames},
-                             {"rate_hz", f.rateHz},
-                             {"frames_in_corpus", f.framesInCorpus},
-                             {"resampled", f.resampled},
-                             {"part_map", f.partMap}});
-        printJson({{"output", arguments.output},
-                   {"name", corpus.name},
-                   {"pattern", arguments.pattern},
-                   {"rate_hz", corpus.rateHz},
-                   {"functions", corpus.functions()},
-                   {"emotions", corpus.emotions()},
-                   {"neutral_emotion", corpus.neutralEmotion},
-                   {"takes", takes},
-                   {"notes", build.notes}});
-        return;
-    }
-    std::cout << "corpus '" << corpus.name << "': " << corpus.takes.size() << " takes, " << corpus.functions().size() << " function(s), "
-              << corpus.emotions().size() << " emotion(s), " << corpus.rateHz << " Hz -> " << arguments.output << "\n";
-    // Columns as wide as their longest entry (and two spaces apart), so long names never run together.
-    std::size_t fileWidth = 4, functionWidth = 8, emotionWidth = 7;
-    for (const auto& f : build.files) {
-        fileWidth = std::max(fileWidth, f.file.filename().string().size());
-        functionWidth = std::max(functionWidth, f.labels.function.size());
-        emotionWidth = std::max(emotionWidth, f.labels.emotion.size());
-    }
-    const auto left = [](std::size_t width) { return std::setw(int(width + 2)); };
-    std::cout << "  " << std::left << left(fileWidth) << "file" << left(functionWidth) << "function" << left(emotionWidth) << "emotion"
-              << std::right << std::setw(4) << "take" << std::setw(8) << "frames" << std::setw(8) << "Hz" << "  part map\n";
+    json takes = json::array();
     for (const auto& f : build.files)
-        std::cout << "  " << std::left << left(fileWidth) << f.file.filename().string() << left(functionWidth) << f.labels.function
-                  << left(emotionWidth) << f.labels.emotion << std::right << std::setw(4) << f.labels.takeIndex << std::setw(8) << f.frames
-                  << std::setw(8) << f.rateHz << "  " << (f.partMap.empty() ? std::string("-") : f.partMap) << (f.resampled ? "  (resampled)" : "")
+        takes.push_back({{"file", f.file.string()},
+                         {"function", f.labels.function},
+                         {"emotion", f.labels.emotion},
+                         {"take", f.labels.takeIndex},
+                         {"frames", f.frames},
+                         {"rate_hz", f.rateHz},
+                         {"frames_in_corpus", f.framesInCorpus},
+                         {"resampled", f.resampled},
+                         {"part_map", f.partMap}});
+    const json summary{{"output", arguments.output},
+                       {"name", corpus.name},
+                       {"pattern", arguments.pattern},
+                       {"rate_hz", corpus.rateHz},
+                       {"functions", corpus.functions()},
+                       {"emotions", corpus.emotions()},
+                       {"neutral_emotion", corpus.neutralEmotion},
+                       {"takes", takes},
+                       {"notes", build.notes}};
+    report(arguments.json, summary, [&] {
+        std::cout << "corpus '" << corpus.name << "': " << corpus.takes.size() << " takes, " << corpus.functions().size()
+                  << " function(s), " << corpus.emotions().size() << " emotion(s), " << corpus.rateHz << " Hz -> " << arguments.output
                   << "\n";
-    for (const auto& note : build.notes) std::cout << "note: " << note << "\n";
+        // Columns as wide as their longest entry (and two spaces apart), so long names never run together.
+        std::size_t fileWidth = 4, functionWidth = 8, emotionWidth = 7;
+        for (const auto& f : build.files) {
+            fileWidth = std::max(fileWidth, f.file.filename().string().size());
+            functionWidth = std::max(functionWidth, f.labels.function.size());
+            emotionWidth = std::max(emotionWidth, f.labels.emotion.size());
+        }
+        const auto left = [](std::size_t width) { return std::setw(int(width + 2)); };
+        std::cout << "  " << std::left << left(fileWidth) << "file" << left(functionWidth) << "function" << left(emotionWidth)
+                  << "emotion" << std::right << std::setw(4) << "take" << std::setw(8) << "frames" << std::setw(8) << "Hz"
+                  << "  part map\n";
+        for (const auto& f : build.files)
+            std::cout << "  " << std::left << left(fileWidth) << f.file.filename().string() << left(functionWidth) << f.labels.function
+                      << left(emotionWidth) << f.labels.emotion << std::right << std::setw(4) << f.labels.takeIndex << std::setw(8)
+                      << f.frames << std::setw(8) << f.rateHz << "  " << (f.partMap.empty() ? std::string("-") : f.partMap)
+                      << (f.resampled ? "  (resampled)" : "") << "\n";
+        for (const auto& note : build.notes) std::cout << "note: " << note << "\n";
+    });
 }
 
 } // namespace
 
 void addCorpusCommands(CommandSet& commands)
 {
-    auto arguments = std::make_shared<CorpusArguments>();
-    CLI::App* command = addCommand(commands.root, "corpus",
-        "Make a corpus folder from take files (BVH, FBX, glTF, Collada, CSV, FASTRAK) or folders of them: labels from the file names, each "
-        "file's part map reported, takes resampled to one rate when their rates differ",
-        arguments, runCorpus);
-    command->add_option("INPUTS", arguments->inputs, "Take files and/or folders of take files")->required();
-    command->add_option("-o,--output", arguments->output, "Corpus folder to write")->required();
-    command->add_option("--pattern", arguments->pattern,
+    auto [command, arguments] = addCommand(commands.root, "corpus", runCorpus);
+    command->add_option("INPUTS", arguments.inputs, "Take files and/or folders of take files")->required();
+    command->add_option("-o,--output", arguments.output, "Corpus folder to write")->required();
+    command->add_option("--pattern", arguments.pattern,
                         "File-name pattern: {function}, {emotion}, {take} (digits), {any}; other characters literal, e.g. "
                         "'{any}_{function}_{emotion}_{take}' for dataset-2_wave-right-hand_active_003.bvh")
         ->capture_default_str();
-    command->add_option("--neutral", arguments->neutral, "The emotion label meaning 'no emotion' (default: neutral, normal or none)");
-    command->add_option("--name", arguments->name, "The corpus's name (default: the output folder's name)");
-    command->add_option("--resample", arguments->resampleHz, "Rate of the corpus in Hz, in (0, 1000000] (default: the rate most files have)");
-    addImportOptions(command, arguments->import);
+    command->add_option("--neutral", arguments.neutral, "The emotion label meaning 'no emotion' (default: neutral, normal or none)");
+    command->add_option("--name", arguments.name, "The corpus's name (default: the output folder's name)");
+    command->add_option("--resample", arguments.resampleHz, "Rate of the corpus in Hz, in (0, 1000000] (default: the rate most files have)");
+    addImportOptions(command, arguments.import);
 }
 
 } // namespace bunraku::app::cli

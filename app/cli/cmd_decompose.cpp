@@ -13,6 +13,7 @@
 #include "analysis/pipeline/parameters_json.h"
 #include "analysis/pipeline/stages.h"
 #include "analysis/report/analysis_files.h"
+#include "analysis/report/experiment_tables.h"
 #include "analysis/synth/demo_corpus.h"
 
 #include <algorithm>
@@ -21,7 +22,6 @@
 #include <iomanip>
 #include <iostream>
 #include <limits>
-#include <memory>
 #include <optional>
 #include <sstream>
 
@@ -85,10 +85,7 @@ pipeline::ChainParameters chainParameters(const ChainArgs& args)
             throw CliError("--M applies to --method km2o only");
         parameters.decompose.correlationLength = args.correlationLength;
     }
-    // As `bunraku normalise --no-preprocess`: angles are still unwrapped, nothing else.
-    if (args.noPreprocess)
-        parameters.preprocess.pad = parameters.preprocess.alignStart = parameters.preprocess.alignHeading =
-            parameters.preprocess.alignPosition = false;
+    if (args.noPreprocess) skipPreprocessing(parameters.preprocess); // as `bunraku normalise --no-preprocess`
     if (args.pad) parameters.preprocess.pad = true;
     if (auto valid = pipeline::validate(parameters); !valid)
         throw CliError(chainSubject(args.corpus, args.parameters) + ": " + valid.error().message);
@@ -151,12 +148,8 @@ nlohmann::json chainSummary(const ChainOutcome& chain)
         // The method really used: KM2O needs a cell of two takes; without one, y and z are least squares.
         if (!km2o->estimable()) summary["method"] = "ls";
         summary["method_note"] = km2o->outcome();
-        summary["km2o"] = analysis::report::km2oOutcomeJson(*km2o);
-        if (km2o->estimable()) { // else no M was chosen: y, z by least squares
-            summary["M"] = km2o->correlationLength;
-            summary["mean_P_percent"] = km2o->meanCellErrorPercent;
-        }
     }
+    addKm2oSummary(summary, *chain.decomposed);
     return summary;
 }
 
@@ -184,7 +177,6 @@ void runDecompose(const DecomposeArgs& args)
     // Every output is computed before anything is written: bad input writes nothing. The files
     // `analyse` writes too come from its writers (the same bytes); eta, each take's spectra
     // and ARMA orders are this command's own.
-    const fs::path out = args.output;
     std::vector<report::OutputFile> outputs;
     const auto add = [&](std::vector<report::OutputFile> files) { std::move(files.begin(), files.end(), std::back_inserter(outputs)); };
     const report::TakeFluctuationOptions takeOptions{chain.parameters.fluctuations.welchSegment,
@@ -208,29 +200,22 @@ void runDecompose(const DecomposeArgs& args)
         summary["truth"] = unwrap(report::groundTruthErrorsJson(d, unwrap(synth::readGroundTruth(truthFolder))));
         summary["truth_folder"] = truthFolder.string();
     }
-    std::vector<std::string> files;
-    for (const auto& file : outputs) files.push_back(file.name);
     summary["functions"] = nlohmann::json::array();
     for (const auto& f : d.functions) summary["functions"].push_back(f.function);
     summary["cells"] = nlohmann::json::array();
     for (const auto& z : d.emotions) summary["cells"].push_back(z.function + "/" + z.emotion);
     summary["frames"] = d.frameCount();
     summary["channels"] = d.channels.size();
-    summary["files"] = files;
-    summary["output"] = out.string();
-    outputs.push_back({"summary.json", summary.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n"});
-    // Built in a hidden folder and swapped in: the previous output stays whole until then.
-    unwrap(report::writeOutputFiles(out, outputs));
+    FolderOutput folder(args.output);
+    folder.add(outputs);
+    folder.commit(summary);
     report(args.json, summary, [&] {
         std::cout << "decomposed " << chain.corpus.corpus->takes.size() << " " << summary["input"].get<std::string>() << " takes ("
-                  << summary["method"].get<std::string>() << ") into " << out.string() << ": "
+                  << summary["method"].get<std::string>() << ") into " << args.output << ": "
                   << d.functions.size() << " y, " << d.emotions.size() << " z, " << d.fluctuations.size() << " eta\n";
         if (summary.contains("M"))
             std::cout << "KM2O correlation length M = " << summary["M"] << ", mean P = " << summary["mean_P_percent"] << " %\n";
-        if (const auto& km2o = chain.decomposed->km2o; km2o && !km2o->notes.empty()) {
-            std::cout << km2o->outcome() << "\n";
-            for (const auto& note : km2o->notes) std::cout << "  " << note << "\n";
-        }
+        printKm2oNotes(*chain.decomposed);
         if (summary.contains("truth")) std::cout << "error against ground truth: " << summary["truth"].dump() << "\n";
     });
 }
@@ -325,43 +310,8 @@ void runExperiment(const ExperimentArgs& args)
     options.noise = args.noiseSharing == "shared" ? NoiseSharing::SharedAcrossCells : NoiseSharing::PerCell;
     options.takes = args.takes;
     const auto result = unwrap(runKm2oExperiment(options));
-    const auto printed = thesisTable44Printed(result.finalTime);
-    // Table 4.4 as printed beside each M (T = 1000 in units of 0.1 %, so also "read as %").
-    std::vector<double> asPrinted;
-    for (int m : result.correlationLengths)
-        asPrinted.push_back(m >= 3 && m <= 20 && !printed.empty() ? printed[std::size_t(m - 3)]
-                                                                  : std::numeric_limits<double>::quiet_NaN());
-    if (args.json) {
-        auto clean = [](const std::vector<double>& v) {
-            nlohmann::json a = nlohmann::json::array();
-            for (double x : v) a.push_back(std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr));
-            return a;
-        };
-        printJson({{"T", result.finalTime},
-                   {"M", result.correlationLengths},
-                   {"P_percent", clean(result.errorPercent)},
-                   {"thesis_P_percent", clean(result.thesisErrorPercent)},
-                   {"thesis_printed", clean(asPrinted)},
-                   {"seeds", args.seeds},
-                   {"takes", options.takes},
-                   {"noise_sharing", args.noiseSharing},
-                   {"first_window_offset", options.reading.firstWindowOffset},
-                   {"initial_times", args.initialTimes}});
-        return;
-    }
-    std::cout << "KM2O exogenous-input identification of the eq. 4.39 ARX series, T = " << result.finalTime << ", K = "
-              << options.takes << ", " << args.seeds << " seed(s), noise " << args.noiseSharing
-              << "; P = relative error (eq. 4.40) averaged over the six inputs\n";
-    const bool tenths = result.finalTime == 1000;
-    std::cout << "   M    P [%]   thesis Table 4.4 [%]" << (tenths ? "   (printed, read as %)" : "") << "\n";
-    for (std::size_t i = 0; i < result.correlationLengths.size(); ++i) {
-        std::cout << std::setw(4) << result.correlationLengths[i] << std::setw(9) << std::fixed << std::setprecision(3)
-                  << result.errorPercent[i] << "   ";
-        if (std::isfinite(result.thesisErrorPercent[i])) std::cout << std::setw(8) << result.thesisErrorPercent[i];
-        else std::cout << "       -";
-        if (tenths && std::isfinite(asPrinted[i])) std::cout << std::setw(25) << asPrinted[i];
-        std::cout << "\n";
-    }
+    report(args.json, report::km2oExperimentJson(result, options),
+           [&] { std::cout << report::km2oExperimentText(result, options); });
 }
 
 /// The options of the chain up to chapter 4 (`decompose`, `emotion`).
@@ -395,65 +345,52 @@ void addChainOptions(CLI::App* command, ChainArgs& args)
 
 void addDecompositionCommands(CommandSet& commands)
 {
-    auto decomposeArgs = std::make_shared<DecomposeArgs>();
-    CLI::App* dec = addCommand(commands.root, "decompose",
-        "Decompose a corpus into function y^i, emotion z^{ij} and fluctuation eta (thesis ch. 4) as the "
-        "workbench's Emotion tab does (preprocess 2.2, normalise every cell 3, KM2O with M chosen by P); write "
-        "components, spectra and ARMA tables",
-        decomposeArgs, runDecompose);
-    addChainOptions(dec, decomposeArgs->chain);
-    dec->add_option("-o,--output", decomposeArgs->output, "Output folder")->required()->type_name("DIR");
-    dec->add_option("--truth", decomposeArgs->truth,
+    auto [dec, decomposeArgs] = addCommand(commands.root, "decompose", runDecompose);
+    addChainOptions(dec, decomposeArgs.chain);
+    dec->add_option("-o,--output", decomposeArgs.output, "Output folder")->required()->type_name("DIR");
+    dec->add_option("--truth", decomposeArgs.truth,
                     "Ground-truth folder of a synthetic corpus (default: CORPUS/truth when it exists)");
-    dec->add_option("--arma-search", decomposeArgs->armaSearch, "ARMA orders tried per take: equal ((n,n)) or all ((p,q))")
+    dec->add_option("--arma-search", decomposeArgs.armaSearch, "ARMA orders tried per take: equal ((n,n)) or all ((p,q))")
         ->check(CLI::IsMember({"equal", "all"}));
-    dec->add_option("--arma-max-order", decomposeArgs->armaMaxOrder, "Largest ARMA order for FPE selection")
+    dec->add_option("--arma-max-order", decomposeArgs.armaMaxOrder, "Largest ARMA order for FPE selection")
         ->check(CLI::Range(0, analysis::pipeline::kMaxArmaOrder));
-    dec->add_option("--arma-table", decomposeArgs->armaTableOrder,
+    dec->add_option("--arma-table", decomposeArgs.armaTableOrder,
                     "ARMA(p,q) averaged per cell (Table 4.1), each 0..4; default the parameters' (2 2), as `bunraku analyse`")
         ->expected(2)
         ->transform(parameterCheck("fluctuations.armaP"));
 
-    auto emotionArgs = std::make_shared<EmotionArgs>();
-    CLI::App* emo = addCommand(commands.root, "emotion",
-        "Design a motion with an emotion weight: x = y^i + a z^{ij} (thesis eq. 4.45), the workbench's weighted "
-        "take: the same chain as `decompose`",
-        emotionArgs, runEmotion);
-    addChainOptions(emo, emotionArgs->chain);
-    emo->add_option("--function", emotionArgs->function, "Function label, e.g. greeting")->required();
-    emo->add_option("--emotion", emotionArgs->emotion, "Emotion label, e.g. friendly")->required();
-    emo->add_option("--weight", emotionArgs->weight, "Emotion weight a (1 = as performed)")
+    auto [emo, emotionArgs] = addCommand(commands.root, "emotion", runEmotion);
+    addChainOptions(emo, emotionArgs.chain);
+    emo->add_option("--function", emotionArgs.function, "Function label, e.g. greeting")->required();
+    emo->add_option("--emotion", emotionArgs.emotion, "Emotion label, e.g. friendly")->required();
+    emo->add_option("--weight", emotionArgs.weight, "Emotion weight a (1 = as performed)")
         ->transform(parameterCheck("design.emotionWeight"))
         ->required();
-    emo->add_option("-o,--output", emotionArgs->output, "Output take (.bvh, .glb or .csv): the weighted body's motion")
+    emo->add_option("-o,--output", emotionArgs.output, "Output take (.bvh, .glb or .csv): the weighted body's motion")
         ->required()
         ->type_name("FILE");
-    emo->add_flag("--per-channel", emotionArgs->perChannel,
+    emo->add_flag("--per-channel", emotionArgs.perChannel,
                   "Write the thesis's per-channel x = y + a z (each channel on its own, the puppet's parts, no skeleton) instead of "
                   "the weighted body's motion");
-    addKimonoOutputOptions(emo, emotionArgs->kimono);
+    addKimonoOutputOptions(emo, emotionArgs.kimono);
 
-    auto experimentArgs = std::make_shared<ExperimentArgs>();
-    CLI::App* exp = addCommand(commands.experiment, "km2o",
-        "Thesis 4.4.3: identify the exogenous inputs of simulated ARX series (eq. 4.39) for each M and compare "
-        "the relative error P with Table 4.4",
-        experimentArgs, runExperiment);
-    exp->add_option("--T", experimentArgs->finalTime, "Final time T: 300 (Table 4.2) or 1000 (Table 4.3)")
+    auto [exp, experimentArgs] = addCommand(commands.experiment, "km2o", runExperiment);
+    exp->add_option("--T", experimentArgs.finalTime, "Final time T: 300 (Table 4.2) or 1000 (Table 4.3)")
         ->check(CLI::IsMember({300, 1000}));
-    exp->add_option("--M", experimentArgs->range, "Correlation lengths FIRST:LAST (default 3:20)");
-    exp->add_option("--seeds", experimentArgs->seeds, "Simulations averaged (default 5)")->check(CLI::PositiveNumber);
-    exp->add_option("--seed", experimentArgs->firstSeed, "First seed");
-    exp->add_option("--noise", experimentArgs->noise, "Noise scale c (default: the table's)");
-    exp->add_option("--first-offset", experimentArgs->firstOffset,
+    exp->add_option("--M", experimentArgs.range, "Correlation lengths FIRST:LAST (default 3:20)");
+    exp->add_option("--seeds", experimentArgs.seeds, "Simulations averaged (default 5)")->check(CLI::PositiveNumber);
+    exp->add_option("--seed", experimentArgs.firstSeed, "First seed");
+    exp->add_option("--noise", experimentArgs.noise, "Noise scale c (default: the table's)");
+    exp->add_option("--first-offset", experimentArgs.firstOffset,
                     "Window offsets below this are used only where nothing else reaches (default 1; see docs/KM2O.md)")
         ->check(CLI::Range(0, 100));
-    exp->add_option("--initial-times", experimentArgs->initialTimes, "T0 range: full (0..T-M) or thesis (0..T-M-1)")
+    exp->add_option("--initial-times", experimentArgs.initialTimes, "T0 range: full (0..T-M) or thesis (0..T-M-1)")
         ->check(CLI::IsMember({"full", "thesis"}));
-    exp->add_option("--noise-sharing", experimentArgs->noiseSharing,
+    exp->add_option("--noise-sharing", experimentArgs.noiseSharing,
                     "per-cell (an independent w_k(t) per cell, default) or shared (one w_k(t) for all six cells: eq. "
                     "4.39 puts no i, j on w)")
         ->check(CLI::IsMember({"per-cell", "shared"}));
-    exp->add_option("--takes", experimentArgs->takes, "K, takes per cell (default 5, as the thesis)")->check(CLI::Range(2, 1000));
+    exp->add_option("--takes", experimentArgs.takes, "K, takes per cell (default 5, as the thesis)")->check(CLI::Range(2, 1000));
 }
 
 } // namespace bunraku::app::cli

@@ -26,9 +26,9 @@
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <unistd.h>
 #include <filesystem>
-#include <memory>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -227,10 +227,16 @@ VideoExportResult interruptible(const char* what, bool json, const std::string& 
 
 nlohmann::json rectJson(const QRect& rect) { return {rect.x(), rect.y(), rect.width(), rect.height()}; }
 
+bool endsWith(const std::string& text, std::string_view suffix)
+{
+    return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
 /// --multimodal: one frame as a PNG, or a range as MP4 / PNG frames through the workbench's
 /// video export (atomic output; Ctrl+C cancels and removes what was written).
+/// `summary`: what every render says (its size, camera and takes).
 void runMultimodal(const RenderArguments& args, const render::SceneContent& scene, render::OffscreenRenderer& offscreen,
-                   const render::Camera& camera, QSize size)
+                   const render::Camera& camera, QSize size, nlohmann::json summary)
 {
     MultimodalOptions options;
     options.layout = args.graphs == "part"     ? widgets::GraphLayout::OnePart
@@ -250,8 +256,6 @@ void runMultimodal(const RenderArguments& args, const render::SceneContent& scen
         offscreen.renderer().setTime(seconds);
         return offscreen.render(camera, viewSize);
     };
-    nlohmann::json summary;
-    summary["size"] = {size.width(), size.height()};
     summary["view"] = rectJson(frame.geometry().view);
     summary["graphs"] = nlohmann::json::array();
     for (std::size_t i = 0; i < frame.geometry().cells.size(); ++i) {
@@ -263,15 +267,8 @@ void runMultimodal(const RenderArguments& args, const render::SceneContent& scen
                                      {"plot", rectJson(frame.geometry().plots[i])}});
     }
     summary["duration_s"] = frame.duration();
-    summary["camera"] = {{"angle_deg", camera.angleDeg}, {"elevation_deg", camera.elevationDeg}, {"distance_cm", camera.distance}};
     summary["thesis_ticks"] = options.thesisTicks;
-    for (const auto& slot : scene.takes) summary["takes"].push_back(slot.take.displayName());
-
-    const auto endsWith = [&](const char* suffix) {
-        const std::string s(suffix);
-        return args.output.size() >= s.size() && args.output.compare(args.output.size() - s.size(), s.size(), s) == 0;
-    };
-    if (args.frames.empty() && endsWith(".png")) {
+    if (args.frames.empty() && endsWith(args.output, ".png")) {
         // one frame, written atomically
         const double seconds = args.time ? *args.time : double(args.frame.value_or(0)) / takeA->rateHz;
         const QImage image = unwrap(frame.render(view, seconds));
@@ -285,7 +282,7 @@ void runMultimodal(const RenderArguments& args, const render::SceneContent& scen
         return;
     }
     VideoExportOptions video;
-    const bool mp4 = endsWith(".mp4");
+    const bool mp4 = endsWith(args.output, ".mp4");
     video.format = mp4 ? VideoFormat::Mp4 : VideoFormat::PngSequence;
     video.output = QString::fromStdString(args.output);
     video.overwrite = args.overwrite;
@@ -318,9 +315,7 @@ void runRender(const RenderArguments& args)
     if (!args.mp4.empty() && args.multimodal)
         throw CliError("--multimodal writes MP4 itself: give -o FILE.mp4 (or a folder for PNG frames), not --mp4");
     if (!args.mp4.empty() && args.frames.empty()) throw CliError("--mp4 needs --frames FIRST:LAST");
-    if (args.multimodal && !args.frames.empty() && (args.frame || args.time))
-        throw CliError("--frames renders a sequence: drop --frame / --time");
-    if (args.multimodal && args.output.size() >= 4 && args.output.substr(args.output.size() - 4) == ".mp4" &&
+    if (args.multimodal && endsWith(args.output, ".mp4") &&
         QStandardPaths::findExecutable(QStringLiteral("ffmpeg")).isEmpty())
         throw CliError("an MP4 output needs ffmpeg on PATH, which was not found: install Debian's ffmpeg "
                        "(apt-get install ffmpeg) or give a folder for PNG frames");
@@ -392,16 +387,11 @@ void runRender(const RenderArguments& args)
     else if (args.preset == "bottom") camera = camera.withPreset(render::CameraPreset::Bottom);
     else if (!args.preset.empty()) throw CliError("--preset: expected top or bottom");
 
-    if (args.multimodal) {
-        runMultimodal(args, scene, *offscreen, camera, size);
-        return;
-    }
-
     nlohmann::json summary;
     summary["size"] = {size.width(), size.height()};
-    summary["camera"] = {{"angle_deg", camera.angleDeg}, {"elevation_deg", camera.elevationDeg},
-                         {"distance_cm", camera.distance}};
+    summary["camera"] = {{"angle_deg", camera.angleDeg}, {"elevation_deg", camera.elevationDeg}, {"distance_cm", camera.distance}};
     for (const auto& slot : scene.takes) summary["takes"].push_back(slot.take.displayName());
+    if (args.multimodal) return runMultimodal(args, scene, *offscreen, camera, size, summary);
     for (int s = 0; s < int(scene.takes.size()); ++s)
         summary["figures"].push_back({{"puppet", offscreen->renderer().puppetDrawn(s)},
                                       {"skeleton", offscreen->renderer().skeletonDrawn(s)},
@@ -470,55 +460,52 @@ void runRender(const RenderArguments& args)
 
 void addRenderCommands(CommandSet& commands)
 {
-    auto args = std::make_shared<RenderArguments>();
-    CLI::App* render = addCommand(commands.root, "render",
-        "Render the puppet, motion axis and orbits of a take (or two side by side) to PNG offscreen",
-        args, runRender);
-    render->add_option("take", args->take, "Take file (.csv, .bvh, FASTRAK .txt) or demo:FUNCTION/EMOTION/K")
+    auto [render, args] = addCommand(commands.root, "render", runRender);
+    render->add_option("take", args.take, "Take file (.csv, .bvh, FASTRAK .txt) or demo:FUNCTION/EMOTION/K")
         ->required();
-    render->add_option("--take-b", args->takeB, "A second take, shown to the right of the first");
-    render->add_option("--frame", args->frame, "Frame to render (default 0)");
-    render->add_option("--time", args->time, "Time to render, seconds (nearest frame)");
-    render->add_option("--frames", args->frames, "FIRST:LAST: render a PNG sequence into the -o folder");
-    render->add_option("--camera", args->cameraDeg, "Camera angle around the origin, deg (0 = on +y)")
+    render->add_option("--take-b", args.takeB, "A second take, shown to the right of the first");
+    render->add_option("--frame", args.frame, "Frame to render (default 0)");
+    render->add_option("--time", args.time, "Time to render, seconds (nearest frame)");
+    render->add_option("--frames", args.frames, "FIRST:LAST: render a PNG sequence into the -o folder");
+    render->add_option("--camera", args.cameraDeg, "Camera angle around the origin, deg (0 = on +y)")
         ->capture_default_str();
-    render->add_option("--elevation", args->elevationDeg, "Camera elevation, deg")->capture_default_str();
-    render->add_option("--distance", args->distanceCm, "Camera distance, cm (default: fits the scene)");
-    render->add_option("--preset", args->preset, "Camera preset: top or bottom");
-    render->add_option("--show", args->show, "Objects to draw: puppet,axis,orbits,grid (the floor),shadows (the figures' on the floor),partner or all")
+    render->add_option("--elevation", args.elevationDeg, "Camera elevation, deg")->capture_default_str();
+    render->add_option("--distance", args.distanceCm, "Camera distance, cm (default: fits the scene)");
+    render->add_option("--preset", args.preset, "Camera preset: top or bottom");
+    render->add_option("--show", args.show, "Objects to draw: puppet,axis,orbits,grid (the floor),shadows (the figures' on the floor),partner or all")
         ->capture_default_str();
-    render->add_option("--figure", args->figure,
+    render->add_option("--figure", args.figure,
                        "Figure of the take(s): puppet, skeleton (the performer's, for takes read from BVH), both, body "
                        "(the performer's body, a smooth mannequin skinned to that skeleton) or mesh (the skinned mesh an "
                        "FBX, glTF or Collada take's file carries, moved by the take)")
         ->capture_default_str();
-    render->add_option("--figure-b", args->figureB, "Figure of the second take (default: as --figure)");
-    render->add_option("--size", args->size, "Image size WIDTHxHEIGHT")->capture_default_str();
-    render->add_option("-o,--output", args->output, "PNG file, or the folder of a --frames sequence");
-    render->add_option("--mp4", args->mp4, "Also encode the --frames sequence to this MP4 file (needs ffmpeg), from the frames once they are in the -o folder");
-    render->add_option("--body", args->body, "Body description JSON (default: the shipped puppet)");
-    render->add_option("--mesh", args->meshes, "PART=FILE: a mesh file (glTF, OBJ...) replacing a body part");
-    render->add_option("--samples", args->samples, "Multisampling, 0..16")->capture_default_str();
-    render->add_flag("--follow", args->follow,
+    render->add_option("--figure-b", args.figureB, "Figure of the second take (default: as --figure)");
+    render->add_option("--size", args.size, "Image size WIDTHxHEIGHT")->capture_default_str();
+    render->add_option("-o,--output", args.output, "PNG file, or the folder of a --frames sequence");
+    render->add_option("--mp4", args.mp4, "Also encode the --frames sequence to this MP4 file (needs ffmpeg), from the frames once they are in the -o folder");
+    render->add_option("--body", args.body, "Body description JSON (default: the shipped puppet)");
+    render->add_option("--mesh", args.meshes, "PART=FILE: a mesh file (glTF, OBJ...) replacing a body part");
+    render->add_option("--samples", args.samples, "Multisampling, 0..16")->capture_default_str();
+    render->add_flag("--follow", args.follow,
                      "Carry the camera along the floor with the figures at every frame (a walking take stays in frame)");
-    render->add_flag("--multimodal", args->multimodal,
+    render->add_flag("--multimodal", args.multimodal,
                      "The thesis's multimodal display: the 3D view and the graphs with a moving time cursor in one picture "
                      "(-o FILE.png: one frame; -o FILE.mp4 or -o FOLDER: the whole take or --frames as MP4 or PNG frames)");
-    render->add_option("--graphs", args->graphs,
+    render->add_option("--graphs", args.graphs,
                        "--multimodal graphs: all (24, two takes 48), part (6/12), dof (4/8) or single (1/2)")
         ->check(CLI::IsMember({"all", "part", "dof", "single"}))
         ->capture_default_str();
-    render->add_option("--part", args->part, "--multimodal: the part of the part and single layouts (default: the first)");
-    render->add_option("--dof", args->dof, "--multimodal: the DOF of the dof and single layouts (default: the first)");
-    render->add_option("--ticks", args->ticks, "--multimodal graph ticks: thesis (values every 10, time every 2 s) or auto")
+    render->add_option("--part", args.part, "--multimodal: the part of the part and single layouts (default: the first)");
+    render->add_option("--dof", args.dof, "--multimodal: the DOF of the dof and single layouts (default: the first)");
+    render->add_option("--ticks", args.ticks, "--multimodal graph ticks: thesis (values every 10, time every 2 s) or auto")
         ->check(CLI::IsMember({"thesis", "auto"}))
         ->capture_default_str();
-    render->add_option("--fps", args->fps, "--multimodal video: frames per second (default: the take's rate)");
-    render->add_flag("--overwrite", args->overwrite, "--multimodal PNG frames: replace the frame_*.png of an earlier export");
-    render->add_flag("--kimono", args->kimono,
+    render->add_option("--fps", args.fps, "--multimodal video: frames per second (default: the take's rate)");
+    render->add_flag("--overwrite", args.overwrite, "--multimodal PNG frames: replace the frame_*.png of an earlier export");
+    render->add_flag("--kimono", args.kimono,
                      "Dress the puppet in its kimono simulated as cloth (the skirt and long sleeves swing with the motion; "
                      "the orbits then include the sleeve tips and the hem); the --cloth-* options set the cloth");
-    addClothOptions(render, args->cloth);
+    addClothOptions(render, args.cloth);
 }
 
 } // namespace bunraku::app::cli

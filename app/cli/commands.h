@@ -3,8 +3,16 @@
 #include "app/cli/cli.h"
 
 #include "analysis/cloth/kimono_cloth.h"
+#include "analysis/pipeline/stages.h"
+#include "analysis/report/analysis_files.h"
+#include "analysis/synth/demo_corpus.h"
 
 namespace bunraku::app::cli {
+
+// The analysis's namespaces as the commands name them.
+namespace an = bunraku::analysis;
+namespace pl = bunraku::analysis::pipeline;
+namespace rp = bunraku::analysis::report;
 
 /// info, convert, preprocess (cmd_io.cpp)
 void addIoCommands(CommandSet& commands);
@@ -33,4 +41,18 @@ void addSummaryCommands(CommandSet& commands);
 void addRenderCommands(CommandSet& commands);
 /// help (cmd_help.cpp)
 void addHelpCommands(CommandSet& commands);
+
+/// The ground truth of the synthetic corpus `corpus` (its truth/ folder, written by `bunraku
+/// demo`), or a CliError saying where it was expected (`experiment truth` and `design`).
+analysis::synth::DemoGroundTruth groundTruthOf(const std::string& corpus);
+
+/// `--no-preprocess` of `normalise`, `decompose` and `emotion`: the takes as stored, thesis 2.2's
+/// padding and alignments off (angles are still unwrapped).
+void skipPreprocessing(pl::PreprocessParameters& parameters);
+
+/// What `analyse` and `decompose` say about a decomposition's KM2O (thesis 4.4.4): into the
+/// summary "km2o" (report::km2oOutcomeJson) and, when estimable, the M chosen and its mean P.
+void addKm2oSummary(nlohmann::json& summary, const pl::DecomposeOutput& decomposed);
+/// Its outcome and notes as lines, when it has notes.
+void printKm2oNotes(const pl::DecomposeOutput& decomposed);
 } // namespace bunraku::app::cli

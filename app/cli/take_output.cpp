@@ -47,23 +47,48 @@ void requireKimonoOutput(const KimonoOutputArguments& arguments, const std::stri
         throw CliError(output + ": --kimono writes the simulated cloth into a .glb or a .csv take file");
 }
 
-void writeTakeIntoFolder(const analysis::Take& take, analysis::io::StagedFolder& folder, const std::string& name)
+FolderOutput::FolderOutput(const std::string& folder)
+    : m_folder(folder), m_staged(unwrap(analysis::io::StagedFolder::begin(folder)))
 {
-    const std::filesystem::path shown = folder.target() / name;
+}
+
+void FolderOutput::add(const std::string& name, const std::string& text)
+{
+    unwrap(m_staged.writeFile(name, text));
+    m_files.push_back(name);
+}
+
+void FolderOutput::add(const std::vector<analysis::report::OutputFile>& files)
+{
+    for (const auto& file : files) add(file.name, file.content);
+}
+
+void FolderOutput::addTake(const analysis::Take& take, const std::string& name)
+{
+    const std::filesystem::path shown = m_staged.target() / name;
     requireTakeOutput(name);
     // Errors name the file the user asked for, not the hidden staging folder.
     const auto named = [&](const analysis::Error& error) {
         std::string message = error.message;
-        const std::string staged = (folder.path() / name).string();
+        const std::string staged = (m_staged.path() / name).string();
         for (auto at = message.find(staged); at != std::string::npos; at = message.find(staged, at + 1))
             message.replace(at, staged.size(), shown.string());
         return CliError(message);
     };
-    const std::filesystem::path file = folder.path() / name;
+    const std::filesystem::path file = m_staged.path() / name;
     if (auto written = render::exportTake(take, analysis::defaultBodyDescription(), file); !written) throw named(written.error());
     // Written atomically by exportTake; listed in the manifest like the folder's other files.
-    if (auto recorded = folder.recordFile(name); !recorded) throw named(recorded.error());
+    if (auto recorded = m_staged.recordFile(name); !recorded) throw named(recorded.error());
     if (const std::string note = render::takeExportNote(take, shown); !note.empty()) std::cerr << "note: " << note << "\n";
+    m_files.push_back(name);
+}
+
+void FolderOutput::commit(nlohmann::json& summary)
+{
+    summary["files"] = m_files;
+    summary["output"] = m_folder;
+    unwrap(m_staged.writeFile("summary.json", summary.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n"));
+    unwrap(m_staged.commit());
 }
 
 } // namespace bunraku::app::cli
