@@ -1,5 +1,10 @@
 #include "analysis/report/experiment_tables.h"
 
+#include "analysis/axis/axis_channels.h"
+#include "analysis/design/motion_design.h"
+#include "analysis/design/phase_extraction.h"
+#include "analysis/design/phrase_gains.h"
+
 #include <cmath>
 #include <iomanip>
 #include <limits>
@@ -189,6 +194,57 @@ std::string km2oExperimentText(const Km2oExperimentResult& result, const Km2oExp
         if (tenths && std::isfinite(asPrinted[i])) out << std::setw(25) << asPrinted[i];
         out << "\n";
     }
+    return out.str();
+}
+
+Result<DesignExperimentCell> runDesignExperimentCell(const AxisModel& model, const SyntheticDesignCell& designCell,
+                                                     const ExtractionOptions& options, const AxisOptions& axisOptions)
+{
+    const DesignCell& cell = designCell.cell;
+    auto result = evaluateDesignCell(model, cell, options, axisOptions);
+    if (!result) return result.error();
+    auto functional = computeMotionAxis(model, cell.functional, axisOptions);
+    if (!functional) return functional.error();
+    auto emotional = computeMotionAxis(model, cell.emotional, axisOptions);
+    if (!emotional) return emotional.error();
+    const Eigen::MatrixXd functionalAxis = axisCoordinates(functional->world_T_axis);
+    const Eigen::VectorXd trueInverse = invertMonotone(cell.trueEmotionalToFunctional, functionalAxis.rows());
+    const double amplitudeError = relativeError(applyGains(functionalAxis, result->parameters.gains),
+                                                resampleRows(axisCoordinates(emotional->world_T_axis), trueInverse));
+    return DesignExperimentCell{std::move(result).value(), amplitudeError, designCell.functionalMean.truthShapeError,
+                                designCell.emotionalMean.truthShapeError};
+}
+
+json designExperimentCellJson(const DesignExperimentCell& cell)
+{
+    const DesignCellResult& result = cell.result;
+    return {{"function", result.function},
+            {"emotion", result.emotion},
+            {"axis_relative_error", result.axisRelativeError},
+            {"undesigned_relative_error", result.functionalRelativeError},
+            {"dof_relative_error",
+             std::vector<double>(result.dofRelativeError.data(), result.dofRelativeError.data() + result.dofRelativeError.size())},
+            {"phase_mean_abs_error_frames", result.phaseMeanAbsErrorFrames},
+            {"amplitude_relative_error", cell.amplitudeError},
+            {"functional_mean_truth_error", cell.functionalMeanTruthError},
+            {"emotional_mean_truth_error", cell.emotionalMeanTruthError},
+            {"phrase_boundaries", result.boundaries}};
+}
+
+std::string designExperimentHeader()
+{
+    return "function      emotion     axis err  undesigned  phase |err| frames  amplitude err  phrases  mean vs truth (fun/emo)\n";
+}
+
+std::string designExperimentCellText(const DesignExperimentCell& cell)
+{
+    const DesignCellResult& result = cell.result;
+    std::ostringstream out;
+    out << std::left << std::setw(14) << result.function << std::setw(12) << result.emotion << std::right << std::fixed
+        << std::setprecision(4) << std::setw(8) << result.axisRelativeError << std::setw(12) << result.functionalRelativeError
+        << std::setprecision(2) << std::setw(20) << result.phaseMeanAbsErrorFrames << std::setprecision(4) << std::setw(15)
+        << cell.amplitudeError << std::setw(9) << result.boundaries.size() - 1 << std::setw(10) << cell.functionalMeanTruthError
+        << " / " << cell.emotionalMeanTruthError << "\n";
     return out.str();
 }
 

@@ -4,6 +4,7 @@
 
 #include "analysis/core/result.h"
 #include "analysis/decompose/km2o_experiment.h"
+#include "analysis/design/design_corpus.h"
 #include "analysis/normalise/noise_experiment.h"
 #include "analysis/normalise/truth_experiment.h"
 
@@ -31,5 +32,20 @@ std::string truthExperimentText(const TruthExperimentResult& result, const Truth
 /// P per M beside Table 4.4 (as percent and, for T = 1000, as printed).
 nlohmann::json km2oExperimentJson(const Km2oExperimentResult& result, const Km2oExperimentOptions& options);
 std::string km2oExperimentText(const Km2oExperimentResult& result, const Km2oExperimentOptions& options);
+
+/// Thesis 5.5 on the synthetic corpus (`bunraku experiment design`), one cell: the design's
+/// errors (evaluateDesignCell), the amplitude alone (the gains against the emotional axis
+/// phase-adjusted by the true warp) and the means' errors against the truth.
+struct DesignExperimentCell {
+    DesignCellResult result;
+    double amplitudeError = 0.0;
+    double functionalMeanTruthError = 0.0, emotionalMeanTruthError = 0.0;
+};
+Result<DesignExperimentCell> runDesignExperimentCell(const AxisModel& model, const SyntheticDesignCell& cell,
+                                                     const ExtractionOptions& options, const AxisOptions& axisOptions);
+nlohmann::json designExperimentCellJson(const DesignExperimentCell& cell);
+/// The table's header line, and a line per cell under it.
+std::string designExperimentHeader();
+std::string designExperimentCellText(const DesignExperimentCell& cell);
 
 } // namespace bunraku::analysis::report

@@ -17,6 +17,7 @@
 #include "analysis/io/take_reader.h"
 #include "analysis/pipeline/stage_parameters.h"
 #include "analysis/pipeline/stages.h"
+#include "analysis/report/experiment_tables.h"
 #include "analysis/synth/demo_corpus.h"
 #include "analysis/synth/demo_corpus_io.h"
 
@@ -375,38 +376,12 @@ void runExperiment(const ExperimentArguments& arguments)
     an::ExtractionOptions options;
     options.phase = phaseOptions(arguments.phase);
     nlohmann::json cells = nlohmann::json::array();
-    if (!arguments.json)
-        std::cout << "function      emotion     axis err  undesigned  phase |err| frames  amplitude err  phrases  "
-                     "mean vs truth (fun/emo)\n";
+    if (!arguments.json) std::cout << rp::designExperimentHeader();
     for (const an::SyntheticDesignCell& designCell : designCells) {
-        const an::DesignCell& cell = designCell.cell;
-        const an::DesignCellResult result = unwrap(an::evaluateDesignCell(model, cell, options, arguments.axis.options));
-        // amplitude alone: the gains against the emotional axis phase-adjusted by the true warp
-        const Eigen::MatrixXd functional =
-            an::axisCoordinates(unwrap(an::computeMotionAxis(model, cell.functional, arguments.axis.options)).world_T_axis);
-        const Eigen::MatrixXd emotional =
-            an::axisCoordinates(unwrap(an::computeMotionAxis(model, cell.emotional, arguments.axis.options)).world_T_axis);
-        const Eigen::VectorXd trueInverse = an::invertMonotone(cell.trueEmotionalToFunctional, functional.rows());
-        const double amplitudeError =
-            an::relativeError(an::applyGains(functional, result.parameters.gains), an::resampleRows(emotional, trueInverse));
-        cells.push_back({{"function", result.function},
-                         {"emotion", result.emotion},
-                         {"axis_relative_error", result.axisRelativeError},
-                         {"undesigned_relative_error", result.functionalRelativeError},
-                         {"dof_relative_error", std::vector<double>(result.dofRelativeError.data(),
-                                                                    result.dofRelativeError.data() + result.dofRelativeError.size())},
-                         {"phase_mean_abs_error_frames", result.phaseMeanAbsErrorFrames},
-                         {"amplitude_relative_error", amplitudeError},
-                         {"functional_mean_truth_error", designCell.functionalMean.truthShapeError},
-                         {"emotional_mean_truth_error", designCell.emotionalMean.truthShapeError},
-                         {"phrase_boundaries", result.boundaries}});
-        if (!arguments.json)
-            std::cout << std::left << std::setw(14) << result.function << std::setw(12) << result.emotion << std::right
-                      << std::fixed << std::setprecision(4) << std::setw(8) << result.axisRelativeError << std::setw(12)
-                      << result.functionalRelativeError << std::setprecision(2) << std::setw(20) << result.phaseMeanAbsErrorFrames
-                      << std::setprecision(4) << std::setw(15) << amplitudeError << std::setw(9) << result.boundaries.size() - 1
-                      << std::setw(10) << designCell.functionalMean.truthShapeError << " / "
-                      << designCell.emotionalMean.truthShapeError << "\n";
+        const rp::DesignExperimentCell cell =
+            unwrap(rp::runDesignExperimentCell(model, designCell, options, arguments.axis.options));
+        cells.push_back(rp::designExperimentCellJson(cell));
+        if (!arguments.json) std::cout << rp::designExperimentCellText(cell); // line by line, as the cells are done
     }
     if (arguments.json) printJson({{"means", arguments.means}, {"cells", cells}});
 }

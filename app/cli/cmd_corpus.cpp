@@ -2,6 +2,7 @@
 #include "app/cli/commands.h"
 #include "app/cli/import_options.h"
 
+#include "analysis/io/corpus_build_report.h"
 #include "analysis/io/corpus_builder.h"
 #include "analysis/io/corpus_io.h"
 
@@ -43,17 +44,6 @@ void runCorpus(const CorpusArguments& arguments)
     unwrap(io::writeCorpus(build.corpus, arguments.output));
 
     const auto& corpus = build.corpus;
-    json takes = json::array();
-    for (const auto& f : build.files)
-        takes.push_back({{"file", f.file.string()},
-                         {"function", f.labels.function},
-                         {"emotion", f.labels.emotion},
-                         {"take", f.labels.takeIndex},
-                         {"frames", f.frames},
-                         {"rate_hz", f.rateHz},
-                         {"frames_in_corpus", f.framesInCorpus},
-                         {"resampled", f.resampled},
-                         {"part_map", f.partMap}});
     const json summary{{"output", arguments.output},
                        {"name", corpus.name},
                        {"pattern", arguments.pattern},
@@ -61,29 +51,13 @@ void runCorpus(const CorpusArguments& arguments)
                        {"functions", corpus.functions()},
                        {"emotions", corpus.emotions()},
                        {"neutral_emotion", corpus.neutralEmotion},
-                       {"takes", takes},
+                       {"takes", io::corpusBuildFilesJson(build)},
                        {"notes", build.notes}};
     report(arguments.json, summary, [&] {
         std::cout << "corpus '" << corpus.name << "': " << corpus.takes.size() << " takes, " << corpus.functions().size()
                   << " function(s), " << corpus.emotions().size() << " emotion(s), " << corpus.rateHz << " Hz -> " << arguments.output
                   << "\n";
-        // Columns as wide as their longest entry (and two spaces apart), so long names never run together.
-        std::size_t fileWidth = 4, functionWidth = 8, emotionWidth = 7;
-        for (const auto& f : build.files) {
-            fileWidth = std::max(fileWidth, f.file.filename().string().size());
-            functionWidth = std::max(functionWidth, f.labels.function.size());
-            emotionWidth = std::max(emotionWidth, f.labels.emotion.size());
-        }
-        const auto left = [](std::size_t width) { return std::setw(int(width + 2)); };
-        std::cout << "  " << std::left << left(fileWidth) << "file" << left(functionWidth) << "function" << left(emotionWidth)
-                  << "emotion" << std::right << std::setw(4) << "take" << std::setw(8) << "frames" << std::setw(8) << "Hz"
-                  << "  part map\n";
-        for (const auto& f : build.files)
-            std::cout << "  " << std::left << left(fileWidth) << f.file.filename().string() << left(functionWidth) << f.labels.function
-                      << left(emotionWidth) << f.labels.emotion << std::right << std::setw(4) << f.labels.takeIndex << std::setw(8)
-                      << f.frames << std::setw(8) << f.rateHz << "  " << (f.partMap.empty() ? std::string("-") : f.partMap)
-                      << (f.resampled ? "  (resampled)" : "") << "\n";
-        for (const auto& note : build.notes) std::cout << "note: " << note << "\n";
+        std::cout << io::corpusBuildTable(build);
     });
 }
 

@@ -17,6 +17,8 @@
 #include "analysis/pipeline/heading_part.h"
 #include "analysis/pipeline/stage_parameters.h"
 #include "analysis/preprocess/preprocess.h"
+#include "analysis/preprocess/preprocess_report.h"
+#include "analysis/report/corpus_description.h"
 #include "analysis/skeleton/puppet_rig_fit.h"
 #include "analysis/synth/demo_corpus_io.h"
 #include "render/take_export.h"
@@ -90,12 +92,7 @@ void runInfo(const InfoArguments& arguments)
     Eigen::Index frames = 0;
     for (const Take& take : corpus.takes) frames = std::max(frames, take.frameCount());
     const Eigen::Index channels = first.channelCount();
-    Eigen::VectorXd low = Eigen::VectorXd::Constant(channels, std::numeric_limits<double>::infinity());
-    Eigen::VectorXd high = -low;
-    for (const Take& take : corpus.takes) {
-        low = low.cwiseMin(take.values.colwise().minCoeff().transpose());
-        high = high.cwiseMax(take.values.colwise().maxCoeff().transpose());
-    }
+    const rp::ChannelRanges ranges = rp::channelRanges(corpus);
 
     // Takes of the puppet's 24 channels without a skeleton get the puppet's rig (one body per
     // take; analysis/skeleton/puppet_rig_fit.h): how well it fits them.
@@ -111,31 +108,17 @@ void runInfo(const InfoArguments& arguments)
 
     json takeList = json::array();
     for (const Take& take : corpus.takes) takeList.push_back(takeJson(take));
-    json names = json::array(), ranges = json::array();
-    for (Eigen::Index c = 0; c < channels; ++c) {
-        const auto& channel = first.channels[std::size_t(c)];
-        names.push_back(channel.name());
-        ranges.push_back({{"channel", channel.name()}, {"unit", channel.unit}, {"min", low[c]}, {"max", high[c]}});
-    }
+    json names = json::array();
+    for (Eigen::Index c = 0; c < channels; ++c) names.push_back(first.channels[std::size_t(c)].name());
     summary.update(json{{"channels", channels}, {"frames", frames}, {"parts", first.parts()}, {"take_list", takeList},
-                        {"channel_names", names}, {"ranges", ranges}});
+                        {"channel_names", names}, {"ranges", rp::channelRangesJson(first.channels, ranges)}});
     if (loaded.isCorpus) {
         summary["functions"] = corpus.functions();
         summary["emotions"] = corpus.emotions();
         summary["neutral_emotion"] = corpus.neutralEmotion;
         summary["convention"] = corpus.convention;
     }
-    if (rig) {
-        json parts = json::object();
-        for (std::size_t p = 0; p < kPuppetParts.size(); ++p)
-            parts[std::string(kPuppetParts[p])] = {{"max_cm", rig->residual.maxCm[p]},
-                                                   {"rms_cm", rig->residual.rmsCm[p]},
-                                                   {"max_deg", rig->residual.maxDeg[p]}};
-        json segments = json::object();
-        for (const auto& joint : rig->skeleton->joints)
-            if (joint.parent >= 0) segments[joint.name] = joint.offset.norm();
-        summary["rig_fit"] = {{"takes", rigTakes.size()}, {"frames", rig->residual.frames}, {"parts", parts}, {"segment_cm", segments}};
-    }
+    if (rig) summary["rig_fit"] = rp::puppetRigFitJson(*rig, rigTakes.size());
     report(arguments.json, summary, [&] {
         std::cout << arguments.path << " (" << loaded.format << ")\n";
         if (loaded.isCorpus) std::cout << "corpus: " << corpus.name << "\n";
@@ -147,14 +130,7 @@ void runInfo(const InfoArguments& arguments)
                 std::cout << "  " << std::left << std::setw(28) << take.displayName() << std::right << std::setw(6) << take.frameCount()
                           << " frames  " << take.labels.source << (take.skeleton ? "  (with its skeleton)" : "") << "\n";
         }
-        std::cout << "\nchannels (min .. max):\n";
-        for (Eigen::Index c = 0; c < channels; ++c) {
-            const auto& channel = first.channels[std::size_t(c)];
-            std::cout << "  " << std::left << std::setw(22) << channel.name() << std::right << std::fixed << std::setprecision(3)
-                      << std::setw(12) << low[c] << " .. " << std::setw(12) << high[c] << " " << channel.unit << "\n";
-        }
-        std::cout.unsetf(std::ios::fixed);
-        std::cout << std::setprecision(6);
+        std::cout << "\nchannels (min .. max):\n" << rp::channelRangesText(first.channels, ranges);
         if (rig)
             std::cout << "\npuppet rig fitted to " << rigTakes.size() << (rigTakes.size() == 1 ? " take" : " takes")
                       << " (one body: derived takes move it; each part's distance from its channels, largest and rms):\n  "
@@ -262,25 +238,6 @@ void runPreprocess(const PreprocessArguments& arguments)
     const auto& steps = result.report;
     Eigen::Index frames = 0;
     for (const Take& take : result.corpus.takes) frames = std::max(frames, take.frameCount());
-    json takes = json::array();
-    for (std::size_t i = 0; i < steps.takes.size(); ++i) {
-        const auto& r = steps.takes[i];
-        json offsets = json::array();
-        const auto parts = analysis::sixDofParts(result.corpus.takes[i]);
-        for (std::size_t p = 0; p < r.positionOffsets.size(); ++p)
-            offsets.push_back(json{{"part", parts[p].part},
-                                   {"offset_cm", json::array({r.positionOffsets[p].x(), r.positionOffsets[p].y(), r.positionOffsets[p].z()})}});
-        takes.push_back({{"take", r.take},
-                         {"frames_padded", r.framesPadded},
-                         {"angles_unwrapped", r.anglesUnwrapped},
-                         {"shift_frames", r.shiftFrames},
-                         {"time_reference", r.isTimeReference},
-                         {"position_reference", r.isPositionReference},
-                         {"position_offsets", offsets},
-                         {"branch_turns", r.branchTurns},
-                         {"heading_offset_deg", r.headingOffsetDeg},
-                         {"heading_reference", r.isHeadingReference}});
-    }
     const json summary{{"input", arguments.input},
                        {"output", arguments.output},
                        {"steps", {{"pad", options.pad}, {"unwrap", options.unwrap}, {"align_start", options.alignStart},
@@ -292,19 +249,14 @@ void runPreprocess(const PreprocessArguments& arguments)
                        {"frames", frames},
                        {"rate_hz", result.corpus.rateHz},
                        {"truth_copied", truthCopied},
-                       {"report", takes}};
+                       {"report", pre::preprocessReportJson(result)}};
     report(arguments.json, summary, [&] {
         std::cout << "preprocessed " << steps.takes.size() << " takes into " << arguments.output << " (steps:"
                   << (options.unwrap ? " unwrap" : "") << (options.pad ? " pad" : "")
                   << (options.alignStart ? " align-start(" + arguments.method + ")" : std::string())
                   << (options.alignPosition ? " align-position(" + arguments.position + ")" : std::string())
                   << (options.alignHeading ? " align-heading(" + options.headingPart + ")" : std::string()) << ")\n";
-        std::cout << "  " << std::left << std::setw(28) << "take" << std::right << std::setw(8) << "padded" << std::setw(10) << "unwraps"
-                  << std::setw(8) << "shift" << "  reference\n";
-        for (const auto& r : steps.takes)
-            std::cout << "  " << std::left << std::setw(28) << r.take << std::right << std::setw(8) << r.framesPadded << std::setw(10)
-                      << r.anglesUnwrapped << std::setw(8) << r.shiftFrames << "  " << (r.isTimeReference ? "time " : "")
-                      << (r.isPositionReference ? "position" : "") << "\n";
+        std::cout << pre::preprocessReportTable(steps);
     });
 }
 
