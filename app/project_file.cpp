@@ -143,6 +143,19 @@ ViewState viewState(const QJsonObject& view)
 
 long lineOfOffset(const QByteArray& text, int offset) { return 1 + long(text.left(offset).count('\n')); }
 
+/// The line of the first `"key":` in the project's text, 0 when there is none: the line a value's
+/// error names.
+long lineOfKey(const QByteArray& text, const char* key)
+{
+    const QByteArray quoted = '"' + QByteArray(key) + '"';
+    for (qsizetype at = text.indexOf(quoted); at >= 0; at = text.indexOf(quoted, at + 1)) {
+        qsizetype next = at + quoted.size();
+        while (next < text.size() && (text[next] == ' ' || text[next] == '\t' || text[next] == '\r' || text[next] == '\n')) ++next;
+        if (next < text.size() && text[next] == ':') return lineOfOffset(text, int(at));
+    }
+    return 0;
+}
+
 /// Version 1's flat parameters ("normalise.tau": 4, "design.gains": {"p/d": [g0, g1]}, ...) in
 /// version 2's typed layout. Version 1 decomposed the preprocessed takes, by least squares
 /// unless the project chose KM2O. It stored only the values that differed from the defaults of
@@ -249,27 +262,27 @@ analysis::Result<ProjectState> parseProject(const QByteArray& text, const QStrin
     if (!document.isObject()) return parseError(name, 1, "expected a JSON object");
     const QJsonObject root = document.object();
     if (root["format"].toString() != kProjectFormatName)
-        return parseError(name, 0, "expected \"format\": \"bunraku-project\"");
+        return parseError(name, lineOfKey(text, "format"), "expected \"format\": \"bunraku-project\"");
     const int version = root["version"].toInt();
-    if (version != 1 && version != kProjectFormatVersion) return parseError(name, 0, "expected \"version\": 1 or 2");
+    if (version != 1 && version != kProjectFormatVersion) return parseError(name, lineOfKey(text, "version"), "expected \"version\": 1 or 2");
     if (!root["corpus"].isString() || root["corpus"].toString().isEmpty())
-        return parseError(name, 0, "expected \"corpus\": \"demo\" or a corpus folder");
+        return parseError(name, lineOfKey(text, "corpus"), "expected \"corpus\": \"demo\" or a corpus folder");
 
     ProjectState state;
     state.corpus = root["corpus"].toString();
     const QJsonValue importedValue = root["imported"];
-    if (!importedValue.isUndefined() && !importedValue.isArray()) return parseError(name, 0, "expected \"imported\": [...]");
-    if (importedValue.toArray().size() > kMaxImported) return parseError(name, 0, "more than 10000 \"imported\" takes");
+    if (!importedValue.isUndefined() && !importedValue.isArray()) return parseError(name, lineOfKey(text, "imported"), "expected \"imported\": [...]");
+    if (importedValue.toArray().size() > kMaxImported) return parseError(name, lineOfKey(text, "imported"), "more than 10000 \"imported\" takes");
     const QJsonArray imported = importedValue.toArray();
     for (qsizetype i = 0; i < imported.size(); ++i) {
         const QJsonObject recipe = imported[i].toObject();
         if (!recipe["path"].isString() || recipe["path"].toString().isEmpty())
-            return parseError(name, 0, "expected \"path\" in every \"imported\" entry");
+            return parseError(name, lineOfKey(text, "imported"), "expected \"path\" in every \"imported\" entry");
         ImportedTakeRecipe item{recipe["path"].toString(), recipe["label"].toString(), {}};
         // What the take was imported with (older projects: the defaults).
         if (recipe.contains("options")) {
             const std::string where = "imported[" + std::to_string(i) + "].options";
-            if (!recipe["options"].isObject()) return parseError(name, 0, where + ": expected an object");
+            if (!recipe["options"].isObject()) return parseError(name, lineOfKey(text, "options"), where + ": expected an object");
             const QByteArray options = QJsonDocument(recipe["options"].toObject()).toJson(QJsonDocument::Compact);
             auto read = analysis::io::importOptionsFromJson(json::parse(options.toStdString(), nullptr, false), name + ": " + where);
             if (!read) return read.error();
@@ -294,27 +307,32 @@ analysis::Result<ProjectState> parseProject(const QByteArray& text, const QStrin
         const std::optional<TakeId> read = value.isUndefined() || value.isNull() ? TakeId()
                                            : value.isString()                    ? parseTakeId(value.toString())
                                                                                  : std::nullopt;
-        if (!read) return parseError(name, 0, std::string("expected \"") + key + "\": a take id (corpus/N, imported/N or live/name)");
+        if (!read) {
+            const QString got = QString::fromUtf8(QJsonDocument(QJsonArray{value}).toJson(QJsonDocument::Compact).mid(1).chopped(1));
+            return parseError(name, lineOfKey(text, key),
+                              std::string("expected \"") + key + "\": a take id (corpus/N, imported/N or live/name), got " +
+                                  got.left(80).toStdString());
+        }
         *id = *read;
     }
     const QJsonValue time = root["time_s"];
     if (!time.isUndefined() && (!time.isDouble() || !std::isfinite(time.toDouble()) || time.toDouble() < 0.0 || time.toDouble() > 1e9))
-        return parseError(name, 0, "expected \"time_s\": seconds in [0, 1e9]");
+        return parseError(name, lineOfKey(text, "time_s"), "expected \"time_s\": seconds in [0, 1e9]");
     state.timeSeconds = time.toDouble();
     const QJsonValue view = root["view"];
-    if (!view.isUndefined() && !view.isObject()) return parseError(name, 0, "expected \"view\": {...}");
+    if (!view.isUndefined() && !view.isObject()) return parseError(name, lineOfKey(text, "view"), "expected \"view\": {...}");
     const QJsonObject viewObject = view.toObject();
     for (const ViewRange& range : kViewRanges) {
         const QJsonValue value = viewObject[range.key];
         if (value.isUndefined()) continue;
         if (!value.isDouble() || !(value.toDouble() >= range.low && value.toDouble() <= range.high) ||
             (range.high > 1.5 && range.low == 0 && value.toDouble() != std::floor(value.toDouble())))
-            return parseError(name, 0, std::string("expected \"view\".\"") + range.key + "\" in " + QString::number(range.low).toStdString() +
+            return parseError(name, lineOfKey(text, range.key), std::string("expected \"view\".\"") + range.key + "\" in " + QString::number(range.low).toStdString() +
                                            ".." + QString::number(range.high).toStdString());
     }
     for (const char* key : {"part", "dof", "weightEmotion", "cellFunction", "cellEmotion"})
         if (viewObject.contains(key) && (!viewObject[key].isString() || viewObject[key].toString().size() > 256))
-            return parseError(name, 0, std::string("expected \"view\".\"") + key + "\": a name of at most 256 characters");
+            return parseError(name, lineOfKey(text, key), std::string("expected \"view\".\"") + key + "\": a name of at most 256 characters");
     if (viewObject.contains("camera")) {
         // {"angle", "elevation", "distance", "target": [x, y, z], "fov"}: finite, in the ranges a
         // camera can take (render/camera.h).
@@ -328,7 +346,7 @@ analysis::Result<ProjectState> parseProject(const QByteArray& text, const QStrin
                      (camera["fov"].isUndefined() || inRange(camera["fov"], 1.0, 170.0)) && target.size() == 3;
         for (const QJsonValue& coordinate : target) valid = valid && inRange(coordinate, -1e6, 1e6);
         if (!valid)
-            return parseError(name, 0, "expected \"view\".\"camera\": {\"angle\": deg, \"elevation\": deg in -90..90, "
+            return parseError(name, lineOfKey(text, "camera"), "expected \"view\".\"camera\": {\"angle\": deg, \"elevation\": deg in -90..90, "
                                        "\"distance\": cm in 10..5000, \"target\": [x, y, z] cm, \"fov\": deg in 1..170}");
     }
     if (viewObject.contains("show")) {
@@ -336,29 +354,29 @@ analysis::Result<ProjectState> parseProject(const QByteArray& text, const QStrin
         const QJsonValue shown = viewObject["show"];
         std::string keys;
         for (const auto& [key, member] : kShownObjectKeys) keys += std::string(keys.empty() ? "" : ", ") + key;
-        if (!shown.isObject()) return parseError(name, 0, "expected \"view\".\"show\": {" + keys + ": true or false}");
+        if (!shown.isObject()) return parseError(name, lineOfKey(text, "show"), "expected \"view\".\"show\": {" + keys + ": true or false}");
         const QJsonObject values = shown.toObject();
         for (auto it = values.begin(); it != values.end(); ++it) {
             const bool known = std::any_of(std::begin(kShownObjectKeys), std::end(kShownObjectKeys),
                                            [&](const auto& entry) { return it.key() == QLatin1String(entry.first); });
             if (!known)
-                return parseError(name, 0, "\"view\".\"show\": unknown object \"" + it.key().left(64).toStdString() + "\" (known: " + keys + ")");
+                return parseError(name, lineOfKey(text, "show"), "\"view\".\"show\": unknown object \"" + it.key().left(64).toStdString() + "\" (known: " + keys + ")");
             if (!it.value().isBool())
-                return parseError(name, 0, "expected \"view\".\"show\".\"" + it.key().toStdString() + "\": true or false");
+                return parseError(name, lineOfKey(text, "show"), "expected \"view\".\"show\".\"" + it.key().toStdString() + "\": true or false");
         }
     }
     if (viewObject.contains("clothParameters")) {
         // The 3D view's cloth settings: every key a cloth parameter in its range (one table).
         const QJsonValue cloth = viewObject["clothParameters"];
-        if (!cloth.isObject()) return parseError(name, 0, "expected \"view\".\"clothParameters\": an object of cloth parameters");
+        if (!cloth.isObject()) return parseError(name, lineOfKey(text, "clothParameters"), "expected \"view\".\"clothParameters\": an object of cloth parameters");
         const QJsonObject values = cloth.toObject(); // one object: iterators of two temporaries never meet
         for (auto it = values.begin(); it != values.end(); ++it) {
             const auto& limits = analysis::clothParameterLimits();
             const auto limit = std::find_if(limits.begin(), limits.end(), [&](const analysis::ClothParameterLimit& l) { return it.key() == QLatin1String(l.name); });
             if (limit == limits.end())
-                return parseError(name, 0, "\"view\".\"clothParameters\": unknown parameter \"" + it.key().left(64).toStdString() + "\"");
+                return parseError(name, lineOfKey(text, "clothParameters"), "\"view\".\"clothParameters\": unknown parameter \"" + it.key().left(64).toStdString() + "\"");
             if (!it.value().isDouble() || !(it.value().toDouble() >= limit->low && it.value().toDouble() <= limit->high))
-                return parseError(name, 0, std::string("expected \"view\".\"clothParameters\".\"") + limit->name + "\" in " +
+                return parseError(name, lineOfKey(text, "clothParameters"), std::string("expected \"view\".\"clothParameters\".\"") + limit->name + "\" in " +
                                                QString::number(limit->low).toStdString() + ".." + QString::number(limit->high).toStdString());
         }
     }

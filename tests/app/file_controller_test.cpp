@@ -379,8 +379,14 @@ TEST_CASE("a take id is written as its text and read back by the project file as
         const auto read = app::parseProject(QByteArray::fromStdString(text), QStringLiteral("ids.bunraku.json"));
         REQUIRE_FALSE(read.ok());
         CHECK(read.error().message.find("takeB") != std::string::npos);
-        CHECK(read.error().message.find("a take id (corpus/N, imported/N or live/name)") != std::string::npos);
+        CHECK(read.error().message.find("a take id (corpus/N, imported/N or live/name), got " + bad) != std::string::npos);
     }
+    // On a line of its own, the error names that line.
+    const auto read = app::parseProject("{\"format\": \"bunraku-project\", \"version\": 2,\n\"corpus\": \"demo\",\n\n  \"takeA\" : \"live/Designed\"\n}",
+                                        QStringLiteral("ids.bunraku.json"));
+    REQUIRE_FALSE(read.ok());
+    CHECK(read.error().message ==
+          "ids.bunraku.json:4: expected \"takeA\": a take id (corpus/N, imported/N or live/name), got \"live/Designed\"");
 }
 
 TEST_CASE("a project whose imported takes cannot be read opens saying which takes and why", "[app][files]")
