@@ -292,9 +292,11 @@ void AnalysisController::publishNormalised()
     TakeId idA = m_document.selectedId(TakeSlot::A);
     // A derived take shown as A (the normalised take itself, or another): the normalised take is
     // recomputed for the corpus take it was computed from, never kept with older parameters.
-    if (!idA.isCorpus())
+    if (!idA.isCorpus()) {
+        const TakeId normalised = TakeId::live(QStringLiteral("normalised"));
         for (const auto& derived : m_document.derivedTakes())
-            if (derived.id == TakeId::live(QStringLiteral("normalised"))) idA = derived.ghostId;
+            if (derived.id == normalised) idA = derived.ghostId;
+    }
     const TakePointer takeA = m_document.take(idA);
     if (!m_normalised || !takeA || !idA.isCorpus()) return;
     const pl::CellNormalisation* cell = m_normalised->cell(takeA->labels.function, takeA->labels.emotion);

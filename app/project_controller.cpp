@@ -173,9 +173,9 @@ bool ProjectController::applyStateNow(const ProjectState& state)
             // for (they follow take A's cell), else the take the corpus opened with.
             if (slot == 0 && state.view.cellFunction && state.view.cellEmotion) {
                 const auto& corpusTakes = m_document.corpus().takes;
+                const std::string function = state.view.cellFunction->toStdString(), emotion = state.view.cellEmotion->toStdString();
                 const auto inCell = std::find_if(corpusTakes.begin(), corpusTakes.end(), [&](const analysis::Take& take) {
-                    return take.labels.function == state.view.cellFunction->toStdString() &&
-                           take.labels.emotion == state.view.cellEmotion->toStdString();
+                    return take.labels.function == function && take.labels.emotion == emotion;
                 });
                 if (inCell != corpusTakes.end())
                     m_document.selectTake(TakeSlot::A, TakeId::corpus(std::size_t(inCell - corpusTakes.begin())));

@@ -26,6 +26,7 @@
 #include <QMessageBox>
 #include <QPushButton>
 
+#include <algorithm>
 #include <map>
 #include <string>
 #include <tuple>
@@ -298,8 +299,10 @@ void ViewportPanel::updateGapLabels()
     QStringList lines;
     // A take shown with no figure to draw (the motion axis's or the kimono's channels) is said,
     // not left as an empty view.
+    // (shownTakes keeps the drawable ones: a chosen take missing from it has none.)
     for (TakeSlot slot : {TakeSlot::A, TakeSlot::B})
-        if (const TakePointer take = m_document.selectedTake(slot); take && !render::drawableTake(*take))
+        if (m_document.selectedTake(slot) &&
+            std::none_of(shown.begin(), shown.end(), [slot](const auto& drawn) { return drawn.first == slot; }))
             lines << tr("%1: %2 has no figure to draw: its channels are in the graphs")
                          .arg(slot == TakeSlot::A ? QStringLiteral("A") : QStringLiteral("B"),
                               m_document.takeLabel(m_document.selectedId(slot)));
