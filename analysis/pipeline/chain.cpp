@@ -106,18 +106,23 @@ Result<ChainResult> runChain(const CorpusInput& corpus, const ChainParameters& p
     result.preprocessed = *preprocessed;
     if (options.progress) options.progress(Stage::Preprocess, 1.0);
 
-    auto normalised = normaliseStage(result.keys.preprocess, *result.preprocessed, parameters.normalise, cache, control(Stage::Normalise));
-    if (!normalised) return failed(Stage::Normalise, normalised.error());
-    result.normalised = *normalised;
-    if (options.progress) options.progress(Stage::Normalise, 1.0);
-
+    const bool decompose = options.decomposition || options.fluctuations;
     const bool fromNormalised = parameters.decompose.input == DecomposeInput::Normalised;
-    auto decomposed = decomposeStage(fromNormalised ? result.keys.normalise : result.keys.preprocess,
-                                     fromNormalised ? result.normalised->normalised : result.preprocessed->corpus,
-                                     parameters.decompose, cache, control(Stage::Decompose));
-    if (!decomposed) return failed(Stage::Decompose, decomposed.error());
-    result.decomposed = *decomposed;
-    if (options.progress) options.progress(Stage::Decompose, 1.0);
+    if (options.normalisation || options.axes || (decompose && fromNormalised)) {
+        auto normalised = normaliseStage(result.keys.preprocess, *result.preprocessed, parameters.normalise, cache, control(Stage::Normalise));
+        if (!normalised) return failed(Stage::Normalise, normalised.error());
+        result.normalised = *normalised;
+        if (options.progress) options.progress(Stage::Normalise, 1.0);
+    }
+
+    if (decompose) {
+        auto decomposed = decomposeStage(fromNormalised ? result.keys.normalise : result.keys.preprocess,
+                                         fromNormalised ? result.normalised->normalised : result.preprocessed->corpus,
+                                         parameters.decompose, cache, control(Stage::Decompose));
+        if (!decomposed) return failed(Stage::Decompose, decomposed.error());
+        result.decomposed = *decomposed;
+        if (options.progress) options.progress(Stage::Decompose, 1.0);
+    }
 
     if (options.fluctuations) {
         auto fluctuations = fluctuationStage(result.keys.decompose, *result.decomposed, parameters.fluctuations, cache,

@@ -39,13 +39,18 @@ struct ChainResult {
     CorpusInput corpus;
     ChainKeys keys;
     Shared<PreprocessOutput> preprocessed;
-    Shared<NormaliseOutput> normalised;
-    Shared<DecomposeOutput> decomposed;
+    Shared<NormaliseOutput> normalised;     ///< null when not asked for nor read (ChainOptions)
+    Shared<DecomposeOutput> decomposed;     ///< null when not asked for nor read
     Shared<FluctuationOutput> fluctuations; ///< null when not asked for
     Shared<AxisOutput> axes;                ///< null when not asked for
 };
 
+/// The results wanted: a stage runs when its result is wanted or a wanted stage reads it (the
+/// axes read the normalisation; the fluctuations the decomposition, which reads the
+/// normalisation when DecomposeParameters::input says so). By default every stage runs.
 struct ChainOptions {
+    bool normalisation = true;
+    bool decomposition = true;
     bool fluctuations = true;
     bool axes = true;
     std::stop_token stop;

@@ -67,4 +67,24 @@ nlohmann::json approximationJson(const pipeline::AxisOutput& axes)
     return cells;
 }
 
+std::string approximationText(const pipeline::AxisOutput& axes)
+{
+    std::ostringstream out;
+    out << "thesis 5.4.1, eq. 5.18: approximation error of the phase-adjusted emotional axis against the functional "
+           "axis, scales 1..c\n"
+        << kApproximationThesisFigure << "\n";
+    for (const auto& cell : axes.cells) {
+        out << cell.function << " / " << cell.emotion << "\n     c";
+        for (const std::string& dof : dofNames()) out << std::setw(13) << dof;
+        out << std::setw(13) << "mean" << "\n";
+        for (Eigen::Index c = 0; c < cell.approximation.relativeError.rows(); ++c) {
+            out << std::setw(6) << cell.approximation.scales[std::size_t(c)] << std::fixed << std::setprecision(4);
+            for (Eigen::Index q = 0; q < cell.approximation.relativeError.cols(); ++q)
+                out << std::setw(13) << cell.approximation.relativeError(c, q);
+            out << std::setw(13) << cell.approximation.meanRelativeError(c) << "\n";
+        }
+    }
+    return out.str();
+}
+
 } // namespace bunraku::analysis::report

@@ -1,6 +1,6 @@
 #pragma once
 /// Thesis 5.4.1 (eq. 5.18, Fig. 5.16): the axis stage's approximation error per emotional cell,
-/// largest scale c and axis DOF, as CSV and JSON (`bunraku experiment approximation`).
+/// largest scale c and axis DOF, as CSV, JSON and text (`bunraku experiment approximation`).
 
 #include "analysis/pipeline/stages.h"
 
@@ -20,5 +20,8 @@ std::string approximationCsv(const pipeline::AxisOutput& axes);
 /// Per cell: function, emotion, scales, relative_error per DOF, mean_relative_error (null for a
 /// value that is not finite) and thesis (null).
 nlohmann::json approximationJson(const pipeline::AxisOutput& axes);
+/// The table for a person: what it measures, kApproximationThesisFigure, then per cell a row per
+/// largest scale c with the error per DOF and their mean (4 decimals).
+std::string approximationText(const pipeline::AxisOutput& axes);
 
 } // namespace bunraku::analysis::report

@@ -200,3 +200,72 @@ TEST_CASE("the axis stage's per-scale approximation error has the shape of Fig. 
                   Approx((emotional.col(q) - functional.col(q)).norm() / functional.col(q).norm()).epsilon(0.1));
     }
 }
+
+TEST_CASE("the chain runs only the stages the results asked for read, with the same results", "[pipeline][chain]")
+{
+    // The peer: the whole chain (every stage), with the decomposition of the preprocessed takes.
+    ChainParameters parameters;
+    parameters.decompose.input = DecomposeInput::Preprocessed;
+    parameters.decompose.method = DecomposeMethod::LeastSquares;
+    auto whole = runChain(demo(), parameters, nullptr);
+    REQUIRE(whole.ok());
+    REQUIRE(whole->normalised);
+    REQUIRE(whole->axes);
+
+    SECTION("the decomposition of the preprocessed takes, without normalisation")
+    {
+        ChainOptions options;
+        options.normalisation = options.axes = options.fluctuations = false;
+        std::vector<Stage> ran;
+        options.progress = [&ran](Stage stage, double) {
+            if (ran.empty() || ran.back() != stage) ran.push_back(stage);
+        };
+        auto chain = runChain(demo(), parameters, nullptr, options);
+        REQUIRE(chain.ok());
+        CHECK_FALSE(chain->normalised);
+        CHECK_FALSE(chain->fluctuations);
+        CHECK_FALSE(chain->axes);
+        CHECK(ran == std::vector<Stage>{Stage::Import, Stage::Preprocess, Stage::Decompose});
+        REQUIRE(chain->decomposed);
+        REQUIRE(chain->decomposed->components.functions.size() == whole->decomposed->components.functions.size());
+        for (std::size_t f = 0; f < chain->decomposed->components.functions.size(); ++f)
+            CHECK(chain->decomposed->components.functions[f].values == whole->decomposed->components.functions[f].values);
+    }
+    SECTION("decomposing the normalised takes normalises them, though normalisation was not asked for")
+    {
+        ChainParameters normalisedInput = parameters;
+        normalisedInput.decompose.input = DecomposeInput::Normalised;
+        ChainOptions options;
+        options.normalisation = options.axes = false;
+        auto chain = runChain(demo(), normalisedInput, nullptr, options);
+        REQUIRE(chain.ok());
+        REQUIRE(chain->normalised);
+        REQUIRE(chain->decomposed);
+        CHECK(chain->fluctuations);
+        CHECK(chain->normalised->normalised.takes.front().values == whole->normalised->normalised.takes.front().values);
+    }
+    SECTION("the axes alone: normalisation, no decomposition")
+    {
+        ChainOptions options;
+        options.normalisation = options.decomposition = options.fluctuations = false;
+        auto chain = runChain(demo(), parameters, nullptr, options);
+        REQUIRE(chain.ok());
+        CHECK_FALSE(chain->decomposed);
+        CHECK_FALSE(chain->fluctuations);
+        REQUIRE(chain->normalised);
+        REQUIRE(chain->axes);
+        REQUIRE(chain->axes->cells.size() == whole->axes->cells.size());
+        for (std::size_t c = 0; c < chain->axes->cells.size(); ++c)
+            CHECK(chain->axes->cells[c].approximation.relativeError == whole->axes->cells[c].approximation.relativeError);
+    }
+    SECTION("the fluctuations ask for the decomposition")
+    {
+        ChainOptions options;
+        options.normalisation = options.decomposition = options.axes = false;
+        auto chain = runChain(demo(), parameters, nullptr, options);
+        REQUIRE(chain.ok());
+        REQUIRE(chain->decomposed);
+        REQUIRE(chain->fluctuations);
+        CHECK_FALSE(chain->normalised);
+    }
+}
