@@ -17,6 +17,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -97,6 +98,10 @@ struct SceneVisibility {
     /// True when orbits are drawn given the puppet's visibility.
     bool orbitsDrawn() const { return orbits && (orbitVisibility == OrbitVisibility::Always || !puppet); }
 };
+/// The objects' names (`bunraku render --show`), one per switch of SceneVisibility.
+inline constexpr std::pair<const char*, bool SceneVisibility::*> kSceneObjects[] = {
+    {"puppet", &SceneVisibility::puppet}, {"axis", &SceneVisibility::axis},       {"orbits", &SceneVisibility::orbits},
+    {"grid", &SceneVisibility::grid},     {"shadows", &SceneVisibility::shadows}, {"partner", &SceneVisibility::partner}};
 
 struct LayoutOptions {
     float separation = 70.0f;      ///< cm between the two puppets' centres, along the screen's right

@@ -9,7 +9,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <numbers>
+#include <sstream>
 
 namespace bunraku::analysis::synth {
 namespace {
@@ -280,6 +282,26 @@ Result<Eigen::VectorXd> trueCorrespondence(const DemoGroundTruth& truth, const T
         result(t) = std::clamp(result(t), 0.0, lastSample);
     }
     return result;
+}
+
+bool isDemoTakeName(const std::string& name) { return name.rfind("demo:", 0) == 0; }
+
+Result<Take> demoTake(const std::string& name)
+{
+    std::vector<std::string> fields;
+    std::stringstream stream(isDemoTakeName(name) ? name.substr(5) : std::string());
+    for (std::string field; std::getline(stream, field, '/');) fields.push_back(field);
+    int index = 0;
+    if (fields.size() != 3 || (index = std::atoi(fields[2].c_str())) <= 0)
+        return makeError(ErrorCode::InvalidArgument, "'" + name + "': expected demo:FUNCTION/EMOTION/K, e.g. demo:greeting/friendly/1");
+    static const DemoCorpus demo = generateDemoCorpus();
+    if (const Take* take = demo.corpus.find(fields[0], fields[1], index)) return *take;
+    std::string functions, emotions;
+    for (const auto& f : demo.corpus.functions()) functions += (functions.empty() ? "" : ", ") + f;
+    for (const auto& e : demo.corpus.emotions()) emotions += (emotions.empty() ? "" : ", ") + e;
+    const auto takes = demo.corpus.cell(demo.corpus.functions().front(), demo.corpus.emotions().front()).size();
+    return makeError(ErrorCode::NotFound, "'" + name + "': no such demo take (functions: " + functions + "; emotions: " + emotions +
+                                              "; K = 1.." + std::to_string(takes) + ")");
 }
 
 } // namespace bunraku::analysis::synth

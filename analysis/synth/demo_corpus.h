@@ -141,6 +141,13 @@ Eigen::Matrix3d headingTurn(const TakeTruth& take);
 /// The demo corpus and its ground truth; deterministic per options.seed.
 DemoCorpus generateDemoCorpus(const DemoOptions& options = {});
 
+/// Whether `name` names a take of the demo corpus, "demo:FUNCTION/EMOTION/K" (the command line's
+/// way of naming one instead of a file).
+bool isDemoTakeName(const std::string& name);
+/// The demo take `name` names, from the default demo corpus (generated once). InvalidArgument
+/// for a malformed name; NotFound naming the corpus's functions, emotions and takes otherwise.
+Result<Take> demoTake(const std::string& name);
+
 /// The row of `motion` (frames x channels) at fractional frame `frame`, by cubic Hermite
 /// interpolation with Catmull-Rom tangents (one-sided at the ends); clamped to the first and
 /// last rows outside [0, frames-1]. This is the interpolation the generator uses.

@@ -77,32 +77,10 @@ std::atomic<bool> g_interrupted{false};
 
 extern "C" void interruptExport(int) { g_interrupted = true; }
 
-/// "demo:function/emotion/k" from the built-in synthetic corpus, or a take file.
-analysis::Take loadTake(const std::string& spec, std::optional<analysis::synth::DemoCorpus>& demo)
+/// "demo:FUNCTION/EMOTION/K" from the built-in synthetic corpus, or a take file.
+analysis::Take loadTake(const std::string& spec)
 {
-    const std::string prefix = "demo:";
-    if (spec.rfind(prefix, 0) == 0) {
-        std::vector<std::string> fields;
-        std::stringstream stream(spec.substr(prefix.size()));
-        for (std::string field; std::getline(stream, field, '/');) fields.push_back(field);
-        int index = 0;
-        if (fields.size() != 3 || (index = std::atoi(fields[2].c_str())) <= 0)
-            throw CliError("'" + spec + "': expected demo:FUNCTION/EMOTION/K, e.g. demo:greeting/friendly/1");
-        if (!demo) demo = analysis::synth::generateDemoCorpus();
-        const analysis::Take* take = demo->corpus.find(fields[0], fields[1], index);
-        if (take == nullptr) {
-            std::string functions, emotions;
-            for (const auto& f : demo->corpus.functions()) functions += (functions.empty() ? "" : ", ") + f;
-            for (const auto& e : demo->corpus.emotions()) emotions += (emotions.empty() ? "" : ", ") + e;
-            throw CliError("'" + spec + "': no such demo take (functions: " + functions + "; emotions: " + emotions +
-                           "; K = 1.." + std::to_string(demo->corpus.cell(demo->corpus.functions().front(),
-                                                                         demo->corpus.emotions().front())
-                                                             .size()) +
-                           ")");
-        }
-        return *take;
-    }
-    return unwrap(analysis::io::readTakeFile(spec));
+    return unwrap(analysis::synth::isDemoTakeName(spec) ? analysis::synth::demoTake(spec) : analysis::io::readTakeFile(spec));
 }
 
 QSize parseSize(const std::string& text)
@@ -129,21 +107,15 @@ std::pair<long, long> parseFrameRange(const std::string& text)
 render::SceneVisibility parseShow(const std::string& text)
 {
     render::SceneVisibility visibility;
-    visibility.puppet = visibility.axis = visibility.orbits = visibility.grid = visibility.shadows = visibility.partner = false;
+    for (const auto& [name, shown] : render::kSceneObjects) visibility.*shown = false;
     // Orbits named explicitly are drawn even with the puppet (the thesis shows them instead of it).
     visibility.orbitVisibility = render::OrbitVisibility::Always;
     std::stringstream stream(text);
-    for (std::string name; std::getline(stream, name, ',');) {
-        if (name == "puppet") visibility.puppet = true;
-        else if (name == "axis") visibility.axis = true;
-        else if (name == "orbits") visibility.orbits = true;
-        else if (name == "grid") visibility.grid = true;
-        else if (name == "shadows") visibility.shadows = true;
-        else if (name == "partner") visibility.partner = true;
-        else if (name == "all")
-            visibility.puppet = visibility.axis = visibility.orbits = visibility.grid = visibility.shadows = visibility.partner = true;
-        else if (!name.empty())
-            throw CliError("--show: unknown object '" + name + "' (expected puppet, axis, orbits, grid, shadows, partner, all)");
+    for (std::string word; std::getline(stream, word, ',');) {
+        bool known = word.empty() || word == "all";
+        for (const auto& [name, shown] : render::kSceneObjects)
+            if (word == name || word == "all") visibility.*shown = known = true;
+        if (!known) throw CliError("--show: unknown object '" + word + "' (expected puppet, axis, orbits, grid, shadows, partner, all)");
     }
     return visibility;
 }
@@ -330,9 +302,8 @@ void runRender(const RenderArguments& args)
     std::optional<std::pair<long, long>> range;
     if (!args.frames.empty()) range = parseFrameRange(args.frames);
 
-    std::optional<analysis::synth::DemoCorpus> demo;
-    std::vector<analysis::Take> takes{loadTake(args.take, demo)};
-    if (!args.takeB.empty()) takes.push_back(loadTake(args.takeB, demo));
+    std::vector<analysis::Take> takes{loadTake(args.take)};
+    if (!args.takeB.empty()) takes.push_back(loadTake(args.takeB));
     // "mesh" asks for the skinned mesh a take's file carries: a take without one is an error.
     for (std::size_t t = 0; t < takes.size(); ++t)
         if (visibility.figures[t] == render::FigureStyle::FileMesh && !render::takeHasFileMesh(takes[t]))
@@ -418,9 +389,7 @@ void runRender(const RenderArguments& args)
         // appear in the folder only once all are written, and the MP4 is encoded from them.
         const std::string folder = args.output;
         const double rate = scene.takes.front().take.rateHz;
-        FramePlan plan;
-        plan.fps = plan.rateHz = rate;
-        for (long f = range->first; f <= range->second; ++f) plan.times.push_back(double(f) / rate);
+        const FramePlan plan = planFrames(rate, int(range->first), int(range->second), 0.0);
         const FrameRenderer renderFrame = [&](double seconds) -> analysis::Result<QImage> {
             if (!offscreen->makeCurrent())
                 return analysis::makeError(analysis::ErrorCode::Io, "the offscreen OpenGL context could not be made current");

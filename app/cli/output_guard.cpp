@@ -4,6 +4,7 @@
 
 #include "analysis/io/atomic_file.h"
 #include "analysis/io/corpus_io.h"
+#include "analysis/synth/demo_corpus.h"
 
 #include <filesystem>
 #include <system_error>
@@ -64,7 +65,7 @@ void refuseOutputOverInputs(const std::string& output, OutputKind kind, const st
     if (output.empty()) return;
     const fs::path out = resolved(output);
     for (const std::string& input : inputs) {
-        if (input.empty() || input.rfind("demo:", 0) == 0) continue;
+        if (input.empty() || analysis::synth::isDemoTakeName(input)) continue;
         const fs::path in = resolved(input);
         if (sameFile(output, input))
             throw CliError(output + ": " + option + " is the input " + input +

@@ -308,3 +308,31 @@ TEST_CASE("noiseless motions are physically plausible: rigid distances, no gimba
             CHECK((m.row(f) - m.row(f - 5)).cwiseAbs().maxCoeff() > 0.3);
     }
 }
+
+TEST_CASE("a demo take is named demo:FUNCTION/EMOTION/K, and a name that names none says what there is", "[synth][demo]")
+{
+    const synth::DemoCorpus demo = synth::generateDemoCorpus();
+    CHECK(synth::isDemoTakeName("demo:greeting/friendly/1"));
+    CHECK_FALSE(synth::isDemoTakeName("greeting/friendly/1"));
+    CHECK_FALSE(synth::isDemoTakeName("takes/demo:1.bvh"));
+    auto take = synth::demoTake("demo:serving-tea/hostile/3");
+    REQUIRE(take.ok());
+    const Take* peer = demo.corpus.find("serving-tea", "hostile", 3);
+    REQUIRE(peer != nullptr);
+    CHECK(take->labels.takeIndex == 3);
+    CHECK(take->values == peer->values);
+
+    for (const char* malformed : {"demo:", "demo:greeting/friendly", "demo:greeting/friendly/0", "demo:greeting/friendly/x",
+                                  "demo:a/b/1/2", "model.bvh"}) {
+        INFO(malformed);
+        auto refused = synth::demoTake(malformed);
+        REQUIRE_FALSE(refused.ok());
+        CHECK(refused.error().code == ErrorCode::InvalidArgument);
+        CHECK(refused.error().message == "'" + std::string(malformed) + "': expected demo:FUNCTION/EMOTION/K, e.g. demo:greeting/friendly/1");
+    }
+    auto missing = synth::demoTake("demo:greeting/joyful/6");
+    REQUIRE_FALSE(missing.ok());
+    CHECK(missing.error().code == ErrorCode::NotFound);
+    CHECK(missing.error().message == "'demo:greeting/joyful/6': no such demo take (functions: greeting, serving-tea; emotions: "
+                                     "none, friendly, hostile; K = 1..5)");
+}
