@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <set>
+#include <sstream>
 
 namespace bunraku::analysis {
 
@@ -194,6 +195,33 @@ Result<GainSet> readGainsJson(const std::filesystem::path& file)
     auto text = io::readTextFile(file, io::kDocumentLimitBytes);
     if (!text) return text.error();
     return parseGainsJson(*text, file.string());
+}
+
+nlohmann::json illConditionedGainsJson(const std::vector<IllConditionedGain>& gains)
+{
+    nlohmann::json list = nlohmann::json::array();
+    for (const IllConditionedGain& gain : gains)
+        list.push_back({{"phrase", gain.phrase + 1},
+                        {"begin", gain.begin},
+                        {"end", gain.end},
+                        {"dof", gain.dofName},
+                        {"A1_functional", gain.a1Functional},
+                        {"A1_emotional", gain.a1Emotional},
+                        {"g1", gain.g1},
+                        {"reason", gain.reason}});
+    return list;
+}
+
+std::string illConditionedGainsText(const std::vector<IllConditionedGain>& gains)
+{
+    if (gains.empty()) return {};
+    const double fraction = GainOptions{}.illConditionedFraction;
+    std::ostringstream out;
+    out << gains.size() << " ill-conditioned g1 (A1_em below " << fraction << " x A1_no; regularised to " << 1.0 / fraction << "):\n";
+    for (const IllConditionedGain& gain : gains)
+        out << "  phrase " << gain.phrase + 1 << " (frames " << gain.begin << "-" << gain.end << "), " << gain.dofName << ": "
+            << gain.reason << "\n";
+    return out.str();
 }
 
 } // namespace bunraku::analysis

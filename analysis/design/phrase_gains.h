@@ -17,6 +17,7 @@
 #include "analysis/core/result.h"
 
 #include <Eigen/Core>
+#include <nlohmann/json_fwd.hpp>
 
 #include <cstddef>
 #include <filesystem>
@@ -124,6 +125,12 @@ struct IllConditionedGain {
 };
 /// Every gain flagged illConditioned, phrase by phrase, DOF by DOF.
 std::vector<IllConditionedGain> illConditionedGains(const GainSet& gains);
+/// Them as JSON, one object each: phrase (from 1), begin, end, dof, A1_functional, A1_emotional,
+/// g1 and reason (`bunraku gains`' summary; gains_json.cpp).
+nlohmann::json illConditionedGainsJson(const std::vector<IllConditionedGain>& gains);
+/// Them for a person: nothing when there are none, else a line saying what ill-conditioned
+/// means and to what g1 is regularised, then a line per gain.
+std::string illConditionedGainsText(const std::vector<IllConditionedGain>& gains);
 
 /// Gains that change nothing (g0 = g1 = 1) over the given phrases.
 GainSet unitGains(const std::vector<Eigen::Index>& boundaries, const std::vector<std::string>& dofNames);

@@ -366,6 +366,10 @@ template <> const std::map<std::string, LevelAlignment>& parameterNames<LevelAli
 template <> const std::map<std::string, FrontBackAxis>& parameterNames<FrontBackAxis>() { return kFrontBack; }
 template <> const std::map<std::string, MassSource>& parameterNames<MassSource>() { return kMassSources; }
 template <> const std::map<std::string, SegmentTable>& parameterNames<SegmentTable>() { return kSegmentTables; }
+template <> const std::map<std::string, preprocess::PositionAlignment>& parameterNames<preprocess::PositionAlignment>()
+{
+    return kPositionAlignments;
+}
 
 std::string rangeProblem(const ParameterRange& range, const json& value)
 {

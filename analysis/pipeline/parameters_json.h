@@ -52,7 +52,8 @@ Result<ChainParameters> chainParametersFromJson(const nlohmann::json& value, con
 
 /// The names of an enumerated parameter, one table each, as the parameter files and the command
 /// line spell them: specialised for PathMethod, DecomposeMethod, DecomposeInput,
-/// ChannelWeighting, LevelAlignment, FrontBackAxis, MassSource and SegmentTable.
+/// ChannelWeighting, LevelAlignment, FrontBackAxis, MassSource, SegmentTable and
+/// preprocess::PositionAlignment.
 template <class Enum>
 const std::map<std::string, Enum>& parameterNames();
 template <> const std::map<std::string, PathMethod>& parameterNames<PathMethod>();
@@ -63,6 +64,7 @@ template <> const std::map<std::string, LevelAlignment>& parameterNames<LevelAli
 template <> const std::map<std::string, FrontBackAxis>& parameterNames<FrontBackAxis>();
 template <> const std::map<std::string, MassSource>& parameterNames<MassSource>();
 template <> const std::map<std::string, SegmentTable>& parameterNames<SegmentTable>();
+template <> const std::map<std::string, preprocess::PositionAlignment>& parameterNames<preprocess::PositionAlignment>();
 
 /// The value named `name`, nullopt for a name the table does not hold.
 template <class Enum>

@@ -3,6 +3,7 @@
 #include "analysis/report/svg_plot.h"
 
 #include <algorithm>
+#include <iomanip>
 #include <sstream>
 #include <utility>
 
@@ -98,6 +99,21 @@ std::string kimonoFigureSvg(const std::vector<KimonoTakeMeasures>& takes)
     svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << swing.width + lag.width << "\" height=\"" << swing.height << "\">"
         << "<g>" << renderSvg(swing) << "</g><g transform=\"translate(" << swing.width << ",0)\">" << renderSvg(lag) << "</g></svg>\n";
     return svg.str();
+}
+
+std::string kimonoCellMeansText(const std::vector<KimonoCellMeans>& cells)
+{
+    std::ostringstream out;
+    out << "the kimono's own motion (beyond carrying by the parts), mean per cell:\n"
+        << std::left << std::setw(18) << "function" << std::setw(12) << "emotion" << std::right << std::setw(6) << "takes"
+        << std::setw(16) << "sleeve R (cm)" << std::setw(16) << "sleeve L (cm)" << std::setw(14) << "lag (s)" << std::setw(14)
+        << "hem (cm)" << std::setw(14) << "hand (cm)" << std::setw(16) << "sleeve R/hand" << "\n";
+    for (const KimonoCellMeans& m : cells)
+        out << std::left << std::setw(18) << m.function << std::setw(12) << m.emotion << std::right << std::setw(6) << m.takes
+            << std::fixed << std::setprecision(2) << std::setw(16) << m.mean(m.swingRight) << std::setw(16) << m.mean(m.swingLeft)
+            << std::setprecision(3) << std::setw(14) << m.mean(m.lag) << std::setprecision(2) << std::setw(14) << m.mean(m.hem)
+            << std::setw(14) << m.mean(m.hand) << std::setw(16) << m.sleevePerHand() << "\n";
+    return out.str();
 }
 
 } // namespace bunraku::analysis::report

@@ -1,7 +1,7 @@
 #pragma once
 /// The kimono simulated over every take of a corpus and measured (analysis/cloth/kimono_cloth.h;
 /// docs/KIMONO.md): per take and per function and emotion, the sleeves' and the hem's own swing
-/// and the sleeve's lag behind the hand, as JSON and as an SVG figure (`bunraku experiment kimono`).
+/// and the sleeve's lag behind the hand, as JSON, as text and as an SVG figure (`bunraku experiment kimono`).
 
 #include "analysis/cloth/kimono_cloth.h"
 #include "analysis/core/corpus.h"
@@ -34,6 +34,8 @@ struct KimonoCellMeans {
 Result<std::vector<KimonoTakeMeasures>> measureKimonos(const Corpus& corpus, const ClothParameters& cloth);
 /// The means per function and emotion, in the order the takes first name them.
 std::vector<KimonoCellMeans> kimonoCellMeans(const std::vector<KimonoTakeMeasures>& takes);
+/// The means per cell as a table for a person: a header line, then a row per cell.
+std::string kimonoCellMeansText(const std::vector<KimonoCellMeans>& cells);
 /// {"takes": [...], "cells": [...]}: every take's measures and the means per cell.
 nlohmann::json kimonoMeasuresJson(const std::vector<KimonoTakeMeasures>& takes, const std::vector<KimonoCellMeans>& cells);
 /// Two scatter plots side by side, one dot per take coloured by its function and emotion: the

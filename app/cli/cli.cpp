@@ -79,11 +79,7 @@ int runCli(int argc, char** argv)
     addAllCommands(commands);
     try {
         app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::CallForAllHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::CallForVersion& e) {
+    } catch (const CLI::Success& e) { // --help, --help-all, --version
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
         std::cerr << "bunraku: error: " << errorLine(e.what()) << "\n";

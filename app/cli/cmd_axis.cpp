@@ -269,30 +269,17 @@ void runGains(const GainsCommandArguments& arguments)
         for (const an::DofGain& gain : phrase.dofs)
             if (!gain.reason.empty()) reasons.push_back(gain.reason);
     const std::vector<an::IllConditionedGain> illConditioned = an::illConditionedGains(gains);
-    nlohmann::json ill = nlohmann::json::array();
-    for (const an::IllConditionedGain& gain : illConditioned)
-        ill.push_back({{"phrase", gain.phrase + 1},
-                       {"begin", gain.begin},
-                       {"end", gain.end},
-                       {"dof", gain.dofName},
-                       {"A1_functional", gain.a1Functional},
-                       {"A1_emotional", gain.a1Emotional},
-                       {"g1", gain.g1},
-                       {"reason", gain.reason}});
-    const nlohmann::json summary{{"phrases", boundaries}, {"notes", reasons}, {"output", arguments.output}, {"ill_conditioned", ill}};
+    const nlohmann::json summary{{"phrases", boundaries},
+                                 {"notes", reasons},
+                                 {"output", arguments.output},
+                                 {"ill_conditioned", an::illConditionedGainsJson(illConditioned)}};
     report(arguments.json, summary, [&] {
         std::cout << gains.phrases.size() << " phrases (boundaries";
         for (Eigen::Index b : boundaries) std::cout << " " << b;
         std::cout << (arguments.phrases.empty() ? ", suggested at minima of the axis speed" : "") << ") -> " << arguments.output
                   << "\n";
         for (const std::string& reason : reasons) std::cout << "  note: " << reason << "\n";
-        if (illConditioned.empty()) return;
-        const double fraction = an::GainOptions{}.illConditionedFraction;
-        std::cout << illConditioned.size() << " ill-conditioned g1 (A1_em below " << fraction << " x A1_no; regularised to "
-                  << 1.0 / fraction << "):\n";
-        for (const an::IllConditionedGain& gain : illConditioned)
-            std::cout << "  phrase " << gain.phrase + 1 << " (frames " << gain.begin << "-" << gain.end << "), " << gain.dofName
-                      << ": " << gain.reason << "\n";
+        std::cout << an::illConditionedGainsText(illConditioned);
     });
 }
 
@@ -353,7 +340,7 @@ void runDesign(const DesignCommandArguments& arguments)
 struct ExperimentArguments {
     std::string corpus;
     std::string means = "measured";
-    std::string position = "rigid";
+    an::preprocess::PositionAlignment position = an::preprocess::PositionAlignment::Rigid;
     bool json = false;
     AxisArguments axis;
     PhaseArguments phase;
@@ -363,7 +350,7 @@ void runExperiment(const ExperimentArguments& arguments)
 {
     const an::synth::DemoGroundTruth truth = groundTruthOf(arguments.corpus);
     an::DesignCorpusOptions corpusOptions;
-    an::preprocess::parsePositionAlignment(arguments.position, corpusOptions.preprocess.positionAlignment);
+    corpusOptions.preprocess.positionAlignment = arguments.position;
     an::Corpus corpus;
     if (arguments.means == "measured") {
         corpus = unwrap(an::io::readCorpus(arguments.corpus));
@@ -433,10 +420,9 @@ void addMotionAxisCommands(CommandSet& commands)
                             "'measured' (default): the preprocessed takes of each cell averaged by the thesis 3.7 average take; "
                             "'truth': the ground truth's noiseless cell motions")
             ->check(CLI::IsMember({"truth", "measured"}));
-        command->add_option("--position", arguments.position,
-                            "Start-position step of the preprocessing (thesis 2.2-4): rigid (one translation per take, "
-                            "default) or per-part")
-            ->check(CLI::IsMember({"rigid", "per-part"}));
+        addNamedParameter(command, "--position", arguments.position,
+                          "Start-position step of the preprocessing (thesis 2.2-4): rigid (one translation per take, "
+                          "default) or per-part");
         addAxisOptions(command, arguments.axis, false);
         addPhaseOptions(command, arguments.phase);
     }

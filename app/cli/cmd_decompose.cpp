@@ -61,15 +61,10 @@ struct ChainArgs {
     bool noPreprocess = false;
 };
 
-/// The chain's results up to chapter 4, each from the pipeline's own stage functions (chain.h),
-/// the ones the workbench's scheduler runs.
-struct ChainOutcome {
+/// The chain's results up to chapter 4 (and the fluctuations when asked), from the pipeline's
+/// chain (chain.h), the stages the workbench's scheduler runs, with the parameters they ran with.
+struct ChainOutcome : pipeline::ChainResult {
     pipeline::ChainParameters parameters;
-    pipeline::CorpusInput corpus;
-    pipeline::Shared<pipeline::PreprocessOutput> preprocessed;
-    pipeline::Shared<pipeline::NormaliseOutput> normalised; ///< null for --input preprocessed
-    pipeline::Shared<pipeline::DecomposeOutput> decomposed;
-    pipeline::Shared<pipeline::FluctuationOutput> fluctuations; ///< null unless asked for
 };
 
 pipeline::ChainParameters chainParameters(const ChainArgs& args)
@@ -103,35 +98,18 @@ ChainOutcome decomposeChain(const ChainArgs& args, bool fluctuations = false, co
         out.parameters.fluctuations.armaP = armaOrder[0];
         out.parameters.fluctuations.armaQ = armaOrder[1];
     }
-    out.corpus = unwrap(pipeline::importCorpus(args.corpus));
-    const pipeline::ChainKeys keys = pipeline::chainKeys(out.corpus.key, out.parameters);
-    const RunControl control{{}, {}, resolveThreads(0)}; // the workbench's thread count; the same bits for any
-    auto failed = [&](pipeline::Stage stage, const Error& error) {
-        return CliError(chainSubject(args.corpus, args.parameters) + ": " + pipeline::stageTitle(stage) + ": " + error.message);
-    };
-    auto preprocessed = pipeline::preprocessStage(out.corpus, out.parameters.preprocess, nullptr, control);
-    if (!preprocessed) throw failed(pipeline::Stage::Preprocess, preprocessed.error());
-    out.preprocessed = *preprocessed;
-    const bool fromNormalised = out.parameters.decompose.input == pipeline::DecomposeInput::Normalised;
-    if (fromNormalised) {
-        auto normalised = pipeline::normaliseStage(keys.preprocess, *out.preprocessed, out.parameters.normalise, nullptr, control);
-        if (!normalised) throw failed(pipeline::Stage::Normalise, normalised.error());
-        out.normalised = *normalised;
+    pipeline::ChainOptions options;
+    options.fluctuations = fluctuations;
+    options.normalisation = options.axes = false; // normalised only when decomposed
+    options.threads = resolveThreads(0); // the workbench's thread count; the same bits for any
+    auto chain = pipeline::runChain(unwrap(pipeline::importCorpus(args.corpus)), out.parameters, nullptr, options);
+    if (!chain) {
+        std::string message = chain.error().message;
+        if (message.rfind(std::string(pipeline::stageTitle(pipeline::Stage::Decompose)) + ":", 0) == 0 && !out.parameters.preprocess.pad)
+            message += " (--pad pads every take to the longest first)";
+        throw CliError(chainSubject(args.corpus, args.parameters) + ": " + message);
     }
-    auto decomposed = pipeline::decomposeStage(fromNormalised ? keys.normalise : keys.preprocess,
-                                               fromNormalised ? out.normalised->normalised : out.preprocessed->corpus,
-                                               out.parameters.decompose, nullptr, control);
-    if (!decomposed) {
-        Error error = decomposed.error();
-        if (!out.parameters.preprocess.pad) error.message += " (--pad pads every take to the longest first)";
-        throw failed(pipeline::Stage::Decompose, error);
-    }
-    out.decomposed = *decomposed;
-    if (fluctuations) {
-        auto fluctuated = pipeline::fluctuationStage(keys.decompose, *out.decomposed, out.parameters.fluctuations, nullptr, control);
-        if (!fluctuated) throw failed(pipeline::Stage::Fluctuations, fluctuated.error());
-        out.fluctuations = *fluctuated;
-    }
+    static_cast<pipeline::ChainResult&>(out) = std::move(chain).value();
     return out;
 }
 
@@ -268,47 +246,30 @@ void runEmotion(const EmotionArgs& args)
 }
 
 struct ExperimentArgs {
-    int finalTime = 300;
+    Km2oExperimentOptions options; ///< T, the seeds and K bound to it directly
     std::string range = "3:20";
-    int seeds = 5;
-    std::uint64_t firstSeed = 1;
     double noise = 0.0;
     int firstOffset = -1;
     std::string initialTimes = "full";
     std::string noiseSharing = "per-cell";
-    int takes = 5;
     bool json = false;
 };
 
 void runExperiment(const ExperimentArgs& args)
 {
-    Km2oExperimentOptions options;
-    options.finalTime = args.finalTime;
-    const auto colon = args.range.find(':');
-    // The whole text of each part must be a number ("3x:20" is refused, not read as 3:20).
-    const auto whole = [&](const std::string& text) {
-        std::size_t used = 0;
-        const int value = std::stoi(text, &used);
-        if (used != text.size()) throw std::invalid_argument(text);
-        return value;
-    };
-    try {
-        if (colon == std::string::npos) {
-            options.firstM = options.lastM = whole(args.range);
-        } else {
-            options.firstM = whole(args.range.substr(0, colon));
-            options.lastM = whole(args.range.substr(colon + 1));
-        }
-    } catch (const std::exception&) {
+    Km2oExperimentOptions options = args.options;
+    // FIRST:LAST or one M, the whole text read ("3x:20" is refused, not read as 3:20).
+    std::istringstream range(args.range);
+    char colon = 0;
+    bool read = bool(range >> options.firstM);
+    options.lastM = options.firstM;
+    if (read && !range.eof()) read = range >> colon >> options.lastM && colon == ':';
+    if (!read || !range.eof())
         throw CliError("--M expects FIRST:LAST (e.g. 3:20), got '" + args.range + "'");
-    }
-    options.seeds = args.seeds;
-    options.firstSeed = args.firstSeed;
     if (args.noise > 0.0) options.noiseScale = args.noise;
     if (args.firstOffset >= 0) options.reading.firstWindowOffset = args.firstOffset;
     options.reading.initialTimes = args.initialTimes == "thesis" ? InitialTimeRange::Thesis : InitialTimeRange::Full;
     options.noise = args.noiseSharing == "shared" ? NoiseSharing::SharedAcrossCells : NoiseSharing::PerCell;
-    options.takes = args.takes;
     const auto result = unwrap(runKm2oExperiment(options));
     report(args.json, report::km2oExperimentJson(result, options),
            [&] { std::cout << report::km2oExperimentText(result, options); });
@@ -375,11 +336,11 @@ void addDecompositionCommands(CommandSet& commands)
     addKimonoOutputOptions(emo, emotionArgs.kimono);
 
     auto [exp, experimentArgs] = addCommand(commands.experiment, "km2o", runExperiment);
-    exp->add_option("--T", experimentArgs.finalTime, "Final time T: 300 (Table 4.2) or 1000 (Table 4.3)")
+    exp->add_option("--T", experimentArgs.options.finalTime, "Final time T: 300 (Table 4.2) or 1000 (Table 4.3)")
         ->check(CLI::IsMember({300, 1000}));
     exp->add_option("--M", experimentArgs.range, "Correlation lengths FIRST:LAST (default 3:20)");
-    exp->add_option("--seeds", experimentArgs.seeds, "Simulations averaged (default 5)")->check(CLI::PositiveNumber);
-    exp->add_option("--seed", experimentArgs.firstSeed, "First seed");
+    exp->add_option("--seeds", experimentArgs.options.seeds, "Simulations averaged (default 5)")->check(CLI::PositiveNumber);
+    exp->add_option("--seed", experimentArgs.options.firstSeed, "First seed");
     exp->add_option("--noise", experimentArgs.noise, "Noise scale c (default: the table's)");
     exp->add_option("--first-offset", experimentArgs.firstOffset,
                     "Window offsets below this are used only where nothing else reaches (default 1; see docs/KM2O.md)")
@@ -390,7 +351,7 @@ void addDecompositionCommands(CommandSet& commands)
                     "per-cell (an independent w_k(t) per cell, default) or shared (one w_k(t) for all six cells: eq. "
                     "4.39 puts no i, j on w)")
         ->check(CLI::IsMember({"per-cell", "shared"}));
-    exp->add_option("--takes", experimentArgs.takes, "K, takes per cell (default 5, as the thesis)")->check(CLI::Range(2, 1000));
+    exp->add_option("--takes", experimentArgs.options.takes, "K, takes per cell (default 5, as the thesis)")->check(CLI::Range(2, 1000));
 }
 
 } // namespace bunraku::app::cli

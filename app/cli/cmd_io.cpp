@@ -210,9 +210,8 @@ struct PreprocessArguments {
     std::string input;
     std::string output;
     bool noPad = false, noUnwrap = false, noAlignStart = false, noAlignPosition = false, noAlignHeading = false;
-    std::string position = "rigid";
     std::string method = "onset";
-    pre::PreprocessOptions options; ///< the options bound to it directly: the heading part, reference take, shift, onset
+    pre::PreprocessOptions options; ///< the options bound to it directly: the heading part, position, reference take, shift, onset
     bool json = false;
 };
 
@@ -227,7 +226,6 @@ void runPreprocess(const PreprocessArguments& arguments)
     options.alignStart = !arguments.noAlignStart;
     options.alignPosition = !arguments.noAlignPosition;
     options.alignHeading = !arguments.noAlignHeading;
-    pre::parsePositionAlignment(arguments.position, options.positionAlignment);
     options.headingPart = analysis::pipeline::headingPartFor(corpus, options.headingPart); // a skeleton's: its chest
     options.alignMethod = arguments.method == "xcorr" ? pre::StartAlignMethod::CrossCorrelation : pre::StartAlignMethod::Onset;
     auto result = unwrap(pre::preprocessCorpus(corpus, options));
@@ -242,7 +240,7 @@ void runPreprocess(const PreprocessArguments& arguments)
                        {"output", arguments.output},
                        {"steps", {{"pad", options.pad}, {"unwrap", options.unwrap}, {"align_start", options.alignStart},
                                   {"align_position", options.alignPosition}, {"align_heading", options.alignHeading}}},
-                       {"position_alignment", arguments.position},
+                       {"position_alignment", pre::positionAlignmentName(options.positionAlignment)},
                        {"align_method", arguments.method},
                        {"takes", result.corpus.takes.size()},
                        {"channels", result.corpus.takes.front().channelCount()},
@@ -254,7 +252,7 @@ void runPreprocess(const PreprocessArguments& arguments)
         std::cout << "preprocessed " << steps.takes.size() << " takes into " << arguments.output << " (steps:"
                   << (options.unwrap ? " unwrap" : "") << (options.pad ? " pad" : "")
                   << (options.alignStart ? " align-start(" + arguments.method + ")" : std::string())
-                  << (options.alignPosition ? " align-position(" + arguments.position + ")" : std::string())
+                  << (options.alignPosition ? std::string(" align-position(") + pre::positionAlignmentName(options.positionAlignment) + ")" : std::string())
                   << (options.alignHeading ? " align-heading(" + options.headingPart + ")" : std::string()) << ")\n";
         std::cout << pre::preprocessReportTable(steps);
     });
@@ -290,10 +288,9 @@ void addIoCommands(CommandSet& commands)
         preprocess->add_flag("--no-unwrap", arguments.noUnwrap, "Do not unwrap angles");
         preprocess->add_flag("--no-align-start", arguments.noAlignStart, "Do not align start times");
         preprocess->add_flag("--no-align-position", arguments.noAlignPosition, "Do not align start positions");
-        preprocess->add_option("--position", arguments.position,
-                               "Start-position alignment: rigid (one translation per take, keeping the geometry between "
-                               "the parts; thesis 2.2-4, default) or per-part (each part to the reference's start)")
-            ->check(CLI::IsMember({"rigid", "per-part"}));
+        addNamedParameter(preprocess, "--position", arguments.options.positionAlignment,
+                          "Start-position alignment: rigid (one translation per take, keeping the geometry between "
+                          "the parts; thesis 2.2-4, default) or per-part (each part to the reference's start)");
         preprocess->add_flag("--no-align-heading", arguments.noAlignHeading,
                              "Do not align the whole-body heading (start yaw of the heading part)");
         preprocess->add_option("--heading-part", arguments.options.headingPart, "Part whose start yaw is the whole-body heading (on a skeleton's joints without it: the joint the arms branch from)")

@@ -9,7 +9,6 @@
 #include "analysis/pipeline/stages.h"
 #include "analysis/report/kimono_report.h"
 
-#include <iomanip>
 #include <iostream>
 #include <map>
 
@@ -34,18 +33,7 @@ void runKimonoExperiment(const KimonoArguments& arguments)
             throw CliError(status.error().message);
     nlohmann::json summary = rp::kimonoMeasuresJson(rows, cells);
     summary["corpus"] = arguments.corpus;
-    report(arguments.json, summary, [&] {
-        std::cout << "the kimono's own motion (beyond carrying by the parts), mean per cell:\n"
-                  << std::left << std::setw(18) << "function" << std::setw(12) << "emotion" << std::right << std::setw(6) << "takes"
-                  << std::setw(16) << "sleeve R (cm)" << std::setw(16) << "sleeve L (cm)" << std::setw(14) << "lag (s)" << std::setw(14)
-                  << "hem (cm)" << std::setw(14) << "hand (cm)" << std::setw(16) << "sleeve R/hand" << "\n";
-        for (const rp::KimonoCellMeans& m : cells)
-            std::cout << std::left << std::setw(18) << m.function << std::setw(12) << m.emotion << std::right << std::setw(6) << m.takes
-                      << std::fixed << std::setprecision(2) << std::setw(16) << m.mean(m.swingRight) << std::setw(16)
-                      << m.mean(m.swingLeft) << std::setprecision(3) << std::setw(14) << m.mean(m.lag) << std::setprecision(2)
-                      << std::setw(14) << m.mean(m.hem) << std::setw(14) << m.mean(m.hand) << std::setw(16) << m.sleevePerHand()
-                      << "\n";
-    });
+    report(arguments.json, summary, [&] { std::cout << rp::kimonoCellMeansText(cells); });
 }
 
 } // namespace
