@@ -7,9 +7,13 @@
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 jobs="$(nproc)"
+# Each phase's heading says the seconds since the start (CI's limit is on the whole run).
+started=$SECONDS
+phase() { echo "== $1 (at $((SECONDS - started)) s)"; }
+phase "Dependencies"
 bash "$root/scripts/install-deps.sh"
 
-echo "== Release build"
+phase "Release build"
 bash "$root/scripts/build.sh" "$root/build" -DCMAKE_BUILD_TYPE=Release
 
 # One clang build serves both: the analysis layer and its tests with ASan + UBSan (and libFuzzer's
@@ -28,13 +32,13 @@ nice -n 19 cmake --build "$root/build-sanitize" --parallel "$jobs" >"$sanitizer_
 sanitizer_build=$!
 trap 'kill "$sanitizer_build" 2>/dev/null || true' EXIT
 
-echo "== All tests of the Release build (the sanitizer build compiling beside them at nice 19)"
+phase "All tests of the Release build (the sanitizer build compiling beside them at nice 19)"
 # -noreset: by default Xvfb resets when its last client leaves, and a test that connects during
 # the reset gets "could not connect to display" (a CI failure of this kind, 2026-11-24).
 (cd "$root/build" && xvfb-run -a -s "-screen 0 1920x1080x24 -noreset" \
    ctest --output-on-failure --parallel "$jobs" --timeout 900)
 
-echo "== Analysis layer and the workbench's monkey test under ASan + UBSan"
+phase "Analysis layer and the workbench's monkey test under ASan + UBSan"
 if ! wait "$sanitizer_build"; then
   cat "$sanitizer_log"
   echo "the sanitizer build failed (its output above)" >&2
@@ -42,6 +46,7 @@ if ! wait "$sanitizer_build"; then
 fi
 trap - EXIT
 tail -n 3 "$sanitizer_log"
+echo "   (the sanitizer build done at $((SECONDS - started)) s)"
 # Left to the Release suite above, which runs them as they are (each takes minutes under ASan +
 # UBSan and walks code the cases kept here already walk under the sanitizers; docs/RELIABILITY.md):
 # - the kimono simulated over all 18 Bandai takes and 6 demo takes with their skeletons posed at
@@ -64,5 +69,6 @@ sanitizer_skips+='|tests_analysis_skeleton:every derived take of the Bandai wave
    xvfb-run -a -s "-screen 0 1920x1080x24 -noreset" ctest --output-on-failure --parallel "$jobs" --timeout 900 \
      -E "$sanitizer_skips")
 
-echo "== Fuzz smoke run: 20,000 executions of each reader"
+phase "Fuzz smoke run: 20,000 executions of each reader"
 BUNRAKU_FUZZ_BUILD="$root/build-sanitize" bash "$root/scripts/fuzz.sh" 20000
+phase "Done"
