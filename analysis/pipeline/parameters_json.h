@@ -22,6 +22,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <concepts>
 #include <map>
 #include <optional>
 #include <string>
@@ -40,11 +41,23 @@ nlohmann::json toJson(const FluctuationParameters& parameters);
 nlohmann::json toJson(const AxisParameters& parameters);
 nlohmann::json toJson(const DesignEdits& edits);
 /// What a stage's key hashes of its parameters: the section's JSON, keys sorted and numbers
-/// written to round trip, so every parameter the file holds changes the key.
+/// written to round trip, so every parameter the file holds changes the key. A stage section's
+/// (its operator== defaulted: every field compared) equal to the one asked for last on this
+/// thread gets that text again, not written anew: every stage's key is asked for at each change
+/// of any parameter, and a drag changes one.
 template <class Parameters>
+    requires std::same_as<Parameters, PreprocessParameters> || std::same_as<Parameters, NormaliseParameters> ||
+             std::same_as<Parameters, DecomposeParameters> || std::same_as<Parameters, FluctuationParameters> ||
+             std::same_as<Parameters, AxisParameters>
 std::string parametersText(const Parameters& parameters)
 {
-    return toJson(parameters).dump();
+    thread_local std::optional<Parameters> last;
+    thread_local std::string text;
+    if (!last || !(*last == parameters)) {
+        text = toJson(parameters).dump();
+        last = parameters;
+    }
+    return text;
 }
 
 /// Parses and validates; `where` ("session.bunraku.json: parameters") starts every message.
