@@ -199,11 +199,6 @@ VideoExportResult interruptible(const char* what, bool json, const std::string& 
 
 nlohmann::json rectJson(const QRect& rect) { return {rect.x(), rect.y(), rect.width(), rect.height()}; }
 
-bool endsWith(const std::string& text, std::string_view suffix)
-{
-    return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
 /// --multimodal: one frame as a PNG, or a range as MP4 / PNG frames through the workbench's
 /// video export (atomic output; Ctrl+C cancels and removes what was written).
 /// `summary`: what every render says (its size, camera and takes).
@@ -240,7 +235,7 @@ void runMultimodal(const RenderArguments& args, const render::SceneContent& scen
     }
     summary["duration_s"] = frame.duration();
     summary["thesis_ticks"] = options.thesisTicks;
-    if (args.frames.empty() && endsWith(args.output, ".png")) {
+    if (args.frames.empty() && args.output.ends_with(".png")) {
         // one frame, written atomically
         const double seconds = args.time ? *args.time : double(args.frame.value_or(0)) / takeA->rateHz;
         const QImage image = unwrap(frame.render(view, seconds));
@@ -254,7 +249,7 @@ void runMultimodal(const RenderArguments& args, const render::SceneContent& scen
         return;
     }
     VideoExportOptions video;
-    const bool mp4 = endsWith(args.output, ".mp4");
+    const bool mp4 = args.output.ends_with(".mp4");
     video.format = mp4 ? VideoFormat::Mp4 : VideoFormat::PngSequence;
     video.output = QString::fromStdString(args.output);
     video.overwrite = args.overwrite;
@@ -287,7 +282,7 @@ void runRender(const RenderArguments& args)
     if (!args.mp4.empty() && args.multimodal)
         throw CliError("--multimodal writes MP4 itself: give -o FILE.mp4 (or a folder for PNG frames), not --mp4");
     if (!args.mp4.empty() && args.frames.empty()) throw CliError("--mp4 needs --frames FIRST:LAST");
-    if (args.multimodal && endsWith(args.output, ".mp4") &&
+    if (args.multimodal && args.output.ends_with(".mp4") &&
         QStandardPaths::findExecutable(QStringLiteral("ffmpeg")).isEmpty())
         throw CliError("an MP4 output needs ffmpeg on PATH, which was not found: install Debian's ffmpeg "
                        "(apt-get install ffmpeg) or give a folder for PNG frames");
