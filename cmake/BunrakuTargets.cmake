@@ -14,9 +14,15 @@ function(bunraku_configure_target target)
     target_compile_options(${target} PRIVATE -fsanitize=thread -fno-omit-frame-pointer)
     target_link_options(${target} PRIVATE -fsanitize=thread)
   endif()
-  if(BUNRAKU_FUZZ) # coverage for libFuzzer, and the sanitizers that turn bugs into findings
-    target_compile_options(${target} PRIVATE -fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer
-                                             -fno-sanitize-recover=all)
+  if(BUNRAKU_FUZZ) # the sanitizers that turn bugs into findings, and libFuzzer's coverage
+    # The coverage only where the fuzz targets read (the analysis layer and the targets
+    # themselves): the tests and the Qt layers the sanitizer build also holds have no use for
+    # it, and it slows their compilation and their runs (docs/PERFORMANCE.md, "Build").
+    set(sanitizers address,undefined)
+    if(target MATCHES "^(bunraku_analysis_|fuzz_)")
+      set(sanitizers fuzzer-no-link,address,undefined)
+    endif()
+    target_compile_options(${target} PRIVATE -fsanitize=${sanitizers} -fno-omit-frame-pointer -fno-sanitize-recover=all)
     target_link_options(${target} PRIVATE -fsanitize=address,undefined)
   endif()
 endfunction()

@@ -16,8 +16,9 @@ bash "$root/scripts/install-deps.sh"
 phase "Release build"
 bash "$root/scripts/build.sh" "$root/build" -DCMAKE_BUILD_TYPE=Release
 
-# One clang build serves both: the analysis layer and its tests with ASan + UBSan (and libFuzzer's
-# coverage, which changes no result), and the readers' fuzz targets (docs/PERFORMANCE.md, "Build":
+# One clang build serves both: the analysis layer and its tests with ASan + UBSan (and, in the
+# analysis layer the fuzz targets read, libFuzzer's coverage, which changes no result), and the
+# readers' fuzz targets (docs/PERFORMANCE.md, "Build":
 # the analysis layer is compiled twice, not three times). Warnings are errors in the gcc build above.
 # The Qt layers are built here for the monkey test only (BUNRAKU_QT_MONKEY_ONLY: no programs, no
 # other Qt test suite; docs/PERFORMANCE.md, "Build", gives what this adds).
